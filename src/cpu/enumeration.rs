@@ -1,0 +1,420 @@
+//! Exhaustive enumeration of the 2ⁿ complementary bases (seed 000, last
+//! section): the CPU twin of `shaders/enumeration.wgsl`, in f64.
+//!
+//! A complementary basis is a set S ⊆ {0..n}: z_i is basic for i ∈ S (w_i = 0)
+//! and w_i is basic for i ∉ S (z_i = 0). Then
+//!
+//! ```text
+//! M_SS z_S = −q_S,        w_i = q_i + Σ_{j∈S} M_ij z_j   (i ∉ S)
+//! ```
+//!
+//! and S gives a solution when z_S ≥ 0 and w ≥ 0. Bases are encoded as a u32
+//! mask, bit i set when z_i is basic.
+//!
+//! # Which basis is chosen
+//! Among all valid bases the chosen one has the fewest basic z (the fewest
+//! contacts carrying impulse), ties broken by the smallest mask. Bases are
+//! visited in exactly this order, so stopping at the first valid basis and
+//! visiting all of them choose the same one.
+//!
+//! # Tolerances (all relative, so that scaling M and q changes no verdict)
+//! - Singular: a pivot below `pivot_tol` times its column's largest entry in
+//!   M_SS (see [`crate::linalg::solve_in_place`]); such a basis is skipped.
+//! - Feasible: z_i ≥ −tol·‖z_S‖∞ and w_i ≥ −tol·(|q_i| + Σ_j |M_ij z_j|), the
+//!   second scale being the size of the terms whose cancellation gives w_i.
+
+use crate::lcp::{BasisSolution, Counters, Lcp, LcpSolution, SolutionSet, Status};
+use crate::linalg::{null_space, solve_in_place, PIVOT_TOL};
+
+/// Largest n the CPU enumerates (2²⁰ bases).
+pub const MAX_ENUMERATION_N: usize = 20;
+
+/// Settings of exhaustive enumeration.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EnumerationSettings {
+    /// Visit every basis and report every valid one (default false: stop at
+    /// the first valid basis in the documented order).
+    pub all_solutions: bool,
+    /// Relative pivot tolerance for singular principal submatrices
+    /// (default [`PIVOT_TOL`] = 1e-13).
+    pub pivot_tol: f64,
+    /// Relative feasibility tolerance (default 1e-9).
+    pub feasibility_tol: f64,
+}
+
+impl Default for EnumerationSettings {
+    fn default() -> Self {
+        EnumerationSettings {
+            all_solutions: false,
+            pivot_tol: PIVOT_TOL,
+            feasibility_tol: 1e-9,
+        }
+    }
+}
+
+impl EnumerationSettings {
+    /// Checks that the tolerances are finite and in [0, 1).
+    pub fn validate(&self) -> Result<(), crate::Error> {
+        for (name, v) in [
+            ("pivot_tol", self.pivot_tol),
+            ("feasibility_tol", self.feasibility_tol),
+        ] {
+            if !(0.0..1.0).contains(&v) {
+                return Err(crate::Error::invalid(
+                    "enumeration settings",
+                    name,
+                    format!("{v} is not in [0, 1)"),
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// What solving one basis gave.
+#[derive(Clone, Debug, PartialEq)]
+pub enum BasisOutcome {
+    /// M_SS is singular to the pivot tolerance.
+    Singular,
+    /// The basic solution (z, w with w = M z + q recomputed in full) and
+    /// whether it is feasible to the tolerance.
+    Solved {
+        z: Vec<f64>,
+        w: Vec<f64>,
+        feasible: bool,
+    },
+}
+
+/// Reusable buffers: nothing is allocated per basis.
+struct Scratch {
+    a: [f64; MAX_ENUMERATION_N * MAX_ENUMERATION_N],
+    x: [f64; MAX_ENUMERATION_N],
+    idx: [usize; MAX_ENUMERATION_N],
+    z: [f64; MAX_ENUMERATION_N],
+}
+
+impl Scratch {
+    fn new() -> Self {
+        Scratch {
+            a: [0.0; MAX_ENUMERATION_N * MAX_ENUMERATION_N],
+            x: [0.0; MAX_ENUMERATION_N],
+            idx: [0; MAX_ENUMERATION_N],
+            z: [0.0; MAX_ENUMERATION_N],
+        }
+    }
+
+    /// Solves basis `mask` into `self.z` (full length n, zeros off S).
+    /// Returns None when singular, else Some(feasible).
+    fn solve(&mut self, lcp: &Lcp, mask: u32, s: &EnumerationSettings) -> Option<bool> {
+        let n = lcp.n();
+        let m = &lcp.m;
+        let q = &lcp.q;
+        let mut k = 0;
+        for i in 0..n {
+            if mask >> i & 1 == 1 {
+                self.idx[k] = i;
+                k += 1;
+            }
+        }
+        for (r, &i) in self.idx[..k].iter().enumerate() {
+            for (c, &j) in self.idx[..k].iter().enumerate() {
+                self.a[r * k + c] = m[i * n + j];
+            }
+            self.x[r] = -q[i];
+        }
+        if !solve_in_place(&mut self.a[..k * k], &mut self.x[..k], k, s.pivot_tol) {
+            return None;
+        }
+        self.z[..n].iter_mut().for_each(|v| *v = 0.0);
+        let mut zmax = 0.0f64;
+        for (r, &i) in self.idx[..k].iter().enumerate() {
+            self.z[i] = self.x[r];
+            zmax = zmax.max(self.x[r].abs());
+        }
+        let ztol = s.feasibility_tol * zmax;
+        if self.x[..k].iter().any(|&v| v < -ztol) {
+            return Some(false);
+        }
+        for i in 0..n {
+            if mask >> i & 1 == 1 {
+                continue;
+            }
+            let (mut w, mut scale) = (q[i], q[i].abs());
+            for &j in &self.idx[..k] {
+                let t = m[i * n + j] * self.z[j];
+                w += t;
+                scale += t.abs();
+            }
+            if w < -s.feasibility_tol * scale {
+                return Some(false);
+            }
+        }
+        Some(true)
+    }
+}
+
+/// Solves one complementary basis of `lcp` and reports its z, w and
+/// feasibility. This is the "polish" step of GPU validation: the GPU picks the
+/// basis, f64 recomputes it. Negative z within tolerance are clamped to 0.
+pub fn solve_basis(lcp: &Lcp, mask: u32, settings: &EnumerationSettings) -> BasisOutcome {
+    let n = lcp.n();
+    assert!(
+        n <= MAX_ENUMERATION_N,
+        "solve_basis: n = {n} > {MAX_ENUMERATION_N}"
+    );
+    let mut s = Scratch::new();
+    match s.solve(lcp, mask, settings) {
+        None => BasisOutcome::Singular,
+        Some(feasible) => {
+            let z: Vec<f64> = s.z[..n].iter().map(|v| v.max(0.0)).collect();
+            let w = lcp.w(&z);
+            BasisOutcome::Solved { z, w, feasible }
+        }
+    }
+}
+
+/// Visits subsets of {0..n} by increasing size, each size in increasing
+/// numeric order (Gosper's hack), calling `f` until it returns false.
+fn for_each_basis_in_order(n: usize, mut f: impl FnMut(u32) -> bool) {
+    let full: u64 = 1u64 << n;
+    for k in 0..=n {
+        if k == 0 {
+            if !f(0) {
+                return;
+            }
+            continue;
+        }
+        let mut s: u64 = (1u64 << k) - 1;
+        while s < full {
+            if !f(s as u32) {
+                return;
+            }
+            // Next larger integer with the same number of set bits.
+            let c = s & s.wrapping_neg();
+            let r = s + c;
+            s = (((r ^ s) >> 2) / c) | r;
+        }
+    }
+}
+
+/// Solves `lcp` by exhaustive enumeration of its complementary bases.
+///
+/// Errors only when n exceeds [`MAX_ENUMERATION_N`] or the settings are out
+/// of range; every other outcome is a [`Status`]: `Solved` (one valid basis
+/// chosen; when `all_solutions`, the solution is also the only one),
+/// `MultipleSolutions` (all_solutions only), `NoSolution` (no basis is
+/// feasible and nonsingular).
+pub fn enumerate(lcp: &Lcp, settings: &EnumerationSettings) -> Result<LcpSolution, crate::Error> {
+    settings.validate()?;
+    let n = lcp.n();
+    if n > MAX_ENUMERATION_N {
+        return Err(crate::Error::Unsupported(format!(
+            "enumeration visits 2^n bases and is limited to n ≤ {MAX_ENUMERATION_N} (this problem has n = {n}); use Lemke"
+        )));
+    }
+    let mut scratch = Scratch::new();
+    let mut counters = Counters::default();
+    let mut chosen: Option<u32> = None;
+    let mut all = Vec::new();
+    for_each_basis_in_order(n, |mask| {
+        counters.bases_visited += 1;
+        match scratch.solve(lcp, mask, settings) {
+            None => counters.singular_bases += 1,
+            Some(true) => {
+                chosen.get_or_insert(mask);
+                if !settings.all_solutions {
+                    return false;
+                }
+                let z: Vec<f64> = scratch.z[..n].iter().map(|v| v.max(0.0)).collect();
+                let w = lcp.w(&z);
+                all.push(BasisSolution { basis: mask, z, w });
+            }
+            Some(false) => {}
+        }
+        true
+    });
+    let Some(basis) = chosen else {
+        let mut sol = LcpSolution::from_z(lcp, Status::NoSolution, vec![0.0; n], counters);
+        if settings.all_solutions {
+            sol.solution_set = Some(SolutionSet::Empty);
+        }
+        return Ok(sol);
+    };
+    let BasisOutcome::Solved { z, .. } = solve_basis(lcp, basis, settings) else {
+        unreachable!("a basis found nonsingular is nonsingular again")
+    };
+    let mut sol = LcpSolution::from_z(lcp, Status::Solved, z, counters);
+    sol.basis = Some(basis);
+    if settings.all_solutions {
+        let set = classify_solution_set(lcp, &all, settings);
+        if set != (SolutionSet::Isolated { count: 1 }) {
+            sol.status = Status::MultipleSolutions;
+        }
+        sol.solution_set = Some(set);
+        sol.all_bases = all;
+    }
+    Ok(sol)
+}
+
+/// Two solutions are the same point when they agree to a relative 1e-8.
+fn same_point(a: &[f64], b: &[f64]) -> bool {
+    let scale = a.iter().chain(b).fold(0.0f64, |m, v| m.max(v.abs()));
+    a.iter()
+        .zip(b)
+        .all(|(x, y)| (x - y).abs() <= 1e-8 * scale.max(f64::MIN_POSITIVE))
+}
+
+/// Distinct solutions among the valid bases.
+pub fn distinct_solutions(all: &[BasisSolution]) -> Vec<&BasisSolution> {
+    let mut out: Vec<&BasisSolution> = Vec::new();
+    for b in all {
+        if !out.iter().any(|o| same_point(&o.z, &b.z)) {
+            out.push(b);
+        }
+    }
+    out
+}
+
+/// Is z a solution of `lcp` to the feasibility tolerance?
+fn is_solution(lcp: &Lcp, z: &[f64], tol: f64) -> bool {
+    let n = lcp.n();
+    let zmax = z.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    (0..n).all(|i| {
+        let (mut w, mut scale) = (lcp.q[i], lcp.q[i].abs());
+        for j in 0..n {
+            let t = lcp.at(i, j) * z[j];
+            w += t;
+            scale += t.abs();
+        }
+        z[i] >= -tol * zmax
+            && w >= -tol * scale
+            && (z[i].abs() <= tol * zmax.max(f64::MIN_POSITIVE)
+                || w.abs() <= tol * scale.max(f64::MIN_POSITIVE))
+    })
+}
+
+/// Tells isolated solutions from a continuum.
+///
+/// - Two distinct solutions whose midpoint also solves the LCP span a segment
+///   of solutions (a bounded continuum, unless a ray is found too).
+/// - For a solution z* and a set S with supp(z*) ⊆ S ⊆ {i : w*_i = 0} whose
+///   M_SS is singular, a kernel direction d of M_SS keeps w_S = 0 along
+///   z* + t d; if d (or −d) keeps z ≥ 0 and w ≥ 0 for small t > 0 there is a
+///   continuum, unbounded when nothing ever stops it (d ≥ 0 and (M d)_i ≥ 0
+///   off S).
+fn classify_solution_set(lcp: &Lcp, all: &[BasisSolution], s: &EnumerationSettings) -> SolutionSet {
+    let n = lcp.n();
+    let distinct = distinct_solutions(all);
+    let tol = s.feasibility_tol.max(1e-12);
+    let mut bounded = false;
+    for (i, a) in distinct.iter().enumerate() {
+        for b in &distinct[i + 1..] {
+            let mid: Vec<f64> = a.z.iter().zip(&b.z).map(|(x, y)| 0.5 * (x + y)).collect();
+            if is_solution(lcp, &mid, tol) {
+                bounded = true;
+            }
+        }
+    }
+    for sol in &distinct {
+        let zmax = sol
+            .z
+            .iter()
+            .fold(0.0f64, |m, v| m.max(v.abs()))
+            .max(f64::MIN_POSITIVE);
+        let wscale: Vec<f64> = (0..n)
+            .map(|i| lcp.q[i].abs() + (0..n).map(|j| (lcp.at(i, j) * sol.z[j]).abs()).sum::<f64>())
+            .collect();
+        let zero_z = |i: usize| sol.z[i].abs() <= tol * zmax;
+        let zero_w = |i: usize| sol.w[i].abs() <= tol * wscale[i].max(f64::MIN_POSITIVE);
+        let must: u32 = (0..n).filter(|&i| !zero_z(i)).fold(0, |m, i| m | 1 << i);
+        let may: u32 = (0..n).filter(|&i| zero_w(i)).fold(0, |m, i| m | 1 << i);
+        if must & !may != 0 {
+            continue;
+        }
+        let free = may & !must;
+        // Every S between `must` and `may`: subsets of `free` added to `must`.
+        let mut sub = free;
+        loop {
+            let set = must | sub;
+            let idx: Vec<usize> = (0..n).filter(|&i| set >> i & 1 == 1).collect();
+            let k = idx.len();
+            if k > 0 {
+                let a: Vec<f64> = idx
+                    .iter()
+                    .flat_map(|&i| idx.iter().map(move |&j| lcp.at(i, j)))
+                    .collect();
+                for d_s in null_space(&a, k, s.pivot_tol) {
+                    let mut d = vec![0.0; n];
+                    for (r, &i) in idx.iter().enumerate() {
+                        d[i] = d_s[r];
+                    }
+                    let md: Vec<f64> = (0..n)
+                        .map(|i| (0..n).map(|j| lcp.at(i, j) * d[j]).sum())
+                        .collect();
+                    let mscale = lcp.m.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+                    for sign in [1.0, -1.0] {
+                        let dz = |i: usize| sign * d[i];
+                        let dw = |i: usize| sign * md[i];
+                        let eps = 1e-10;
+                        // Directions allowed at t = 0+.
+                        let ok = (0..n).all(|i| {
+                            if set >> i & 1 == 1 {
+                                !zero_z(i) || dz(i) >= -eps
+                            } else {
+                                !zero_w(i) || dw(i) >= -eps * mscale
+                            }
+                        });
+                        if ok {
+                            let unbounded = (0..n).all(|i| {
+                                if set >> i & 1 == 1 {
+                                    dz(i) >= -eps
+                                } else {
+                                    dw(i) >= -eps * mscale
+                                }
+                            });
+                            if unbounded {
+                                return SolutionSet::UnboundedContinuum;
+                            }
+                            bounded = true;
+                        }
+                    }
+                }
+            }
+            if sub == 0 {
+                break;
+            }
+            sub = (sub - 1) & free;
+        }
+    }
+    if bounded {
+        SolutionSet::BoundedContinuum
+    } else {
+        SolutionSet::Isolated {
+            count: distinct.len(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn order_is_by_size_then_mask() {
+        let mut v = Vec::new();
+        for_each_basis_in_order(3, |m| {
+            v.push(m);
+            true
+        });
+        assert_eq!(v, vec![0, 1, 2, 4, 3, 5, 6, 7]);
+    }
+
+    #[test]
+    fn seed_000_two_by_two() {
+        let lcp = Lcp::new(vec![2.0, 1.0, 1.0, 2.0], vec![-5.0, -6.0]).unwrap();
+        let sol = enumerate(&lcp, &EnumerationSettings::default()).unwrap();
+        assert_eq!(sol.status, Status::Solved);
+        assert_eq!(sol.basis, Some(0b11));
+        assert!((sol.z[0] - 4.0 / 3.0).abs() < 1e-14 && (sol.z[1] - 7.0 / 3.0).abs() < 1e-14);
+    }
+}

@@ -1,0 +1,66 @@
+//! Why a solve could not run. What a solve found is a [`crate::Status`].
+
+use std::path::PathBuf;
+
+/// Every error names the item and the field at fault, so that a user can
+/// find the bad number in a file of thousands.
+#[derive(Debug, thiserror::Error)]
+pub enum Error {
+    /// A value failed a check: `item` is e.g. "scene 0, contact 3", `field` e.g. "normal".
+    #[error("{item}: field `{field}`: {reason}")]
+    Invalid {
+        item: String,
+        field: String,
+        reason: String,
+    },
+    /// The JSON text could not be parsed into the expected shape.
+    #[error("{path}: malformed JSON at line {line}, column {column}: {message}")]
+    Json {
+        path: String,
+        line: usize,
+        column: usize,
+        message: String,
+    },
+    /// A Siconos .dat file could not be parsed.
+    #[error("{path}: malformed .dat file: {message}")]
+    Dat { path: String, message: String },
+    /// Reading or writing a file failed.
+    #[error("{path}: {source}")]
+    Io {
+        path: PathBuf,
+        #[source]
+        source: std::io::Error,
+    },
+    /// A request the chosen solver cannot serve (for example enumeration of
+    /// a problem too large to enumerate).
+    #[error("{0}")]
+    Unsupported(String),
+    /// The GPU could not be used.
+    #[error("GPU: {0}")]
+    Gpu(String),
+}
+
+impl Error {
+    /// Shorthand for [`Error::Invalid`].
+    pub fn invalid(
+        item: impl Into<String>,
+        field: impl Into<String>,
+        reason: impl Into<String>,
+    ) -> Self {
+        Error::Invalid {
+            item: item.into(),
+            field: field.into(),
+            reason: reason.into(),
+        }
+    }
+
+    /// Converts a serde_json error, keeping its position.
+    pub fn json(path: impl Into<String>, e: serde_json::Error) -> Self {
+        Error::Json {
+            path: path.into(),
+            line: e.line(),
+            column: e.column(),
+            message: e.to_string(),
+        }
+    }
+}

@@ -1,0 +1,341 @@
+//! The linear complementarity problem and what a solve reports about it.
+//!
+//! Find z with
+//!
+//! ```text
+//! w = M z + q ≥ 0,   z ≥ 0,   zᵀw = 0
+//! ```
+//!
+//! (seed 000, last section). [`Lcp`] holds (M, q); [`LcpSolution`] carries the
+//! answer, its [`Status`], its [`Residuals`] and the work [`Counters`] of the
+//! solver that produced it. The status says what the solve found; an
+//! [`crate::Error`] says why a solve could not run at all.
+
+use serde::{Deserialize, Serialize};
+
+/// One LCP(q, M) of dimension n, M dense and row-major.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Lcp {
+    /// Row-major n×n matrix: `m[i * n + j]` is M_ij.
+    pub m: Vec<f64>,
+    /// Length n.
+    pub q: Vec<f64>,
+}
+
+impl Lcp {
+    /// Builds an LCP from a row-major matrix and q, checking shapes and finiteness.
+    pub fn new(m: Vec<f64>, q: Vec<f64>) -> Result<Self, crate::Error> {
+        let lcp = Lcp { m, q };
+        lcp.validate("problem")?;
+        Ok(lcp)
+    }
+
+    /// Builds an LCP from rows, as the JSON batch format stores it.
+    pub fn from_rows(rows: &[Vec<f64>], q: Vec<f64>) -> Result<Self, crate::Error> {
+        let n = q.len();
+        for (i, row) in rows.iter().enumerate() {
+            if row.len() != n {
+                return Err(crate::Error::invalid(
+                    "problem",
+                    format!("M[{i}]"),
+                    format!("row has {} entries, q has {n}", row.len()),
+                ));
+            }
+        }
+        if rows.len() != n {
+            return Err(crate::Error::invalid(
+                "problem",
+                "M",
+                format!("{} rows, q has {n} entries", rows.len()),
+            ));
+        }
+        Lcp::new(rows.concat(), q)
+    }
+
+    /// Dimension n.
+    #[inline]
+    pub fn n(&self) -> usize {
+        self.q.len()
+    }
+
+    /// M_ij.
+    #[inline]
+    pub fn at(&self, i: usize, j: usize) -> f64 {
+        self.m[i * self.n() + j]
+    }
+
+    /// Checks that M is n×n and every entry of M and q is finite. `item` names
+    /// the problem in the error message.
+    pub fn validate(&self, item: &str) -> Result<(), crate::Error> {
+        let n = self.q.len();
+        if n == 0 {
+            return Err(crate::Error::invalid(item, "q", "empty problem (n = 0)"));
+        }
+        if self.m.len() != n * n {
+            return Err(crate::Error::invalid(
+                item,
+                "M",
+                format!("has {} entries, expected n² = {}", self.m.len(), n * n),
+            ));
+        }
+        if let Some(i) = self.q.iter().position(|v| !v.is_finite()) {
+            return Err(crate::Error::invalid(
+                item,
+                format!("q[{i}]"),
+                "not a finite number",
+            ));
+        }
+        if let Some(k) = self.m.iter().position(|v| !v.is_finite()) {
+            return Err(crate::Error::invalid(
+                item,
+                format!("M[{}][{}]", k / n, k % n),
+                "not a finite number",
+            ));
+        }
+        Ok(())
+    }
+
+    /// w = M z + q.
+    pub fn w(&self, z: &[f64]) -> Vec<f64> {
+        let n = self.n();
+        (0..n)
+            .map(|i| {
+                let row = &self.m[i * n..(i + 1) * n];
+                self.q[i] + row.iter().zip(z).map(|(a, b)| a * b).sum::<f64>()
+            })
+            .collect()
+    }
+
+    /// Residuals of a candidate z (w recomputed here).
+    pub fn residuals(&self, z: &[f64]) -> Residuals {
+        Residuals::of(z, &self.w(z), &self.q)
+    }
+
+    /// Is M symmetric to a relative tolerance of 1e-12 of its largest entry?
+    pub fn is_symmetric(&self) -> bool {
+        let n = self.n();
+        let scale = self.m.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+        (0..n).all(|i| (0..i).all(|j| (self.at(i, j) - self.at(j, i)).abs() <= 1e-12 * scale))
+    }
+}
+
+/// Siconos' `lcp_compute_error`: ‖z − max(0, z − w)‖₂ / ‖q‖₂, not divided when
+/// ‖q‖₂ ≤ machine epsilon. Zero exactly when (z, w) is complementary and
+/// both are non-negative; w must be M z + q for the measure to mean anything.
+pub fn lcp_error(z: &[f64], w: &[f64], q: &[f64]) -> f64 {
+    let num = z
+        .iter()
+        .zip(w)
+        .map(|(&zi, &wi)| {
+            let d = zi - (zi - wi).max(0.0);
+            d * d
+        })
+        .sum::<f64>()
+        .sqrt();
+    let qn = q.iter().map(|v| v * v).sum::<f64>().sqrt();
+    if qn > f64::EPSILON {
+        num / qn
+    } else {
+        num
+    }
+}
+
+/// How far a (z, w) pair is from solving the LCP, as numbers.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Residuals {
+    /// Siconos error measure, see [`lcp_error`].
+    pub error: f64,
+    /// min_i z_i (negative means z is infeasible).
+    pub min_z: f64,
+    /// min_i w_i (negative means w is infeasible).
+    pub min_w: f64,
+    /// max_i |z_i w_i|: the worst complementarity violation.
+    pub max_complementarity: f64,
+}
+
+impl Residuals {
+    /// Residuals of z against w (w = M z + q) and q.
+    pub fn of(z: &[f64], w: &[f64], q: &[f64]) -> Self {
+        Residuals {
+            error: lcp_error(z, w, q),
+            min_z: z.iter().copied().fold(f64::INFINITY, f64::min),
+            min_w: w.iter().copied().fold(f64::INFINITY, f64::min),
+            max_complementarity: z
+                .iter()
+                .zip(w)
+                .map(|(a, b)| (a * b).abs())
+                .fold(0.0, f64::max),
+        }
+    }
+}
+
+/// What a solve found. Kept apart from [`crate::Error`], which says why a
+/// solve could not run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Status {
+    /// A solution was found (and, when all bases were visited, it is the only one).
+    Solved,
+    /// Exhaustive enumeration found more than one solution; the solution
+    /// carries the chosen one and [`LcpSolution::solution_set`] describes them all.
+    MultipleSolutions,
+    /// Enumeration visited every complementary basis and none is feasible:
+    /// the LCP has no solution reachable by a nonsingular basis.
+    NoSolution,
+    /// Lemke's algorithm ended on a secondary ray: it could not find a
+    /// solution (for copositive-plus M this proves there is none).
+    RayTermination,
+    /// An iterative solver (PGS) or a pivot cap (Lemke) stopped before the
+    /// tolerance was met; z is the last iterate.
+    NotConverged,
+    /// The problem could not be posed (a contact island or matrix failed a check).
+    InvalidInput,
+}
+
+impl Status {
+    /// True when z is a solution the caller can use.
+    pub fn is_solution(self) -> bool {
+        matches!(self, Status::Solved | Status::MultipleSolutions)
+    }
+
+    /// Every status, in a fixed order (for tables and per-status counts).
+    pub const ALL: [Status; 6] = [
+        Status::Solved,
+        Status::MultipleSolutions,
+        Status::NoSolution,
+        Status::RayTermination,
+        Status::NotConverged,
+        Status::InvalidInput,
+    ];
+
+    /// The snake_case name used in JSON output.
+    pub fn name(self) -> &'static str {
+        match self {
+            Status::Solved => "solved",
+            Status::MultipleSolutions => "multiple_solutions",
+            Status::NoSolution => "no_solution",
+            Status::RayTermination => "ray_termination",
+            Status::NotConverged => "not_converged",
+            Status::InvalidInput => "invalid_input",
+        }
+    }
+}
+
+impl std::fmt::Display for Status {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// The whole solution set, as far as exhaustive enumeration can tell.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case", tag = "kind")]
+pub enum SolutionSet {
+    /// No feasible complementary basis.
+    Empty,
+    /// Finitely many isolated solutions (1 means unique).
+    Isolated { count: usize },
+    /// A segment (or polytope) of solutions, bounded.
+    BoundedContinuum,
+    /// A ray of solutions: z + t d solves the LCP for every t ≥ 0.
+    UnboundedContinuum,
+}
+
+/// Work a solver did, for comparing solvers and for benchmarks.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Counters {
+    /// Complementary bases whose principal system was formed (enumeration).
+    pub bases_visited: u64,
+    /// Bases skipped because their principal submatrix is singular (enumeration).
+    pub singular_bases: u64,
+    /// Pivots (Lemke).
+    pub pivots: u64,
+    /// Sweeps (PGS).
+    pub iterations: u64,
+}
+
+/// One valid complementary basis and the solution it gives.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct BasisSolution {
+    /// Bit i set: z_i is basic (contact i carries impulse), w_i = 0.
+    pub basis: u32,
+    pub z: Vec<f64>,
+    pub w: Vec<f64>,
+}
+
+/// The result of one LCP solve.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct LcpSolution {
+    pub status: Status,
+    /// The impulses (or the last iterate when the status is not a solution;
+    /// zeros when nothing was found).
+    pub z: Vec<f64>,
+    /// w = M z + q for the z above.
+    pub w: Vec<f64>,
+    pub residuals: Residuals,
+    pub counters: Counters,
+    /// The complementary basis that gave z (bit i: z_i basic), when the
+    /// solver works with bases and found one.
+    pub basis: Option<u32>,
+    /// Every valid basis, when enumeration was asked for all solutions.
+    #[serde(skip_serializing_if = "Vec::is_empty", default)]
+    pub all_bases: Vec<BasisSolution>,
+    /// Distinct solutions among `all_bases` (same z to a relative 1e-8).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub solution_set: Option<SolutionSet>,
+}
+
+impl LcpSolution {
+    /// A result with the given status and z, w and residuals computed from `lcp`.
+    pub fn from_z(lcp: &Lcp, status: Status, z: Vec<f64>, counters: Counters) -> Self {
+        let w = lcp.w(&z);
+        let residuals = Residuals::of(&z, &w, &lcp.q);
+        LcpSolution {
+            status,
+            z,
+            w,
+            residuals,
+            counters,
+            basis: None,
+            all_bases: Vec::new(),
+            solution_set: None,
+        }
+    }
+
+    /// Number of distinct solutions when known (None for a continuum or when
+    /// not all bases were visited).
+    pub fn solution_count(&self) -> Option<usize> {
+        match self.solution_set {
+            Some(SolutionSet::Empty) => Some(0),
+            Some(SolutionSet::Isolated { count }) => Some(count),
+            _ => None,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn error_measure_is_zero_on_a_solution_and_unscaled_for_tiny_q() {
+        // 2x2 example of seed 000: z = (4/3, 7/3), w = 0.
+        let lcp = Lcp::new(vec![2.0, 1.0, 1.0, 2.0], vec![-5.0, -6.0]).unwrap();
+        let r = lcp.residuals(&[4.0 / 3.0, 7.0 / 3.0]);
+        assert!(r.error < 1e-15, "{r:?}");
+        // q = 0: the measure is not divided.
+        assert_eq!(lcp_error(&[1.0], &[1.0], &[0.0]), 1.0);
+        // z = 1, w = -1: z - max(0, 2) = -1, |q| = 1.
+        assert_eq!(lcp_error(&[1.0], &[-1.0], &[-1.0]), 1.0);
+    }
+
+    #[test]
+    fn shapes_and_non_finite_entries_are_named() {
+        let e = Lcp::new(vec![1.0, 2.0, 3.0], vec![1.0, 2.0]).unwrap_err();
+        assert!(e.to_string().contains("M"), "{e}");
+        let e = Lcp::new(vec![1.0, f64::NAN, 0.0, 1.0], vec![1.0, 2.0]).unwrap_err();
+        assert!(e.to_string().contains("M[0][1]"), "{e}");
+        let e = Lcp::from_rows(&[vec![1.0], vec![1.0, 2.0]], vec![1.0, 2.0]).unwrap_err();
+        assert!(e.to_string().contains("M[0]"), "{e}");
+    }
+}

@@ -1,0 +1,341 @@
+//! Bodies and contacts: the scene a user hands in, and its checks.
+//!
+//! Conventions (seed 000): the normal n of a contact points from body b to
+//! body a; r = contact point − centre of mass; a point's velocity is
+//! ṗ = v + ω × r; the impulse is +z n on a and −z n on b. Inverse inertia is
+//! given in the world frame. A body with inv_mass 0 and inv_inertia 0 is
+//! static; a contact's `b` may be absent, meaning the static world.
+
+use glam::{DMat3, DVec3};
+use serde::{Deserialize, Serialize};
+
+use crate::Error;
+
+/// A rigid body at the instant of the impact.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Body {
+    /// 1/m; 0 for a body that cannot translate.
+    pub inv_mass: f64,
+    /// I⁻¹ in the world frame, rows; symmetric positive semidefinite.
+    pub inv_inertia: [[f64; 3]; 3],
+    /// Centre of mass.
+    pub position: [f64; 3],
+    pub velocity: [f64; 3],
+    pub angular_velocity: [f64; 3],
+}
+
+/// A contact point between body `a` and body `b` (or the static world).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Contact {
+    pub a: usize,
+    pub b: Option<usize>,
+    pub point: [f64; 3],
+    /// Unit normal, pointing from b to a.
+    pub normal: [f64; 3],
+    /// Coefficient of restitution ε ∈ [0, 1].
+    pub restitution: f64,
+}
+
+/// One simulation instance at one instant.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Scene {
+    pub bodies: Vec<Body>,
+    pub contacts: Vec<Contact>,
+}
+
+/// Relative tolerance on |n| = 1 (so that normals written with 7 digits pass).
+pub const NORMAL_TOL: f64 = 1e-6;
+
+impl Body {
+    /// A body at rest with mass `mass` (∞ for static) and a diagonal inverse inertia.
+    pub fn new(inv_mass: f64, inv_inertia_diag: [f64; 3], position: [f64; 3]) -> Self {
+        let d = inv_inertia_diag;
+        Body {
+            inv_mass,
+            inv_inertia: [[d[0], 0.0, 0.0], [0.0, d[1], 0.0], [0.0, 0.0, d[2]]],
+            position,
+            velocity: [0.0; 3],
+            angular_velocity: [0.0; 3],
+        }
+    }
+
+    /// A static body (inv_mass 0, inv_inertia 0) at `position`.
+    pub fn fixed(position: [f64; 3]) -> Self {
+        Body::new(0.0, [0.0; 3], position)
+    }
+
+    /// I⁻¹ as a glam matrix.
+    pub fn inv_inertia_mat(&self) -> DMat3 {
+        DMat3::from_cols_array_2d(&self.inv_inertia).transpose()
+    }
+
+    pub fn position(&self) -> DVec3 {
+        DVec3::from_array(self.position)
+    }
+    pub fn velocity(&self) -> DVec3 {
+        DVec3::from_array(self.velocity)
+    }
+    pub fn angular_velocity(&self) -> DVec3 {
+        DVec3::from_array(self.angular_velocity)
+    }
+
+    /// True when no impulse can move this body.
+    pub fn is_static(&self) -> bool {
+        self.inv_mass == 0.0 && self.inv_inertia.iter().flatten().all(|&v| v == 0.0)
+    }
+
+    /// Checks the body's fields; `item` names it in errors.
+    pub fn validate(&self, item: &str) -> Result<(), Error> {
+        if !self.inv_mass.is_finite() {
+            return Err(Error::invalid(item, "inv_mass", "not a finite number"));
+        }
+        if self.inv_mass < 0.0 {
+            return Err(Error::invalid(
+                item,
+                "inv_mass",
+                format!("{} is negative", self.inv_mass),
+            ));
+        }
+        for (name, v) in [
+            ("position", &self.position),
+            ("velocity", &self.velocity),
+            ("angular_velocity", &self.angular_velocity),
+        ] {
+            if let Some(i) = v.iter().position(|x| !x.is_finite()) {
+                return Err(Error::invalid(
+                    item,
+                    format!("{name}[{i}]"),
+                    "not a finite number",
+                ));
+            }
+        }
+        let a = &self.inv_inertia;
+        for i in 0..3 {
+            for j in 0..3 {
+                if !a[i][j].is_finite() {
+                    return Err(Error::invalid(
+                        item,
+                        format!("inv_inertia[{i}][{j}]"),
+                        "not a finite number",
+                    ));
+                }
+            }
+        }
+        let scale = a.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
+        let tol = 1e-9 * scale;
+        for i in 0..3 {
+            for j in 0..i {
+                if (a[i][j] - a[j][i]).abs() > tol {
+                    return Err(Error::invalid(
+                        item,
+                        "inv_inertia",
+                        format!(
+                            "not symmetric: [{i}][{j}] = {} but [{j}][{i}] = {}",
+                            a[i][j], a[j][i]
+                        ),
+                    ));
+                }
+            }
+        }
+        // Positive semidefinite: every principal minor ≥ 0 (to rounding).
+        let minors = [
+            ("diagonal entry [0][0]", a[0][0], scale),
+            ("diagonal entry [1][1]", a[1][1], scale),
+            ("diagonal entry [2][2]", a[2][2], scale),
+            (
+                "minor {0,1}",
+                a[0][0] * a[1][1] - a[0][1] * a[1][0],
+                scale * scale,
+            ),
+            (
+                "minor {0,2}",
+                a[0][0] * a[2][2] - a[0][2] * a[2][0],
+                scale * scale,
+            ),
+            (
+                "minor {1,2}",
+                a[1][1] * a[2][2] - a[1][2] * a[2][1],
+                scale * scale,
+            ),
+            (
+                "determinant",
+                self.inv_inertia_mat().determinant(),
+                scale * scale * scale,
+            ),
+        ];
+        for (what, v, s) in minors {
+            if v < -1e-9 * s {
+                return Err(Error::invalid(
+                    item,
+                    "inv_inertia",
+                    format!("not positive semidefinite: {what} is {v}"),
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+impl Contact {
+    pub fn point(&self) -> DVec3 {
+        DVec3::from_array(self.point)
+    }
+    pub fn normal(&self) -> DVec3 {
+        DVec3::from_array(self.normal)
+    }
+
+    /// Checks the contact against the scene's bodies; `item` names it in errors.
+    pub fn validate(&self, item: &str, bodies: &[Body]) -> Result<(), Error> {
+        let nb = bodies.len();
+        if self.a >= nb {
+            return Err(Error::invalid(
+                item,
+                "a",
+                format!("body index {} out of range (scene has {nb} bodies)", self.a),
+            ));
+        }
+        if let Some(b) = self.b {
+            if b >= nb {
+                return Err(Error::invalid(
+                    item,
+                    "b",
+                    format!("body index {b} out of range (scene has {nb} bodies)"),
+                ));
+            }
+            if b == self.a {
+                return Err(Error::invalid(item, "b", format!("same body as a ({b})")));
+            }
+        }
+        if let Some(i) = self.point.iter().position(|x| !x.is_finite()) {
+            return Err(Error::invalid(
+                item,
+                format!("point[{i}]"),
+                "not a finite number",
+            ));
+        }
+        if let Some(i) = self.normal.iter().position(|x| !x.is_finite()) {
+            return Err(Error::invalid(
+                item,
+                format!("normal[{i}]"),
+                "not a finite number",
+            ));
+        }
+        let len = self.normal().length();
+        if len == 0.0 {
+            return Err(Error::invalid(item, "normal", "zero vector"));
+        }
+        if (len - 1.0).abs() > NORMAL_TOL {
+            return Err(Error::invalid(
+                item,
+                "normal",
+                format!("not a unit vector (length {len})"),
+            ));
+        }
+        if !self.restitution.is_finite() || !(0.0..=1.0).contains(&self.restitution) {
+            return Err(Error::invalid(
+                item,
+                "restitution",
+                format!("{} is not in [0, 1]", self.restitution),
+            ));
+        }
+        let a_static = bodies[self.a].is_static();
+        let b_static = self.b.is_none_or(|b| bodies[b].is_static());
+        if a_static && b_static {
+            return Err(Error::invalid(
+                item,
+                "a",
+                "neither body of the contact can move (both static)",
+            ));
+        }
+        Ok(())
+    }
+}
+
+impl Scene {
+    /// Checks every body and contact; `item` names the scene in errors
+    /// (e.g. "scene 3"). The first failure is returned.
+    pub fn validate(&self, item: &str) -> Result<(), Error> {
+        for (i, b) in self.bodies.iter().enumerate() {
+            b.validate(&format!("{item}, body {i}"))?;
+        }
+        for (i, c) in self.contacts.iter().enumerate() {
+            c.validate(&format!("{item}, contact {i}"), &self.bodies)?;
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ball() -> Body {
+        Body::new(1.0, [2.5; 3], [0.0, 1.0, 0.0])
+    }
+
+    fn ground_contact() -> Contact {
+        Contact {
+            a: 0,
+            b: None,
+            point: [0.0; 3],
+            normal: [0.0, 1.0, 0.0],
+            restitution: 0.5,
+        }
+    }
+
+    #[test]
+    fn bad_fields_are_named() {
+        let mut b = ball();
+        b.inv_mass = -1.0;
+        assert!(b
+            .validate("body 0")
+            .unwrap_err()
+            .to_string()
+            .contains("inv_mass"));
+        let mut b = ball();
+        b.inv_inertia[0][1] = 1.0;
+        let e = b.validate("body 0").unwrap_err().to_string();
+        assert!(e.contains("not symmetric"), "{e}");
+        let mut b = ball();
+        b.inv_inertia[2][2] = -1.0;
+        assert!(b
+            .validate("body 0")
+            .unwrap_err()
+            .to_string()
+            .contains("semidefinite"));
+        let mut b = ball();
+        b.velocity[1] = f64::NAN;
+        assert!(b
+            .validate("body 0")
+            .unwrap_err()
+            .to_string()
+            .contains("velocity[1]"));
+
+        let s = |c: Contact| Scene {
+            bodies: vec![ball()],
+            contacts: vec![c],
+        };
+        let mut c = ground_contact();
+        c.normal = [0.0; 3];
+        assert!(s(c)
+            .validate("scene 0")
+            .unwrap_err()
+            .to_string()
+            .contains("zero vector"));
+        let mut c = ground_contact();
+        c.normal = [0.0, 2.0, 0.0];
+        assert!(s(c)
+            .validate("scene 0")
+            .unwrap_err()
+            .to_string()
+            .contains("unit"));
+        let mut c = ground_contact();
+        c.b = Some(7);
+        let e = s(c).validate("scene 0").unwrap_err().to_string();
+        assert!(
+            e.contains("scene 0, contact 0") && e.contains("`b`") && e.contains("out of range"),
+            "{e}"
+        );
+        assert!(s(ground_contact()).validate("scene 0").is_ok());
+    }
+}
