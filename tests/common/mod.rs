@@ -1,0 +1,163 @@
+//! Helpers shared by the integration tests: where the conformance data lies,
+//! solver shorthands, and the scale-aware comparisons the tests report with.
+#![allow(dead_code)]
+
+use std::path::PathBuf;
+
+use lcpbatch::cpu::enumeration::EnumerationSettings;
+use lcpbatch::{solve, Lcp, LcpSolution, Solver, SolverSettings};
+
+/// The conformance folder: `$LCPBATCH_CONFORMANCE`, else `../shared/conformance`
+/// beside the crate. `None` (with a line on stderr) when it is absent, so
+/// that a checkout without the shared data skips these tests.
+pub fn conformance_dir() -> Option<PathBuf> {
+    let dir = std::env::var_os("LCPBATCH_CONFORMANCE")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| {
+            PathBuf::from(concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/../shared/conformance"
+            ))
+        });
+    if dir.is_dir() {
+        Some(dir)
+    } else {
+        eprintln!(
+            "conformance data not found at {} (set LCPBATCH_CONFORMANCE); skipping",
+            dir.display()
+        );
+        None
+    }
+}
+
+/// The Siconos folder inside the conformance data, when present.
+pub fn siconos_dir() -> Option<PathBuf> {
+    let dir = conformance_dir()?.join("siconos");
+    if dir.is_dir() {
+        Some(dir)
+    } else {
+        eprintln!("{} not found; skipping", dir.display());
+        None
+    }
+}
+
+/// Default settings of `solver`.
+pub fn settings(solver: Solver) -> SolverSettings {
+    SolverSettings::with_solver(solver)
+}
+
+/// Enumeration visiting every basis.
+pub fn all_solutions_settings() -> SolverSettings {
+    SolverSettings {
+        solver: Solver::Enum,
+        enumeration: EnumerationSettings {
+            all_solutions: true,
+            ..Default::default()
+        },
+        ..Default::default()
+    }
+}
+
+/// Solves with `solver`'s default settings; panics on an `Error` (the tests
+/// only hand solvers problems they accept).
+pub fn run(lcp: &Lcp, solver: Solver) -> LcpSolution {
+    solve(lcp, &settings(solver)).unwrap_or_else(|e| panic!("{}: {e}", solver.name()))
+}
+
+pub const SOLVERS: [Solver; 3] = [Solver::Enum, Solver::Lemke, Solver::Pgs];
+
+/// ‖v‖∞.
+pub fn inf_norm(v: &[f64]) -> f64 {
+    v.iter().fold(0.0f64, |m, x| m.max(x.abs()))
+}
+
+/// max_i |a_i − b_i|.
+pub fn max_diff(a: &[f64], b: &[f64]) -> f64 {
+    assert_eq!(a.len(), b.len());
+    a.iter()
+        .zip(b)
+        .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()))
+}
+
+/// ‖M‖∞: the largest absolute row sum.
+pub fn matrix_inf_norm(lcp: &Lcp) -> f64 {
+    let n = lcp.n();
+    (0..n)
+        .map(|i| (0..n).map(|j| lcp.at(i, j).abs()).sum::<f64>())
+        .fold(0.0, f64::max)
+}
+
+/// The scale of w for solutions of size up to `zmax`: ‖q‖∞ + ‖M‖∞·zmax, the
+/// size of the terms whose sum is w. Differences in w are measured against it.
+pub fn w_scale(lcp: &Lcp, zmax: f64) -> f64 {
+    (inf_norm(&lcp.q) + matrix_inf_norm(lcp) * zmax).max(f64::MIN_POSITIVE)
+}
+
+/// Relative difference of two w vectors of `lcp` whose z are `za`, `zb`:
+/// max|wa − wb| / (‖q‖∞ + ‖M‖∞ · max(‖za‖∞, ‖zb‖∞)).
+pub fn w_rel_diff(lcp: &Lcp, za: &[f64], wa: &[f64], zb: &[f64], wb: &[f64]) -> f64 {
+    max_diff(wa, wb) / w_scale(lcp, inf_norm(za).max(inf_norm(zb)))
+}
+
+/// Relative difference of two z vectors: max|za − zb| / max(‖za‖∞, ‖zb‖∞)
+/// (0 when both are zero).
+pub fn z_rel_diff(za: &[f64], zb: &[f64]) -> f64 {
+    let s = inf_norm(za).max(inf_norm(zb));
+    if s == 0.0 {
+        0.0
+    } else {
+        max_diff(za, zb) / s
+    }
+}
+
+/// Is the symmetric part of M positive definite, with the smallest Cholesky
+/// pivot at least `rel_tol` times the largest diagonal entry? Then the LCP's
+/// solution is unique. (For the symmetric matrices of contact islands this is
+/// M itself.)
+pub fn is_positive_definite(lcp: &Lcp, rel_tol: f64) -> bool {
+    let n = lcp.n();
+    let mut a: Vec<f64> = (0..n * n)
+        .map(|k| 0.5 * (lcp.m[k] + lcp.at(k % n, k / n)))
+        .collect();
+    let dmax = (0..n).map(|i| a[i * n + i]).fold(0.0f64, f64::max);
+    if !(dmax > 0.0) {
+        return false;
+    }
+    for j in 0..n {
+        let mut d = a[j * n + j];
+        for k in 0..j {
+            d -= a[j * n + k] * a[j * n + k];
+        }
+        if !(d > rel_tol * dmax) {
+            return false;
+        }
+        let l = d.sqrt();
+        a[j * n + j] = l;
+        for i in j + 1..n {
+            let mut s = a[i * n + j];
+            for k in 0..j {
+                s -= a[i * n + k] * a[j * n + k];
+            }
+            a[i * n + j] = s / l;
+        }
+    }
+    true
+}
+
+/// A directory under the system temp dir, unique to this process and `tag`,
+/// created empty.
+pub fn temp_dir(tag: &str) -> PathBuf {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    static COUNTER: AtomicUsize = AtomicUsize::new(0);
+    let nanos = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map(|d| d.as_nanos())
+        .unwrap_or(0);
+    let dir = std::env::temp_dir().join(format!(
+        "lcpbatch-test-{tag}-{}-{}-{nanos}",
+        std::process::id(),
+        COUNTER.fetch_add(1, Ordering::Relaxed)
+    ));
+    std::fs::create_dir_all(&dir).expect("create temp dir");
+    dir
+}
