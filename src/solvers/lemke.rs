@@ -9,6 +9,7 @@
 //! column has no positive entry (a secondary ray: Lemke gives up).
 
 use crate::lcp::{Counters, Lcp, LcpSolution, Status};
+use crate::linalg::{solve_in_place, PIVOT_TOL};
 
 /// Settings of Lemke's algorithm.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -64,9 +65,7 @@ pub fn lemke(lcp: &Lcp, settings: &LemkeSettings) -> LcpSolution {
 
     // First pivot: z0 enters at the value that makes the most negative q_i zero.
     // Lexicographic minimum of (q_i, row i of B⁻¹) over all rows.
-    let first = (0..n)
-        .min_by(|&a, &b| lex_cmp(&t, cols, n, rhs, a, b, -1.0, -1.0))
-        .expect("n ≥ 1");
+    let first = first_row(&t, cols, n);
     pivot(&mut t, cols, n, first, z0);
     counters.pivots += 1;
     let mut entering = complement(basic[first], n);
@@ -84,33 +83,7 @@ pub fn lemke(lcp: &Lcp, settings: &LemkeSettings) -> LcpSolution {
         if candidates.is_empty() || colmax == 0.0 {
             break Status::RayTermination;
         }
-        // Minimum ratio rhs_i / T_ie, lexicographically; z0 leaves on a tie.
-        let mut best = candidates[0];
-        for &i in &candidates[1..] {
-            let ord = lex_cmp(
-                &t,
-                cols,
-                n,
-                rhs,
-                i,
-                best,
-                t[i * cols + entering],
-                t[best * cols + entering],
-            );
-            if ord == std::cmp::Ordering::Less
-                || (ord == std::cmp::Ordering::Equal && basic[i] == z0)
-            {
-                best = i;
-            }
-        }
-        if let Some(&zr) = candidates.iter().find(|&&i| basic[i] == z0) {
-            // Prefer z0 when its ratio ties the minimum.
-            let rz = t[zr * cols + rhs] / t[zr * cols + entering];
-            let rb = t[best * cols + rhs] / t[best * cols + entering];
-            if rz <= rb * (1.0 + 1e-14) + 1e-300 {
-                best = zr;
-            }
-        }
+        let best = leaving_row(&t, cols, n, entering, &candidates, |i| basic[i] == z0);
         pivot(&mut t, cols, n, best, entering);
         counters.pivots += 1;
         let leaving = basic[best];
@@ -122,52 +95,105 @@ pub fn lemke(lcp: &Lcp, settings: &LemkeSettings) -> LcpSolution {
     };
 
     let mut z = vec![0.0; n];
-    let mut mask = 0u32;
+    let mut support = Vec::new();
     for (i, &v) in basic.iter().enumerate() {
         if (n..2 * n).contains(&v) {
             z[v - n] = t[i * cols + rhs].max(0.0);
-            if v - n < 32 {
-                mask |= 1 << (v - n);
-            }
+            support.push(v - n);
         }
     }
+    support.sort_unstable();
     let mut sol = LcpSolution::from_z(lcp, status, z, counters);
-    if status == Status::Solved && n <= 32 {
-        sol.basis = Some(mask);
+    if status == Status::Solved {
+        if let Some(polished) = polish(lcp, &support) {
+            let better = LcpSolution::from_z(lcp, status, polished, counters);
+            if better.residuals.error <= sol.residuals.error {
+                sol = better;
+            }
+        }
+        if n <= 32 {
+            sol.basis = Some(support.iter().fold(0u32, |m, &i| m | 1 << i));
+        }
     }
     sol
 }
 
-/// Lexicographic comparison of rows a and b of [rhs | B⁻¹], each divided by the
-/// magnitude of its entry in the pivot column (da, db ≠ 0). For the first pivot
-/// da = db = −1: the order of (q_i, row i of I).
-#[allow(clippy::too_many_arguments)]
-fn lex_cmp(
+/// Re-solves the final basis from the original data, M_SS z_S = −q_S: the
+/// tableau's values carry the rounding of every pivot, this solve only its
+/// own. None when M_SS is singular. Negative entries are clamped to 0; the
+/// caller keeps whichever z has the smaller error.
+fn polish(lcp: &Lcp, support: &[usize]) -> Option<Vec<f64>> {
+    let k = support.len();
+    let mut a: Vec<f64> = support
+        .iter()
+        .flat_map(|&i| support.iter().map(move |&j| lcp.at(i, j)))
+        .collect();
+    let mut x: Vec<f64> = support.iter().map(|&i| -lcp.q[i]).collect();
+    if !solve_in_place(&mut a, &mut x, k, PIVOT_TOL) {
+        return None;
+    }
+    let mut z = vec![0.0; lcp.n()];
+    for (&i, &v) in support.iter().zip(&x) {
+        z[i] = v.max(0.0);
+    }
+    Some(z)
+}
+
+/// The lexicographic minimum-ratio test: among `candidates` (rows whose
+/// entry d_i in the entering column is positive), the row minimising
+/// (rhs_i, B⁻¹_i0, B⁻¹_i1, …) / d_i lexicographically. B⁻¹ is the tableau's
+/// w-columns. Rows of B⁻¹ are linearly independent, so exactly one row
+/// survives, which is what keeps Lemke from cycling on degenerate problems.
+///
+/// Comparisons are exact: a tolerance on ties (tried: 1e-14 to 1e-9 relative
+/// to the column) merges rows whose keys truly differ, breaks the strict
+/// lexicographic order and made Lemke cycle on Siconos' lcp_tobenna; exact
+/// comparison solves it in 179 pivots. rhs values that rounding made slightly
+/// negative count as 0. When z0 is among the rows tied on the ratio itself,
+/// z0 leaves: that ends the algorithm with a solution.
+fn leaving_row(
     t: &[f64],
     cols: usize,
     n: usize,
-    rhs: usize,
-    a: usize,
-    b: usize,
-    da: f64,
-    db: f64,
-) -> std::cmp::Ordering {
-    let (sa, sb) = (da.abs(), db.abs());
-    let ra = t[a * cols + rhs] / sa;
-    let rb = t[b * cols + rhs] / sb;
-    let tie = 1e-12 * ra.abs().max(rb.abs()).max(f64::MIN_POSITIVE);
-    if (ra - rb).abs() > tie {
-        return ra.partial_cmp(&rb).unwrap_or(std::cmp::Ordering::Equal);
-    }
-    for j in 0..n {
-        let xa = t[a * cols + j] / sa;
-        let xb = t[b * cols + j] / sb;
-        let tie = 1e-12 * xa.abs().max(xb.abs());
-        if (xa - xb).abs() > tie {
-            return xa.partial_cmp(&xb).unwrap_or(std::cmp::Ordering::Equal);
+    entering: usize,
+    candidates: &[usize],
+    is_z0: impl Fn(usize) -> bool,
+) -> usize {
+    let rhs = cols - 1;
+    let mut tied: Vec<usize> = candidates.to_vec();
+    // Column -1 is rhs, then the n columns of B⁻¹.
+    for col in std::iter::once(rhs).chain(0..n) {
+        let key = |i: usize| {
+            let v = t[i * cols + col];
+            let v = if col == rhs { v.max(0.0) } else { v };
+            v / t[i * cols + entering]
+        };
+        let min = tied.iter().map(|&i| key(i)).fold(f64::INFINITY, f64::min);
+        tied.retain(|&i| key(i) <= min);
+        if col == rhs {
+            if let Some(&z) = tied.iter().find(|&&i| is_z0(i)) {
+                return z;
+            }
+        }
+        if tied.len() == 1 {
+            break;
         }
     }
-    std::cmp::Ordering::Equal
+    tied[0]
+}
+
+/// The first leaving row: the lexicographic minimum of (q_i, row i of I), i.e.
+/// the most negative q_i, the largest index among exact ties (which keeps
+/// every row lexicographically positive after the pivot).
+fn first_row(t: &[f64], cols: usize, n: usize) -> usize {
+    let rhs = cols - 1;
+    let min = (0..n)
+        .map(|i| t[i * cols + rhs])
+        .fold(f64::INFINITY, f64::min);
+    (0..n)
+        .rev()
+        .find(|&i| t[i * cols + rhs] == min)
+        .expect("n ≥ 1")
 }
 
 /// Gauss–Jordan pivot on (row r, column c).
