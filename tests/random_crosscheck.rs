@@ -1,0 +1,219 @@
+//! Randomized cross-checks with fixed seeds: enumeration against Lemke on
+//! 10,000 physical islands, and the readers against random and mutated input.
+//!
+//! Agreement is measured (tests/common) as
+//!
+//! ```text
+//! dw = max_i |w_enum,i − w_lemke,i| / (‖q‖∞ + ‖M‖∞ · max(‖z_enum‖∞, ‖z_lemke‖∞))
+//! dz = max_i |z_enum,i − z_lemke,i| / max(‖z_enum‖∞, ‖z_lemke‖∞)
+//! ```
+//!
+//! with dw ≤ 1e-9 on every island (w is unique for symmetric PSD M) and
+//! dz ≤ 1e-9 where the solution is unique (M positive definite: a Cholesky
+//! factorisation whose every pivot exceeds 1e-8 of the largest diagonal
+//! entry), and the Siconos error of both ≤ 1e-12.
+
+mod common;
+
+use common::{is_positive_definite, run, w_rel_diff, z_rel_diff};
+use lcpbatch::generate::{random_island, Rng};
+use lcpbatch::io::parse_json;
+use lcpbatch::io::siconos::parse_dat;
+use lcpbatch::pipeline::build;
+use lcpbatch::{Solver, Status};
+use proptest::prelude::*;
+
+const ISLANDS: usize = 10_000;
+const MAX_N: usize = 10;
+const MASS_RATIO: f64 = 100.0;
+const TOL: f64 = 1e-9;
+const ERROR_TOL: f64 = 1e-12;
+/// Cholesky pivots above this (relative to the largest diagonal entry) count
+/// as positive definite: z is then unique and compared too.
+const PD_TOL: f64 = 1e-8;
+
+#[test]
+fn enumeration_and_lemke_agree_on_random_islands() {
+    let mut rng = Rng::new(0x5EED_2026);
+    let (mut max_dw, mut max_dz) = (0.0f64, 0.0f64);
+    let (mut max_err_enum, mut max_err_lemke) = (0.0f64, 0.0f64);
+    let mut unique = 0;
+    let mut separating = 0;
+    let mut failures = Vec::new();
+    for k in 0..ISLANDS {
+        let n = 1 + k % MAX_N;
+        let scene = random_island(&mut rng, n, MASS_RATIO);
+        let (islands, _, lcps) = build(&scene, "island").expect("a valid scene");
+        assert_eq!(islands.len(), 1, "random_island makes one island");
+        let lcp = &lcps[0];
+        assert_eq!(lcp.n(), n);
+        let e = run(lcp, Solver::Enum);
+        let l = run(lcp, Solver::Lemke);
+        let pd = is_positive_definite(lcp, PD_TOL);
+        let dw = w_rel_diff(lcp, &e.z, &e.w, &l.z, &l.w);
+        let dz = z_rel_diff(&e.z, &l.z);
+        if e.z.iter().all(|&v| v == 0.0) {
+            separating += 1;
+        }
+        let ok = e.status == Status::Solved
+            && l.status == Status::Solved
+            && e.residuals.error <= ERROR_TOL
+            && l.residuals.error <= ERROR_TOL
+            && dw <= TOL
+            && (!pd || dz <= TOL);
+        if !ok {
+            failures.push(format!(
+                "island {k} (n = {n}, pd = {pd}): enum {} err {:.2e} z {:?} basis {:?}; lemke {} err {:.2e} z {:?} basis {:?}; dw {dw:.2e} dz {dz:.2e}\n  M = {:?}\n  q = {:?}",
+                e.status, e.residuals.error, e.z, e.basis, l.status, l.residuals.error, l.z, l.basis, lcp.m, lcp.q
+            ));
+            continue;
+        }
+        max_dw = max_dw.max(dw);
+        max_err_enum = max_err_enum.max(e.residuals.error);
+        max_err_lemke = max_err_lemke.max(l.residuals.error);
+        if pd {
+            unique += 1;
+            max_dz = max_dz.max(dz);
+        }
+    }
+    eprintln!(
+        "{ISLANDS} islands (n = 1..{MAX_N}, mass ratio {MASS_RATIO}): {unique} positive definite, \
+         {separating} with z = 0; max dw {max_dw:.2e}, max dz (unique) {max_dz:.2e}, \
+         max error enum {max_err_enum:.2e}, lemke {max_err_lemke:.2e}; {} failures",
+        failures.len()
+    );
+    for f in failures.iter().take(5) {
+        eprintln!("{f}");
+    }
+    assert!(failures.is_empty(), "{} islands failed", failures.len());
+    // The check must not be vacuous: most islands have a unique solution,
+    // and most need an impulse.
+    assert!(unique > ISLANDS / 2, "{unique}");
+    assert!(separating < ISLANDS / 2, "{separating}");
+}
+
+// ---- The readers never panic: Ok or a clear Err. ----
+
+const DAT: &str = "3\n0\n3\n3\n3 3\n2 1 0\n1 2 1\n0 1 2\n-1 -2 -3\ncomment\n";
+const DAT_BLOCK: &str = "2\n1\n2\n2\n1\n1\n1\n2\n2\n2\n1\n0 1\n0\n0\n2 1 3 4\n-5 -6";
+const JSON_BATCH: &str = r#"{"problems":[{"M":[[2,1],[1,2]],"q":[-5,-6]},{"M":[[1]],"q":[-1]}]}"#;
+const JSON_SCENE: &str = r#"{"bodies":[{"inv_mass":1,"inv_inertia":[[1,0,0],[0,1,0],[0,0,1]],"position":[0,1,0],"velocity":[0,-1,0],"angular_velocity":[0,0,0]}],"contacts":[{"a":0,"b":null,"point":[0,0,0],"normal":[0,1,0],"restitution":0.5}]}"#;
+
+/// A mutation of a valid text: replace, insert or delete a byte or a token.
+fn mutate(base: &str, ops: &[(u8, usize, u8)]) -> String {
+    let mut b = base.as_bytes().to_vec();
+    for &(op, at, byte) in ops {
+        if b.is_empty() {
+            b.push(byte);
+            continue;
+        }
+        let i = at % b.len();
+        match op % 4 {
+            0 => b[i] = byte,
+            1 => b.insert(i, byte),
+            2 => {
+                b.remove(i);
+            }
+            _ => {
+                // Replace the token at i with a tricky one.
+                const TOKENS: [&str; 10] = [
+                    "nan",
+                    "inf",
+                    "-1",
+                    "1e308",
+                    "1e400",
+                    "0",
+                    "99999999999",
+                    "",
+                    "-0",
+                    "null",
+                ];
+                let t = TOKENS[byte as usize % TOKENS.len()];
+                let start = b[..i]
+                    .iter()
+                    .rposition(|c| c.is_ascii_whitespace() || b",[]{}:".contains(c))
+                    .map_or(0, |p| p + 1);
+                let end = b[i..]
+                    .iter()
+                    .position(|c| c.is_ascii_whitespace() || b",[]{}:".contains(c))
+                    .map_or(b.len(), |p| i + p);
+                b.splice(start..end, t.bytes());
+            }
+        }
+    }
+    String::from_utf8_lossy(&b).into_owned()
+}
+
+/// A reader's answer is fine when it is Ok (with a finite problem) or an
+/// Err whose message names the file.
+fn check_dat(text: &str) {
+    match parse_dat("fuzz.dat", text) {
+        Ok(lcp) => {
+            assert!(lcp.validate("fuzz").is_ok());
+        }
+        Err(e) => {
+            let msg = e.to_string();
+            assert!(msg.contains("fuzz.dat") || msg.contains("problem"), "{msg}");
+        }
+    }
+}
+
+fn check_json(text: &str) {
+    match parse_json("fuzz.json", text) {
+        Ok(_) => {}
+        Err(e) => {
+            let msg = e.to_string();
+            assert!(!msg.is_empty());
+            assert!(
+                msg.contains("fuzz.json") || msg.contains("scene") || msg.contains("problem"),
+                "{msg}"
+            );
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 2000, failure_persistence: None, ..ProptestConfig::default() })]
+
+    #[test]
+    fn dat_reader_never_panics_on_random_bytes(bytes in proptest::collection::vec(any::<u8>(), 0..200)) {
+        check_dat(&String::from_utf8_lossy(&bytes));
+    }
+
+    #[test]
+    fn dat_reader_never_panics_on_random_tokens(tokens in proptest::collection::vec(
+        prop_oneof![(0usize..12).prop_map(|v| v.to_string()), any::<f64>().prop_map(|v| v.to_string()),
+                    Just("nan".to_string()), Just("-3".to_string())], 0..40)) {
+        check_dat(&tokens.join(" "));
+    }
+
+    #[test]
+    fn dat_reader_never_panics_on_mutated_files(
+        which in any::<bool>(),
+        ops in proptest::collection::vec((any::<u8>(), any::<usize>(), any::<u8>()), 1..6),
+    ) {
+        check_dat(&mutate(if which { DAT } else { DAT_BLOCK }, &ops));
+    }
+
+    #[test]
+    fn json_reader_never_panics_on_random_bytes(bytes in proptest::collection::vec(any::<u8>(), 0..200)) {
+        check_json(&String::from_utf8_lossy(&bytes));
+    }
+
+    #[test]
+    fn json_reader_never_panics_on_mutated_files(
+        which in any::<bool>(),
+        ops in proptest::collection::vec((any::<u8>(), any::<usize>(), any::<u8>()), 1..6),
+    ) {
+        check_json(&mutate(if which { JSON_BATCH } else { JSON_SCENE }, &ops));
+    }
+}
+
+#[test]
+fn unmutated_fuzz_bases_are_valid() {
+    // The mutation bases themselves parse, so mutations start from valid files.
+    assert!(parse_dat("t.dat", DAT).is_ok());
+    assert!(parse_dat("t.dat", DAT_BLOCK).is_ok());
+    assert!(parse_json("t.json", JSON_BATCH).is_ok());
+    assert!(parse_json("t.json", JSON_SCENE).is_ok());
+}
