@@ -17,6 +17,7 @@ pub mod linalg;
 pub mod pipeline;
 pub mod scene;
 pub mod solvers;
+pub mod stress;
 
 pub use error::Error;
 pub use lcp::{Lcp, LcpSolution, Residuals, SolutionSet, Status};

@@ -15,13 +15,20 @@
 //! Among all valid bases the chosen one has the fewest basic z (the fewest
 //! contacts carrying impulse), ties broken by the smallest mask. Bases are
 //! visited in exactly this order, so stopping at the first valid basis and
-//! visiting all of them choose the same one.
+//! visiting all of them choose the same one. Valid means feasible to a strict
+//! relative tolerance (1e-12); only when no basis is, the least infeasible
+//! basis within a relaxed tolerance (1e-9) is chosen (then every basis has
+//! been visited). A basis that rounding makes look feasible therefore never
+//! wins over one that is feasible outright: near-parallel contact normals
+//! (angle 1e-8) otherwise gave errors of 1e-9 where 1e-16 is reachable.
 //!
 //! # Tolerances (all relative, so that scaling M and q changes no verdict)
 //! - Singular: a pivot below `pivot_tol` times its column's largest entry in
 //!   M_SS (see [`crate::linalg::solve_in_place`]); such a basis is skipped.
 //! - Feasible: z_i ≥ −tol·‖z_S‖∞ and w_i ≥ −tol·(|q_i| + Σ_j |M_ij z_j|), the
-//!   second scale being the size of the terms whose cancellation gives w_i.
+//!   second scale being the size of the terms whose cancellation gives w_i;
+//!   tol is the strict or the relaxed tolerance above. The solutions counted
+//!   by `all_solutions` are the bases feasible to the relaxed tolerance.
 
 use crate::lcp::{BasisSolution, Counters, Lcp, LcpSolution, SolutionSet, Status};
 use crate::linalg::{null_space, solve_in_place, PIVOT_TOL};
@@ -38,8 +45,13 @@ pub struct EnumerationSettings {
     /// Relative pivot tolerance for singular principal submatrices
     /// (default [`PIVOT_TOL`] = 1e-13).
     pub pivot_tol: f64,
-    /// Relative feasibility tolerance (default 1e-9).
+    /// Relative feasibility tolerance of a valid basis (default 1e-12).
     pub feasibility_tol: f64,
+    /// When no basis is feasible to `feasibility_tol`, the least infeasible
+    /// basis is accepted if its infeasibility is at most this (default 1e-9).
+    /// Such bases arise where rounding decides the sign of a w_i that is
+    /// zero in exact arithmetic (degenerate or ill-conditioned islands).
+    pub relaxed_feasibility_tol: f64,
 }
 
 impl Default for EnumerationSettings {
@@ -47,7 +59,8 @@ impl Default for EnumerationSettings {
         EnumerationSettings {
             all_solutions: false,
             pivot_tol: PIVOT_TOL,
-            feasibility_tol: 1e-9,
+            feasibility_tol: 1e-12,
+            relaxed_feasibility_tol: 1e-9,
         }
     }
 }
@@ -58,6 +71,7 @@ impl EnumerationSettings {
         for (name, v) in [
             ("pivot_tol", self.pivot_tol),
             ("feasibility_tol", self.feasibility_tol),
+            ("relaxed_feasibility_tol", self.relaxed_feasibility_tol),
         ] {
             if !(0.0..1.0).contains(&v) {
                 return Err(crate::Error::invalid(
@@ -66,6 +80,13 @@ impl EnumerationSettings {
                     format!("{v} is not in [0, 1)"),
                 ));
             }
+        }
+        if self.relaxed_feasibility_tol < self.feasibility_tol {
+            return Err(crate::Error::invalid(
+                "enumeration settings",
+                "relaxed_feasibility_tol",
+                "must be at least feasibility_tol",
+            ));
         }
         Ok(())
     }
@@ -104,8 +125,9 @@ impl Scratch {
     }
 
     /// Solves basis `mask` into `self.z` (full length n, zeros off S).
-    /// Returns None when singular, else Some(feasible).
-    fn solve(&mut self, lcp: &Lcp, mask: u32, s: &EnumerationSettings) -> Option<bool> {
+    /// Returns None when M_SS is singular, else the basis' relative
+    /// infeasibility (see [`infeasibility`]); 0 means feasible.
+    fn solve(&mut self, lcp: &Lcp, mask: u32, s: &EnumerationSettings) -> Option<f64> {
         let n = lcp.n();
         let m = &lcp.m;
         let q = &lcp.q;
@@ -131,9 +153,17 @@ impl Scratch {
             self.z[i] = self.x[r];
             zmax = zmax.max(self.x[r].abs());
         }
-        let ztol = s.feasibility_tol * zmax;
-        if self.x[..k].iter().any(|&v| v < -ztol) {
-            return Some(false);
+        // Relative infeasibility: the worst of −z_i/‖z_S‖∞ and
+        // −w_i/(|q_i| + Σ_j |M_ij z_j|), the second scale being the size of the
+        // terms whose cancellation gives w_i.
+        let mut worst = 0.0f64;
+        for &v in &self.x[..k] {
+            if v < 0.0 {
+                worst = worst.max(-v / zmax);
+            }
+        }
+        if worst > s.relaxed_feasibility_tol {
+            return Some(worst);
         }
         for i in 0..n {
             if mask >> i & 1 == 1 {
@@ -145,11 +175,14 @@ impl Scratch {
                 w += t;
                 scale += t.abs();
             }
-            if w < -s.feasibility_tol * scale {
-                return Some(false);
+            if w < 0.0 {
+                worst = worst.max(-w / scale);
+                if worst > s.relaxed_feasibility_tol {
+                    return Some(worst);
+                }
             }
         }
-        Some(true)
+        Some(worst)
     }
 }
 
@@ -165,7 +198,8 @@ pub fn solve_basis(lcp: &Lcp, mask: u32, settings: &EnumerationSettings) -> Basi
     let mut s = Scratch::new();
     match s.solve(lcp, mask, settings) {
         None => BasisOutcome::Singular,
-        Some(feasible) => {
+        Some(infeasibility) => {
+            let feasible = infeasibility <= settings.relaxed_feasibility_tol;
             let z: Vec<f64> = s.z[..n].iter().map(|v| v.max(0.0)).collect();
             let w = lcp.w(&z);
             BasisOutcome::Solved { z, w, feasible }
@@ -214,26 +248,37 @@ pub fn enumerate(lcp: &Lcp, settings: &EnumerationSettings) -> Result<LcpSolutio
     }
     let mut scratch = Scratch::new();
     let mut counters = Counters::default();
+    // The first basis feasible to the strict tolerance, else the least
+    // infeasible one within the relaxed tolerance (first in order on a tie).
     let mut chosen: Option<u32> = None;
+    let mut least: Option<(f64, u32)> = None;
     let mut all = Vec::new();
     for_each_basis_in_order(n, |mask| {
         counters.bases_visited += 1;
-        match scratch.solve(lcp, mask, settings) {
-            None => counters.singular_bases += 1,
-            Some(true) => {
-                chosen.get_or_insert(mask);
-                if !settings.all_solutions {
-                    return false;
-                }
-                let z: Vec<f64> = scratch.z[..n].iter().map(|v| v.max(0.0)).collect();
-                let w = lcp.w(&z);
-                all.push(BasisSolution { basis: mask, z, w });
+        let Some(infeasibility) = scratch.solve(lcp, mask, settings) else {
+            counters.singular_bases += 1;
+            return true;
+        };
+        if infeasibility > settings.relaxed_feasibility_tol {
+            return true;
+        }
+        if infeasibility <= settings.feasibility_tol && chosen.is_none() {
+            chosen = Some(mask);
+            if !settings.all_solutions {
+                return false;
             }
-            Some(false) => {}
+        }
+        if least.is_none_or(|(v, _)| infeasibility < v) {
+            least = Some((infeasibility, mask));
+        }
+        if settings.all_solutions {
+            let z: Vec<f64> = scratch.z[..n].iter().map(|v| v.max(0.0)).collect();
+            let w = lcp.w(&z);
+            all.push(BasisSolution { basis: mask, z, w });
         }
         true
     });
-    let Some(basis) = chosen else {
+    let Some(basis) = chosen.or(least.map(|(_, mask)| mask)) else {
         let mut sol = LcpSolution::from_z(lcp, Status::NoSolution, vec![0.0; n], counters);
         if settings.all_solutions {
             sol.solution_set = Some(SolutionSet::Empty);
