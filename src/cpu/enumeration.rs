@@ -98,7 +98,7 @@ pub enum BasisOutcome {
     /// M_SS is singular to the pivot tolerance.
     Singular,
     /// The basic solution (z, w with w = M z + q recomputed in full) and
-    /// whether it is feasible to the tolerance.
+    /// whether it is feasible to the strict tolerance `feasibility_tol`.
     Solved {
         z: Vec<f64>,
         w: Vec<f64>,
@@ -199,7 +199,7 @@ pub fn solve_basis(lcp: &Lcp, mask: u32, settings: &EnumerationSettings) -> Basi
     match s.solve(lcp, mask, settings) {
         None => BasisOutcome::Singular,
         Some(infeasibility) => {
-            let feasible = infeasibility <= settings.relaxed_feasibility_tol;
+            let feasible = infeasibility <= settings.feasibility_tol;
             let z: Vec<f64> = s.z[..n].iter().map(|v| v.max(0.0)).collect();
             let w = lcp.w(&z);
             BasisOutcome::Solved { z, w, feasible }
