@@ -342,3 +342,36 @@ pub fn demo_world(rng: &mut Rng) -> Scene {
     }
     scene
 }
+
+/// Several independent random islands in one scene: `islands` calls of
+/// [`random_island`] with 1..=`max_n` contacts each, moved apart along z, and
+/// a static ground (body 0) that about half of their world contacts touch
+/// instead of the world. Static bodies couple nothing, so the scene has
+/// exactly `islands` islands, each one of the generated ones.
+pub fn random_scene(rng: &mut Rng, islands: usize, max_n: usize, mass_ratio: f64) -> Scene {
+    let mut scene = Scene {
+        bodies: vec![Body::fixed([0.0, -10.0, 0.0])],
+        contacts: Vec::new(),
+    };
+    for i in 0..islands {
+        let n = rng.int(1, max_n.max(1));
+        let island = random_island(rng, n, mass_ratio);
+        let offset = scene.bodies.len();
+        let shift = DVec3::new(0.0, 0.0, 10.0 * i as f64);
+        for mut b in island.bodies {
+            b.position = (DVec3::from_array(b.position) + shift).to_array();
+            scene.bodies.push(b);
+        }
+        for mut c in island.contacts {
+            c.a += offset;
+            c.b = match c.b {
+                Some(b) => Some(b + offset),
+                None if rng.unit() < 0.5 => Some(0),
+                None => None,
+            };
+            c.point = (DVec3::from_array(c.point) + shift).to_array();
+            scene.contacts.push(c);
+        }
+    }
+    scene
+}
