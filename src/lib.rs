@@ -15,6 +15,7 @@ pub mod islands;
 pub mod lcp;
 pub mod linalg;
 pub mod pipeline;
+pub mod prediction;
 pub mod scene;
 pub mod solvers;
 pub mod stress;

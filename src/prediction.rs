@@ -1,0 +1,218 @@
+//! Prediction: settle an island without enumeration when it does not need
+//! it. Runs on the CPU between assembly and enumeration, for the CPU and the
+//! GPU path alike, and costs O(n³) at most per island.
+//!
+//! In order:
+//! 1. Separating: every contact separates (q ≥ 0): z = 0, the empty basis.
+//! 2. Single contact: z = max(0, −q/M) in closed form.
+//! 3. Warm start: the basis the caller carried over from the previous frame,
+//!    re-solved; kept when it is feasible to the strict tolerance.
+//! 4. Predicted basis {i : q_i < 0} (the approaching contacts), kept when it
+//!    is feasible and M is positive definite: then the LCP has exactly one
+//!    solution, so any feasible basis gives enumeration's z.
+//!
+//! Cases 1 and 2 return exactly what enumeration returns (they are its first
+//! bases). Case 4 returns enumeration's z and w; its basis can differ from
+//! enumeration's only where the solution is degenerate (a basic z_i = 0 or a
+//! nonbasic w_i = 0). Case 3 keeps last frame's basis while it stays valid:
+//! re-solving the same island gives enumeration's result exactly, and for a
+//! changed island a valid solution that may differ from enumeration's choice
+//! when the solution is not unique (w is the same whenever M is positive
+//! semidefinite).
+
+use serde::Serialize;
+
+use crate::cpu::enumeration::{solve_basis, BasisOutcome, EnumerationSettings, MAX_ENUMERATION_N};
+use crate::lcp::{Counters, Lcp, LcpSolution, Status};
+
+/// How an island was settled; every batch reports a count of each.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SolvePath {
+    /// q ≥ 0: no impulse needed.
+    Separating,
+    /// n = 1, closed form.
+    SingleContact,
+    /// The caller's basis from the previous frame was still valid.
+    WarmStart,
+    /// The basis of the approaching contacts was valid and M positive definite.
+    PredictedBasis,
+    /// Exhaustive enumeration (CPU or GPU).
+    Enumerated,
+    /// Too large to enumerate: Lemke on the CPU.
+    Lemke,
+}
+
+impl SolvePath {
+    pub const ALL: [SolvePath; 6] = [
+        SolvePath::Separating,
+        SolvePath::SingleContact,
+        SolvePath::WarmStart,
+        SolvePath::PredictedBasis,
+        SolvePath::Enumerated,
+        SolvePath::Lemke,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            SolvePath::Separating => "separating",
+            SolvePath::SingleContact => "single_contact",
+            SolvePath::WarmStart => "warm_start",
+            SolvePath::PredictedBasis => "predicted_basis",
+            SolvePath::Enumerated => "enumerated",
+            SolvePath::Lemke => "lemke",
+        }
+    }
+}
+
+/// Is the symmetric part of M positive definite? Cholesky of (M + Mᵀ)/2 with
+/// a pivot threshold of n·ε times the largest diagonal entry: a matrix
+/// singular to working precision (a box resting on 4 coplanar contacts)
+/// answers false. Only symmetric M are tested (contact islands are); a
+/// non-symmetric M answers false.
+pub fn is_positive_definite(lcp: &Lcp) -> bool {
+    let n = lcp.n();
+    if n > MAX_ENUMERATION_N || !lcp.is_symmetric() {
+        return false;
+    }
+    let mut l = [0.0f64; MAX_ENUMERATION_N * MAX_ENUMERATION_N];
+    let dmax = (0..n).map(|i| lcp.at(i, i)).fold(0.0f64, f64::max);
+    let threshold = n as f64 * f64::EPSILON * 16.0 * dmax;
+    for j in 0..n {
+        let mut d = lcp.at(j, j);
+        for k in 0..j {
+            d -= l[j * n + k] * l[j * n + k];
+        }
+        if !(d > threshold) {
+            return false;
+        }
+        let d = d.sqrt();
+        l[j * n + j] = d;
+        for i in j + 1..n {
+            let mut s = 0.5 * (lcp.at(i, j) + lcp.at(j, i));
+            for k in 0..j {
+                s -= l[i * n + k] * l[j * n + k];
+            }
+            l[i * n + j] = s / d;
+        }
+    }
+    true
+}
+
+/// Tries the cheap paths on one island. `warm_basis` is the caller's basis
+/// from the previous frame, if any. None: the island needs enumeration.
+pub fn predict(
+    lcp: &Lcp,
+    warm_basis: Option<u32>,
+    settings: &EnumerationSettings,
+) -> Option<(SolvePath, LcpSolution)> {
+    let n = lcp.n();
+    if n > MAX_ENUMERATION_N {
+        return None;
+    }
+    let settle = |path: SolvePath, mask: u32, bases: u64| {
+        let BasisOutcome::Solved {
+            z, feasible: true, ..
+        } = solve_basis(lcp, mask, settings)
+        else {
+            return None;
+        };
+        let counters = Counters {
+            bases_visited: bases,
+            ..Counters::default()
+        };
+        let mut sol = LcpSolution::from_z(lcp, Status::Solved, z, counters);
+        sol.basis = Some(mask);
+        Some((path, sol))
+    };
+    // 1. Separating: the empty basis, feasible iff q ≥ 0.
+    if lcp.q.iter().all(|&v| v >= 0.0) {
+        return settle(SolvePath::Separating, 0, 1);
+    }
+    // 2. One approaching contact: z = −q/M when M > 0, else no solution.
+    if n == 1 {
+        return settle(SolvePath::SingleContact, 1, 2).or_else(|| {
+            let mut sol = LcpSolution::from_z(
+                lcp,
+                Status::NoSolution,
+                vec![0.0],
+                Counters {
+                    bases_visited: 2,
+                    ..Counters::default()
+                },
+            );
+            sol.basis = None;
+            Some((SolvePath::SingleContact, sol))
+        });
+    }
+    // 3. Last frame's basis.
+    if let Some(mask) = warm_basis.filter(|&m| m >> n == 0) {
+        if let Some(found) = settle(SolvePath::WarmStart, mask, 1) {
+            return Some(found);
+        }
+    }
+    // 4. The approaching contacts, when the solution is unique.
+    let approaching = (0..n)
+        .filter(|&i| lcp.q[i] < 0.0)
+        .fold(0u32, |m, i| m | 1 << i);
+    if is_positive_definite(lcp) {
+        return settle(SolvePath::PredictedBasis, approaching, 1);
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cpu::enumeration::enumerate;
+
+    #[test]
+    fn cheap_paths_agree_with_enumeration() {
+        let settings = EnumerationSettings::default();
+        let cases = [
+            (
+                vec![2.0, 1.0, 1.0, 2.0],
+                vec![-5.0, -6.0],
+                Some(SolvePath::PredictedBasis),
+            ),
+            (
+                vec![2.0, 1.0, 1.0, 2.0],
+                vec![5.0, 0.0],
+                Some(SolvePath::Separating),
+            ),
+            (
+                vec![2.0, 1.0, 1.0, 2.0],
+                vec![-1.0, 4.0],
+                Some(SolvePath::PredictedBasis),
+            ),
+            // Rank one: not positive definite, enumeration needed.
+            (vec![1.0, 1.0, 1.0, 1.0], vec![-1.0, -1.0], None),
+            (vec![3.0], vec![-6.0], Some(SolvePath::SingleContact)),
+            (vec![-3.0], vec![-6.0], Some(SolvePath::SingleContact)),
+        ];
+        for (m, q, path) in cases {
+            let lcp = Lcp::new(m, q).unwrap();
+            let predicted = predict(&lcp, None, &settings);
+            assert_eq!(predicted.as_ref().map(|p| p.0), path, "{lcp:?}");
+            if let Some((_, sol)) = predicted {
+                let e = enumerate(&lcp, &settings).unwrap();
+                assert_eq!(sol.status, e.status);
+                assert_eq!(sol.z, e.z);
+                assert_eq!(sol.basis, e.basis);
+            }
+        }
+    }
+
+    #[test]
+    fn warm_start_is_kept_only_while_valid() {
+        let settings = EnumerationSettings::default();
+        // Rank one M, solutions z1 + z2 = 1: the warm basis {1} is valid.
+        let lcp = Lcp::new(vec![1.0, 1.0, 1.0, 1.0], vec![-1.0, -1.0]).unwrap();
+        let (path, sol) = predict(&lcp, Some(0b10), &settings).unwrap();
+        assert_eq!(path, SolvePath::WarmStart);
+        assert_eq!(sol.z, vec![0.0, 1.0]);
+        // An infeasible warm basis falls through to enumeration.
+        let lcp = Lcp::new(vec![1.0, 1.0, 1.0, 1.0], vec![-1.0, 2.0]).unwrap();
+        assert!(predict(&lcp, Some(0b10), &settings).is_none());
+    }
+}
