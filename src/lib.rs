@@ -10,6 +10,7 @@
 pub mod cpu;
 pub mod error;
 pub mod generate;
+pub mod gpu;
 pub mod io;
 pub mod islands;
 pub mod lcp;
@@ -18,6 +19,7 @@ pub mod pipeline;
 pub mod prediction;
 pub mod scene;
 pub mod solvers;
+pub mod validation;
 pub mod stress;
 
 pub use error::Error;

@@ -1,0 +1,400 @@
+//! Batches of LCPs on the GPU: the enumeration stage for islands of any mix
+//! of sizes, then validation of every answer on the CPU in f64.
+//!
+//! Scheduling: islands are sorted by n and dispatched one size at a time, so
+//! that a workgroup never waits on a larger island than its own. A batch is
+//! split into chunks whose buffers stay under the device's storage-binding
+//! and buffer limits, and each dispatch into ranges of at most 65,535
+//! workgroups; the caller sees one result per island, in its order.
+
+use std::time::Instant;
+
+use super::layout::{scalars_from_bytes, scalars_to_bytes, BasisResult, PackedIsland};
+use super::{GpuContext, Precision, MAX_GPU_N};
+use crate::cpu::enumeration::EnumerationSettings;
+use crate::lcp::{Counters, Lcp, LcpSolution, Residuals, Status};
+use crate::solvers::lemke::{lemke, LemkeSettings};
+use crate::solvers::Solver;
+use crate::validation::{validate_island, BatchReport, GpuVerdict, Verdict};
+use crate::Error;
+
+/// Default GPU tolerances in f32 (f64 shaders use the CPU's): accept more
+/// than f64 would (the f64 polish rejects what is wrong and counts it as
+/// repaired) and call a basis singular only when f32 cannot tell.
+pub const F32_PIVOT_TOL: f64 = 1e-6;
+pub const F32_FEASIBILITY_TOL: f64 = 1e-4;
+
+/// Settings of a GPU batch solve.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GpuSolveSettings {
+    /// The CPU's enumeration settings: the f64 polish and repair use them,
+    /// and f64 shaders use the same tolerances. `all_solutions` is not
+    /// supported on the GPU.
+    pub enumeration: EnumerationSettings,
+    /// GPU pivot tolerance; None: the CPU's in f64, [`F32_PIVOT_TOL`] in f32.
+    pub gpu_pivot_tol: Option<f64>,
+    /// GPU feasibility tolerance; None: the CPU's in f64, [`F32_FEASIBILITY_TOL`] in f32.
+    pub gpu_feasibility_tol: Option<f64>,
+    /// Islands with n > 16 are solved on the CPU with these settings.
+    pub lemke: LemkeSettings,
+    /// Lower the size above which a batch is split (bytes per binding;
+    /// capped at the device's limit). For tests of the splitting.
+    pub max_binding_bytes: Option<u64>,
+    /// Lower the workgroups per dispatch (capped at the device's limit).
+    pub max_workgroups: Option<u32>,
+}
+
+impl Default for GpuSolveSettings {
+    fn default() -> Self {
+        GpuSolveSettings {
+            enumeration: EnumerationSettings::default(),
+            gpu_pivot_tol: None,
+            gpu_feasibility_tol: None,
+            lemke: LemkeSettings::default(),
+            max_binding_bytes: None,
+            max_workgroups: None,
+        }
+    }
+}
+
+impl GpuSolveSettings {
+    /// (pivot, feasibility) tolerances of the shaders at `precision`.
+    pub fn gpu_tolerances(&self, precision: Precision) -> (f64, f64) {
+        let (p, f) = if precision == Precision::F64 {
+            (self.enumeration.pivot_tol, self.enumeration.feasibility_tol)
+        } else {
+            (F32_PIVOT_TOL, F32_FEASIBILITY_TOL)
+        };
+        (
+            self.gpu_pivot_tol.unwrap_or(p),
+            self.gpu_feasibility_tol.unwrap_or(f),
+        )
+    }
+}
+
+/// Where an island's answer came from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SolvedOn {
+    /// The GPU's basis, valid in f64 (polished), or the GPU's "no
+    /// solution" confirmed on the CPU.
+    Gpu,
+    /// The GPU's answer failed the f64 check; the CPU enumeration solved it.
+    Repaired,
+    /// n > 16: solved on the CPU by Lemke.
+    CpuFallback,
+    /// The problem failed its checks (status InvalidInput).
+    Invalid,
+}
+
+impl SolvedOn {
+    pub fn name(self) -> &'static str {
+        match self {
+            SolvedOn::Gpu => "gpu",
+            SolvedOn::Repaired => "repaired",
+            SolvedOn::CpuFallback => "cpu_fallback",
+            SolvedOn::Invalid => "invalid",
+        }
+    }
+}
+
+/// One island's result.
+#[derive(Clone, Debug)]
+pub struct IslandOutcome {
+    /// The validated solution (z, w and residuals in f64).
+    pub solution: LcpSolution,
+    pub solved_on: SolvedOn,
+    /// The algorithm whose answer this is: Enum (GPU or CPU) or Lemke.
+    pub solver: Solver,
+    /// What the GPU's enumeration stage reported (None when it did not run).
+    pub gpu: Option<BasisResult>,
+    /// The GPU's own z, before the f64 polish (empty when it did not run).
+    pub gpu_z: Vec<f64>,
+}
+
+/// Results in the caller's order and the batch's report.
+#[derive(Clone, Debug)]
+pub struct GpuBatchResult {
+    pub islands: Vec<IslandOutcome>,
+    pub report: BatchReport,
+}
+
+/// Output of the enumeration stage for one island, before validation.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EnumerationOutput {
+    pub result: BasisResult,
+    /// z of the chosen basis in the shader's precision (zeros when none).
+    pub z: Vec<f64>,
+}
+
+/// What one GPU run did (for the report and the benches).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RunStats {
+    pub chunks: usize,
+    pub dispatches: usize,
+    /// Seconds of upload + dispatch + readback.
+    pub seconds: f64,
+}
+
+/// Largest bytes per binding and workgroups per dispatch for this batch.
+pub(crate) fn limits_for(ctx: &GpuContext, settings: &GpuSolveSettings) -> (u64, u32) {
+    let l = ctx.limits();
+    let bind = l.max_storage_buffer_binding_size.min(l.max_buffer_size);
+    let bind = settings.max_binding_bytes.map_or(bind, |b| b.min(bind));
+    let groups = l.max_compute_workgroups_per_dimension;
+    let groups = settings.max_workgroups.map_or(groups, |g| g.min(groups));
+    (bind.max(1024), groups.max(1))
+}
+
+/// Runs the enumeration stage alone on every problem (each must be valid
+/// with n ≤ 16) and returns its raw output, in order. This is the stage the
+/// tests compare with its CPU twin, [`crate::cpu::enumeration::enumerate`].
+pub fn enumerate_on_gpu(
+    ctx: &GpuContext,
+    lcps: &[&Lcp],
+    settings: &GpuSolveSettings,
+) -> Result<(Vec<EnumerationOutput>, RunStats), Error> {
+    let start = Instant::now();
+    let mut stats = RunStats::default();
+    for (i, l) in lcps.iter().enumerate() {
+        if l.n() == 0 || l.n() > MAX_GPU_N || l.m.len() != l.n() * l.n() {
+            return Err(Error::Unsupported(format!(
+                "problem {i}: the GPU enumerates 1 ≤ n ≤ {MAX_GPU_N} (n = {})",
+                l.n()
+            )));
+        }
+    }
+    let precision = ctx.precision();
+    let (pivot, feas) = settings.gpu_tolerances(precision);
+    let pipelines = ctx.pipelines(pivot, feas)?;
+    let (max_bytes, max_groups) = limits_for(ctx, settings);
+    let sb = precision.bytes();
+
+    // Sorted by n: one dispatch per size, no island waits on a larger one.
+    let mut order: Vec<usize> = (0..lcps.len()).collect();
+    order.sort_by_key(|&i| lcps[i].n());
+
+    let mut out = vec![
+        EnumerationOutput {
+            result: BasisResult::default(),
+            z: Vec::new(),
+        };
+        lcps.len()
+    ];
+    let mut at = 0;
+    while at < order.len() {
+        // One chunk: as many islands as fit under the binding limit.
+        let mut end = at;
+        let (mut values, mut zs) = (0u64, 0u64);
+        while end < order.len() {
+            let n = lcps[order[end]].n() as u64;
+            let nv = values + n * n + n;
+            let nz = zs + n;
+            let count = (end - at + 1) as u64;
+            let too_big = nv * sb > max_bytes || nz * sb > max_bytes || count * 16 > max_bytes;
+            if too_big && end > at {
+                break;
+            }
+            values = nv;
+            zs = nz;
+            end += 1;
+        }
+        let chunk = &order[at..end];
+        let mut table = Vec::with_capacity(chunk.len());
+        let mut data = Vec::with_capacity(values as usize);
+        let mut zoff = 0u32;
+        for &i in chunk {
+            let l = lcps[i];
+            table.push(PackedIsland {
+                n: l.n() as u32,
+                data: data.len() as u32,
+                z: zoff,
+                contacts: 0,
+            });
+            data.extend_from_slice(&l.m);
+            data.extend_from_slice(&l.q);
+            zoff += l.n() as u32;
+        }
+        let (results_bytes, z_bytes) = ctx.scoped("enumeration", || -> Result<_, Error> {
+            // islands: the chunk's island table, sorted by n.
+            let islands_buf = ctx.storage("islands", bytemuck::cast_slice(&table));
+            // values: every island's M (row-major) and q, in the shader's precision.
+            let values_buf = ctx.storage("values", &scalars_to_bytes(&data, precision));
+            // results: the chosen basis and counters of every island.
+            let results_size = (table.len() * std::mem::size_of::<BasisResult>()) as u64;
+            let results_buf = ctx.storage_zeroed("results", results_size);
+            // z: the GPU's z of every island (reported beside the polished one).
+            let z_size = zoff as u64 * sb;
+            let z_buf = ctx.storage_zeroed("z", z_size);
+            let mut encoder = ctx
+                .device
+                .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                    label: Some("enumeration"),
+                });
+            let stage = &pipelines.enumeration;
+            let bind = |params: &wgpu::Buffer| {
+                ctx.device.create_bind_group(&wgpu::BindGroupDescriptor {
+                    label: Some("enumeration"),
+                    layout: &stage.layout,
+                    entries: &[
+                        wgpu::BindGroupEntry {
+                            binding: 0,
+                            resource: params.as_entire_binding(),
+                        },
+                        wgpu::BindGroupEntry {
+                            binding: 1,
+                            resource: islands_buf.as_entire_binding(),
+                        },
+                        wgpu::BindGroupEntry {
+                            binding: 2,
+                            resource: values_buf.as_entire_binding(),
+                        },
+                        wgpu::BindGroupEntry {
+                            binding: 3,
+                            resource: results_buf.as_entire_binding(),
+                        },
+                        wgpu::BindGroupEntry {
+                            binding: 4,
+                            resource: z_buf.as_entire_binding(),
+                        },
+                    ],
+                })
+            };
+            let mut first = 0usize;
+            while first < table.len() {
+                let n = table[first].n;
+                let mut last = first;
+                while last < table.len() && table[last].n == n {
+                    last += 1;
+                }
+                ctx.dispatch_ranges(
+                    &mut encoder,
+                    stage,
+                    first as u32,
+                    (last - first) as u32,
+                    max_groups,
+                    &bind,
+                );
+                stats.dispatches += 1;
+                first = last;
+            }
+            let mut read =
+                ctx.submit_and_read(encoder, &[(&results_buf, results_size), (&z_buf, z_size)])?;
+            let z = read.pop().unwrap_or_default();
+            let r = read.pop().unwrap_or_default();
+            Ok((r, z))
+        })??;
+        let results: &[BasisResult] = bytemuck::try_cast_slice(&results_bytes)
+            .map_err(|e| Error::Gpu(format!("results: {e}")))?;
+        let z_all = scalars_from_bytes(&z_bytes, precision);
+        for ((&i, rec), res) in chunk.iter().zip(&table).zip(results) {
+            let (z0, n) = (rec.z as usize, rec.n as usize);
+            out[i] = EnumerationOutput {
+                result: *res,
+                z: z_all
+                    .get(z0..z0 + n)
+                    .map(<[f64]>::to_vec)
+                    .unwrap_or_default(),
+            };
+        }
+        stats.chunks += 1;
+        at = end;
+    }
+    stats.seconds = start.elapsed().as_secs_f64();
+    Ok((out, stats))
+}
+
+/// A result for a problem that failed its checks.
+fn invalid_solution(lcp: &Lcp) -> LcpSolution {
+    let n = lcp.q.len();
+    LcpSolution {
+        status: Status::InvalidInput,
+        z: vec![0.0; n],
+        w: vec![0.0; n],
+        residuals: Residuals::default(),
+        counters: Counters::default(),
+        basis: None,
+        all_bases: Vec::new(),
+        solution_set: None,
+    }
+}
+
+/// Solves a batch of LCPs: islands with n ≤ 16 by enumeration on the GPU,
+/// each answer validated in f64 on the CPU (polished, or repaired by the CPU
+/// enumeration), larger ones by Lemke on the CPU. Problems that fail their
+/// checks get status InvalidInput. Results come back in the caller's order.
+pub fn solve_lcp_batch(
+    ctx: &GpuContext,
+    lcps: &[Lcp],
+    settings: &GpuSolveSettings,
+) -> Result<GpuBatchResult, Error> {
+    settings.enumeration.validate()?;
+    if settings.enumeration.all_solutions {
+        return Err(Error::Unsupported(
+            "all_solutions is not supported on the GPU; use the CPU backend".into(),
+        ));
+    }
+    let mut report = BatchReport::new(ctx.adapter_info().name.clone(), ctx.precision());
+    let mut slots: Vec<Option<IslandOutcome>> = vec![None; lcps.len()];
+    let mut on_gpu: Vec<usize> = Vec::new();
+    for (i, lcp) in lcps.iter().enumerate() {
+        if lcp.validate(&format!("problem {i}")).is_err() {
+            slots[i] = Some(IslandOutcome {
+                solution: invalid_solution(lcp),
+                solved_on: SolvedOn::Invalid,
+                solver: Solver::Enum,
+                gpu: None,
+                gpu_z: Vec::new(),
+            });
+        } else if lcp.n() > MAX_GPU_N {
+            slots[i] = Some(IslandOutcome {
+                solution: lemke(lcp, &settings.lemke),
+                solved_on: SolvedOn::CpuFallback,
+                solver: Solver::Lemke,
+                gpu: None,
+                gpu_z: Vec::new(),
+            });
+        } else {
+            on_gpu.push(i);
+        }
+    }
+    let refs: Vec<&Lcp> = on_gpu.iter().map(|&i| &lcps[i]).collect();
+    let (outputs, stats) = enumerate_on_gpu(ctx, &refs, settings)?;
+    report.gpu_seconds = stats.seconds;
+    report.chunks = stats.chunks;
+    report.dispatches = stats.dispatches;
+    let start = Instant::now();
+    for (&i, o) in on_gpu.iter().zip(outputs) {
+        let verdict = GpuVerdict {
+            basis: (o.result.status == 1).then_some(o.result.mask),
+            visited: o.result.visited as u64,
+            singular: o.result.singular as u64,
+            z: &o.z,
+        };
+        let checked = validate_island(&lcps[i], &verdict, &settings.enumeration)?;
+        report.record_gpu(&checked);
+        let solved_on = match checked.verdict {
+            Verdict::Polished | Verdict::ConfirmedNoSolution => SolvedOn::Gpu,
+            Verdict::Repaired => SolvedOn::Repaired,
+        };
+        slots[i] = Some(IslandOutcome {
+            solution: checked.solution,
+            solved_on,
+            solver: Solver::Enum,
+            gpu: Some(o.result),
+            gpu_z: o.z,
+        });
+    }
+    report.validation_seconds = start.elapsed().as_secs_f64();
+    let islands: Vec<IslandOutcome> = slots
+        .into_iter()
+        .map(|s| s.ok_or_else(|| Error::Gpu("an island got no result".into())))
+        .collect::<Result<_, _>>()?;
+    for o in &islands {
+        match o.solved_on {
+            SolvedOn::CpuFallback => report.record_cpu_fallback(&o.solution),
+            SolvedOn::Invalid => report.record_invalid(),
+            _ => {}
+        }
+    }
+    Ok(GpuBatchResult { islands, report })
+}

@@ -1,0 +1,387 @@
+//! Shaders, bind group layouts and pipelines, and the buffer plumbing every
+//! stage shares (upload, dispatch in ranges, readback).
+//!
+//! The WGSL files are valid on their own with `Scalar = f32`; the host
+//! templates them by replacing the lines marked `// HOST ...` (scalar type
+//! and tolerances) when it builds a pipeline. Pipelines are built once per
+//! (precision, tolerances) and cached in the [`super::GpuContext`].
+
+use std::sync::Arc;
+
+use wgpu::util::DeviceExt;
+
+use super::layout::Params;
+use super::{GpuContext, Precision};
+use crate::Error;
+
+pub const ENUMERATION_WGSL: &str = include_str!("../../shaders/enumeration.wgsl");
+pub const ASSEMBLY_WGSL: &str = include_str!("../../shaders/assembly.wgsl");
+pub const IMPULSES_WGSL: &str = include_str!("../../shaders/impulses.wgsl");
+
+/// Workgroup size of every entry point (`@workgroup_size(64)`).
+pub const WORKGROUP: u32 = 64;
+
+/// Pipelines are cached by this key.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct PipelineKey {
+    pub precision: Precision,
+    pub pivot_tol_bits: u64,
+    pub feasibility_tol_bits: u64,
+}
+
+/// One entry point: its explicit bind group layout and its pipeline.
+pub struct Stage {
+    pub layout: wgpu::BindGroupLayout,
+    pub pipeline: wgpu::ComputePipeline,
+}
+
+/// Every stage's pipeline for one precision and one set of tolerances.
+pub struct Pipelines {
+    pub enumeration: Stage,
+    pub assemble_contacts: Stage,
+    pub assemble_islands: Stage,
+    pub impulses: Stage,
+}
+
+/// Replaces the `// HOST <what>` line of `src` with `line`.
+fn replace_host_line(src: &str, what: &str, line: &str) -> Result<String, Error> {
+    let marker = format!("// HOST {what}");
+    let mut found = false;
+    let out: Vec<String> = src
+        .lines()
+        .map(|l| {
+            if l.trim_end().ends_with(&marker) {
+                found = true;
+                format!("{line} {marker}")
+            } else {
+                l.to_string()
+            }
+        })
+        .collect();
+    if !found {
+        return Err(Error::Gpu(format!("shader has no `{marker}` line")));
+    }
+    Ok(out.join("\n"))
+}
+
+/// A WGSL float literal that round-trips `v` exactly (naga parses abstract
+/// floats as f64).
+fn literal(v: f64) -> String {
+    let s = format!("{v:e}");
+    if s.contains('.') || s.contains('e') {
+        s
+    } else {
+        format!("{s}.0")
+    }
+}
+
+/// The shader source for `precision` (and tolerances where the shader has them).
+pub fn template(
+    src: &str,
+    precision: Precision,
+    tolerances: Option<(f64, f64)>,
+) -> Result<String, Error> {
+    let ty = if precision == Precision::F64 {
+        "f64"
+    } else {
+        "f32"
+    };
+    let mut s = replace_host_line(src, "scalar", &format!("alias Scalar = {ty};"))?;
+    if let Some((pivot, feas)) = tolerances {
+        s = replace_host_line(
+            &s,
+            "pivot_tol",
+            &format!("const PIVOT_TOL: Scalar = {};", literal(pivot)),
+        )?;
+        s = replace_host_line(
+            &s,
+            "feasibility_tol",
+            &format!("const FEASIBILITY_TOL: Scalar = {};", literal(feas)),
+        )?;
+    }
+    Ok(s)
+}
+
+fn uniform_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::COMPUTE,
+        ty: wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Uniform,
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        },
+        count: None,
+    }
+}
+
+fn storage_entry(binding: u32, read_only: bool) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::COMPUTE,
+        ty: wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Storage { read_only },
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        },
+        count: None,
+    }
+}
+
+fn stage(
+    device: &wgpu::Device,
+    module: &wgpu::ShaderModule,
+    entry: &str,
+    entries: &[wgpu::BindGroupLayoutEntry],
+) -> Stage {
+    let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some(entry),
+        entries,
+    });
+    let pl = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        label: Some(entry),
+        bind_group_layouts: &[Some(&layout)],
+        immediate_size: 0,
+    });
+    let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+        label: Some(entry),
+        layout: Some(&pl),
+        module,
+        entry_point: Some(entry),
+        compilation_options: Default::default(),
+        cache: None,
+    });
+    Stage { layout, pipeline }
+}
+
+impl Pipelines {
+    fn build(ctx: &GpuContext, key: &PipelineKey) -> Result<Self, Error> {
+        let d = &ctx.device;
+        let pivot = f64::from_bits(key.pivot_tol_bits);
+        let feas = f64::from_bits(key.feasibility_tol_bits);
+        let enumeration_src = template(ENUMERATION_WGSL, key.precision, Some((pivot, feas)))?;
+        let assembly_src = template(ASSEMBLY_WGSL, key.precision, None)?;
+        let impulses_src = template(IMPULSES_WGSL, key.precision, None)?;
+        ctx.scoped("building the pipelines", || {
+            let module = |label: &str, src: String| {
+                d.create_shader_module(wgpu::ShaderModuleDescriptor {
+                    label: Some(label),
+                    source: wgpu::ShaderSource::Wgsl(src.into()),
+                })
+            };
+            let enumeration = module("enumeration.wgsl", enumeration_src);
+            let assembly = module("assembly.wgsl", assembly_src);
+            let impulses = module("impulses.wgsl", impulses_src);
+            Pipelines {
+                enumeration: stage(
+                    d,
+                    &enumeration,
+                    "main",
+                    &[
+                        uniform_entry(0),
+                        storage_entry(1, true),
+                        storage_entry(2, true),
+                        storage_entry(3, false),
+                        storage_entry(4, false),
+                    ],
+                ),
+                assemble_contacts: stage(
+                    d,
+                    &assembly,
+                    "assemble_contacts",
+                    &[
+                        uniform_entry(0),
+                        storage_entry(1, true),
+                        storage_entry(2, true),
+                        storage_entry(3, true),
+                        storage_entry(4, false),
+                    ],
+                ),
+                assemble_islands: stage(
+                    d,
+                    &assembly,
+                    "assemble_islands",
+                    &[
+                        uniform_entry(0),
+                        storage_entry(2, true),
+                        storage_entry(4, false),
+                        storage_entry(5, true),
+                        storage_entry(6, true),
+                        storage_entry(7, false),
+                    ],
+                ),
+                impulses: stage(
+                    d,
+                    &impulses,
+                    "main",
+                    &[
+                        uniform_entry(0),
+                        storage_entry(1, true),
+                        storage_entry(2, true),
+                        storage_entry(3, true),
+                        storage_entry(4, true),
+                        storage_entry(5, true),
+                        storage_entry(6, false),
+                    ],
+                ),
+            }
+        })
+    }
+}
+
+impl GpuContext {
+    /// The pipelines for the context's precision and these tolerances,
+    /// built on first use.
+    pub(crate) fn pipelines(
+        &self,
+        pivot_tol: f64,
+        feasibility_tol: f64,
+    ) -> Result<Arc<Pipelines>, Error> {
+        let key = PipelineKey {
+            precision: self.precision(),
+            pivot_tol_bits: pivot_tol.to_bits(),
+            feasibility_tol_bits: feasibility_tol.to_bits(),
+        };
+        let mut cache = self
+            .pipelines
+            .lock()
+            .map_err(|_| Error::Gpu("pipeline cache poisoned".into()))?;
+        if let Some(p) = cache.get(&key) {
+            return Ok(p.clone());
+        }
+        let p = Arc::new(Pipelines::build(self, &key)?);
+        cache.insert(key, p.clone());
+        Ok(p)
+    }
+
+    /// A storage buffer holding `bytes` (at least 16 bytes: empty bindings
+    /// are invalid), readable by the shaders and copyable to a readback buffer.
+    pub(crate) fn storage(&self, label: &str, bytes: &[u8]) -> wgpu::Buffer {
+        let usage = wgpu::BufferUsages::STORAGE
+            | wgpu::BufferUsages::COPY_SRC
+            | wgpu::BufferUsages::COPY_DST;
+        if bytes.len() < 16 {
+            let mut padded = bytes.to_vec();
+            padded.resize(16, 0);
+            return self
+                .device
+                .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                    label: Some(label),
+                    contents: &padded,
+                    usage,
+                });
+        }
+        self.device
+            .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some(label),
+                contents: bytes,
+                usage,
+            })
+    }
+
+    /// An uninitialised storage buffer of `size` bytes (rounded up to 16).
+    pub(crate) fn storage_zeroed(&self, label: &str, size: u64) -> wgpu::Buffer {
+        self.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some(label),
+            size: size.max(16).next_multiple_of(4),
+            usage: wgpu::BufferUsages::STORAGE
+                | wgpu::BufferUsages::COPY_SRC
+                | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        })
+    }
+
+    /// Records dispatches of `stage` over items 0..count in ranges of at most
+    /// `max_groups` workgroups (the per-dimension limit), each range with its
+    /// own Params uniform. `bind` makes the bind group for a Params buffer.
+    pub(crate) fn dispatch_ranges(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        stage: &Stage,
+        first: u32,
+        count: u32,
+        max_groups: u32,
+        bind: &dyn Fn(&wgpu::Buffer) -> wgpu::BindGroup,
+    ) {
+        let per = max_groups.max(1) as u64 * WORKGROUP as u64;
+        let mut done = 0u64;
+        while done < count as u64 {
+            let this = (count as u64 - done).min(per) as u32;
+            let params = Params {
+                first: first + done as u32,
+                count: this,
+                _pad0: 0,
+                _pad1: 0,
+            };
+            // Params: which slice of the table this dispatch covers.
+            let ub = self
+                .device
+                .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                    label: Some("params"),
+                    contents: bytemuck::bytes_of(&params),
+                    usage: wgpu::BufferUsages::UNIFORM,
+                });
+            let bg = bind(&ub);
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: Some("dispatch"),
+                timestamp_writes: None,
+            });
+            pass.set_pipeline(&stage.pipeline);
+            pass.set_bind_group(0, &bg, &[]);
+            pass.dispatch_workgroups(this.div_ceil(WORKGROUP), 1, 1);
+            drop(pass);
+            done += this as u64;
+        }
+    }
+
+    /// Copies each (buffer, bytes) to a mappable buffer, submits `encoder`,
+    /// waits, and returns the bytes.
+    pub(crate) fn submit_and_read(
+        &self,
+        mut encoder: wgpu::CommandEncoder,
+        reads: &[(&wgpu::Buffer, u64)],
+    ) -> Result<Vec<Vec<u8>>, Error> {
+        let staging: Vec<(wgpu::Buffer, u64)> = reads
+            .iter()
+            .map(|&(src, size)| {
+                let size4 = size.max(4).next_multiple_of(4);
+                // Readback: MAP_READ buffers cannot be storage, so copy here.
+                let dst = self.device.create_buffer(&wgpu::BufferDescriptor {
+                    label: Some("readback"),
+                    size: size4,
+                    usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+                    mapped_at_creation: false,
+                });
+                encoder.copy_buffer_to_buffer(src, 0, &dst, 0, size4);
+                (dst, size)
+            })
+            .collect();
+        self.queue.submit([encoder.finish()]);
+        for (dst, _) in &staging {
+            dst.slice(..).map_async(wgpu::MapMode::Read, |_| {});
+        }
+        self.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| Error::Gpu(format!("waiting for the GPU: {e}")))?;
+        let mut out = Vec::with_capacity(staging.len());
+        for (dst, size) in &staging {
+            let view = dst
+                .slice(..)
+                .get_mapped_range()
+                .map_err(|e| Error::Gpu(format!("reading back: {e}")))?;
+            out.push(view[..*size as usize].to_vec());
+            drop(view);
+            dst.unmap();
+        }
+        Ok(out)
+    }
+
+    /// Submits `encoder` and waits (no readback).
+    pub(crate) fn submit_and_wait(&self, encoder: wgpu::CommandEncoder) -> Result<(), Error> {
+        self.queue.submit([encoder.finish()]);
+        self.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| Error::Gpu(format!("waiting for the GPU: {e}")))?;
+        Ok(())
+    }
+}

@@ -1,0 +1,264 @@
+//! Validation of every GPU answer on the CPU, in f64.
+//!
+//! The GPU's enumeration names a basis (or says that none is valid). The CPU
+//! then
+//! - solves that basis again in f64 ("polish",
+//!   [`crate::cpu::enumeration::solve_basis`]: one k×k solve and one n×n
+//!   product, O(n³)) and keeps it when it is valid in f64 with the CPU's
+//!   tolerances: z and w then come from f64 arithmetic only;
+//! - otherwise solves the island by the CPU enumeration and counts it as
+//!   repaired;
+//! - when the GPU found no valid basis, confirms it by the CPU enumeration
+//!   (the rare path: physical islands nearly always have a solution), so that
+//!   the status equals the CPU's.
+//!
+//! With the same visit order and rule (fewest basic z, then the smallest
+//! mask) as the CPU, an island's chosen basis is the CPU's whenever the GPU
+//! accepted every basis f64 accepts before it; the f64 shaders use the CPU's
+//! tolerances for that reason.
+
+use std::fmt;
+
+use crate::cpu::enumeration::{enumerate, solve_basis, BasisOutcome, EnumerationSettings};
+use crate::gpu::Precision;
+use crate::lcp::{lcp_error, Counters, Lcp, LcpSolution, Status};
+use crate::Error;
+
+/// What the GPU reported for one island.
+#[derive(Clone, Copy, Debug)]
+pub struct GpuVerdict<'a> {
+    /// The chosen basis, None when no basis was valid on the GPU.
+    pub basis: Option<u32>,
+    pub visited: u64,
+    pub singular: u64,
+    /// The GPU's z (in its precision, widened to f64); may be empty.
+    pub z: &'a [f64],
+}
+
+/// What validation decided.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Verdict {
+    /// The GPU's basis is valid in f64; z, w recomputed in f64.
+    Polished,
+    /// The GPU found no valid basis and the CPU agrees.
+    ConfirmedNoSolution,
+    /// The GPU's answer was wrong in f64; the CPU enumeration's is used.
+    Repaired,
+}
+
+/// A validated island.
+#[derive(Clone, Debug)]
+pub struct Checked {
+    pub solution: LcpSolution,
+    pub verdict: Verdict,
+    /// Error measure of the GPU's own z against the f64 problem (NaN when the
+    /// GPU gave no z).
+    pub gpu_error: f64,
+}
+
+/// Validates the GPU's answer for `lcp` (see the module docs).
+pub fn validate_island(
+    lcp: &Lcp,
+    gpu: &GpuVerdict<'_>,
+    settings: &EnumerationSettings,
+) -> Result<Checked, Error> {
+    let n = lcp.n();
+    let gpu_error = if gpu.basis.is_some() && gpu.z.len() == n {
+        lcp_error(gpu.z, &lcp.w(gpu.z), &lcp.q)
+    } else {
+        f64::NAN
+    };
+    if let Some(mask) = gpu.basis {
+        if mask >> n == 0 {
+            if let BasisOutcome::Solved {
+                z, feasible: true, ..
+            } = solve_basis(lcp, mask, settings)
+            {
+                let counters = Counters {
+                    bases_visited: gpu.visited,
+                    singular_bases: gpu.singular,
+                    ..Counters::default()
+                };
+                let mut solution = LcpSolution::from_z(lcp, Status::Solved, z, counters);
+                solution.basis = Some(mask);
+                return Ok(Checked {
+                    solution,
+                    verdict: Verdict::Polished,
+                    gpu_error,
+                });
+            }
+        }
+    }
+    let solution = enumerate(lcp, settings)?;
+    let verdict = if gpu.basis.is_none() && solution.status == Status::NoSolution {
+        Verdict::ConfirmedNoSolution
+    } else {
+        Verdict::Repaired
+    };
+    Ok(Checked {
+        solution,
+        verdict,
+        gpu_error,
+    })
+}
+
+/// What a batch did, for the caller and the demo.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BatchReport {
+    pub adapter: String,
+    pub precision: Precision,
+    /// Every island of the batch.
+    pub islands: usize,
+    /// Answered by the GPU and confirmed in f64 (polished + confirmed no solution).
+    pub solved_on_gpu: usize,
+    /// The GPU's basis was valid in f64.
+    pub polished: usize,
+    /// The GPU found no valid basis and the CPU agreed.
+    pub confirmed_no_solution: usize,
+    /// The GPU's answer failed in f64; the CPU enumeration solved the island.
+    pub repaired: usize,
+    /// n > 16: solved on the CPU (Lemke).
+    pub cpu_fallback: usize,
+    /// Problems that failed their checks.
+    pub invalid: usize,
+    /// Largest error measure (Siconos lcp_compute_error) over islands with a
+    /// solution, after polish.
+    pub max_error: f64,
+    /// Largest error measure of the GPU's own z (before polish).
+    pub max_gpu_error: f64,
+    /// Islands per status, in the order of [`Status::ALL`].
+    pub statuses: [usize; 6],
+    /// Seconds of GPU work (upload + dispatch + readback).
+    pub gpu_seconds: f64,
+    /// Seconds of validation on the CPU.
+    pub validation_seconds: f64,
+    pub chunks: usize,
+    pub dispatches: usize,
+}
+
+impl BatchReport {
+    pub fn new(adapter: String, precision: Precision) -> Self {
+        BatchReport {
+            adapter,
+            precision,
+            islands: 0,
+            solved_on_gpu: 0,
+            polished: 0,
+            confirmed_no_solution: 0,
+            repaired: 0,
+            cpu_fallback: 0,
+            invalid: 0,
+            max_error: 0.0,
+            max_gpu_error: 0.0,
+            statuses: [0; 6],
+            gpu_seconds: 0.0,
+            validation_seconds: 0.0,
+            chunks: 0,
+            dispatches: 0,
+        }
+    }
+
+    /// Islands with this status.
+    pub fn count(&self, s: Status) -> usize {
+        Status::ALL
+            .iter()
+            .position(|&x| x == s)
+            .map_or(0, |i| self.statuses[i])
+    }
+
+    fn status(&mut self, sol: &LcpSolution) {
+        self.islands += 1;
+        if let Some(i) = Status::ALL.iter().position(|&x| x == sol.status) {
+            self.statuses[i] += 1;
+        }
+        if sol.status.is_solution() && !(sol.residuals.error <= self.max_error) {
+            self.max_error = sol.residuals.error;
+        }
+    }
+
+    /// Records an island the GPU answered.
+    pub fn record_gpu(&mut self, c: &Checked) {
+        self.status(&c.solution);
+        match c.verdict {
+            Verdict::Polished => {
+                self.polished += 1;
+                self.solved_on_gpu += 1;
+            }
+            Verdict::ConfirmedNoSolution => {
+                self.confirmed_no_solution += 1;
+                self.solved_on_gpu += 1;
+            }
+            Verdict::Repaired => self.repaired += 1,
+        }
+        if c.gpu_error > self.max_gpu_error {
+            self.max_gpu_error = c.gpu_error;
+        }
+    }
+
+    /// Records an island solved on the CPU because it is too large.
+    pub fn record_cpu_fallback(&mut self, sol: &LcpSolution) {
+        self.status(sol);
+        self.cpu_fallback += 1;
+    }
+
+    /// Records a problem that failed its checks.
+    pub fn record_invalid(&mut self) {
+        self.islands += 1;
+        self.invalid += 1;
+        self.statuses[5] += 1;
+    }
+
+    /// Adds another report's counts (a batch solved in parts).
+    pub fn merge(&mut self, o: &BatchReport) {
+        self.islands += o.islands;
+        self.solved_on_gpu += o.solved_on_gpu;
+        self.polished += o.polished;
+        self.confirmed_no_solution += o.confirmed_no_solution;
+        self.repaired += o.repaired;
+        self.cpu_fallback += o.cpu_fallback;
+        self.invalid += o.invalid;
+        self.max_error = self.max_error.max(o.max_error);
+        self.max_gpu_error = self.max_gpu_error.max(o.max_gpu_error);
+        for (a, b) in self.statuses.iter_mut().zip(o.statuses) {
+            *a += b;
+        }
+        self.gpu_seconds += o.gpu_seconds;
+        self.validation_seconds += o.validation_seconds;
+        self.chunks += o.chunks;
+        self.dispatches += o.dispatches;
+    }
+}
+
+impl fmt::Display for BatchReport {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(f, "adapter: {} ({})", self.adapter, self.precision.name())?;
+        writeln!(
+            f,
+            "islands: {} (solved on the GPU {}: polished {}, no solution confirmed {}; repaired {}; CPU fallback n > 16: {}; invalid {})",
+            self.islands,
+            self.solved_on_gpu,
+            self.polished,
+            self.confirmed_no_solution,
+            self.repaired,
+            self.cpu_fallback,
+            self.invalid
+        )?;
+        let statuses: Vec<String> = Status::ALL
+            .iter()
+            .zip(self.statuses)
+            .filter(|(_, c)| *c > 0)
+            .map(|(s, c)| format!("{s} {c}"))
+            .collect();
+        writeln!(f, "statuses: {}", statuses.join(", "))?;
+        writeln!(
+            f,
+            "max error after polish: {:.3e} (GPU's own z: {:.3e})",
+            self.max_error, self.max_gpu_error
+        )?;
+        write!(
+            f,
+            "GPU {:.3} s in {} chunk(s), {} dispatch(es); validation {:.3} s",
+            self.gpu_seconds, self.chunks, self.dispatches, self.validation_seconds
+        )
+    }
+}

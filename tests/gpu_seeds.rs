@@ -1,0 +1,107 @@
+//! The seeds' worked examples through the GPU, in f64 and in f32.
+
+use lcpbatch::gpu::{
+    solve_lcp_batch, GpuContext, GpuOptions, GpuSolveSettings, Precision, SolvedOn,
+};
+use lcpbatch::{Lcp, Status};
+
+/// A fresh context at `precision`; a missing adapter fails the test with the
+/// install hint (GPU tests never skip).
+fn context(precision: Precision) -> Option<GpuContext> {
+    let mut o = GpuOptions::from_env().expect("GPU environment variables");
+    o.precision = precision;
+    match GpuContext::new(&o) {
+        Ok(c) => Some(c),
+        // f64 asked of an adapter without SHADER_F64: nothing to test at f64.
+        Err(e) if precision == Precision::F64 && e.to_string().contains("SHADER_F64") => {
+            eprintln!("skipping f64: {e}");
+            None
+        }
+        Err(e) => panic!("no GPU adapter: {e}"),
+    }
+}
+
+fn seeds() -> Vec<(Lcp, Vec<f64>, Vec<f64>)> {
+    vec![
+        // Seed 000's 2×2: z = (4/3, 7/3), w = 0.
+        (
+            Lcp::new(vec![2.0, 1.0, 1.0, 2.0], vec![-5.0, -6.0]).unwrap(),
+            vec![4.0 / 3.0, 7.0 / 3.0],
+            vec![0.0, 0.0],
+        ),
+        // Seed 002's Lemke example: z = (0, 1, 3), w = (2, 0, 0).
+        (
+            Lcp::new(
+                vec![0.0, -1.0, 2.0, 2.0, 0.0, -2.0, -1.0, 1.0, 0.0],
+                vec![-3.0, 6.0, -1.0],
+            )
+            .unwrap(),
+            vec![0.0, 1.0, 3.0],
+            vec![2.0, 0.0, 0.0],
+        ),
+        // The same M with q = (−3, 6, 1): z = (1, 0, 1.5).
+        (
+            Lcp::new(
+                vec![0.0, -1.0, 2.0, 2.0, 0.0, -2.0, -1.0, 1.0, 0.0],
+                vec![-3.0, 6.0, 1.0],
+            )
+            .unwrap(),
+            vec![1.0, 0.0, 1.5],
+            vec![0.0, 5.0, 0.0],
+        ),
+    ]
+}
+
+fn check(precision: Precision) {
+    let Some(ctx) = context(precision) else {
+        return;
+    };
+    let cases = seeds();
+    let lcps: Vec<Lcp> = cases.iter().map(|c| c.0.clone()).collect();
+    let r = solve_lcp_batch(&ctx, &lcps, &GpuSolveSettings::default()).unwrap();
+    println!("{}", r.report);
+    for (k, ((_, z, w), o)) in cases.iter().zip(&r.islands).enumerate() {
+        assert_eq!(o.solution.status, Status::Solved, "seed case {k}");
+        assert_eq!(
+            o.solved_on,
+            SolvedOn::Gpu,
+            "seed case {k} must be answered by the GPU"
+        );
+        for i in 0..z.len() {
+            assert!(
+                (o.solution.z[i] - z[i]).abs() < 1e-12,
+                "case {k} z {:?} vs {z:?}",
+                o.solution.z
+            );
+            assert!(
+                (o.solution.w[i] - w[i]).abs() < 1e-12,
+                "case {k} w {:?} vs {w:?}",
+                o.solution.w
+            );
+            // The GPU's own z, before polish, to its precision.
+            let tol = if ctx.precision() == Precision::F64 {
+                1e-12
+            } else {
+                1e-5
+            };
+            assert!(
+                (o.gpu_z[i] - z[i]).abs() < tol * 4.0,
+                "case {k} gpu z {:?}",
+                o.gpu_z
+            );
+        }
+        assert!(o.solution.residuals.error < 1e-14);
+    }
+    assert_eq!(r.report.polished, 3);
+    assert_eq!(r.report.repaired, 0);
+}
+
+#[test]
+fn seeds_in_f64() {
+    check(Precision::F64);
+}
+
+#[test]
+fn seeds_in_f32() {
+    check(Precision::F32);
+}
