@@ -99,10 +99,14 @@ pub enum BasisOutcome {
     Singular,
     /// The basic solution (z, w with w = M z + q recomputed in full) and
     /// whether it is feasible to the strict tolerance `feasibility_tol`.
+    /// `infeasibility` is the relative measure both tolerances are applied
+    /// to (0 when feasible outright; any value above the relaxed tolerance
+    /// stands for "more than that").
     Solved {
         z: Vec<f64>,
         w: Vec<f64>,
         feasible: bool,
+        infeasibility: f64,
     },
 }
 
@@ -202,7 +206,12 @@ pub fn solve_basis(lcp: &Lcp, mask: u32, settings: &EnumerationSettings) -> Basi
             let feasible = infeasibility <= settings.feasibility_tol;
             let z: Vec<f64> = s.z[..n].iter().map(|v| v.max(0.0)).collect();
             let w = lcp.w(&z);
-            BasisOutcome::Solved { z, w, feasible }
+            BasisOutcome::Solved {
+                z,
+                w,
+                feasible,
+                infeasibility,
+            }
         }
     }
 }

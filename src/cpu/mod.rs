@@ -5,4 +5,5 @@
 
 pub mod assembly;
 pub mod enumeration;
+pub mod enumeration_gray;
 pub mod impulses;
