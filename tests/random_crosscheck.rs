@@ -92,6 +92,63 @@ fn enumeration_and_lemke_agree_on_random_islands() {
     assert!(separating < ISLANDS / 2, "{separating}");
 }
 
+/// The demo worlds' islands: balls, boxes landing flat on 4 coplanar
+/// contacts and stacks of 2–3 boxes (8–12 contacts, M of rank 3 per box):
+/// z is not unique there, w and the bodies' velocities are (M = J M⁻¹ Jᵀ with
+/// every body's inverse mass matrix definite: J M⁻¹ Jᵀ (z₁ − z₂) = 0 gives
+/// Jᵀ(z₁ − z₂) = 0). Enumeration and Lemke must agree on both.
+#[test]
+fn enumeration_and_lemke_agree_on_demo_world_islands() {
+    use lcpbatch::pipeline::solve_scene;
+    use lcpbatch::SolverSettings;
+    let mut rng = Rng::new(0xDE30);
+    let (mut islands, mut singular, mut max_dw, mut max_dv) = (0, 0, 0.0f64, 0.0f64);
+    for k in 0..300 {
+        let scene = lcpbatch::generate::demo_world(&mut rng);
+        let e = solve_scene(&scene, &SolverSettings::with_solver(Solver::Enum), "demo").unwrap();
+        let l = solve_scene(&scene, &SolverSettings::with_solver(Solver::Lemke), "demo").unwrap();
+        for (ie, il) in e.islands.iter().zip(&l.islands) {
+            islands += 1;
+            let lcp = &ie.lcp;
+            if !is_positive_definite(lcp, PD_TOL) {
+                singular += 1;
+            }
+            for (what, s) in [("enum", &ie.solution), ("lemke", &il.solution)] {
+                assert!(
+                    s.status.is_solution() && s.residuals.error <= ERROR_TOL,
+                    "world {k} island {:?} {what}: {} {:?}\n  M = {:?}\n  q = {:?}",
+                    ie.contacts,
+                    s.status,
+                    s.residuals,
+                    lcp.m,
+                    lcp.q
+                );
+            }
+            let dw = w_rel_diff(
+                lcp,
+                &ie.solution.z,
+                &ie.solution.w,
+                &il.solution.z,
+                &il.solution.w,
+            );
+            max_dw = max_dw.max(dw);
+            assert!(dw <= TOL, "world {k} island {:?}: dw {dw:.2e}", ie.contacts);
+        }
+        let flat = |v: &[lcpbatch::cpu::impulses::BodyVelocity]| -> Vec<f64> {
+            v.iter()
+                .flat_map(|b| b.velocity.into_iter().chain(b.angular_velocity))
+                .collect()
+        };
+        let (ve, vl) = (flat(&e.bodies), flat(&l.bodies));
+        let scale = common::inf_norm(&ve).max(common::inf_norm(&vl)).max(1e-300);
+        let dv = common::max_diff(&ve, &vl) / scale;
+        max_dv = max_dv.max(dv);
+        assert!(dv <= TOL, "world {k}: velocities differ by {dv:.2e}");
+    }
+    eprintln!("{islands} demo islands ({singular} with singular M): max dw {max_dw:.2e}, max dv {max_dv:.2e}");
+    assert!(singular > 50, "{singular}");
+}
+
 // ---- The readers never panic: Ok or a clear Err. ----
 
 const DAT: &str = "3\n0\n3\n3\n3 3\n2 1 0\n1 2 1\n0 1 2\n-1 -2 -3\ncomment\n";
