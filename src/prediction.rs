@@ -216,3 +216,57 @@ mod tests {
         assert!(predict(&lcp, Some(0b10), &settings).is_none());
     }
 }
+
+/// Last frame's active contacts, keyed by contact ids the caller supplies
+/// (stable across frames, e.g. a feature pair from collision detection).
+/// An island's warm basis is the set of its contacts that carried impulse
+/// last frame; islands none of whose contacts were seen get none.
+#[derive(Clone, Debug, Default)]
+pub struct WarmStart {
+    active: std::collections::HashMap<u64, bool>,
+}
+
+impl WarmStart {
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Records an island's basis: `contact_ids[i]` was active iff bit i of `basis`.
+    pub fn record(&mut self, contact_ids: &[u64], basis: u32) {
+        for (i, &id) in contact_ids.iter().enumerate() {
+            self.active.insert(id, i < 32 && basis >> i & 1 == 1);
+        }
+    }
+
+    /// The warm basis for an island with these contacts, if any was seen.
+    pub fn basis(&self, contact_ids: &[u64]) -> Option<u32> {
+        let mut seen = false;
+        let mut mask = 0u32;
+        for (i, id) in contact_ids.iter().enumerate().take(32) {
+            if let Some(&a) = self.active.get(id) {
+                seen = true;
+                if a {
+                    mask |= 1 << i;
+                }
+            }
+        }
+        seen.then_some(mask)
+    }
+
+    /// Number of contacts remembered.
+    pub fn len(&self) -> usize {
+        self.active.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.active.is_empty()
+    }
+}
+
+/// Count of islands per path, in [`SolvePath::ALL`] order.
+pub fn count_paths(paths: &[SolvePath]) -> Vec<(SolvePath, usize)> {
+    SolvePath::ALL
+        .iter()
+        .map(|&p| (p, paths.iter().filter(|&&x| x == p).count()))
+        .collect()
+}

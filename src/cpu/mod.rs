@@ -4,6 +4,7 @@
 //! path itself.
 
 pub mod assembly;
+pub mod batch;
 pub mod enumeration;
 pub mod enumeration_gray;
 pub mod impulses;
