@@ -194,6 +194,7 @@ fn seed_001_coupled_ncp_by_active_set() {
                 z,
                 w,
                 feasible: true,
+                ..
             } => feasible.push((mask, z, w)),
             BasisOutcome::Solved { .. } => {}
             BasisOutcome::Singular => panic!("A is nonsingular, basis {mask:02b} too"),
