@@ -123,21 +123,23 @@ impl Lcp {
 /// ‖q‖₂ ≤ machine epsilon. Zero exactly when (z, w) is complementary and
 /// both are non-negative; w must be M z + q for the measure to mean anything.
 pub fn lcp_error(z: &[f64], w: &[f64], q: &[f64]) -> f64 {
-    let num = z
-        .iter()
-        .zip(w)
-        .map(|(&zi, &wi)| {
-            let d = zi - (zi - wi).max(0.0);
-            d * d
-        })
-        .sum::<f64>()
-        .sqrt();
-    let qn = q.iter().map(|v| v * v).sum::<f64>().sqrt();
+    let num = norm2(z.iter().zip(w).map(|(&zi, &wi)| zi - (zi - wi).max(0.0)));
+    let qn = norm2(q.iter().copied());
     if qn > f64::EPSILON {
         num / qn
     } else {
         num
     }
+}
+
+/// Euclidean norm, scaled by the largest magnitude so that it neither
+/// overflows for entries near 1e200 nor underflows for entries near 1e-200.
+pub fn norm2(v: impl Iterator<Item = f64> + Clone) -> f64 {
+    let big = v.clone().fold(0.0f64, |m, x| m.max(x.abs()));
+    if big == 0.0 || !big.is_finite() {
+        return big;
+    }
+    big * v.map(|x| (x / big) * (x / big)).sum::<f64>().sqrt()
 }
 
 /// How far a (z, w) pair is from solving the LCP, as numbers.
@@ -323,6 +325,8 @@ mod tests {
         let lcp = Lcp::new(vec![2.0, 1.0, 1.0, 2.0], vec![-5.0, -6.0]).unwrap();
         let r = lcp.residuals(&[4.0 / 3.0, 7.0 / 3.0]);
         assert!(r.error < 1e-15, "{r:?}");
+        // No overflow for huge entries.
+        assert!((lcp_error(&[1e200], &[1e200], &[1.0]) - 1e200).abs() < 1e186);
         // q = 0: the measure is not divided.
         assert_eq!(lcp_error(&[1.0], &[1.0], &[0.0]), 1.0);
         // z = 1, w = -1: z - max(0, 2) = -1, |q| = 1.

@@ -32,6 +32,9 @@ pub enum Family {
     NonSymmetric,
     /// LCPs built to have no solution: a row with M_ij ≤ 0 everywhere and q_i < 0.
     Infeasible,
+    /// The Siconos problems scaled by 1e±6 (from files: see [`siconos_scaled`];
+    /// [`generate`] makes none).
+    SiconosScaled,
 }
 
 impl Family {
@@ -56,6 +59,7 @@ impl Family {
             Family::Chains => "chains",
             Family::NonSymmetric => "non_symmetric",
             Family::Infeasible => "infeasible",
+            Family::SiconosScaled => "siconos_scaled",
         }
     }
 }
@@ -205,6 +209,9 @@ fn chain(n: usize, rng: &mut Rng) -> Scene {
 pub fn generate(family: Family, seed: u64, count: usize) -> Vec<StressCase> {
     let mut rng = Rng::new(seed ^ (family as u64).wrapping_mul(0x9E37_79B9));
     let mut out = Vec::with_capacity(count);
+    if family == Family::SiconosScaled {
+        return out;
+    }
     let mut k = 0usize;
     while out.len() < count {
         let mut push = |parameter: f64, lcps: Vec<Lcp>| {
@@ -265,6 +272,7 @@ pub fn generate(family: Family, seed: u64, count: usize) -> Vec<StressCase> {
                 q[bad] = -rng.range(0.1, 1.0);
                 push(n as f64, vec![Lcp { m, q }]);
             }
+            Family::SiconosScaled => unreachable!("returned above"),
         }
         k += 1;
     }
@@ -333,4 +341,251 @@ mod tests {
         assert!((basis_condition(&lcp, 0b11) - 2e6).abs() < 1e-3);
         assert_eq!(basis_condition(&lcp, 0), 1.0);
     }
+}
+
+/// The Siconos problems of `dir` (a folder of `.dat` files) with n ≤ 16,
+/// each scaled by 1e-6 and by 1e6 (M and q together: same z, w scaled).
+pub fn siconos_scaled(dir: &std::path::Path) -> Result<Vec<(String, StressCase)>, crate::Error> {
+    let mut files: Vec<_> = std::fs::read_dir(dir)
+        .map_err(|source| crate::Error::Io {
+            path: dir.to_path_buf(),
+            source,
+        })?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "dat"))
+        .collect();
+    files.sort();
+    let mut out = Vec::new();
+    for f in files {
+        let crate::io::Input::Lcps(lcps) = crate::io::read_input(&f)? else {
+            continue;
+        };
+        for lcp in lcps.into_iter().filter(|l| l.n() <= 16) {
+            for s in [1e-6, 1e6] {
+                let name = f
+                    .file_stem()
+                    .map(|s| s.to_string_lossy().into_owned())
+                    .unwrap_or_default();
+                out.push((
+                    name,
+                    StressCase {
+                        family: Family::SiconosScaled,
+                        parameter: s,
+                        lcp: scaled(&lcp, s),
+                    },
+                ));
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// One solver's result on one stress case, next to the f64 reference.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct StressPoint {
+    pub family: String,
+    pub solver: String,
+    pub parameter: f64,
+    /// Condition number of the reference basis' principal submatrix.
+    pub condition: f64,
+    pub error: f64,
+    pub status: String,
+    pub status_matches_reference: bool,
+    /// Every z and w finite.
+    pub finite: bool,
+}
+
+/// Summary of one family and one solver.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct StressRow {
+    pub family: String,
+    pub solver: String,
+    pub cases: usize,
+    pub median_error: f64,
+    pub p99_error: f64,
+    pub max_error: f64,
+    /// Share of cases whose status equals the f64 exhaustive enumeration's.
+    pub status_match: f64,
+    /// Cases with a NaN or Inf in z or w (must be 0).
+    pub non_finite: usize,
+    /// Islands the GPU validation had to re-solve on the CPU (GPU rows only).
+    pub repaired: Option<usize>,
+}
+
+/// Summarises points per (family, solver), in first-seen order.
+pub fn summarise(points: &[StressPoint]) -> Vec<StressRow> {
+    let mut keys: Vec<(String, String)> = Vec::new();
+    for p in points {
+        let k = (p.family.clone(), p.solver.clone());
+        if !keys.contains(&k) {
+            keys.push(k);
+        }
+    }
+    keys.into_iter()
+        .map(|(family, solver)| {
+            let ps: Vec<&StressPoint> = points
+                .iter()
+                .filter(|p| p.family == family && p.solver == solver)
+                .collect();
+            let mut e: Vec<f64> = ps.iter().map(|p| p.error).collect();
+            e.sort_by(f64::total_cmp);
+            let q = |f: f64| {
+                e.get(((e.len() as f64 - 1.0) * f).round() as usize)
+                    .copied()
+                    .unwrap_or(0.0)
+            };
+            StressRow {
+                cases: ps.len(),
+                median_error: q(0.5),
+                p99_error: q(0.99),
+                max_error: e.last().copied().unwrap_or(0.0),
+                status_match: ps.iter().filter(|p| p.status_matches_reference).count() as f64
+                    / ps.len().max(1) as f64,
+                non_finite: ps.iter().filter(|p| !p.finite).count(),
+                repaired: None,
+                family,
+                solver,
+            }
+        })
+        .collect()
+}
+
+/// Runs the f64 reference (exhaustive enumeration) and the CPU solvers on
+/// `cases`: Gray-code enumeration, Lemke, PGS (100 sweeps) and the CPU batch
+/// path. Returns one point per case and solver, the reference included.
+pub fn run_cpu(label: &str, cases: &[StressCase], regularization: f64) -> Vec<StressPoint> {
+    use crate::cpu::enumeration::{enumerate, EnumerationSettings};
+    use crate::cpu::enumeration_gray::{enumerate_gray, GraySettings};
+    use crate::solvers::lemke::{lemke, LemkeSettings};
+    use crate::solvers::pgs::{pgs, PgsSettings};
+    let es = EnumerationSettings::default();
+    let mut points = Vec::new();
+    for c in cases {
+        let lcp = if regularization > 0.0 {
+            regularized(&c.lcp, regularization)
+        } else {
+            c.lcp.clone()
+        };
+        let reference = enumerate(&lcp, &es).expect("stress cases have n ≤ 20");
+        let condition = reference
+            .basis
+            .map_or(f64::NAN, |b| basis_condition(&lcp, b));
+        let mut push = |solver: &str, sol: &crate::LcpSolution| {
+            // Errors are measured on the problem as posed, before regularisation.
+            let res = c.lcp.residuals(&sol.z);
+            points.push(StressPoint {
+                family: label.to_string(),
+                solver: solver.to_string(),
+                parameter: c.parameter,
+                condition,
+                error: res.error,
+                status: sol.status.name().to_string(),
+                status_matches_reference: sol.status == reference.status,
+                finite: sol.z.iter().chain(&sol.w).all(|v| v.is_finite()) && res.error.is_finite(),
+            });
+        };
+        push("enum f64 (reference)", &reference);
+        push(
+            "enum gray f64",
+            &enumerate_gray(&lcp, &GraySettings::default()).expect("n ≤ 20"),
+        );
+        push("lemke f64", &lemke(&lcp, &LemkeSettings::default()));
+        push(
+            "pgs 100",
+            &pgs(
+                &lcp,
+                &PgsSettings {
+                    max_iterations: 100,
+                    tolerance: 1e-12,
+                },
+            ),
+        );
+        let batch = crate::cpu::batch::solve_island(&lcp, None, &Default::default());
+        push("cpu batch f64", &batch.solution);
+    }
+    points
+}
+
+/// M + αI: makes a positive semidefinite M definite (one solution), at the
+/// price of an error of order α‖z‖ on the original problem. α = 0 (the
+/// default everywhere) leaves the problem untouched.
+pub fn regularized(lcp: &Lcp, alpha: f64) -> Lcp {
+    let n = lcp.n();
+    let mut m = lcp.m.clone();
+    for i in 0..n {
+        m[i * n + i] += alpha;
+    }
+    Lcp {
+        m,
+        q: lcp.q.clone(),
+    }
+}
+
+/// Draws error against condition number (log–log), one colour per solver.
+pub fn plot_error_vs_condition(
+    points: &[StressPoint],
+    path: &std::path::Path,
+) -> Result<(), crate::Error> {
+    use plotters::prelude::*;
+    let plot_err = |e: String| crate::Error::Io {
+        path: path.to_path_buf(),
+        source: std::io::Error::other(e),
+    };
+    let floor = 1e-18;
+    let pts: Vec<&StressPoint> = points.iter().filter(|p| p.condition.is_finite()).collect();
+    let xmax = pts.iter().map(|p| p.condition).fold(10.0f64, f64::max) * 2.0;
+    let ymax = pts.iter().map(|p| p.error).fold(1e-10f64, f64::max) * 2.0;
+    let root = SVGBackend::new(path, (1000, 700)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| plot_err(e.to_string()))?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(
+            "error against the condition number of the chosen basis",
+            ("sans-serif", 20),
+        )
+        .margin(15)
+        .x_label_area_size(45)
+        .y_label_area_size(70)
+        .build_cartesian_2d((0.5f64..xmax).log_scale(), (floor..ymax).log_scale())
+        .map_err(|e| plot_err(e.to_string()))?;
+    chart
+        .configure_mesh()
+        .x_desc("condition number (1-norm) of M_SS")
+        .y_desc("error (Siconos measure; 0 drawn at 1e-18)")
+        .draw()
+        .map_err(|e| plot_err(e.to_string()))?;
+    let mut solvers: Vec<&str> = Vec::new();
+    for p in &pts {
+        if !solvers.contains(&p.solver.as_str()) {
+            solvers.push(&p.solver);
+        }
+    }
+    let colors = [
+        BLACK,
+        RED,
+        BLUE,
+        GREEN,
+        MAGENTA,
+        CYAN,
+        RGBColor(255, 140, 0),
+        RGBColor(128, 0, 128),
+    ];
+    for (i, s) in solvers.iter().enumerate() {
+        let c = colors[i % colors.len()];
+        chart
+            .draw_series(
+                pts.iter().filter(|p| p.solver == *s).map(|p| {
+                    Circle::new((p.condition.max(1.0), p.error.max(floor)), 2, c.filled())
+                }),
+            )
+            .map_err(|e| plot_err(e.to_string()))?
+            .label(s.to_string())
+            .legend(move |(x, y)| Circle::new((x + 8, y), 4, c.filled()));
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .draw()
+        .map_err(|e| plot_err(e.to_string()))?;
+    root.present().map_err(|e| plot_err(e.to_string()))
 }

@@ -9,7 +9,7 @@
 //! semidefinite M with a positive diagonal (the contact matrices this tool
 //! builds). It needs M_ii > 0; it is cheap per sweep and approximate.
 
-use crate::lcp::{Counters, Lcp, LcpSolution, Status};
+use crate::lcp::{Counters, Lcp, LcpSolution, Residuals, Status};
 
 /// Settings of projected Gauss–Seidel.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -32,6 +32,8 @@ impl Default for PgsSettings {
 /// Solves `lcp` by projected Gauss–Seidel from z = 0. Statuses: `Solved`
 /// (error ≤ tolerance), `NotConverged` (sweep cap; z is the last iterate),
 /// `InvalidInput` (a diagonal entry M_ii ≤ 0, which PGS cannot divide by).
+/// On a problem where it diverges it stops at the last finite iterate, with
+/// `NotConverged`: z and w never hold NaN or Inf.
 /// The error is checked after every sweep, so a converged result costs one
 /// more matrix–vector product per sweep than PGS alone.
 pub fn pgs(lcp: &Lcp, settings: &PgsSettings) -> LcpSolution {
@@ -46,14 +48,23 @@ pub fn pgs(lcp: &Lcp, settings: &PgsSettings) -> LcpSolution {
     if lcp.residuals(&z).error <= settings.tolerance {
         status = Status::Solved;
     }
+    let mut last = z.clone();
     while status != Status::Solved && counters.iterations < settings.max_iterations {
+        last.copy_from_slice(&z);
         for i in 0..n {
             let row = &lcp.m[i * n..(i + 1) * n];
             let r = lcp.q[i] + row.iter().zip(&z).map(|(a, b)| a * b).sum::<f64>();
             z[i] = (z[i] - r / row[i]).max(0.0);
         }
         counters.iterations += 1;
-        if lcp.residuals(&z).error <= settings.tolerance {
+        let w = lcp.w(&z);
+        if !z.iter().chain(&w).all(|v| v.is_finite()) {
+            // Diverged (PGS has no convergence guarantee without symmetric
+            // positive semidefinite M): report the last finite iterate.
+            z.copy_from_slice(&last);
+            break;
+        }
+        if Residuals::of(&z, &w, &lcp.q).error <= settings.tolerance {
             status = Status::Solved;
         }
     }
@@ -80,6 +91,16 @@ mod tests {
             pgs(&lcp, &PgsSettings::default()).status,
             Status::InvalidInput
         );
+    }
+
+    #[test]
+    fn divergence_stops_at_the_last_finite_iterate() {
+        // Non-symmetric with a dominant off-diagonal: the iterates grow
+        // without bound until they overflow.
+        let lcp = Lcp::new(vec![1.0, -1e200, -1e200, 1.0], vec![-1.0, -1.0]).unwrap();
+        let sol = pgs(&lcp, &PgsSettings::default());
+        assert_eq!(sol.status, Status::NotConverged);
+        assert!(sol.z.iter().all(|v| v.is_finite()), "{:?}", sol.z);
     }
 
     #[test]
