@@ -3,7 +3,7 @@
 //! Per island it allocates only the result; the enumeration works in fixed
 //! arrays on the stack.
 
-use crate::cpu::enumeration::MAX_ENUMERATION_N;
+use crate::cpu::enumeration::{enumerate, MAX_ENUMERATION_N};
 use crate::cpu::enumeration_gray::{enumerate_gray, GraySettings};
 use crate::lcp::{Lcp, LcpSolution};
 use crate::prediction::{predict, SolvePath};
@@ -40,7 +40,9 @@ pub struct CpuIslandResult {
     pub solution: LcpSolution,
 }
 
-/// Solves one island: prediction, else Gray-code enumeration, else Lemke.
+/// Solves one island: prediction, else enumeration (by elimination or in
+/// Gray-code order, whichever [`prefers_elimination`] expects to be faster),
+/// else (n > 20) Lemke.
 pub fn solve_island(lcp: &Lcp, warm_basis: Option<u32>, s: &CpuBatchSettings) -> CpuIslandResult {
     if lcp.n() > MAX_ENUMERATION_N {
         return CpuIslandResult {
