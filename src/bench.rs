@@ -310,6 +310,8 @@ pub fn plot_time_vs_error(rows: &[BenchRow], path: &Path, title: &str) -> Result
         .configure_mesh()
         .x_desc("microseconds per island")
         .y_desc("maximum error (Siconos measure)")
+        .x_label_formatter(&|v| format!("{v:.0e}"))
+        .y_label_formatter(&|v| format!("{v:.0e}"))
         .draw()
         .map_err(|e| plot_err(e.to_string()))?;
     let colors = [
@@ -366,6 +368,11 @@ pub fn plot_curves(
     };
     let xs = curves.iter().flat_map(|c| c.1.iter().map(|p| p.0));
     let ys = curves.iter().flat_map(|c| c.1.iter().map(|p| p.1 * 1e6));
+    let (xlo, xhi) = xs
+        .clone()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+            (a.min(x), b.max(x))
+        });
     let (xmin, xmax) = bounds(xs);
     let (ymin, ymax) = bounds(ys);
     let root = SVGBackend::new(path, (900, 600)).into_drawing_area();
@@ -384,6 +391,7 @@ pub fn plot_curves(
                 .configure_mesh()
                 .x_desc(x_desc)
                 .y_desc("microseconds per island")
+                .y_label_formatter(&|v| format!("{v:.0e}"))
                 .draw()
                 .map_err(|e| plot_err(e.to_string()))?;
             for (i, (label, pts)) in curves.iter().enumerate() {
@@ -408,7 +416,7 @@ pub fn plot_curves(
     if log_x {
         draw!((xmin..xmax).log_scale());
     } else {
-        draw!(xmin.floor()..xmax.ceil());
+        draw!((xlo - 0.5)..(xhi + 0.5));
     }
     root.present().map_err(|e| plot_err(e.to_string()))
 }

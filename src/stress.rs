@@ -551,6 +551,8 @@ pub fn plot_error_vs_condition(
         .configure_mesh()
         .x_desc("condition number (1-norm) of M_SS")
         .y_desc("error (Siconos measure; 0 drawn at 1e-18)")
+        .x_label_formatter(&|v| format!("{v:.0e}"))
+        .y_label_formatter(&|v| format!("{v:.0e}"))
         .draw()
         .map_err(|e| plot_err(e.to_string()))?;
     let mut solvers: Vec<&str> = Vec::new();
