@@ -257,10 +257,14 @@ fn refuse(name: &str, text: &str, needles: &[&str]) {
     std::fs::remove_dir_all(dir).ok();
 }
 
-fn scene_json(edit: impl FnOnce(&mut Value)) -> String {
+fn scene_json_value(edit: impl FnOnce(&mut Value)) -> Value {
     let mut v = serde_json::to_value(box_on_ground(1.0, 0.5)).unwrap();
     edit(&mut v);
-    v.to_string()
+    v
+}
+
+fn scene_json(edit: impl FnOnce(&mut Value)) -> String {
+    scene_json_value(edit).to_string()
 }
 
 #[test]
@@ -329,6 +333,64 @@ fn bad_input_is_refused_and_named() {
         "many.json",
         &json!({"scenes": [good, bad]}).to_string(),
         &["scene 1, body 2", "inv_mass"],
+    );
+    // Values of the wrong type or shape name the item and the field, as
+    // the checks on values do.
+    refuse(
+        "type.json",
+        &scene_json(|v| v["bodies"][1]["inv_mass"] = json!("x")),
+        &["scene 0, body 1", "inv_mass", "string"],
+    );
+    refuse(
+        "inertia_row.json",
+        &scene_json(|v| v["bodies"][1]["inv_inertia"][2] = json!([1.0, 0.0])),
+        &["scene 0, body 1", "inv_inertia[2]", "3"],
+    );
+    refuse(
+        "negative_index.json",
+        &scene_json(|v| v["contacts"][1]["a"] = json!(-1)),
+        &["scene 0, contact 1", "`a`", "-1"],
+    );
+    refuse(
+        "short_point.json",
+        &scene_json(|v| v["contacts"][2]["point"] = json!([0.0, 0.0])),
+        &["scene 0, contact 2", "point", "3"],
+    );
+    refuse(
+        "missing.json",
+        &scene_json(|v| {
+            v["contacts"][3].as_object_mut().unwrap().remove("normal");
+        }),
+        &["scene 0, contact 3", "normal", "missing"],
+    );
+    refuse(
+        "null.json",
+        &json!({"scenes": [
+            serde_json::to_value(seed_chain(0.0)).unwrap(),
+            scene_json_value(|v| v["contacts"][0]["restitution"] = json!(null))
+        ]})
+        .to_string(),
+        &["scene 1, contact 0", "restitution", "null"],
+    );
+    refuse(
+        "entry.json",
+        r#"{"problems": [{"M": [[1]], "q": [1]}, {"M": [[1, "x"], [0, 1]], "q": [1, 1]}]}"#,
+        &["problem 1", "M[0][1]", "string"],
+    );
+    refuse(
+        "q_type.json",
+        r#"{"problems": [{"M": [[1, 0], [0, 1]], "q": [1, true]}]}"#,
+        &["problem 0", "q[1]", "boolean"],
+    );
+    refuse(
+        "extra.json",
+        r#"{"problems": [{"M": [[1]], "q": [1], "extra": 1}]}"#,
+        &["problem 0", "extra", "unknown"],
+    );
+    refuse(
+        "not_a_list.json",
+        r#"{"problems": {"M": [[1]], "q": [1]}}"#,
+        &["problems", "array"],
     );
     // A missing input file names the path.
     let out = lcpbatch(&["solve", "/nonexistent/lcpbatch-input.json"]);

@@ -44,14 +44,10 @@ enum JsonInput {
 /// `{"problems": [...]}`, and checks every item. `path` names the file in errors.
 pub fn parse_json(path: &str, text: &str) -> Result<Input, Error> {
     // Parse as a generic value first so that syntax errors keep their position,
-    // then pick the shape by its top-level key, so that a field error names it.
+    // then pick the shape by its top-level key. A value of the wrong type or
+    // shape is then named by item and field (see [`shape_error`]), as the
+    // checks on values name theirs.
     let value: serde_json::Value = serde_json::from_str(text).map_err(|e| Error::json(path, e))?;
-    let shape_err = |what: &str, e: serde_json::Error| Error::Json {
-        path: path.to_string(),
-        line: 0,
-        column: 0,
-        message: format!("{what}: {e}"),
-    };
     let Some(obj) = value.as_object() else {
         return Err(Error::invalid(
             path,
@@ -60,16 +56,20 @@ pub fn parse_json(path: &str, text: &str) -> Result<Input, Error> {
         ));
     };
     let input = if obj.contains_key("problems") {
-        let batch: BatchFile =
-            serde_json::from_value(value).map_err(|e| shape_err("LCP batch", e))?;
+        let batch: BatchFile = serde_json::from_value(value.clone())
+            .map_err(|e| shape_error(path, text, &value, Shape::Batch, e))?;
         JsonInput::Batch {
             problems: batch.problems,
         }
     } else if obj.contains_key("scenes") {
-        let s: ScenesFile = serde_json::from_value(value).map_err(|e| shape_err("scenes", e))?;
+        let s: ScenesFile = serde_json::from_value(value.clone())
+            .map_err(|e| shape_error(path, text, &value, Shape::Scenes, e))?;
         JsonInput::Scenes { scenes: s.scenes }
     } else if obj.contains_key("bodies") || obj.contains_key("contacts") {
-        JsonInput::Scene(serde_json::from_value(value).map_err(|e| shape_err("scene", e))?)
+        JsonInput::Scene(
+            serde_json::from_value(value.clone())
+                .map_err(|e| shape_error(path, text, &value, Shape::Scene, e))?,
+        )
     } else {
         return Err(Error::invalid(
             path,
@@ -110,6 +110,268 @@ pub fn parse_json(path: &str, text: &str) -> Result<Input, Error> {
             Ok(Input::Scenes(vec![scene]))
         }
     }
+}
+
+/// The three shapes of a JSON input file.
+#[derive(Clone, Copy)]
+enum Shape {
+    Batch,
+    Scenes,
+    Scene,
+}
+
+/// Turns serde's error for a value of the wrong type or shape into an error
+/// naming the item ("scene 0, contact 3", "problem 2") and the field
+/// ("normal", "M[1][0]"). Falls back to serde's message with the position in
+/// the text when the walk below finds nothing (it mirrors the types, so that
+/// should not happen).
+fn shape_error(
+    path: &str,
+    text: &str,
+    value: &serde_json::Value,
+    shape: Shape,
+    e: serde_json::Error,
+) -> Error {
+    let found = match shape {
+        Shape::Batch => check_batch(path, value),
+        Shape::Scenes => check_scenes(path, value),
+        Shape::Scene => check_scene("scene 0", value),
+    };
+    if let Some(err) = found {
+        return err;
+    }
+    // Deserializing the text itself gives serde's position.
+    let positioned = match shape {
+        Shape::Batch => serde_json::from_str::<BatchFile>(text).err(),
+        Shape::Scenes => serde_json::from_str::<ScenesFile>(text).err(),
+        Shape::Scene => serde_json::from_str::<Scene>(text).err(),
+    };
+    Error::json(path, positioned.unwrap_or(e))
+}
+
+/// A JSON value's kind, for messages: `string "x"`, `null`, `an array`.
+fn kind(v: &serde_json::Value) -> String {
+    use serde_json::Value;
+    match v {
+        Value::Null => "null".into(),
+        Value::Bool(b) => format!("boolean {b}"),
+        Value::Number(n) => format!("number {n}"),
+        Value::String(s) => {
+            let short: String = s.chars().take(40).collect();
+            format!("string {short:?}")
+        }
+        Value::Array(a) => format!("an array of {} entries", a.len()),
+        Value::Object(_) => "an object".into(),
+    }
+}
+
+type FieldError = (String, String);
+
+fn number(v: &serde_json::Value, field: &str) -> Result<(), FieldError> {
+    if v.is_number() {
+        Ok(())
+    } else {
+        Err((
+            field.into(),
+            format!("expected a number, found {}", kind(v)),
+        ))
+    }
+}
+
+/// An array (of `len` entries when given), each entry checked by `entry`.
+fn array(
+    v: &serde_json::Value,
+    field: &str,
+    len: Option<usize>,
+    entry: impl Fn(&serde_json::Value, &str) -> Result<(), FieldError>,
+) -> Result<(), FieldError> {
+    let Some(a) = v.as_array() else {
+        return Err((
+            field.into(),
+            format!("expected an array, found {}", kind(v)),
+        ));
+    };
+    if let Some(len) = len {
+        if a.len() != len {
+            return Err((
+                field.into(),
+                format!("expected {len} entries, found {}", a.len()),
+            ));
+        }
+    }
+    for (i, x) in a.iter().enumerate() {
+        entry(x, &format!("{field}[{i}]"))?;
+    }
+    Ok(())
+}
+
+fn vec3(v: &serde_json::Value, field: &str) -> Result<(), FieldError> {
+    array(v, field, Some(3), number)
+}
+
+fn index(v: &serde_json::Value, field: &str) -> Result<(), FieldError> {
+    if v.as_u64().is_some_and(|i| usize::try_from(i).is_ok()) {
+        Ok(())
+    } else {
+        Err((
+            field.into(),
+            format!("expected a body index (an integer ≥ 0), found {}", kind(v)),
+        ))
+    }
+}
+
+/// Checks the fields of an object: each required one present and of the
+/// right form, optional ones of the right form when present, and no others
+/// when `closed`.
+fn object(
+    v: &serde_json::Value,
+    fields: &[(
+        &str,
+        bool,
+        fn(&serde_json::Value, &str) -> Result<(), FieldError>,
+    )],
+    closed: bool,
+) -> Result<(), FieldError> {
+    let Some(obj) = v.as_object() else {
+        return Err((
+            "(item)".into(),
+            format!("expected an object, found {}", kind(v)),
+        ));
+    };
+    for &(name, required, check) in fields {
+        match obj.get(name) {
+            None if required => return Err((name.into(), "missing".into())),
+            None => {}
+            Some(x) => check(x, name)?,
+        }
+    }
+    if closed {
+        if let Some(k) = obj
+            .keys()
+            .find(|k| !fields.iter().any(|f| f.0 == k.as_str()))
+        {
+            let known: Vec<String> = fields.iter().map(|f| format!("`{}`", f.0)).collect();
+            return Err((
+                k.clone(),
+                format!("unknown field (expected {})", known.join(", ")),
+            ));
+        }
+    }
+    Ok(())
+}
+
+fn body_fields() -> [(
+    &'static str,
+    bool,
+    fn(&serde_json::Value, &str) -> Result<(), FieldError>,
+); 5] {
+    [
+        ("inv_mass", true, number),
+        ("inv_inertia", true, |v, f| array(v, f, Some(3), vec3)),
+        ("position", true, vec3),
+        ("velocity", true, vec3),
+        ("angular_velocity", true, vec3),
+    ]
+}
+
+fn contact_fields() -> [(
+    &'static str,
+    bool,
+    fn(&serde_json::Value, &str) -> Result<(), FieldError>,
+); 5] {
+    [
+        ("a", true, index),
+        (
+            "b",
+            false,
+            |v, f| if v.is_null() { Ok(()) } else { index(v, f) },
+        ),
+        ("point", true, vec3),
+        ("normal", true, vec3),
+        ("restitution", true, number),
+    ]
+}
+
+/// A list under `key` of `v`, or the error naming it.
+fn list<'a>(
+    item: &str,
+    v: &'a serde_json::Value,
+    key: &str,
+) -> Result<&'a Vec<serde_json::Value>, Error> {
+    match v.get(key) {
+        None => Err(Error::invalid(item, key, "missing")),
+        Some(x) => x.as_array().ok_or_else(|| {
+            Error::invalid(item, key, format!("expected an array, found {}", kind(x)))
+        }),
+    }
+}
+
+fn check_scene(item: &str, v: &serde_json::Value) -> Option<Error> {
+    if !v.is_object() {
+        return Some(Error::invalid(
+            item,
+            "(item)",
+            format!("expected an object, found {}", kind(v)),
+        ));
+    }
+    for (key, what, fields) in [
+        ("bodies", "body", body_fields()),
+        ("contacts", "contact", contact_fields()),
+    ] {
+        let items = match list(item, v, key) {
+            Ok(items) => items,
+            Err(e) => return Some(e),
+        };
+        for (j, x) in items.iter().enumerate() {
+            if let Err((field, reason)) = object(x, &fields, false) {
+                return Some(Error::invalid(format!("{item}, {what} {j}"), field, reason));
+            }
+        }
+    }
+    None
+}
+
+fn check_scenes(path: &str, v: &serde_json::Value) -> Option<Error> {
+    let scenes = match list(path, v, "scenes") {
+        Ok(s) => s,
+        Err(e) => return Some(e),
+    };
+    scenes
+        .iter()
+        .enumerate()
+        .find_map(|(i, s)| check_scene(&format!("scene {i}"), s))
+}
+
+fn check_batch(path: &str, v: &serde_json::Value) -> Option<Error> {
+    if let Some(k) = v
+        .as_object()
+        .and_then(|o| o.keys().find(|k| k.as_str() != "problems"))
+    {
+        return Some(Error::invalid(
+            path,
+            k.as_str(),
+            "unknown field (expected `problems`)",
+        ));
+    }
+    let problems = match list(path, v, "problems") {
+        Ok(p) => p,
+        Err(e) => return Some(e),
+    };
+    let fields: [(
+        &str,
+        bool,
+        fn(&serde_json::Value, &str) -> Result<(), FieldError>,
+    ); 2] = [
+        ("M", true, |v, f| {
+            array(v, f, None, |r, f| array(r, f, None, number))
+        }),
+        ("q", true, |v, f| array(v, f, None, number)),
+    ];
+    problems.iter().enumerate().find_map(|(i, p)| {
+        object(p, &fields, true)
+            .err()
+            .map(|(field, reason)| Error::invalid(format!("problem {i}"), field, reason))
+    })
 }
 
 #[derive(Deserialize)]
