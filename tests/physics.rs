@@ -638,3 +638,29 @@ fn pinned_bodies_couple_their_contacts() {
         "the pinned body couples contacts 0 and 1"
     );
 }
+
+#[test]
+fn islands_beyond_the_enumeration_limit_go_to_lemke() {
+    // Enumeration takes n ≤ 20; the pipeline hands larger islands to Lemke
+    // and says so, and the result is still a solution.
+    let mut rng = Rng::new(41);
+    for n in [21, 24, 30] {
+        let scene = random_island(&mut rng, n, 100.0);
+        let sol = solve_scene(&scene, &settings(Solver::Enum), "big").unwrap();
+        assert_eq!(sol.islands.len(), 1);
+        let isl = &sol.islands[0];
+        assert_eq!(isl.lcp.n(), n);
+        assert_eq!(isl.solver, Solver::Lemke, "n = {n}");
+        assert_eq!(isl.solution.status, Status::Solved, "n = {n}");
+        assert!(
+            isl.solution.residuals.error <= 1e-12,
+            "n = {n}: {:?}",
+            isl.solution.residuals
+        );
+    }
+    // At n = 20 enumeration itself runs.
+    let scene = random_island(&mut rng, 20, 100.0);
+    let sol = solve_scene(&scene, &settings(Solver::Enum), "20").unwrap();
+    assert_eq!(sol.islands[0].solver, Solver::Enum);
+    assert!(sol.islands[0].solution.status.is_solution());
+}
