@@ -222,6 +222,20 @@ fn solves_a_dat_file() {
             assert_eq!(p["status"], lib.status.name(), "{name}");
             assert!(close(&numbers(&p["z"]), &lib.z, 1e-12), "{name}");
         }
+        // A bimatrix game with three isolated solutions, all reported.
+        let out = solve_ok(&sic.join("lcp_CPS_3.dat"), &["--all-solutions"]);
+        let p = &out["problems"][0];
+        assert_eq!(p["status"], "multiple_solutions", "{p}");
+        assert_eq!(p["solution_set"], json!({"kind": "isolated", "count": 3}));
+        assert_eq!(p["solutions"].as_array().unwrap().len(), 3);
+        // And a problem without solution.
+        let out = solve_ok(
+            &sic.join("lcp_Pang_isolated_sol_perturbed.dat"),
+            &["--all-solutions"],
+        );
+        let p = &out["problems"][0];
+        assert_eq!(p["status"], "no_solution", "{p}");
+        assert_eq!(p["solution_set"], json!({"kind": "empty"}));
     }
     std::fs::remove_dir_all(dir).ok();
 }
