@@ -664,3 +664,42 @@ fn islands_beyond_the_enumeration_limit_go_to_lemke() {
     assert_eq!(sol.islands[0].solver, Solver::Enum);
     assert!(sol.islands[0].solution.status.is_solution());
 }
+
+#[test]
+fn a_wedged_ball_with_restitution_has_no_newton_solution() {
+    // A ball touching two parallel walls (normals +x and −x), moving toward
+    // the left one. Newton's law asks it to leave the left wall at ε·v, which
+    // the right wall forbids: with d = (1, 1), J d = 0 (M d = 0) and
+    // dᵀq = −ε v < 0, so no z ≥ 0 makes w ≥ 0. With ε = 0 it simply stops.
+    let mut ball = ball_body(1.0, 0.5, DVec3::ZERO);
+    ball.velocity = [-2.0, 0.0, 0.0];
+    let walls = |e: f64| Scene {
+        bodies: vec![ball.clone()],
+        contacts: vec![
+            contact(0, None, DVec3::new(-0.5, 0.0, 0.0), DVec3::X, e),
+            contact(0, None, DVec3::new(0.5, 0.0, 0.0), -DVec3::X, e),
+        ],
+    };
+    let sol = solve_scene(&walls(0.5), &settings(Solver::Enum), "wedged").unwrap();
+    assert_eq!(sol.islands[0].solution.status, Status::NoSolution);
+    assert_eq!(sol.impulses, vec![0.0, 0.0]);
+    assert_eq!(
+        sol.bodies[0].velocity,
+        [-2.0, 0.0, 0.0],
+        "unchanged, not NaN"
+    );
+    let sol = solve_scene(&walls(0.5), &settings(Solver::Lemke), "wedged").unwrap();
+    assert_eq!(sol.islands[0].solution.status, Status::RayTermination);
+    assert!(sol.bodies[0].velocity.iter().all(|v| v.is_finite()));
+    // ε = 0: it stops dead (a continuum of impulse pairs, one velocity).
+    for s in [Solver::Enum, Solver::Lemke, Solver::Pgs] {
+        let sol = solve_scene(&walls(0.0), &settings(s), "wedged").unwrap();
+        assert!(sol.islands[0].solution.status.is_solution(), "{}", s.name());
+        assert!(
+            sol.bodies[0].velocity[0].abs() < 1e-9,
+            "{}: {:?}",
+            s.name(),
+            sol.bodies[0]
+        );
+    }
+}
