@@ -276,6 +276,48 @@ fn lemke_terminates_on_degenerate_lcps() {
     assert!(capped.is_empty(), "pivot cap on LCPs {capped:?}");
 }
 
+/// Enumeration's tolerances are all relative (module docs), so scaling M
+/// and q, together or apart, changes no verdict: the chosen basis is the same
+/// and z scales by s_q / s_M.
+#[test]
+fn enumeration_verdicts_do_not_depend_on_scale() {
+    let mut rng = Rng::new(0x5CA1E);
+    let mut lcps = Vec::new();
+    for k in 0..2000 {
+        let scene = random_island(&mut rng, 1 + k % 10, MASS_RATIO);
+        lcps.extend(build(&scene, "island").unwrap().2);
+    }
+    for _ in 0..100 {
+        let scene = lcpbatch::generate::demo_world(&mut rng);
+        lcps.extend(build(&scene, "demo").unwrap().2);
+    }
+    for (sm, sq) in [
+        (1e-9, 1e-9),
+        (3e7, 3e7),
+        (1.0, 1e-10),
+        (1.0, 7e9),
+        (1e-8, 1.0),
+        (0.1, 0.1),
+    ] {
+        for (k, lcp) in lcps.iter().enumerate() {
+            let scaled = Lcp::new(
+                lcp.m.iter().map(|v| v * sm).collect(),
+                lcp.q.iter().map(|v| v * sq).collect(),
+            )
+            .unwrap();
+            let a = run(lcp, Solver::Enum);
+            let b = run(&scaled, Solver::Enum);
+            assert_eq!(a.status, b.status, "problem {k}, M × {sm:e}, q × {sq:e}");
+            assert_eq!(a.basis, b.basis, "problem {k}, M × {sm:e}, q × {sq:e}");
+            let back: Vec<f64> = b.z.iter().map(|z| z * sm / sq).collect();
+            assert!(
+                z_rel_diff(&a.z, &back) <= 1e-12,
+                "problem {k}, M × {sm:e}, q × {sq:e}"
+            );
+        }
+    }
+}
+
 // ---- The readers never panic: Ok or a clear Err. ----
 
 const DAT: &str = "3\n0\n3\n3\n3 3\n2 1 0\n1 2 1\n0 1 2\n-1 -2 -3\ncomment\n";
