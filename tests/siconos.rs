@@ -371,16 +371,8 @@ fn pgs_statuses_and_errors() {
         let zero_diag = (0..p.lcp.n()).any(|i| !(p.lcp.at(i, i) > 0.0));
         assert_eq!(sol.status == Status::InvalidInput, zero_diag, "{}", p.name);
         if p.sym_pd() {
-            // Symmetric positive definite: PGS converges (with enough sweeps).
-            let settings = SolverSettings {
-                solver: Solver::Pgs,
-                pgs: PgsSettings {
-                    max_iterations: 100_000,
-                    ..defaults
-                },
-                ..Default::default()
-            };
-            let sol = solve(&p.lcp, &settings).unwrap();
+            // Symmetric positive definite: PGS converges within its default
+            // sweep cap (lcp_mmc, n = 26, cond₂ ≈ 1.2e3, takes the most: ~460).
             assert_eq!(
                 sol.status,
                 Status::Solved,
