@@ -153,7 +153,7 @@ fn enumeration_and_lemke_agree_on_demo_world_islands() {
 /// uniform in [−1, 1); with `psd` the matrix is AᵀA + S (S skew-symmetric),
 /// positive semidefinite and so copositive-plus.
 fn random_lcp(rng: &mut Rng, n: usize, integer: bool, psd: bool) -> Lcp {
-    let mut draw = |rng: &mut Rng| {
+    let draw = |rng: &mut Rng| {
         if integer {
             rng.int(0, 6) as f64 - 3.0
         } else {

@@ -120,7 +120,7 @@ pub fn is_positive_definite(lcp: &Lcp, rel_tol: f64) -> bool {
         .map(|k| 0.5 * (lcp.m[k] + lcp.at(k % n, k / n)))
         .collect();
     let dmax = (0..n).map(|i| a[i * n + i]).fold(0.0f64, f64::max);
-    if !(dmax > 0.0) {
+    if dmax.is_nan() || dmax <= 0.0 {
         return false;
     }
     for j in 0..n {
@@ -128,7 +128,7 @@ pub fn is_positive_definite(lcp: &Lcp, rel_tol: f64) -> bool {
         for k in 0..j {
             d -= a[j * n + k] * a[j * n + k];
         }
-        if !(d > rel_tol * dmax) {
+        if d.is_nan() || d <= rel_tol * dmax {
             return false;
         }
         let l = d.sqrt();
