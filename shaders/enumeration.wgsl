@@ -10,6 +10,14 @@
 // PIVOT_TOL times its column's largest entry of M_SS), then feasible when
 // z_i >= -tol * max|z_S| and w_i = q_i + sum_j M_ij z_j >= -tol * (|q_i| + sum_j |M_ij z_j|).
 //
+// Rounds: an invocation visits bases until it has spent `params.budget` units
+// of loop work (an upper bound of the loop iterations of one basis, see
+// `basis_cost`), saves where it stopped in its BasisResult and counts itself
+// in `unfinished`; the host dispatches rounds until no island of a size is
+// unfinished. llvmpipe (lavapipe) ends every loop of an invocation after about
+// 65,535 iterations in all, silently, so on software adapters the budget
+// stays below that; on hardware it only bounds the time of one dispatch.
+//
 // The host replaces the three lines marked HOST (scalar type, tolerances).
 
 alias Scalar = f32; // HOST scalar
@@ -28,17 +36,19 @@ struct Island {
 }
 
 // One dispatch covers islands first .. first + count of the island table
-// (one dispatch per island size n, split to stay under 65,535 workgroups).
+// (one dispatch per island size n, split to stay under 65,535 workgroups);
+// `budget`: loop work per invocation and round.
 struct Params {
     first: u32,
     count: u32,
-    _pad0: u32,
-    _pad1: u32,
+    budget: u32,
+    _pad: u32,
 }
 
-// What the enumeration found: status 1 = a valid basis `mask` (z written),
-// 0 = none of the 2^n bases is valid. visited / singular count bases as the
-// CPU's Counters do.
+// Where the enumeration of one island stands. status 0: in progress, the
+// next basis to visit is `mask` (zero-initialised: start at the empty basis);
+// 1: `mask` is the chosen valid basis (z written); 2: none of the 2^n bases is
+// valid. visited / singular count bases as the CPU's Counters do.
 struct BasisResult {
     mask: u32,
     status: u32,
@@ -51,6 +61,8 @@ struct BasisResult {
 @group(0) @binding(2) var<storage, read> values: array<Scalar>;
 @group(0) @binding(3) var<storage, read_write> results: array<BasisResult>;
 @group(0) @binding(4) var<storage, read_write> z_out: array<Scalar>;
+// Islands of each size n still in progress after this round.
+@group(0) @binding(5) var<storage, read_write> unfinished: array<atomic<u32>, 17>;
 
 // Private scratch of one invocation: the principal system and its solution.
 var<private> a: array<Scalar, 256>;
@@ -160,52 +172,72 @@ fn solve_basis(base: u32, n: u32, mask: u32) -> u32 {
     return FEASIBLE;
 }
 
+// Upper bound of the loop iterations `solve_basis` spends on a basis with k
+// basic variables out of n, plus one for the caller's loop.
+fn basis_cost(n: u32, k: u32) -> u32 {
+    return 9u + 4u * n + 8u * k + 5u * k * k + (k * k * k) / 3u + n * k;
+}
+
 @compute @workgroup_size(64)
 fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     if gid.x >= params.count {
         return;
     }
     let island_index = params.first + gid.x;
+    var state = results[island_index];
+    if state.status != 0u {
+        return;
+    }
     let island = islands[island_index];
     let n = min(island.n, MAX_N);
     let full = 1u << n;
-    var result = BasisResult(0u, 0u, 0u, 0u);
-    var done = false;
-    for (var k = 0u; k <= n && !done; k++) {
-        var s = (1u << k) - 1u;
-        loop {
-            if s >= full {
-                break;
+    let worst = basis_cost(n, n);
+    // The next basis: s, with k = popcount(s) basic variables.
+    var s = state.mask;
+    var k = countOneBits(s);
+    var spent = 0u;
+    loop {
+        if spent > 0u && spent + worst > params.budget {
+            break;
+        }
+        spent += basis_cost(n, k);
+        state.visited++;
+        let verdict = solve_basis(island.data, n, s);
+        if verdict == SINGULAR {
+            state.singular++;
+        } else if verdict == FEASIBLE {
+            // z of the chosen basis, clamped at 0 like the CPU's solve_basis;
+            // zero elsewhere (the buffer starts zeroed).
+            for (var r = 0u; r < k; r++) {
+                z_out[island.z + idx[r]] = max(x[r], Scalar(0.0));
             }
-            result.visited++;
-            let verdict = solve_basis(island.data, n, s);
-            if verdict == SINGULAR {
-                result.singular++;
-            } else if verdict == FEASIBLE {
-                result.mask = s;
-                result.status = 1u;
-                done = true;
-                break;
-            }
-            if k == 0u {
-                break;
-            }
-            // Next larger mask with the same popcount.
+            state.status = 1u;
+            break;
+        }
+        if s == full - 1u {
+            state.status = 2u;
+            break;
+        }
+        if k == 0u {
+            k = 1u;
+            s = 1u;
+        } else {
+            // Next larger mask with the same popcount (Gosper's hack), or the
+            // smallest mask with one more bit.
             let c = s & (0u - s);
             let r = s + c;
-            s = (((r ^ s) >> 2u) / c) | r;
+            let next = (((r ^ s) >> 2u) >> countTrailingZeros(s)) | r;
+            if next >= full {
+                k++;
+                s = (1u << k) - 1u;
+            } else {
+                s = next;
+            }
         }
     }
-    // z of the chosen basis (clamped at 0 like the CPU's solve_basis), zeros
-    // when none was found.
-    var r = 0u;
-    for (var i = 0u; i < n; i++) {
-        var zi = Scalar(0.0);
-        if result.status == 1u && ((result.mask >> i) & 1u) == 1u {
-            zi = max(x[r], Scalar(0.0));
-            r++;
-        }
-        z_out[island.z + i] = zi;
+    state.mask = s;
+    results[island_index] = state;
+    if state.status == 0u {
+        atomicAdd(&unfinished[n], 1u);
     }
-    results[island_index] = result;
 }

@@ -134,6 +134,8 @@ pub struct BatchReport {
     pub validation_seconds: f64,
     pub chunks: usize,
     pub dispatches: usize,
+    /// Enumeration rounds (see `shaders/enumeration.wgsl`).
+    pub rounds: usize,
 }
 
 impl BatchReport {
@@ -155,6 +157,7 @@ impl BatchReport {
             validation_seconds: 0.0,
             chunks: 0,
             dispatches: 0,
+            rounds: 0,
         }
     }
 
@@ -226,6 +229,7 @@ impl BatchReport {
         self.validation_seconds += o.validation_seconds;
         self.chunks += o.chunks;
         self.dispatches += o.dispatches;
+        self.rounds += o.rounds;
     }
 }
 
@@ -257,8 +261,8 @@ impl fmt::Display for BatchReport {
         )?;
         write!(
             f,
-            "GPU {:.3} s in {} chunk(s), {} dispatch(es); validation {:.3} s",
-            self.gpu_seconds, self.chunks, self.dispatches, self.validation_seconds
+            "GPU {:.3} s in {} chunk(s), {} dispatch(es), {} enumeration round(s); validation {:.3} s",
+            self.gpu_seconds, self.chunks, self.dispatches, self.rounds, self.validation_seconds
         )
     }
 }

@@ -9,7 +9,8 @@
 
 use std::time::Instant;
 
-use super::layout::{scalars_from_bytes, scalars_to_bytes, BasisResult, PackedIsland};
+use super::kernels::Pipelines;
+use super::layout::{scalars_from_bytes, scalars_to_bytes, BasisResult, PackedIsland, FOUND};
 use super::{GpuContext, Precision, MAX_GPU_N};
 use crate::cpu::enumeration::EnumerationSettings;
 use crate::lcp::{Counters, Lcp, LcpSolution, Residuals, Status};
@@ -42,6 +43,9 @@ pub struct GpuSolveSettings {
     pub max_binding_bytes: Option<u64>,
     /// Lower the workgroups per dispatch (capped at the device's limit).
     pub max_workgroups: Option<u32>,
+    /// Loop work per invocation and enumeration round; None: by adapter
+    /// ([`SOFTWARE_ROUND_BUDGET`] or [`HARDWARE_ROUND_BUDGET`]).
+    pub round_budget: Option<u32>,
 }
 
 impl Default for GpuSolveSettings {
@@ -53,6 +57,7 @@ impl Default for GpuSolveSettings {
             lemke: LemkeSettings::default(),
             max_binding_bytes: None,
             max_workgroups: None,
+            round_budget: None,
         }
     }
 }
@@ -131,6 +136,8 @@ pub struct EnumerationOutput {
 pub struct RunStats {
     pub chunks: usize,
     pub dispatches: usize,
+    /// Enumeration rounds (summed over chunks).
+    pub rounds: usize,
     /// Seconds of upload + dispatch + readback.
     pub seconds: f64,
 }
@@ -143,6 +150,143 @@ pub(crate) fn limits_for(ctx: &GpuContext, settings: &GpuSolveSettings) -> (u64,
     let groups = l.max_compute_workgroups_per_dimension;
     let groups = settings.max_workgroups.map_or(groups, |g| g.min(groups));
     (bind.max(1024), groups.max(1))
+}
+
+/// Loop work per invocation and round on software adapters: llvmpipe ends
+/// every loop of an invocation after about 65,535 iterations in all.
+pub const SOFTWARE_ROUND_BUDGET: u32 = 48_000;
+/// Loop work per invocation and round on hardware (bounds one dispatch's time).
+pub const HARDWARE_ROUND_BUDGET: u32 = 1 << 22;
+
+/// What the enumeration stage gave for a table of islands.
+pub(crate) struct EnumerationRun {
+    pub results: Vec<BasisResult>,
+    /// z of every island at its table offset, in the shader's precision.
+    pub z: Vec<f64>,
+    pub dispatches: usize,
+    pub rounds: usize,
+}
+
+/// Runs the enumeration stage over `table` (sorted by n; M and q in
+/// `values`), in rounds until every island is done. `encoder` may hold
+/// earlier work (assembly); it is submitted with the first round.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn run_enumeration(
+    ctx: &GpuContext,
+    pipelines: &Pipelines,
+    islands: &wgpu::Buffer,
+    values: &wgpu::Buffer,
+    table: &[PackedIsland],
+    max_groups: u32,
+    budget: u32,
+    mut encoder: wgpu::CommandEncoder,
+) -> Result<EnumerationRun, Error> {
+    let precision = ctx.precision();
+    let sb = precision.bytes();
+    // results: where each island's enumeration stands (zeroed: not started).
+    let results_size = (table.len() * std::mem::size_of::<BasisResult>()) as u64;
+    let results = ctx.storage_zeroed("results", results_size);
+    // z: each island's z of the chosen basis (zeroed: 0 off the basis).
+    let z_len = table.iter().map(|r| (r.z + r.n) as u64).max().unwrap_or(0);
+    let z_size = z_len * sb;
+    let z = ctx.storage_zeroed("z", z_size);
+    // unfinished: islands per size n still in progress after a round.
+    let unfinished = ctx.storage_zeroed("unfinished", 17 * 4);
+    let stage = &pipelines.enumeration;
+    let bind = |params: &wgpu::Buffer| {
+        ctx.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("enumeration"),
+            layout: &stage.layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: params.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: islands.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: values.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 3,
+                    resource: results.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 4,
+                    resource: z.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 5,
+                    resource: unfinished.as_entire_binding(),
+                },
+            ],
+        })
+    };
+    // One bucket per island size: a workgroup never waits on a larger island.
+    let mut buckets: Vec<(u32, Vec<(wgpu::BindGroup, u32)>)> = Vec::new();
+    let mut first = 0usize;
+    while first < table.len() {
+        let n = table[first].n;
+        let mut last = first;
+        while last < table.len() && table[last].n == n {
+            last += 1;
+        }
+        let r = ctx.ranges(
+            first as u32,
+            (last - first) as u32,
+            max_groups,
+            budget,
+            &bind,
+        );
+        buckets.push((n, r));
+        first = last;
+    }
+    let mut active: Vec<usize> = (0..buckets.len()).collect();
+    let (mut rounds, mut dispatches, mut per_submit) = (0usize, 0usize, 1usize);
+    while !active.is_empty() {
+        for r in 0..per_submit {
+            if r + 1 == per_submit {
+                // Count only what the last round of this submission leaves.
+                encoder.clear_buffer(&unfinished, 0, None);
+            }
+            for &b in &active {
+                ctx.record(&mut encoder, stage, &buckets[b].1);
+                dispatches += buckets[b].1.len();
+            }
+        }
+        rounds += per_submit;
+        let counts = ctx.submit_and_read(encoder, &[(&unfinished, 17 * 4)])?;
+        let counts: &[u32] = bytemuck::try_cast_slice(&counts[0])
+            .map_err(|e| Error::Gpu(format!("unfinished counts: {e}")))?;
+        active.retain(|&b| counts.get(buckets[b].0 as usize).copied().unwrap_or(0) > 0);
+        // Every round visits at least one basis of every unfinished island.
+        if rounds > (1 << MAX_GPU_N) + 1 {
+            return Err(Error::Gpu(
+                "enumeration made no progress (rounds exceed 2^16)".into(),
+            ));
+        }
+        encoder = ctx
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("enumeration readback"),
+            });
+        per_submit = (per_submit * 2).min(256);
+    }
+    let mut read = ctx.submit_and_read(encoder, &[(&results, results_size), (&z, z_size)])?;
+    let z_bytes = read.pop().unwrap_or_default();
+    let r_bytes = read.pop().unwrap_or_default();
+    let results: Vec<BasisResult> = bytemuck::try_cast_slice(&r_bytes)
+        .map_err(|e| Error::Gpu(format!("results: {e}")))?
+        .to_vec();
+    Ok(EnumerationRun {
+        results,
+        z: scalars_from_bytes(&z_bytes, precision),
+        dispatches,
+        rounds,
+    })
 }
 
 /// Runs the enumeration stage alone on every problem (each must be valid
@@ -167,6 +311,7 @@ pub fn enumerate_on_gpu(
     let (pivot, feas) = settings.gpu_tolerances(precision);
     let pipelines = ctx.pipelines(pivot, feas)?;
     let (max_bytes, max_groups) = limits_for(ctx, settings);
+    let budget = round_budget(ctx, settings);
     let sb = precision.bytes();
 
     // Sorted by n: one dispatch per size, no island waits on a larger one.
@@ -214,93 +359,55 @@ pub fn enumerate_on_gpu(
             data.extend_from_slice(&l.q);
             zoff += l.n() as u32;
         }
-        let (results_bytes, z_bytes) = ctx.scoped("enumeration", || -> Result<_, Error> {
+        let run = ctx.scoped("enumeration", || -> Result<EnumerationRun, Error> {
             // islands: the chunk's island table, sorted by n.
             let islands_buf = ctx.storage("islands", bytemuck::cast_slice(&table));
             // values: every island's M (row-major) and q, in the shader's precision.
             let values_buf = ctx.storage("values", &scalars_to_bytes(&data, precision));
-            // results: the chosen basis and counters of every island.
-            let results_size = (table.len() * std::mem::size_of::<BasisResult>()) as u64;
-            let results_buf = ctx.storage_zeroed("results", results_size);
-            // z: the GPU's z of every island (reported beside the polished one).
-            let z_size = zoff as u64 * sb;
-            let z_buf = ctx.storage_zeroed("z", z_size);
-            let mut encoder = ctx
+            let encoder = ctx
                 .device
                 .create_command_encoder(&wgpu::CommandEncoderDescriptor {
                     label: Some("enumeration"),
                 });
-            let stage = &pipelines.enumeration;
-            let bind = |params: &wgpu::Buffer| {
-                ctx.device.create_bind_group(&wgpu::BindGroupDescriptor {
-                    label: Some("enumeration"),
-                    layout: &stage.layout,
-                    entries: &[
-                        wgpu::BindGroupEntry {
-                            binding: 0,
-                            resource: params.as_entire_binding(),
-                        },
-                        wgpu::BindGroupEntry {
-                            binding: 1,
-                            resource: islands_buf.as_entire_binding(),
-                        },
-                        wgpu::BindGroupEntry {
-                            binding: 2,
-                            resource: values_buf.as_entire_binding(),
-                        },
-                        wgpu::BindGroupEntry {
-                            binding: 3,
-                            resource: results_buf.as_entire_binding(),
-                        },
-                        wgpu::BindGroupEntry {
-                            binding: 4,
-                            resource: z_buf.as_entire_binding(),
-                        },
-                    ],
-                })
-            };
-            let mut first = 0usize;
-            while first < table.len() {
-                let n = table[first].n;
-                let mut last = first;
-                while last < table.len() && table[last].n == n {
-                    last += 1;
-                }
-                ctx.dispatch_ranges(
-                    &mut encoder,
-                    stage,
-                    first as u32,
-                    (last - first) as u32,
-                    max_groups,
-                    &bind,
-                );
-                stats.dispatches += 1;
-                first = last;
-            }
-            let mut read =
-                ctx.submit_and_read(encoder, &[(&results_buf, results_size), (&z_buf, z_size)])?;
-            let z = read.pop().unwrap_or_default();
-            let r = read.pop().unwrap_or_default();
-            Ok((r, z))
+            run_enumeration(
+                ctx,
+                &pipelines,
+                &islands_buf,
+                &values_buf,
+                &table,
+                max_groups,
+                budget,
+                encoder,
+            )
         })??;
-        let results: &[BasisResult] = bytemuck::try_cast_slice(&results_bytes)
-            .map_err(|e| Error::Gpu(format!("results: {e}")))?;
-        let z_all = scalars_from_bytes(&z_bytes, precision);
-        for ((&i, rec), res) in chunk.iter().zip(&table).zip(results) {
+        for ((&i, rec), res) in chunk.iter().zip(&table).zip(&run.results) {
             let (z0, n) = (rec.z as usize, rec.n as usize);
             out[i] = EnumerationOutput {
                 result: *res,
-                z: z_all
+                z: run
+                    .z
                     .get(z0..z0 + n)
                     .map(<[f64]>::to_vec)
                     .unwrap_or_default(),
             };
         }
         stats.chunks += 1;
+        stats.dispatches += run.dispatches;
+        stats.rounds += run.rounds;
         at = end;
     }
     stats.seconds = start.elapsed().as_secs_f64();
     Ok((out, stats))
+}
+
+/// Loop work per invocation and round for this adapter and these settings.
+pub(crate) fn round_budget(ctx: &GpuContext, settings: &GpuSolveSettings) -> u32 {
+    let default = if ctx.adapter_info().software {
+        SOFTWARE_ROUND_BUDGET
+    } else {
+        HARDWARE_ROUND_BUDGET
+    };
+    settings.round_budget.unwrap_or(default).max(1)
 }
 
 /// A result for a problem that failed its checks.
@@ -362,10 +469,11 @@ pub fn solve_lcp_batch(
     report.gpu_seconds = stats.seconds;
     report.chunks = stats.chunks;
     report.dispatches = stats.dispatches;
+    report.rounds = stats.rounds;
     let start = Instant::now();
     for (&i, o) in on_gpu.iter().zip(outputs) {
         let verdict = GpuVerdict {
-            basis: (o.result.status == 1).then_some(o.result.mask),
+            basis: (o.result.status == FOUND).then_some(o.result.mask),
             visited: o.result.visited as u64,
             singular: o.result.singular as u64,
             z: &o.z,

@@ -183,6 +183,7 @@ impl Pipelines {
                         storage_entry(2, true),
                         storage_entry(3, false),
                         storage_entry(4, false),
+                        storage_entry(5, false),
                     ],
                 ),
                 assemble_contacts: stage(
@@ -291,27 +292,28 @@ impl GpuContext {
         })
     }
 
-    /// Records dispatches of `stage` over items 0..count in ranges of at most
-    /// `max_groups` workgroups (the per-dimension limit), each range with its
-    /// own Params uniform. `bind` makes the bind group for a Params buffer.
-    pub(crate) fn dispatch_ranges(
+    /// Bind groups for dispatches of a stage over items first..first+count in
+    /// ranges of at most `max_groups` workgroups (the per-dimension limit),
+    /// each range with its own Params uniform; `bind` makes the bind group
+    /// for a Params buffer. Returns (bind group, workgroups) per range.
+    pub(crate) fn ranges(
         &self,
-        encoder: &mut wgpu::CommandEncoder,
-        stage: &Stage,
         first: u32,
         count: u32,
         max_groups: u32,
+        budget: u32,
         bind: &dyn Fn(&wgpu::Buffer) -> wgpu::BindGroup,
-    ) {
+    ) -> Vec<(wgpu::BindGroup, u32)> {
         let per = max_groups.max(1) as u64 * WORKGROUP as u64;
+        let mut out = Vec::new();
         let mut done = 0u64;
         while done < count as u64 {
             let this = (count as u64 - done).min(per) as u32;
             let params = Params {
                 first: first + done as u32,
                 count: this,
-                _pad0: 0,
-                _pad1: 0,
+                budget,
+                _pad: 0,
             };
             // Params: which slice of the table this dispatch covers.
             let ub = self
@@ -321,17 +323,42 @@ impl GpuContext {
                     contents: bytemuck::bytes_of(&params),
                     usage: wgpu::BufferUsages::UNIFORM,
                 });
-            let bg = bind(&ub);
+            out.push((bind(&ub), this.div_ceil(WORKGROUP)));
+            done += this as u64;
+        }
+        out
+    }
+
+    /// Records one dispatch of `stage` per range.
+    pub(crate) fn record(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        stage: &Stage,
+        ranges: &[(wgpu::BindGroup, u32)],
+    ) {
+        for (bg, groups) in ranges {
             let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
                 label: Some("dispatch"),
                 timestamp_writes: None,
             });
             pass.set_pipeline(&stage.pipeline);
-            pass.set_bind_group(0, &bg, &[]);
-            pass.dispatch_workgroups(this.div_ceil(WORKGROUP), 1, 1);
-            drop(pass);
-            done += this as u64;
+            pass.set_bind_group(0, bg, &[]);
+            pass.dispatch_workgroups(*groups, 1, 1);
         }
+    }
+
+    /// Records dispatches of `stage` over items first..first+count (see [`Self::ranges`]).
+    pub(crate) fn dispatch_ranges(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        stage: &Stage,
+        first: u32,
+        count: u32,
+        max_groups: u32,
+        bind: &dyn Fn(&wgpu::Buffer) -> wgpu::BindGroup,
+    ) {
+        let r = self.ranges(first, count, max_groups, 0, bind);
+        self.record(encoder, stage, &r);
     }
 
     /// Copies each (buffer, bytes) to a mappable buffer, submits `encoder`,

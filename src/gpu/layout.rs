@@ -76,26 +76,33 @@ pub struct PackedIsland {
     pub contacts: u32,
 }
 
-/// WGSL `BasisResult`: what enumeration found for one island.
+/// WGSL `BasisResult`: where the enumeration of one island stands.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Pod, Zeroable)]
 pub struct BasisResult {
-    /// Chosen basis (bit i: z_i basic) when `status` is 1.
+    /// Status 1: the chosen basis (bit i: z_i basic); status 0: the next basis to visit.
     pub mask: u32,
-    /// 1: a valid basis was found; 0: none of the 2ⁿ is valid.
+    /// 0: in progress; 1 ([`FOUND`]): a valid basis was found; 2 ([`NONE`]):
+    /// none of the 2ⁿ is valid.
     pub status: u32,
     pub visited: u32,
     pub singular: u32,
 }
 
-/// WGSL `Params`: the range of a table one dispatch covers.
+/// [`BasisResult::status`]: a valid basis was found.
+pub const FOUND: u32 = 1;
+/// [`BasisResult::status`]: every basis was visited, none is valid.
+pub const NONE: u32 = 2;
+
+/// WGSL `Params`: the range of a table one dispatch covers, and (enumeration)
+/// the loop work each invocation may spend in one round.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Pod, Zeroable)]
 pub struct Params {
     pub first: u32,
     pub count: u32,
-    pub _pad0: u32,
-    pub _pad1: u32,
+    pub budget: u32,
+    pub _pad: u32,
 }
 
 /// WGSL `ContactBodies`: the two bodies of a contact (b = [`NO_BODY`] for the
@@ -123,6 +130,14 @@ pub struct Slot {
 pub struct BodyContacts {
     pub start: u32,
     pub count: u32,
+}
+
+/// WGSL `ContactSide` (impulses): a contact touching a body, on side 0 (a) or 1 (b).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Pod, Zeroable)]
+pub struct ContactSide {
+    pub contact: u32,
+    pub side: u32,
 }
 
 /// Packs one body (see the table above).

@@ -19,11 +19,13 @@
 pub mod batch;
 pub mod kernels;
 pub mod layout;
+pub mod scenes;
 
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
 pub use batch::{solve_lcp_batch, GpuBatchResult, GpuSolveSettings, IslandOutcome, SolvedOn};
+pub use scenes::{solve_scenes, GpuSceneResult};
 
 use crate::Error;
 

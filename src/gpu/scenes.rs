@@ -1,0 +1,594 @@
+//! Whole scenes on the GPU: assembly (per contact, then per island),
+//! enumeration and impulse application as shaders, every answer validated
+//! on the CPU in f64.
+//!
+//! One submission per chunk of scenes runs `assemble_contacts` →
+//! `assemble_islands` → `enumeration` (one dispatch per island size) on
+//! device-resident buffers; the chosen bases come back, the CPU polishes
+//! them in f64 (against its own f64 assembly, O(n²) per island) and a
+//! second submission applies the validated impulses with `impulses.wgsl`.
+//! Its velocities are checked against the f64 twin, whose values are kept.
+
+use std::time::Instant;
+
+use super::batch::{
+    limits_for, round_budget, run_enumeration, solve_lcp_batch, GpuSolveSettings, SolvedOn,
+};
+use super::kernels::Pipelines;
+use super::layout::{
+    pack_body, pack_contact, scalars_from_bytes, scalars_to_bytes, unpack_row, BasisResult,
+    BodyContacts, ContactBodies, ContactSide, PackedIsland, Slot, BODY, FOUND, NO_BODY, ROW,
+    VELOCITY,
+};
+use super::{GpuContext, MAX_GPU_N};
+use crate::cpu::assembly::ContactRow;
+use crate::cpu::impulses::{apply_impulses, BodyVelocity};
+use crate::islands::Island;
+use crate::lcp::{Lcp, LcpSolution};
+use crate::pipeline::{build, IslandResult, SceneSolution};
+use crate::scene::Scene;
+use crate::solvers::lemke::lemke;
+use crate::solvers::Solver;
+use crate::validation::{validate_island, BatchReport, GpuVerdict, Verdict};
+use crate::Error;
+
+/// Scenes after the impact, with where each island was solved.
+#[derive(Clone, Debug)]
+pub struct GpuSceneResult {
+    /// The same shape as the CPU path's result, scene by scene.
+    pub scenes: Vec<SceneSolution>,
+    /// Per scene, per island (in `SceneSolution::islands` order).
+    pub solved_on: Vec<Vec<SolvedOn>>,
+    pub report: BatchReport,
+    /// Largest |GPU velocity − f64 velocity| / (1 + |f64 velocity|) of the
+    /// impulse stage over every body.
+    pub max_velocity_deviation: f64,
+}
+
+/// The GPU's assembly stage output, unpacked (for comparison with the twin).
+#[derive(Clone, Debug)]
+pub struct GpuAssembly {
+    /// Per scene, per contact: the row assembled on the GPU.
+    pub rows: Vec<Vec<ContactRow>>,
+    /// Per scene, per island with n ≤ 16 (in `find_islands` order): (M, q)
+    /// assembled on the GPU.
+    pub lcps: Vec<Vec<Option<Lcp>>>,
+}
+
+/// A scene prepared on the CPU: islands, f64 rows and f64 LCPs.
+struct Prepared {
+    islands: Vec<Island>,
+    rows: Vec<ContactRow>,
+    lcps: Vec<Lcp>,
+}
+
+/// The packed buffers of a chunk of scenes.
+#[derive(Default)]
+struct Chunk {
+    scenes: Vec<usize>,
+    first_body: Vec<u32>,
+    first_contact: Vec<u32>,
+    bodies: Vec<f64>,
+    ids: Vec<ContactBodies>,
+    contacts: Vec<f64>,
+    /// Islands with n ≤ 16, sorted by n.
+    table: Vec<PackedIsland>,
+    /// (scene, island) of every table entry.
+    keys: Vec<(usize, usize)>,
+    slots: Vec<Slot>,
+    values_len: u32,
+    z_len: u32,
+}
+
+/// Bytes of the largest buffer a scene needs (see [`Chunk`]).
+fn scene_bytes(scene: &Scene, p: &Prepared, sb: u64) -> [u64; 5] {
+    let nb = scene.bodies.len() as u64;
+    let nc = scene.contacts.len() as u64;
+    let small = p.islands.iter().filter(|i| i.len() <= MAX_GPU_N);
+    let values: u64 = small
+        .clone()
+        .map(|i| (i.len() * i.len() + i.len()) as u64)
+        .sum();
+    [
+        nb * BODY as u64 * sb,
+        nc * ROW as u64 * sb,
+        values * sb,
+        nc * 16,
+        nb * VELOCITY as u64 * sb,
+    ]
+}
+
+fn pack_chunk(scenes: &[Scene], prepared: &[Prepared], members: &[usize]) -> Chunk {
+    let mut c = Chunk::default();
+    let mut entries: Vec<(usize, usize, usize)> = Vec::new(); // (n, position in chunk, island)
+    for &s in members {
+        let scene = &scenes[s];
+        let fb = (c.bodies.len() / BODY) as u32;
+        let fc = c.ids.len() as u32;
+        c.scenes.push(s);
+        c.first_body.push(fb);
+        c.first_contact.push(fc);
+        for b in &scene.bodies {
+            pack_body(b, &mut c.bodies);
+        }
+        for ct in &scene.contacts {
+            pack_contact(ct, fb, &mut c.ids, &mut c.contacts);
+        }
+        let pos = c.scenes.len() - 1;
+        for (k, isl) in prepared[s].islands.iter().enumerate() {
+            if isl.len() <= MAX_GPU_N {
+                entries.push((isl.len(), pos, k));
+            }
+        }
+    }
+    entries.sort_by_key(|e| e.0);
+    for (n, pos, k) in entries {
+        let s = c.scenes[pos];
+        let fc = c.first_contact[pos];
+        c.table.push(PackedIsland {
+            n: n as u32,
+            data: c.values_len,
+            z: c.z_len,
+            contacts: c.slots.len() as u32,
+        });
+        let island_index = (c.table.len() - 1) as u32;
+        for &ct in &prepared[s].islands[k].contacts {
+            c.slots.push(Slot {
+                island: island_index,
+                contact: fc + ct as u32,
+            });
+        }
+        c.keys.push((s, k));
+        c.values_len += (n * n + n) as u32;
+        c.z_len += n as u32;
+    }
+    c
+}
+
+/// Device buffers of a chunk that the impulse stage reuses.
+struct Resident {
+    bodies: wgpu::Buffer,
+    rows: wgpu::Buffer,
+}
+
+struct StageOutput {
+    results: Vec<BasisResult>,
+    z: Vec<f64>,
+    rows: Option<Vec<f64>>,
+    values: Option<Vec<f64>>,
+    resident: Resident,
+    dispatches: usize,
+    rounds: usize,
+}
+
+fn entry(binding: u32, b: &wgpu::Buffer) -> wgpu::BindGroupEntry<'_> {
+    wgpu::BindGroupEntry {
+        binding,
+        resource: b.as_entire_binding(),
+    }
+}
+
+/// Submission 1: assembly (contacts, islands) and enumeration.
+fn assemble_and_enumerate(
+    ctx: &GpuContext,
+    p: &Pipelines,
+    c: &Chunk,
+    max_groups: u32,
+    budget: u32,
+    enumerate: bool,
+) -> Result<StageOutput, Error> {
+    let precision = ctx.precision();
+    let sb = precision.bytes();
+    ctx.scoped(
+        "assembly and enumeration",
+        || -> Result<StageOutput, Error> {
+            let d = &ctx.device;
+            // bodies: packed bodies of every scene in the chunk (20 scalars each).
+            let bodies = ctx.storage("bodies", &scalars_to_bytes(&c.bodies, precision));
+            // contact_bodies: each contact's bodies, as chunk-wide body indices.
+            let ids = ctx.storage("contact_bodies", bytemuck::cast_slice(&c.ids));
+            // contacts: point, normal, restitution of every contact (8 scalars).
+            let contacts = ctx.storage("contacts", &scalars_to_bytes(&c.contacts, precision));
+            // rows: assembly's per-contact output (K, J, M⁻¹Jᵀ, v_rel, q); the
+            // island stage and the impulse stage read it on the device.
+            let rows_size = (c.ids.len() * ROW) as u64 * sb;
+            let rows = ctx.storage_zeroed("rows", rows_size);
+            // islands: the island table, sorted by n.
+            let islands = ctx.storage("islands", bytemuck::cast_slice(&c.table));
+            // slots: one (island, contact) per island row, for the island stage.
+            let slots = ctx.storage("slots", bytemuck::cast_slice(&c.slots));
+            // values: every island's M and q as assembled here, read by enumeration.
+            let values_size = c.values_len as u64 * sb;
+            let values = ctx.storage_zeroed("values", values_size);
+            let mut encoder = d.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("assembly and enumeration"),
+            });
+            let mut dispatches = 0;
+            let st = &p.assemble_contacts;
+            ctx.dispatch_ranges(
+                &mut encoder,
+                st,
+                0,
+                c.ids.len() as u32,
+                max_groups,
+                &|params| {
+                    d.create_bind_group(&wgpu::BindGroupDescriptor {
+                        label: Some("assemble_contacts"),
+                        layout: &st.layout,
+                        entries: &[
+                            entry(0, params),
+                            entry(1, &bodies),
+                            entry(2, &ids),
+                            entry(3, &contacts),
+                            entry(4, &rows),
+                        ],
+                    })
+                },
+            );
+            dispatches += 1;
+            let st = &p.assemble_islands;
+            ctx.dispatch_ranges(
+                &mut encoder,
+                st,
+                0,
+                c.slots.len() as u32,
+                max_groups,
+                &|params| {
+                    d.create_bind_group(&wgpu::BindGroupDescriptor {
+                        label: Some("assemble_islands"),
+                        layout: &st.layout,
+                        entries: &[
+                            entry(0, params),
+                            entry(2, &ids),
+                            entry(4, &rows),
+                            entry(5, &islands),
+                            entry(6, &slots),
+                            entry(7, &values),
+                        ],
+                    })
+                },
+            );
+            dispatches += 1;
+            if enumerate {
+                let run = run_enumeration(
+                    ctx, p, &islands, &values, &c.table, max_groups, budget, encoder,
+                )?;
+                return Ok(StageOutput {
+                    results: run.results,
+                    z: run.z,
+                    rows: None,
+                    values: None,
+                    resident: Resident { bodies, rows },
+                    dispatches: dispatches + run.dispatches,
+                    rounds: run.rounds,
+                });
+            }
+            let got =
+                ctx.submit_and_read(encoder, &[(&rows, rows_size), (&values, values_size)])?;
+            let mut got = got.into_iter();
+            Ok(StageOutput {
+                results: Vec::new(),
+                z: Vec::new(),
+                rows: got.next().map(|b| scalars_from_bytes(&b, precision)),
+                values: got.next().map(|b| scalars_from_bytes(&b, precision)),
+                resident: Resident { bodies, rows },
+                dispatches,
+                rounds: 0,
+            })
+        },
+    )?
+}
+
+/// Submission 2: velocities after the impulses `z` (one per chunk contact).
+fn apply_on_gpu(
+    ctx: &GpuContext,
+    p: &Pipelines,
+    c: &Chunk,
+    resident: &Resident,
+    z: &[f64],
+    max_groups: u32,
+) -> Result<Vec<f64>, Error> {
+    let precision = ctx.precision();
+    let nb = c.bodies.len() / BODY;
+    // CSR of (contact, side) per body, in contact order (the twin's order).
+    let mut count = vec![0u32; nb];
+    for id in &c.ids {
+        count[id.a as usize] += 1;
+        if id.b != NO_BODY {
+            count[id.b as usize] += 1;
+        }
+    }
+    let mut ranges = Vec::with_capacity(nb);
+    let mut start = 0u32;
+    for &k in &count {
+        ranges.push(BodyContacts { start, count: 0 });
+        start += k;
+    }
+    let mut sides = vec![ContactSide::default(); start as usize];
+    for (ci, id) in c.ids.iter().enumerate() {
+        for (side, b) in [(0u32, id.a), (1u32, id.b)] {
+            if b == NO_BODY {
+                continue;
+            }
+            let r = &mut ranges[b as usize];
+            sides[(r.start + r.count) as usize] = ContactSide {
+                contact: ci as u32,
+                side,
+            };
+            r.count += 1;
+        }
+    }
+    ctx.scoped("impulses", || -> Result<Vec<f64>, Error> {
+        let d = &ctx.device;
+        // body_contacts: each body's range in contact_sides.
+        let body_contacts = ctx.storage("body_contacts", bytemuck::cast_slice(&ranges));
+        // contact_sides: (contact, side) pairs gathered per body.
+        let contact_sides = ctx.storage("contact_sides", bytemuck::cast_slice(&sides));
+        // z: the validated impulse of every contact.
+        let zb = ctx.storage("z", &scalars_to_bytes(z, precision));
+        // velocities: the output, 8 scalars per body.
+        let vel_size = (nb * VELOCITY) as u64 * precision.bytes();
+        let velocities = ctx.storage_zeroed("velocities", vel_size);
+        let mut encoder = d.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+            label: Some("impulses"),
+        });
+        let st = &p.impulses;
+        ctx.dispatch_ranges(&mut encoder, st, 0, nb as u32, max_groups, &|params| {
+            d.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("impulses"),
+                layout: &st.layout,
+                entries: &[
+                    entry(0, params),
+                    entry(1, &resident.bodies),
+                    entry(2, &resident.rows),
+                    entry(3, &body_contacts),
+                    entry(4, &contact_sides),
+                    entry(5, &zb),
+                    entry(6, &velocities),
+                ],
+            })
+        });
+        let got = ctx.submit_and_read(encoder, &[(&velocities, vel_size)])?;
+        Ok(scalars_from_bytes(&got[0], precision))
+    })?
+}
+
+/// Splits the scenes into chunks under the binding limit; scenes too large
+/// for one chunk on their own are returned apart.
+fn plan(
+    scenes: &[Scene],
+    prepared: &[Prepared],
+    max_bytes: u64,
+    sb: u64,
+) -> (Vec<Vec<usize>>, Vec<usize>) {
+    let mut chunks = Vec::new();
+    let mut alone = Vec::new();
+    let mut cur: Vec<usize> = Vec::new();
+    let mut acc = [0u64; 5];
+    for (s, (scene, p)) in scenes.iter().zip(prepared).enumerate() {
+        let b = scene_bytes(scene, p, sb);
+        if b.iter().any(|&x| x > max_bytes) {
+            alone.push(s);
+            continue;
+        }
+        if acc.iter().zip(&b).any(|(a, x)| a + x > max_bytes) && !cur.is_empty() {
+            chunks.push(std::mem::take(&mut cur));
+            acc = [0; 5];
+        }
+        for (a, x) in acc.iter_mut().zip(&b) {
+            *a += x;
+        }
+        cur.push(s);
+    }
+    if !cur.is_empty() {
+        chunks.push(cur);
+    }
+    (chunks, alone)
+}
+
+/// Runs only the assembly stage on the GPU and unpacks its output, for the
+/// stage-by-stage comparison with [`crate::cpu::assembly`].
+pub fn assemble_on_gpu(
+    ctx: &GpuContext,
+    scenes: &[Scene],
+    settings: &GpuSolveSettings,
+) -> Result<GpuAssembly, Error> {
+    let prepared = prepare(scenes)?;
+    let (pivot, feas) = settings.gpu_tolerances(ctx.precision());
+    let pipelines = ctx.pipelines(pivot, feas)?;
+    let (max_bytes, max_groups) = limits_for(ctx, settings);
+    let (chunks, alone) = plan(scenes, &prepared, max_bytes, ctx.precision().bytes());
+    if !alone.is_empty() {
+        return Err(Error::Unsupported(format!(
+            "scene {} is too large for one GPU buffer",
+            alone[0]
+        )));
+    }
+    let mut rows: Vec<Vec<ContactRow>> = vec![Vec::new(); scenes.len()];
+    let mut lcps: Vec<Vec<Option<Lcp>>> = prepared
+        .iter()
+        .map(|p| vec![None; p.islands.len()])
+        .collect();
+    for members in chunks {
+        let c = pack_chunk(scenes, &prepared, &members);
+        let out = assemble_and_enumerate(ctx, &pipelines, &c, max_groups, 0, false)?;
+        let r = out.rows.unwrap_or_default();
+        let v = out.values.unwrap_or_default();
+        for (pos, &s) in c.scenes.iter().enumerate() {
+            let fc = c.first_contact[pos] as usize;
+            rows[s] = (0..scenes[s].contacts.len())
+                .map(|k| unpack_row(&r[(fc + k) * ROW..(fc + k + 1) * ROW]))
+                .collect();
+        }
+        for (rec, &(s, k)) in c.table.iter().zip(&c.keys) {
+            let (n, at) = (rec.n as usize, rec.data as usize);
+            lcps[s][k] = Some(Lcp {
+                m: v[at..at + n * n].to_vec(),
+                q: v[at + n * n..at + n * n + n].to_vec(),
+            });
+        }
+    }
+    Ok(GpuAssembly { rows, lcps })
+}
+
+fn prepare(scenes: &[Scene]) -> Result<Vec<Prepared>, Error> {
+    scenes
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let (islands, rows, lcps) = build(s, &format!("scene {i}"))?;
+            Ok(Prepared {
+                islands,
+                rows,
+                lcps,
+            })
+        })
+        .collect()
+}
+
+/// Solves scenes on the GPU (see the module docs). Scenes are checked as on
+/// the CPU path (an invalid scene is an error naming it); islands with
+/// n > 16 are solved on the CPU by Lemke; a scene too large for one GPU
+/// buffer is assembled on the CPU and its islands solved as an LCP batch.
+pub fn solve_scenes(
+    ctx: &GpuContext,
+    scenes: &[Scene],
+    settings: &GpuSolveSettings,
+) -> Result<GpuSceneResult, Error> {
+    settings.enumeration.validate()?;
+    if settings.enumeration.all_solutions {
+        return Err(Error::Unsupported(
+            "all_solutions is not supported on the GPU; use the CPU backend".into(),
+        ));
+    }
+    let prepared = prepare(scenes)?;
+    let (pivot, feas) = settings.gpu_tolerances(ctx.precision());
+    let pipelines = ctx.pipelines(pivot, feas)?;
+    let (max_bytes, max_groups) = limits_for(ctx, settings);
+    let budget = round_budget(ctx, settings);
+    let (chunks, alone) = plan(scenes, &prepared, max_bytes, ctx.precision().bytes());
+    let mut report = BatchReport::new(ctx.adapter_info().name.clone(), ctx.precision());
+    let mut max_velocity_deviation = 0.0f64;
+    // Per scene, per island: the solution, its solver and where it came from.
+    let mut solved: Vec<Vec<Option<(LcpSolution, Solver, SolvedOn)>>> = prepared
+        .iter()
+        .map(|p| vec![None; p.islands.len()])
+        .collect();
+    let mut gpu_velocities: Vec<Option<Vec<f64>>> = vec![None; scenes.len()];
+
+    for members in chunks {
+        let t0 = Instant::now();
+        let c = pack_chunk(scenes, &prepared, &members);
+        let out = assemble_and_enumerate(ctx, &pipelines, &c, max_groups, budget, true)?;
+        report.gpu_seconds += t0.elapsed().as_secs_f64();
+        report.chunks += 1;
+        report.dispatches += out.dispatches;
+        report.rounds += out.rounds;
+        let t1 = Instant::now();
+        for ((rec, &(s, k)), res) in c.table.iter().zip(&c.keys).zip(&out.results) {
+            let (z0, n) = (rec.z as usize, rec.n as usize);
+            let verdict = GpuVerdict {
+                basis: (res.status == FOUND).then_some(res.mask),
+                visited: res.visited as u64,
+                singular: res.singular as u64,
+                z: out.z.get(z0..z0 + n).unwrap_or(&[]),
+            };
+            let checked = validate_island(&prepared[s].lcps[k], &verdict, &settings.enumeration)?;
+            report.record_gpu(&checked);
+            let on = if checked.verdict == Verdict::Repaired {
+                SolvedOn::Repaired
+            } else {
+                SolvedOn::Gpu
+            };
+            solved[s][k] = Some((checked.solution, Solver::Enum, on));
+        }
+        for &s in &c.scenes {
+            for (k, isl) in prepared[s].islands.iter().enumerate() {
+                if isl.len() > MAX_GPU_N {
+                    let sol = lemke(&prepared[s].lcps[k], &settings.lemke);
+                    report.record_cpu_fallback(&sol);
+                    solved[s][k] = Some((sol, Solver::Lemke, SolvedOn::CpuFallback));
+                }
+            }
+        }
+        report.validation_seconds += t1.elapsed().as_secs_f64();
+        // Impulses of the chunk's contacts, validated, to the impulse stage.
+        let t2 = Instant::now();
+        let mut z = vec![0.0; c.ids.len()];
+        for (pos, &s) in c.scenes.iter().enumerate() {
+            let fc = c.first_contact[pos] as usize;
+            for (k, isl) in prepared[s].islands.iter().enumerate() {
+                if let Some((sol, _, _)) = &solved[s][k] {
+                    for (&ct, &zi) in isl.contacts.iter().zip(&sol.z) {
+                        z[fc + ct] = zi;
+                    }
+                }
+            }
+        }
+        let vel = apply_on_gpu(ctx, &pipelines, &c, &out.resident, &z, max_groups)?;
+        report.gpu_seconds += t2.elapsed().as_secs_f64();
+        for (pos, &s) in c.scenes.iter().enumerate() {
+            let fb = c.first_body[pos] as usize;
+            let nb = scenes[s].bodies.len();
+            gpu_velocities[s] = Some(vel[fb * VELOCITY..(fb + nb) * VELOCITY].to_vec());
+        }
+    }
+
+    // Scenes too large for one buffer: their islands as an LCP batch.
+    for &s in &alone {
+        let r = solve_lcp_batch(ctx, &prepared[s].lcps, settings)?;
+        report.merge(&r.report);
+        for (k, o) in r.islands.into_iter().enumerate() {
+            solved[s][k] = Some((o.solution, o.solver, o.solved_on));
+        }
+    }
+
+    let mut out_scenes = Vec::with_capacity(scenes.len());
+    let mut solved_on = Vec::with_capacity(scenes.len());
+    for (s, (scene, p)) in scenes.iter().zip(prepared).enumerate() {
+        let mut impulses = vec![0.0; scene.contacts.len()];
+        let mut results = Vec::with_capacity(p.islands.len());
+        let mut on = Vec::with_capacity(p.islands.len());
+        for ((island, lcp), slot) in p.islands.into_iter().zip(p.lcps).zip(&mut solved[s]) {
+            let (solution, solver, where_) = slot
+                .take()
+                .ok_or_else(|| Error::Gpu(format!("scene {s}: an island got no result")))?;
+            for (&c, &zi) in island.contacts.iter().zip(&solution.z) {
+                impulses[c] = zi;
+            }
+            on.push(where_);
+            results.push(IslandResult {
+                contacts: island.contacts,
+                solver,
+                lcp,
+                solution,
+            });
+        }
+        // The f64 twin's velocities are kept; the GPU's are checked against them.
+        let bodies: Vec<BodyVelocity> = apply_impulses(scene, &p.rows, &impulses);
+        if let Some(v) = &gpu_velocities[s] {
+            for (b, ref_v) in bodies.iter().enumerate() {
+                let g = &v[b * VELOCITY..(b + 1) * VELOCITY];
+                for i in 0..3 {
+                    let dv = (g[i] - ref_v.velocity[i]).abs() / (1.0 + ref_v.velocity[i].abs());
+                    let dw = (g[4 + i] - ref_v.angular_velocity[i]).abs()
+                        / (1.0 + ref_v.angular_velocity[i].abs());
+                    max_velocity_deviation = max_velocity_deviation.max(dv).max(dw);
+                }
+            }
+        }
+        out_scenes.push(SceneSolution {
+            impulses,
+            bodies,
+            islands: results,
+            rows: p.rows,
+        });
+        solved_on.push(on);
+    }
+    Ok(GpuSceneResult {
+        scenes: out_scenes,
+        solved_on,
+        report,
+        max_velocity_deviation,
+    })
+}

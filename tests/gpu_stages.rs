@@ -1,0 +1,170 @@
+//! Stage by stage, the GPU against its CPU twin on the same packed inputs:
+//! assembly (K, Jacobian, response, v_rel, q per contact; M and q per
+//! island), enumeration (chosen basis and counters), impulses (through the
+//! scene pipeline's check).
+
+use lcpbatch::cpu::assembly::ContactRow;
+use lcpbatch::cpu::enumeration::{enumerate, EnumerationSettings};
+use lcpbatch::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};
+use lcpbatch::gpu::batch::enumerate_on_gpu;
+use lcpbatch::gpu::layout::{assemble_contacts_packed, pack_body, pack_contact, unpack_row};
+use lcpbatch::gpu::scenes::assemble_on_gpu;
+use lcpbatch::gpu::{GpuContext, GpuOptions, GpuSolveSettings, Precision};
+use lcpbatch::pipeline::build;
+use lcpbatch::{Lcp, Scene};
+
+fn context(precision: Precision) -> Option<GpuContext> {
+    let mut o = GpuOptions::from_env().expect("GPU environment variables");
+    o.precision = precision;
+    match GpuContext::new(&o) {
+        Ok(c) => Some(c),
+        Err(e) if precision == Precision::F64 && e.to_string().contains("SHADER_F64") => {
+            eprintln!("skipping the f64 run: {e}");
+            None
+        }
+        Err(e) => panic!("no GPU adapter: {e}"),
+    }
+}
+
+fn scenes() -> Vec<Scene> {
+    let mut rng = Rng::new(7);
+    let mut v = vec![box_on_ground(1.0, 0.5), seed_chain(0.3)];
+    for k in 0..300 {
+        v.push(random_island(&mut rng, 1 + k % 12, [1.0, 1e2, 1e4][k % 3]));
+    }
+    for _ in 0..20 {
+        v.push(demo_world(&mut rng));
+    }
+    v
+}
+
+/// |a − b| ≤ tol · scale, elementwise.
+fn close(a: &[f64], b: &[f64], scale: f64, tol: f64) -> Result<(), String> {
+    for (i, (x, y)) in a.iter().zip(b).enumerate() {
+        if !((x - y).abs() <= tol * scale) {
+            return Err(format!("entry {i}: {x} vs {y} (scale {scale})"));
+        }
+    }
+    Ok(())
+}
+
+fn row_parts(r: &ContactRow) -> Vec<(&'static str, Vec<f64>)> {
+    vec![
+        ("K", r.k.transpose().to_cols_array().to_vec()),
+        ("jacobian", r.jacobian.to_vec()),
+        ("response", r.response.to_vec()),
+        ("v_rel q", vec![r.v_rel, r.q]),
+    ]
+}
+
+fn assembly(precision: Precision, tol: f64) {
+    let Some(ctx) = context(precision) else {
+        return;
+    };
+    let scenes = scenes();
+    let gpu = assemble_on_gpu(&ctx, &scenes, &GpuSolveSettings::default()).unwrap();
+    let mut checked = (0, 0);
+    for (s, scene) in scenes.iter().enumerate() {
+        let (_, rows, lcps) = build(scene, "scene").unwrap();
+        // The twin on the same packed records as the shader's input.
+        let (mut bodies, mut ids, mut contacts) = (Vec::new(), Vec::new(), Vec::new());
+        scene.bodies.iter().for_each(|b| pack_body(b, &mut bodies));
+        scene
+            .contacts
+            .iter()
+            .for_each(|c| pack_contact(c, 0, &mut ids, &mut contacts));
+        let twin = assemble_contacts_packed(&bodies, &ids, &contacts);
+        for (k, (g, c)) in gpu.rows[s].iter().zip(&rows).enumerate() {
+            let t = unpack_row(&twin[k * 36..(k + 1) * 36]);
+            assert_eq!(
+                &t, c,
+                "twin on packed input differs from the unpacked CPU assembly"
+            );
+            // v_rel is a difference of point velocities ω × (p − x): its f32
+            // rounding is relative to the size of the terms (positions in
+            // world coordinates), not to the (possibly cancelled) result.
+            let ct = &scene.contacts[k];
+            let point_speed = |b: usize| {
+                let body = &scene.bodies[b];
+                let r = ct.point().length() + body.position().length();
+                body.velocity().length() + body.angular_velocity().length() * r
+            };
+            let speeds = point_speed(ct.a) + ct.b.map_or(0.0, point_speed);
+            for ((name, gv), (_, cv)) in row_parts(g).into_iter().zip(row_parts(c)) {
+                let mut scale = cv
+                    .iter()
+                    .fold(0.0f64, |m, v| m.max(v.abs()))
+                    .max(f64::MIN_POSITIVE);
+                if name == "v_rel q" {
+                    scale = scale.max(2.0 * speeds);
+                }
+                close(&gv, &cv, scale, tol)
+                    .unwrap_or_else(|e| panic!("scene {s} contact {k}: {name}: {e}"));
+            }
+            checked.0 += 1;
+        }
+        for (k, (g, c)) in gpu.lcps[s].iter().zip(&lcps).enumerate() {
+            let g: &Lcp = g.as_ref().expect("every island here has n ≤ 16");
+            let scale = c.m.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+            close(&g.m, &c.m, scale, tol)
+                .unwrap_or_else(|e| panic!("scene {s} island {k}: M: {e}"));
+            let qs =
+                c.q.iter()
+                    .fold(0.0f64, |m, v| m.max(v.abs()))
+                    .max(f64::MIN_POSITIVE);
+            close(&g.q, &c.q, qs, tol).unwrap_or_else(|e| panic!("scene {s} island {k}: q: {e}"));
+            checked.1 += 1;
+        }
+    }
+    println!(
+        "{precision:?}: {} contact rows and {} island LCPs within {tol:e}",
+        checked.0, checked.1
+    );
+    assert!(checked.0 > 1000 && checked.1 > 300);
+}
+
+#[test]
+fn assembly_matches_cpu_twin_f32() {
+    assembly(Precision::F32, 1e-5);
+}
+
+#[test]
+fn assembly_matches_cpu_twin_f64() {
+    assembly(Precision::F64, 1e-12);
+}
+
+/// Enumeration alone, on the CPU's f64 LCPs: in f64 the same basis and the
+/// same counters as the twin, island by island.
+#[test]
+fn enumeration_matches_cpu_twin_f64() {
+    let Some(ctx) = context(Precision::F64) else {
+        return;
+    };
+    let lcps: Vec<Lcp> = scenes()
+        .iter()
+        .flat_map(|s| build(s, "scene").unwrap().2)
+        .collect();
+    let refs: Vec<&Lcp> = lcps.iter().collect();
+    let (out, stats) = enumerate_on_gpu(&ctx, &refs, &GpuSolveSettings::default()).unwrap();
+    for (i, (l, o)) in lcps.iter().zip(&out).enumerate() {
+        let c = enumerate(l, &EnumerationSettings::default()).unwrap();
+        assert_eq!(Some(o.result.mask), c.basis, "island {i}: basis");
+        assert_eq!(
+            o.result.visited as u64, c.counters.bases_visited,
+            "island {i}: visited"
+        );
+        assert_eq!(
+            o.result.singular as u64, c.counters.singular_bases,
+            "island {i}: singular"
+        );
+        for (a, b) in o.z.iter().zip(&c.z) {
+            assert!(
+                (a - b).abs() <= 1e-12 * (1.0 + b.abs()),
+                "island {i}: z {:?} vs {:?}",
+                o.z,
+                c.z
+            );
+        }
+    }
+    println!("{} islands, {} dispatches", lcps.len(), stats.dispatches);
+}
