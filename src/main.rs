@@ -5,11 +5,17 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand, ValueEnum};
 
+use lcpbatch::generate::{demo_world, Rng};
+use lcpbatch::gpu::{
+    list_adapters, solve_lcp_batch, solve_scenes, BackendChoice, GpuContext, GpuOptions,
+    GpuSolveSettings, Precision,
+};
 use lcpbatch::io::{
     read_input, write_atomically, Input, LcpBatchOutput, LcpOutput, SceneOutput, ScenesOutput,
 };
+use lcpbatch::lcp::Status;
 use lcpbatch::pipeline::solve_scene;
-use lcpbatch::{solve, Error, Solver, SolverSettings};
+use lcpbatch::{solve, Error, Scene, Solver, SolverSettings};
 
 #[derive(Parser)]
 #[command(
@@ -29,6 +35,59 @@ enum SolverArg {
     Pgs,
 }
 
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum BackendArg {
+    /// The GPU whenever an adapter exists, else the CPU.
+    Auto,
+    Gpu,
+    Cpu,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum PrecisionArg {
+    /// f64 where the adapter has SHADER_F64, else f32.
+    Auto,
+    F32,
+    F64,
+}
+
+/// Adapter choice, shared by `solve`, `demo` and `info`.
+#[derive(clap::Args, Clone)]
+struct GpuArgs {
+    /// Only adapters whose name contains this (case-insensitive); also
+    /// LCPBATCH_GPU_ADAPTER.
+    #[arg(long)]
+    adapter: Option<String>,
+    /// wgpu backend to look on: auto, vulkan, gl, metal, dx12; also
+    /// LCPBATCH_GPU_BACKEND.
+    #[arg(long = "gpu-backend")]
+    gpu_backend: Option<String>,
+    /// Shader precision; also LCPBATCH_GPU_PRECISION.
+    #[arg(long, value_enum)]
+    precision: Option<PrecisionArg>,
+}
+
+impl GpuArgs {
+    /// Environment first, flags over it.
+    fn options(&self) -> Result<GpuOptions, Error> {
+        let mut o = GpuOptions::from_env()?;
+        if let Some(a) = &self.adapter {
+            o.adapter_name = Some(a.clone());
+        }
+        if let Some(b) = &self.gpu_backend {
+            o.backend = BackendChoice::parse(b)?;
+        }
+        if let Some(p) = self.precision {
+            o.precision = match p {
+                PrecisionArg::Auto => Precision::Auto,
+                PrecisionArg::F32 => Precision::F32,
+                PrecisionArg::F64 => Precision::F64,
+            };
+        }
+        Ok(o)
+    }
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Solve a scene file, a many-scene file, an LCP batch (JSON) or a Siconos .dat file.
@@ -44,16 +103,183 @@ enum Command {
         /// Write the result here (atomically) instead of to stdout.
         #[arg(short = 'o', long = "output")]
         output: Option<PathBuf>,
+        /// Where to solve: auto (the GPU whenever an adapter exists), gpu, cpu.
+        #[arg(long, value_enum, default_value = "cpu")]
+        backend: BackendArg,
+        #[command(flatten)]
+        gpu: GpuArgs,
     },
+    /// Generate thousands of islands from many simulation instances (balls
+    /// and boxes on the ground and on each other), solve them on the best
+    /// adapter, validate every answer on the CPU in f64, print a summary.
+    Demo {
+        /// Simulation instances (each a few balls, boxes and stacks).
+        #[arg(long, default_value_t = 1000)]
+        worlds: usize,
+        /// Seed of the generator.
+        #[arg(long, default_value_t = 2026)]
+        seed: u64,
+        /// Where to solve (auto: the GPU whenever an adapter exists).
+        #[arg(long, value_enum, default_value = "auto")]
+        backend: BackendArg,
+        #[command(flatten)]
+        gpu: GpuArgs,
+    },
+    /// List GPU adapters, backends, features (f64, subgroups, timestamps) and
+    /// limits, and say which adapter `solve --backend auto` would pick.
+    Info {
+        #[command(flatten)]
+        gpu: GpuArgs,
+    },
+}
+
+/// The GPU context for `backend`: Some for gpu (or an error), Some or None
+/// for auto (saying why on stderr), None for cpu.
+fn gpu_for(backend: BackendArg, gpu: &GpuArgs) -> Result<Option<GpuContext>, Error> {
+    match backend {
+        BackendArg::Cpu => Ok(None),
+        BackendArg::Gpu => GpuContext::new(&gpu.options()?).map(Some),
+        BackendArg::Auto => match GpuContext::new(&gpu.options()?) {
+            Ok(c) => Ok(Some(c)),
+            Err(e) => {
+                eprintln!("{e}; solving on the CPU");
+                Ok(None)
+            }
+        },
+    }
+}
+
+fn describe(ctx: &GpuContext) -> String {
+    let a = ctx.adapter_info();
+    format!(
+        "{} ({}, {}; {}; {})",
+        a.name,
+        a.backend,
+        a.device_type,
+        ctx.selection(),
+        ctx.precision().name()
+    )
+}
+
+fn demo(worlds: usize, seed: u64, backend: BackendArg, gpu: &GpuArgs) -> Result<(), Error> {
+    let mut rng = Rng::new(seed);
+    let scenes: Vec<Scene> = (0..worlds).map(|_| demo_world(&mut rng)).collect();
+    let ctx = gpu_for(backend, gpu)?;
+    let contacts: usize = scenes.iter().map(|s| s.contacts.len()).sum();
+    match ctx {
+        Some(ctx) => {
+            println!("adapter: {}", describe(&ctx));
+            // Warm-up on one world: the first dispatch compiles the shaders.
+            solve_scenes(
+                &ctx,
+                &scenes[..1.min(scenes.len())],
+                &GpuSolveSettings::default(),
+            )?;
+            let t = std::time::Instant::now();
+            let r = solve_scenes(&ctx, &scenes, &GpuSolveSettings::default())?;
+            let secs = t.elapsed().as_secs_f64();
+            let islands = r.report.islands;
+            println!(
+                "{worlds} simulation instances, {} bodies, {contacts} contacts, {islands} islands",
+                scenes.iter().map(|s| s.bodies.len()).sum::<usize>()
+            );
+            println!("{}", r.report);
+            println!(
+                "impulse stage: max deviation from f64 {:.2e}",
+                r.max_velocity_deviation
+            );
+            println!(
+                "throughput: {:.0} islands/s end to end ({:.3} s: assembly, enumeration, validation, impulses)",
+                islands as f64 / secs,
+                secs
+            );
+            let t = std::time::Instant::now();
+            let settings = SolverSettings::default();
+            for (i, s) in scenes.iter().enumerate() {
+                solve_scene(s, &settings, &format!("scene {i}"))?;
+            }
+            let cpu = t.elapsed().as_secs_f64();
+            println!(
+                "CPU path on the same batch (one thread, f64 enumeration): {:.0} islands/s ({cpu:.3} s)",
+                islands as f64 / cpu
+            );
+        }
+        None => {
+            println!("adapter: none (CPU path)");
+            let t = std::time::Instant::now();
+            let settings = SolverSettings::default();
+            let mut statuses = [0usize; 6];
+            let (mut islands, mut max_error) = (0usize, 0.0f64);
+            for (i, s) in scenes.iter().enumerate() {
+                let r = solve_scene(s, &settings, &format!("scene {i}"))?;
+                for isl in &r.islands {
+                    islands += 1;
+                    let k = Status::ALL
+                        .iter()
+                        .position(|&x| x == isl.solution.status)
+                        .unwrap_or(5);
+                    statuses[k] += 1;
+                    if isl.solution.status.is_solution() {
+                        max_error = max_error.max(isl.solution.residuals.error);
+                    }
+                }
+            }
+            let secs = t.elapsed().as_secs_f64();
+            let list: Vec<String> = Status::ALL
+                .iter()
+                .zip(statuses)
+                .filter(|(_, c)| *c > 0)
+                .map(|(s, c)| format!("{s} {c}"))
+                .collect();
+            println!("{worlds} simulation instances, {contacts} contacts, {islands} islands");
+            println!("statuses: {}", list.join(", "));
+            println!("max error: {max_error:.3e}");
+            println!(
+                "throughput: {:.0} islands/s ({secs:.3} s)",
+                islands as f64 / secs
+            );
+        }
+    }
+    Ok(())
+}
+
+fn info(gpu: &GpuArgs) -> Result<(), Error> {
+    let o = gpu.options()?;
+    let adapters = list_adapters(o.backend);
+    if adapters.is_empty() {
+        println!(
+            "no GPU adapter found: {}\nthe CPU path is used.",
+            lcpbatch::gpu::INSTALL_HINT
+        );
+        return Ok(());
+    }
+    println!("adapters:");
+    for a in &adapters {
+        println!("{a}");
+    }
+    match GpuContext::new(&o) {
+        Ok(ctx) => println!("chosen: {}", describe(&ctx)),
+        Err(e) => println!("chosen: none ({e}); the CPU path is used"),
+    }
+    Ok(())
 }
 
 fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
+        Command::Demo {
+            worlds,
+            seed,
+            backend,
+            gpu,
+        } => demo(worlds, seed, backend, &gpu),
+        Command::Info { gpu } => info(&gpu),
         Command::Solve {
             file,
             solver,
             all_solutions,
             output,
+            backend,
+            gpu,
         } => {
             let mut settings = SolverSettings::with_solver(match solver {
                 SolverArg::Enum => Solver::Enum,
@@ -68,7 +294,53 @@ fn run(cli: Cli) -> Result<(), Error> {
                 }
                 settings.enumeration.all_solutions = true;
             }
-            let text = match read_input(&file)? {
+            // The GPU enumerates; Lemke, PGS and --all-solutions run on the CPU.
+            let gpu_capable = settings.solver == Solver::Enum && !all_solutions;
+            if backend == BackendArg::Gpu && !gpu_capable {
+                return Err(Error::Unsupported(
+                    "--backend gpu solves by enumeration only (no --solver lemke/pgs, no --all-solutions)"
+                        .into(),
+                ));
+            }
+            let input = read_input(&file)?;
+            let ctx = if gpu_capable {
+                gpu_for(backend, &gpu)?
+            } else {
+                None
+            };
+            if let Some(ctx) = ctx {
+                eprintln!("adapter: {}", describe(&ctx));
+                let gs = GpuSolveSettings {
+                    enumeration: settings.enumeration,
+                    ..Default::default()
+                };
+                let text = match input {
+                    Input::Lcps(lcps) => {
+                        let r = solve_lcp_batch(&ctx, &lcps, &gs)?;
+                        eprintln!("{}", r.report);
+                        let problems = r
+                            .islands
+                            .iter()
+                            .map(|o| LcpOutput::new(o.solver.name(), &o.solution))
+                            .collect();
+                        serde_json::to_string_pretty(&LcpBatchOutput { problems })
+                            .expect("serialisable")
+                    }
+                    Input::Scenes(scenes) => {
+                        let r = solve_scenes(&ctx, &scenes, &gs)?;
+                        eprintln!("{}", r.report);
+                        let scenes = r.scenes.iter().map(SceneOutput::new).collect();
+                        serde_json::to_string_pretty(&ScenesOutput { scenes })
+                            .expect("serialisable")
+                    }
+                };
+                match output {
+                    Some(path) => write_atomically(&path, &text)?,
+                    None => println!("{text}"),
+                }
+                return Ok(());
+            }
+            let text = match input {
                 Input::Lcps(lcps) => {
                     let problems = lcps
                         .iter()
