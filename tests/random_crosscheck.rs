@@ -318,6 +318,73 @@ fn enumeration_verdicts_do_not_depend_on_scale() {
     }
 }
 
+/// The CPU batch path (prediction, then Gray-code enumeration, Lemke above
+/// n = 20, over two threads) against the reference enumeration by
+/// elimination on the same fixed-seed islands: Gray-code enumeration chooses
+/// the same basis and z; the batch path (cold and warm-started from the
+/// reference basis) gives a solution with error ≤ 1e-12 whose w agrees to
+/// 1e-9 (and z where M is positive definite).
+#[test]
+fn batch_path_and_gray_code_enumeration_agree_with_the_reference() {
+    use lcpbatch::cpu::batch::{solve_batch, CpuBatchSettings};
+    use lcpbatch::cpu::enumeration_gray::{enumerate_gray, GraySettings};
+    let mut rng = Rng::new(0xB47C);
+    let mut lcps = Vec::new();
+    for k in 0..5000 {
+        let scene = random_island(&mut rng, 1 + k % 12, MASS_RATIO);
+        lcps.extend(build(&scene, "island").unwrap().2);
+    }
+    for _ in 0..200 {
+        let scene = lcpbatch::generate::demo_world(&mut rng);
+        lcps.extend(build(&scene, "demo").unwrap().2);
+    }
+    let reference: Vec<_> = lcps.iter().map(|l| run(l, Solver::Enum)).collect();
+    let gray = GraySettings::default();
+    for (k, (lcp, r)) in lcps.iter().zip(&reference).enumerate() {
+        let g = enumerate_gray(lcp, &gray).unwrap();
+        assert_eq!(
+            (g.status, g.basis),
+            (r.status, r.basis),
+            "problem {k}: gray vs elimination\n  M = {:?}\n  q = {:?}",
+            lcp.m,
+            lcp.q
+        );
+        assert!(z_rel_diff(&g.z, &r.z) <= 1e-12, "problem {k}");
+    }
+    let settings = CpuBatchSettings {
+        threads: 2,
+        ..Default::default()
+    };
+    let warm: Vec<Option<u32>> = reference.iter().map(|r| r.basis).collect();
+    for (what, warm) in [("cold", None), ("warm", Some(&warm[..]))] {
+        let out = solve_batch(&lcps, warm, &settings).unwrap();
+        assert_eq!(out.len(), lcps.len());
+        for (k, ((lcp, r), b)) in lcps.iter().zip(&reference).zip(&out).enumerate() {
+            let b = &b.solution;
+            let where_ = format!(
+                "{what} problem {k} ({:?})\n  M = {:?}\n  q = {:?}",
+                out[k].path, lcp.m, lcp.q
+            );
+            assert!(b.status.is_solution(), "{where_}: {}", b.status);
+            assert!(
+                b.residuals.error <= ERROR_TOL,
+                "{where_}: error {:e}",
+                b.residuals.error
+            );
+            let dw = w_rel_diff(lcp, &r.z, &r.w, &b.z, &b.w);
+            assert!(dw <= TOL, "{where_}: dw {dw:e}");
+            if is_positive_definite(lcp, PD_TOL) {
+                assert!(
+                    z_rel_diff(&r.z, &b.z) <= TOL,
+                    "{where_}: z {:?} vs {:?}",
+                    b.z,
+                    r.z
+                );
+            }
+        }
+    }
+}
+
 // ---- The readers never panic: Ok or a clear Err. ----
 
 const DAT: &str = "3\n0\n3\n3\n3 3\n2 1 0\n1 2 1\n0 1 2\n-1 -2 -3\ncomment\n";
