@@ -461,6 +461,8 @@ fn check_json(text: &str) {
                 msg.contains("fuzz.json") || msg.contains("scene") || msg.contains("problem"),
                 "{msg}"
             );
+            // Shape errors name item and field, or at least a real position.
+            assert!(!msg.contains("line 0, column 0"), "{msg}");
         }
     }
 }
