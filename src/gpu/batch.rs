@@ -180,6 +180,7 @@ pub(crate) fn run_enumeration(
     max_groups: u32,
     budget: u32,
     mut encoder: wgpu::CommandEncoder,
+    read_back: bool,
 ) -> Result<EnumerationRun, Error> {
     let precision = ctx.precision();
     let sb = precision.bytes();
@@ -275,6 +276,14 @@ pub(crate) fn run_enumeration(
             });
         per_submit = (per_submit * 2).min(256);
     }
+    if !read_back {
+        return Ok(EnumerationRun {
+            results: Vec::new(),
+            z: Vec::new(),
+            dispatches,
+            rounds,
+        });
+    }
     let mut read = ctx.submit_and_read(encoder, &[(&results, results_size), (&z, z_size)])?;
     let z_bytes = read.pop().unwrap_or_default();
     let r_bytes = read.pop().unwrap_or_default();
@@ -299,24 +308,12 @@ pub fn enumerate_on_gpu(
 ) -> Result<(Vec<EnumerationOutput>, RunStats), Error> {
     let start = Instant::now();
     let mut stats = RunStats::default();
-    for (i, l) in lcps.iter().enumerate() {
-        if l.n() == 0 || l.n() > MAX_GPU_N || l.m.len() != l.n() * l.n() {
-            return Err(Error::Unsupported(format!(
-                "problem {i}: the GPU enumerates 1 ≤ n ≤ {MAX_GPU_N} (n = {})",
-                l.n()
-            )));
-        }
-    }
+    check_gpu_sizes(lcps)?;
     let precision = ctx.precision();
     let (pivot, feas) = settings.gpu_tolerances(precision);
     let pipelines = ctx.pipelines(pivot, feas)?;
     let (max_bytes, max_groups) = limits_for(ctx, settings);
     let budget = round_budget(ctx, settings);
-    let sb = precision.bytes();
-
-    // Sorted by n: one dispatch per size, no island waits on a larger one.
-    let mut order: Vec<usize> = (0..lcps.len()).collect();
-    order.sort_by_key(|&i| lcps[i].n());
 
     let mut out = vec![
         EnumerationOutput {
@@ -325,9 +322,74 @@ pub fn enumerate_on_gpu(
         };
         lcps.len()
     ];
+    for chunk in pack_chunks(lcps, max_bytes, precision.bytes()) {
+        let run = ctx.scoped("enumeration", || -> Result<EnumerationRun, Error> {
+            let (islands_buf, values_buf) = chunk.upload(ctx, precision);
+            let encoder = ctx
+                .device
+                .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                    label: Some("enumeration"),
+                });
+            run_enumeration(
+                ctx,
+                &pipelines,
+                &islands_buf,
+                &values_buf,
+                &chunk.table,
+                max_groups,
+                budget,
+                encoder,
+                true,
+            )
+        })??;
+        for ((&i, rec), res) in chunk.order.iter().zip(&chunk.table).zip(&run.results) {
+            let (z0, n) = (rec.z as usize, rec.n as usize);
+            out[i] = EnumerationOutput {
+                result: *res,
+                z: run
+                    .z
+                    .get(z0..z0 + n)
+                    .map(<[f64]>::to_vec)
+                    .unwrap_or_default(),
+            };
+        }
+        stats.chunks += 1;
+        stats.dispatches += run.dispatches;
+        stats.rounds += run.rounds;
+    }
+    stats.seconds = start.elapsed().as_secs_f64();
+    Ok((out, stats))
+}
+
+/// A chunk of an LCP batch, packed for the enumeration stage.
+struct PackedChunk {
+    /// The caller's indices of the chunk's islands, sorted by n.
+    order: Vec<usize>,
+    table: Vec<PackedIsland>,
+    /// M (row-major) then q of every island, in f64.
+    data: Vec<f64>,
+}
+
+impl PackedChunk {
+    /// (islands, values) storage buffers.
+    fn upload(&self, ctx: &GpuContext, precision: Precision) -> (wgpu::Buffer, wgpu::Buffer) {
+        // islands: the chunk's island table, sorted by n.
+        let islands = ctx.storage("islands", bytemuck::cast_slice(&self.table));
+        // values: every island's M (row-major) and q, in the shader's precision.
+        let values = ctx.storage("values", &scalars_to_bytes(&self.data, precision));
+        (islands, values)
+    }
+}
+
+/// Sorts the islands by n (one dispatch per size: no island waits on a
+/// larger one) and packs them into chunks whose buffers stay under
+/// `max_bytes`.
+fn pack_chunks(lcps: &[&Lcp], max_bytes: u64, sb: u64) -> Vec<PackedChunk> {
+    let mut order: Vec<usize> = (0..lcps.len()).collect();
+    order.sort_by_key(|&i| lcps[i].n());
+    let mut chunks = Vec::new();
     let mut at = 0;
     while at < order.len() {
-        // One chunk: as many islands as fit under the binding limit.
         let mut end = at;
         let (mut values, mut zs) = (0u64, 0u64);
         while end < order.len() {
@@ -343,11 +405,10 @@ pub fn enumerate_on_gpu(
             zs = nz;
             end += 1;
         }
-        let chunk = &order[at..end];
-        let mut table = Vec::with_capacity(chunk.len());
+        let mut table = Vec::with_capacity(end - at);
         let mut data = Vec::with_capacity(values as usize);
         let mut zoff = 0u32;
-        for &i in chunk {
+        for &i in &order[at..end] {
             let l = lcps[i];
             table.push(PackedIsland {
                 n: l.n() as u32,
@@ -359,45 +420,96 @@ pub fn enumerate_on_gpu(
             data.extend_from_slice(&l.q);
             zoff += l.n() as u32;
         }
-        let run = ctx.scoped("enumeration", || -> Result<EnumerationRun, Error> {
-            // islands: the chunk's island table, sorted by n.
-            let islands_buf = ctx.storage("islands", bytemuck::cast_slice(&table));
-            // values: every island's M (row-major) and q, in the shader's precision.
-            let values_buf = ctx.storage("values", &scalars_to_bytes(&data, precision));
-            let encoder = ctx
-                .device
-                .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                    label: Some("enumeration"),
-                });
-            run_enumeration(
-                ctx,
-                &pipelines,
-                &islands_buf,
-                &values_buf,
-                &table,
-                max_groups,
-                budget,
-                encoder,
-            )
-        })??;
-        for ((&i, rec), res) in chunk.iter().zip(&table).zip(&run.results) {
-            let (z0, n) = (rec.z as usize, rec.n as usize);
-            out[i] = EnumerationOutput {
-                result: *res,
-                z: run
-                    .z
-                    .get(z0..z0 + n)
-                    .map(<[f64]>::to_vec)
-                    .unwrap_or_default(),
-            };
-        }
-        stats.chunks += 1;
-        stats.dispatches += run.dispatches;
-        stats.rounds += run.rounds;
+        chunks.push(PackedChunk {
+            order: order[at..end].to_vec(),
+            table,
+            data,
+        });
         at = end;
     }
-    stats.seconds = start.elapsed().as_secs_f64();
-    Ok((out, stats))
+    chunks
+}
+
+/// A batch uploaded once, for timing the enumeration dispatches alone (the
+/// benches): [`UploadedBatch::dispatch`] runs every round of every chunk and
+/// waits, with neither upload nor readback of results.
+pub struct UploadedBatch<'a> {
+    ctx: &'a GpuContext,
+    pipelines: std::sync::Arc<Pipelines>,
+    chunks: Vec<(Vec<PackedIsland>, wgpu::Buffer, wgpu::Buffer)>,
+    max_groups: u32,
+    budget: u32,
+}
+
+impl<'a> UploadedBatch<'a> {
+    /// Uploads `lcps` (each valid, 1 ≤ n ≤ 16).
+    pub fn new(
+        ctx: &'a GpuContext,
+        lcps: &[&Lcp],
+        settings: &GpuSolveSettings,
+    ) -> Result<Self, Error> {
+        check_gpu_sizes(lcps)?;
+        let precision = ctx.precision();
+        let (pivot, feas) = settings.gpu_tolerances(precision);
+        let pipelines = ctx.pipelines(pivot, feas)?;
+        let (max_bytes, max_groups) = limits_for(ctx, settings);
+        let chunks = ctx.scoped("upload", || {
+            pack_chunks(lcps, max_bytes, precision.bytes())
+                .into_iter()
+                .map(|c| {
+                    let (i, v) = c.upload(ctx, precision);
+                    (c.table, i, v)
+                })
+                .collect()
+        })?;
+        Ok(UploadedBatch {
+            ctx,
+            pipelines,
+            chunks,
+            max_groups,
+            budget: round_budget(ctx, settings),
+        })
+    }
+
+    /// Runs the enumeration of every island and waits; returns the rounds.
+    pub fn dispatch(&self) -> Result<usize, Error> {
+        let mut rounds = 0;
+        for (table, islands, values) in &self.chunks {
+            let run = self.ctx.scoped("enumeration", || {
+                let encoder =
+                    self.ctx
+                        .device
+                        .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                            label: Some("enumeration"),
+                        });
+                run_enumeration(
+                    self.ctx,
+                    &self.pipelines,
+                    islands,
+                    values,
+                    table,
+                    self.max_groups,
+                    self.budget,
+                    encoder,
+                    false,
+                )
+            })??;
+            rounds += run.rounds;
+        }
+        Ok(rounds)
+    }
+}
+
+fn check_gpu_sizes(lcps: &[&Lcp]) -> Result<(), Error> {
+    for (i, l) in lcps.iter().enumerate() {
+        if l.n() == 0 || l.n() > MAX_GPU_N || l.m.len() != l.n() * l.n() {
+            return Err(Error::Unsupported(format!(
+                "problem {i}: the GPU enumerates 1 ≤ n ≤ {MAX_GPU_N} (n = {})",
+                l.n()
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// Loop work per invocation and round for this adapter and these settings.

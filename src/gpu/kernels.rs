@@ -402,13 +402,4 @@ impl GpuContext {
         }
         Ok(out)
     }
-
-    /// Submits `encoder` and waits (no readback).
-    pub(crate) fn submit_and_wait(&self, encoder: wgpu::CommandEncoder) -> Result<(), Error> {
-        self.queue.submit([encoder.finish()]);
-        self.device
-            .poll(wgpu::PollType::wait_indefinitely())
-            .map_err(|e| Error::Gpu(format!("waiting for the GPU: {e}")))?;
-        Ok(())
-    }
 }

@@ -251,7 +251,7 @@ fn assemble_and_enumerate(
             dispatches += 1;
             if enumerate {
                 let run = run_enumeration(
-                    ctx, p, &islands, &values, &c.table, max_groups, budget, encoder,
+                    ctx, p, &islands, &values, &c.table, max_groups, budget, encoder, true,
                 )?;
                 return Ok(StageOutput {
                     results: run.results,
