@@ -7,8 +7,11 @@
 // the first valid one is chosen: the fewest contacts carrying impulse, ties to
 // the smallest mask. For each basis S: solve M_SS z_S = -q_S by Gaussian
 // elimination with partial pivoting (singular when a pivot is at most
-// PIVOT_TOL times its column's largest entry of M_SS), then feasible when
-// z_i >= -tol * max|z_S| and w_i = q_i + sum_j M_ij z_j >= -tol * (|q_i| + sum_j |M_ij z_j|).
+// PIVOT_TOL times its column's largest entry of M_SS), then its relative
+// infeasibility is the worst of -z_i / max|z_S| and
+// -w_i / (|q_i| + sum_j |M_ij z_j|), w_i = q_i + sum_j M_ij z_j. Valid: at most
+// FEASIBILITY_TOL. When no basis is valid, the least infeasible basis within
+// RELAXED_TOL is chosen (the first on a tie), as on the CPU.
 //
 // Rounds: an invocation visits bases until it has spent `params.budget` units
 // of loop work (an upper bound of the loop iterations of one basis, see
@@ -18,11 +21,12 @@
 // 65,535 iterations in all, silently, so on software adapters the budget
 // stays below that; on hardware it only bounds the time of one dispatch.
 //
-// The host replaces the three lines marked HOST (scalar type, tolerances).
+// The host replaces the four lines marked HOST (scalar type, tolerances).
 
 alias Scalar = f32; // HOST scalar
 const PIVOT_TOL: Scalar = 1e-6; // HOST pivot_tol
 const FEASIBILITY_TOL: Scalar = 1e-4; // HOST feasibility_tol
+const RELAXED_TOL: Scalar = 1e-3; // HOST relaxed_tol
 
 const MAX_N: u32 = 16u;
 
@@ -47,13 +51,20 @@ struct Params {
 
 // Where the enumeration of one island stands. status 0: in progress, the
 // next basis to visit is `mask` (zero-initialised: start at the empty basis);
-// 1: `mask` is the chosen valid basis (z written); 2: none of the 2^n bases is
-// valid. visited / singular count bases as the CPU's Counters do.
+// 1: `mask` is the chosen valid basis (z written); 2: no basis is valid or
+// within RELAXED_TOL; 3: none is valid, `mask` is the least infeasible basis
+// within RELAXED_TOL (z written). visited / singular count bases as the
+// CPU's Counters do. `least` (when `has_least` is 1) is the least infeasible
+// basis so far, its infeasibility in `least_infeasibility`.
 struct BasisResult {
     mask: u32,
     status: u32,
     visited: u32,
     singular: u32,
+    least: u32,
+    has_least: u32,
+    _pad0: u32,
+    _pad1: u32,
 }
 
 @group(0) @binding(0) var<uniform> params: Params;
@@ -63,6 +74,8 @@ struct BasisResult {
 @group(0) @binding(4) var<storage, read_write> z_out: array<Scalar>;
 // Islands of each size n still in progress after this round.
 @group(0) @binding(5) var<storage, read_write> unfinished: array<atomic<u32>, 17>;
+// Infeasibility of each island's least infeasible basis so far.
+@group(0) @binding(6) var<storage, read_write> least_infeasibility: array<Scalar>;
 
 // Private scratch of one invocation: the principal system and its solution.
 var<private> a: array<Scalar, 256>;
@@ -70,12 +83,13 @@ var<private> x: array<Scalar, 16>;
 var<private> colmax: array<Scalar, 16>;
 var<private> idx: array<u32, 16>;
 
-const SINGULAR: u32 = 0u;
-const INFEASIBLE: u32 = 1u;
-const FEASIBLE: u32 = 2u;
+// solve_basis' answer for a singular M_SS (infeasibilities are >= 0).
+const SINGULAR: Scalar = -1.0;
 
 // Solves basis `mask` of the island whose M starts at `base`; z_S in x[0..k].
-fn solve_basis(base: u32, n: u32, mask: u32) -> u32 {
+// Returns SINGULAR, or the basis' relative infeasibility (0: feasible; the
+// measure stops growing once it exceeds RELAXED_TOL, as on the CPU).
+fn solve_basis(base: u32, n: u32, mask: u32) -> Scalar {
     var k = 0u;
     for (var i = 0u; i < n; i++) {
         if ((mask >> i) & 1u) == 1u {
@@ -141,18 +155,21 @@ fn solve_basis(base: u32, n: u32, mask: u32) -> u32 {
         }
         x[c] = s / a[c * k + c];
     }
-    // Feasibility of z_S.
+    // Infeasibility of z_S.
     var zmax = Scalar(0.0);
     for (var r = 0u; r < k; r++) {
         zmax = max(zmax, abs(x[r]));
     }
-    let ztol = FEASIBILITY_TOL * zmax;
+    var worst = Scalar(0.0);
     for (var r = 0u; r < k; r++) {
-        if x[r] < -ztol {
-            return INFEASIBLE;
+        if x[r] < Scalar(0.0) {
+            worst = max(worst, -x[r] / zmax);
         }
     }
-    // Feasibility of w off S.
+    if worst > RELAXED_TOL {
+        return worst;
+    }
+    // Infeasibility of w off S.
     for (var i = 0u; i < n; i++) {
         if ((mask >> i) & 1u) == 1u {
             continue;
@@ -165,11 +182,25 @@ fn solve_basis(base: u32, n: u32, mask: u32) -> u32 {
             w += t;
             scale += abs(t);
         }
-        if w < -FEASIBILITY_TOL * scale {
-            return INFEASIBLE;
+        if w < Scalar(0.0) {
+            worst = max(worst, -w / scale);
+            if worst > RELAXED_TOL {
+                return worst;
+            }
         }
     }
-    return FEASIBLE;
+    return worst;
+}
+
+// Writes z of the basis whose z_S is in x (clamped at 0 like the CPU's
+// solve_basis), zeros off the basis.
+fn write_z(at: u32, n: u32, k: u32) {
+    for (var i = 0u; i < n; i++) {
+        z_out[at + i] = Scalar(0.0);
+    }
+    for (var r = 0u; r < k; r++) {
+        z_out[at + idx[r]] = max(x[r], Scalar(0.0));
+    }
 }
 
 // Upper bound of the loop iterations `solve_basis` spends on a basis with k
@@ -202,20 +233,28 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         }
         spent += basis_cost(n, k);
         state.visited++;
-        let verdict = solve_basis(island.data, n, s);
-        if verdict == SINGULAR {
+        let infeasibility = solve_basis(island.data, n, s);
+        if infeasibility == SINGULAR {
             state.singular++;
-        } else if verdict == FEASIBLE {
-            // z of the chosen basis, clamped at 0 like the CPU's solve_basis;
-            // zero elsewhere (the buffer starts zeroed).
-            for (var r = 0u; r < k; r++) {
-                z_out[island.z + idx[r]] = max(x[r], Scalar(0.0));
-            }
+        } else if infeasibility <= FEASIBILITY_TOL {
+            write_z(island.z, n, k);
             state.status = 1u;
             break;
+        } else if infeasibility <= RELAXED_TOL {
+            if state.has_least == 0u || infeasibility < least_infeasibility[island_index] {
+                state.least = s;
+                state.has_least = 1u;
+                least_infeasibility[island_index] = infeasibility;
+                write_z(island.z, n, k);
+            }
         }
         if s == full - 1u {
-            state.status = 2u;
+            if state.has_least == 1u {
+                state.status = 3u;
+                s = state.least;
+            } else {
+                state.status = 2u;
+            }
             break;
         }
         if k == 0u {

@@ -20,8 +20,10 @@
 use std::fmt;
 
 use crate::cpu::enumeration::{enumerate, solve_basis, BasisOutcome, EnumerationSettings};
+use crate::gpu::layout::{BasisResult, FOUND, RELAXED};
 use crate::gpu::Precision;
 use crate::lcp::{lcp_error, Counters, Lcp, LcpSolution, Status};
+use crate::linalg::solve_in_place;
 use crate::Error;
 
 /// What the GPU reported for one island.
@@ -29,10 +31,73 @@ use crate::Error;
 pub struct GpuVerdict<'a> {
     /// The chosen basis, None when no basis was valid on the GPU.
     pub basis: Option<u32>,
+    /// The basis is not valid but the least infeasible one within the relaxed
+    /// tolerance (every basis was visited).
+    pub relaxed: bool,
     pub visited: u64,
     pub singular: u64,
     /// The GPU's z (in its precision, widened to f64); may be empty.
     pub z: &'a [f64],
+}
+
+impl<'a> GpuVerdict<'a> {
+    /// The verdict of the enumeration stage's record.
+    pub fn of(r: &BasisResult, z: &'a [f64]) -> Self {
+        GpuVerdict {
+            basis: (r.status == FOUND || r.status == RELAXED).then_some(r.mask),
+            relaxed: r.status == RELAXED,
+            visited: r.visited as u64,
+            singular: r.singular as u64,
+            z,
+        }
+    }
+}
+
+/// Relative infeasibility of basis `mask` in f64, as the CPU enumeration
+/// measures it (the worst of −z_i/‖z_S‖∞ and −w_i/(|q_i| + Σ_j |M_ij z_j|)),
+/// with z (clamped at 0); None when M_SS is singular. O(k³ + n²).
+pub fn basis_infeasibility(
+    lcp: &Lcp,
+    mask: u32,
+    settings: &EnumerationSettings,
+) -> Option<(f64, Vec<f64>)> {
+    let n = lcp.n();
+    let idx: Vec<usize> = (0..n).filter(|&i| mask >> i & 1 == 1).collect();
+    let k = idx.len();
+    let mut a = vec![0.0; k * k];
+    let mut x = vec![0.0; k];
+    for (r, &i) in idx.iter().enumerate() {
+        for (c, &j) in idx.iter().enumerate() {
+            a[r * k + c] = lcp.at(i, j);
+        }
+        x[r] = -lcp.q[i];
+    }
+    if !solve_in_place(&mut a, &mut x, k, settings.pivot_tol) {
+        return None;
+    }
+    let zmax = x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let mut worst = 0.0f64;
+    for &v in &x {
+        if v < 0.0 {
+            worst = worst.max(-v / zmax);
+        }
+    }
+    let mut z = vec![0.0; n];
+    for (r, &i) in idx.iter().enumerate() {
+        z[i] = x[r];
+    }
+    for i in (0..n).filter(|&i| mask >> i & 1 == 0) {
+        let (mut w, mut scale) = (lcp.q[i], lcp.q[i].abs());
+        for &j in &idx {
+            let t = lcp.at(i, j) * z[j];
+            w += t;
+            scale += t.abs();
+        }
+        if w < 0.0 {
+            worst = worst.max(-w / scale);
+        }
+    }
+    Some((worst, z.into_iter().map(|v| v.max(0.0)).collect()))
 }
 
 /// What validation decided.
@@ -56,11 +121,15 @@ pub struct Checked {
     pub gpu_error: f64,
 }
 
-/// Validates the GPU's answer for `lcp` (see the module docs).
+/// Validates the GPU's answer for `lcp` (see the module docs). A relaxed
+/// basis (no valid one exists) is kept when `accept_relaxed` (the shaders are
+/// the exact f64 twin, so it is the CPU's choice) and it is within the
+/// relaxed tolerance in f64; otherwise the CPU decides.
 pub fn validate_island(
     lcp: &Lcp,
     gpu: &GpuVerdict<'_>,
     settings: &EnumerationSettings,
+    accept_relaxed: bool,
 ) -> Result<Checked, Error> {
     let n = lcp.n();
     let gpu_error = if gpu.basis.is_some() && gpu.z.len() == n {
@@ -68,17 +137,32 @@ pub fn validate_island(
     } else {
         f64::NAN
     };
-    if let Some(mask) = gpu.basis {
+    let counters = Counters {
+        bases_visited: gpu.visited,
+        singular_bases: gpu.singular,
+        ..Counters::default()
+    };
+    if let (Some(mask), true) = (gpu.basis, gpu.relaxed && accept_relaxed) {
+        if mask >> n == 0 {
+            if let Some((v, z)) = basis_infeasibility(lcp, mask, settings) {
+                if v > settings.feasibility_tol && v <= settings.relaxed_feasibility_tol {
+                    let mut solution = LcpSolution::from_z(lcp, Status::Solved, z, counters);
+                    solution.basis = Some(mask);
+                    return Ok(Checked {
+                        solution,
+                        verdict: Verdict::Polished,
+                        gpu_error,
+                    });
+                }
+            }
+        }
+    }
+    if let (Some(mask), false) = (gpu.basis, gpu.relaxed) {
         if mask >> n == 0 {
             if let BasisOutcome::Solved {
                 z, feasible: true, ..
             } = solve_basis(lcp, mask, settings)
             {
-                let counters = Counters {
-                    bases_visited: gpu.visited,
-                    singular_bases: gpu.singular,
-                    ..Counters::default()
-                };
                 let mut solution = LcpSolution::from_z(lcp, Status::Solved, z, counters);
                 solution.basis = Some(mask);
                 return Ok(Checked {

@@ -10,7 +10,7 @@
 use std::time::Instant;
 
 use super::kernels::Pipelines;
-use super::layout::{scalars_from_bytes, scalars_to_bytes, BasisResult, PackedIsland, FOUND};
+use super::layout::{scalars_from_bytes, scalars_to_bytes, BasisResult, PackedIsland};
 use super::{GpuContext, Precision, MAX_GPU_N};
 use crate::cpu::enumeration::EnumerationSettings;
 use crate::lcp::{Counters, Lcp, LcpSolution, Residuals, Status};
@@ -24,6 +24,9 @@ use crate::Error;
 /// repaired) and call a basis singular only when f32 cannot tell.
 pub const F32_PIVOT_TOL: f64 = 1e-6;
 pub const F32_FEASIBILITY_TOL: f64 = 1e-4;
+/// f32 fallback tolerance: the least infeasible basis within it is named
+/// when no basis is valid (the f64 check then decides).
+pub const F32_RELAXED_TOL: f64 = 1e-3;
 
 /// Settings of a GPU batch solve.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -36,6 +39,8 @@ pub struct GpuSolveSettings {
     pub gpu_pivot_tol: Option<f64>,
     /// GPU feasibility tolerance; None: the CPU's in f64, [`F32_FEASIBILITY_TOL`] in f32.
     pub gpu_feasibility_tol: Option<f64>,
+    /// GPU relaxed tolerance; None: the CPU's in f64, [`F32_RELAXED_TOL`] in f32.
+    pub gpu_relaxed_tol: Option<f64>,
     /// Islands with n > 16 are solved on the CPU with these settings.
     pub lemke: LemkeSettings,
     /// Lower the size above which a batch is split (bytes per binding;
@@ -54,6 +59,7 @@ impl Default for GpuSolveSettings {
             enumeration: EnumerationSettings::default(),
             gpu_pivot_tol: None,
             gpu_feasibility_tol: None,
+            gpu_relaxed_tol: None,
             lemke: LemkeSettings::default(),
             max_binding_bytes: None,
             max_workgroups: None,
@@ -63,17 +69,30 @@ impl Default for GpuSolveSettings {
 }
 
 impl GpuSolveSettings {
-    /// (pivot, feasibility) tolerances of the shaders at `precision`.
-    pub fn gpu_tolerances(&self, precision: Precision) -> (f64, f64) {
-        let (p, f) = if precision == Precision::F64 {
-            (self.enumeration.pivot_tol, self.enumeration.feasibility_tol)
+    /// (pivot, feasibility, relaxed) tolerances of the shaders at `precision`.
+    pub fn gpu_tolerances(&self, precision: Precision) -> (f64, f64, f64) {
+        let e = &self.enumeration;
+        let (p, f, r) = if precision == Precision::F64 {
+            (e.pivot_tol, e.feasibility_tol, e.relaxed_feasibility_tol)
         } else {
-            (F32_PIVOT_TOL, F32_FEASIBILITY_TOL)
+            (F32_PIVOT_TOL, F32_FEASIBILITY_TOL, F32_RELAXED_TOL)
         };
         (
             self.gpu_pivot_tol.unwrap_or(p),
             self.gpu_feasibility_tol.unwrap_or(f),
+            self.gpu_relaxed_tol.unwrap_or(r),
         )
+    }
+
+    /// True when the shaders run the CPU twin's arithmetic and tolerances
+    /// (f64): then a least-infeasible basis the GPU names after visiting
+    /// every basis is the CPU's choice, and validation keeps it when it is
+    /// within the relaxed tolerance in f64.
+    pub fn exact_twin(&self, precision: Precision) -> bool {
+        let e = &self.enumeration;
+        precision == Precision::F64
+            && self.gpu_tolerances(precision)
+                == (e.pivot_tol, e.feasibility_tol, e.relaxed_feasibility_tol)
     }
 }
 
@@ -193,6 +212,8 @@ pub(crate) fn run_enumeration(
     let z = ctx.storage_zeroed("z", z_size);
     // unfinished: islands per size n still in progress after a round.
     let unfinished = ctx.storage_zeroed("unfinished", 17 * 4);
+    // least: infeasibility of each island's least infeasible basis so far.
+    let least = ctx.storage_zeroed("least_infeasibility", table.len() as u64 * sb);
     let stage = &pipelines.enumeration;
     let bind = |params: &wgpu::Buffer| {
         ctx.device.create_bind_group(&wgpu::BindGroupDescriptor {
@@ -222,6 +243,10 @@ pub(crate) fn run_enumeration(
                 wgpu::BindGroupEntry {
                     binding: 5,
                     resource: unfinished.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 6,
+                    resource: least.as_entire_binding(),
                 },
             ],
         })
@@ -310,8 +335,7 @@ pub fn enumerate_on_gpu(
     let mut stats = RunStats::default();
     check_gpu_sizes(lcps)?;
     let precision = ctx.precision();
-    let (pivot, feas) = settings.gpu_tolerances(precision);
-    let pipelines = ctx.pipelines(pivot, feas)?;
+    let pipelines = ctx.pipelines(settings.gpu_tolerances(precision))?;
     let (max_bytes, max_groups) = limits_for(ctx, settings);
     let budget = round_budget(ctx, settings);
 
@@ -450,8 +474,7 @@ impl<'a> UploadedBatch<'a> {
     ) -> Result<Self, Error> {
         check_gpu_sizes(lcps)?;
         let precision = ctx.precision();
-        let (pivot, feas) = settings.gpu_tolerances(precision);
-        let pipelines = ctx.pipelines(pivot, feas)?;
+        let pipelines = ctx.pipelines(settings.gpu_tolerances(precision))?;
         let (max_bytes, max_groups) = limits_for(ctx, settings);
         let chunks = ctx.scoped("upload", || {
             pack_chunks(lcps, max_bytes, precision.bytes())
@@ -584,13 +607,13 @@ pub fn solve_lcp_batch(
     report.rounds = stats.rounds;
     let start = Instant::now();
     for (&i, o) in on_gpu.iter().zip(outputs) {
-        let verdict = GpuVerdict {
-            basis: (o.result.status == FOUND).then_some(o.result.mask),
-            visited: o.result.visited as u64,
-            singular: o.result.singular as u64,
-            z: &o.z,
-        };
-        let checked = validate_island(&lcps[i], &verdict, &settings.enumeration)?;
+        let verdict = GpuVerdict::of(&o.result, &o.z);
+        let checked = validate_island(
+            &lcps[i],
+            &verdict,
+            &settings.enumeration,
+            settings.exact_twin(ctx.precision()),
+        )?;
         report.record_gpu(&checked);
         let solved_on = match checked.verdict {
             Verdict::Polished | Verdict::ConfirmedNoSolution => SolvedOn::Gpu,

@@ -27,6 +27,7 @@ pub struct PipelineKey {
     pub precision: Precision,
     pub pivot_tol_bits: u64,
     pub feasibility_tol_bits: u64,
+    pub relaxed_tol_bits: u64,
 }
 
 /// One entry point: its explicit bind group layout and its pipeline.
@@ -79,7 +80,7 @@ fn literal(v: f64) -> String {
 pub fn template(
     src: &str,
     precision: Precision,
-    tolerances: Option<(f64, f64)>,
+    tolerances: Option<(f64, f64, f64)>,
 ) -> Result<String, Error> {
     let ty = if precision == Precision::F64 {
         "f64"
@@ -87,7 +88,12 @@ pub fn template(
         "f32"
     };
     let mut s = replace_host_line(src, "scalar", &format!("alias Scalar = {ty};"))?;
-    if let Some((pivot, feas)) = tolerances {
+    if let Some((pivot, feas, relaxed)) = tolerances {
+        s = replace_host_line(
+            &s,
+            "relaxed_tol",
+            &format!("const RELAXED_TOL: Scalar = {};", literal(relaxed)),
+        )?;
         s = replace_host_line(
             &s,
             "pivot_tol",
@@ -159,7 +165,12 @@ impl Pipelines {
         let d = &ctx.device;
         let pivot = f64::from_bits(key.pivot_tol_bits);
         let feas = f64::from_bits(key.feasibility_tol_bits);
-        let enumeration_src = template(ENUMERATION_WGSL, key.precision, Some((pivot, feas)))?;
+        let relaxed = f64::from_bits(key.relaxed_tol_bits);
+        let enumeration_src = template(
+            ENUMERATION_WGSL,
+            key.precision,
+            Some((pivot, feas, relaxed)),
+        )?;
         let assembly_src = template(ASSEMBLY_WGSL, key.precision, None)?;
         let impulses_src = template(IMPULSES_WGSL, key.precision, None)?;
         ctx.scoped("building the pipelines", || {
@@ -184,6 +195,7 @@ impl Pipelines {
                         storage_entry(3, false),
                         storage_entry(4, false),
                         storage_entry(5, false),
+                        storage_entry(6, false),
                     ],
                 ),
                 assemble_contacts: stage(
@@ -233,15 +245,12 @@ impl Pipelines {
 impl GpuContext {
     /// The pipelines for the context's precision and these tolerances,
     /// built on first use.
-    pub(crate) fn pipelines(
-        &self,
-        pivot_tol: f64,
-        feasibility_tol: f64,
-    ) -> Result<Arc<Pipelines>, Error> {
+    pub(crate) fn pipelines(&self, tolerances: (f64, f64, f64)) -> Result<Arc<Pipelines>, Error> {
         let key = PipelineKey {
             precision: self.precision(),
-            pivot_tol_bits: pivot_tol.to_bits(),
-            feasibility_tol_bits: feasibility_tol.to_bits(),
+            pivot_tol_bits: tolerances.0.to_bits(),
+            feasibility_tol_bits: tolerances.1.to_bits(),
+            relaxed_tol_bits: tolerances.2.to_bits(),
         };
         let mut cache = self
             .pipelines

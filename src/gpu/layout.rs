@@ -83,16 +83,27 @@ pub struct BasisResult {
     /// Status 1: the chosen basis (bit i: z_i basic); status 0: the next basis to visit.
     pub mask: u32,
     /// 0: in progress; 1 ([`FOUND`]): a valid basis was found; 2 ([`NONE`]):
-    /// none of the 2ⁿ is valid.
+    /// no basis is valid or within the relaxed tolerance; 3 ([`RELAXED`]): none
+    /// is valid and `mask` is the least infeasible basis within the relaxed
+    /// tolerance (every basis visited).
     pub status: u32,
     pub visited: u32,
     pub singular: u32,
+    /// The least infeasible basis so far (when `has_least` is 1).
+    pub least: u32,
+    pub has_least: u32,
+    pub _pad0: u32,
+    pub _pad1: u32,
 }
 
 /// [`BasisResult::status`]: a valid basis was found.
 pub const FOUND: u32 = 1;
-/// [`BasisResult::status`]: every basis was visited, none is valid.
+/// [`BasisResult::status`]: every basis was visited, none is valid or within
+/// the relaxed tolerance.
 pub const NONE: u32 = 2;
+/// [`BasisResult::status`]: every basis was visited, none is valid; the mask
+/// is the least infeasible one within the relaxed tolerance.
+pub const RELAXED: u32 = 3;
 
 /// WGSL `Params`: the range of a table one dispatch covers, and (enumeration)
 /// the loop work each invocation may spend in one round.

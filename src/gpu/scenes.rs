@@ -17,8 +17,7 @@ use super::batch::{
 use super::kernels::Pipelines;
 use super::layout::{
     pack_body, pack_contact, scalars_from_bytes, scalars_to_bytes, unpack_row, BasisResult,
-    BodyContacts, ContactBodies, ContactSide, PackedIsland, Slot, BODY, FOUND, NO_BODY, ROW,
-    VELOCITY,
+    BodyContacts, ContactBodies, ContactSide, PackedIsland, Slot, BODY, NO_BODY, ROW, VELOCITY,
 };
 use super::{GpuContext, MAX_GPU_N};
 use crate::cpu::assembly::ContactRow;
@@ -394,8 +393,7 @@ pub fn assemble_on_gpu(
     settings: &GpuSolveSettings,
 ) -> Result<GpuAssembly, Error> {
     let prepared = prepare(scenes)?;
-    let (pivot, feas) = settings.gpu_tolerances(ctx.precision());
-    let pipelines = ctx.pipelines(pivot, feas)?;
+    let pipelines = ctx.pipelines(settings.gpu_tolerances(ctx.precision()))?;
     let (max_bytes, max_groups) = limits_for(ctx, settings);
     let (chunks, alone) = plan(scenes, &prepared, max_bytes, ctx.precision().bytes());
     if !alone.is_empty() {
@@ -462,8 +460,7 @@ pub fn solve_scenes(
         ));
     }
     let prepared = prepare(scenes)?;
-    let (pivot, feas) = settings.gpu_tolerances(ctx.precision());
-    let pipelines = ctx.pipelines(pivot, feas)?;
+    let pipelines = ctx.pipelines(settings.gpu_tolerances(ctx.precision()))?;
     let (max_bytes, max_groups) = limits_for(ctx, settings);
     let budget = round_budget(ctx, settings);
     let (chunks, alone) = plan(scenes, &prepared, max_bytes, ctx.precision().bytes());
@@ -487,13 +484,13 @@ pub fn solve_scenes(
         let t1 = Instant::now();
         for ((rec, &(s, k)), res) in c.table.iter().zip(&c.keys).zip(&out.results) {
             let (z0, n) = (rec.z as usize, rec.n as usize);
-            let verdict = GpuVerdict {
-                basis: (res.status == FOUND).then_some(res.mask),
-                visited: res.visited as u64,
-                singular: res.singular as u64,
-                z: out.z.get(z0..z0 + n).unwrap_or(&[]),
-            };
-            let checked = validate_island(&prepared[s].lcps[k], &verdict, &settings.enumeration)?;
+            let verdict = GpuVerdict::of(res, out.z.get(z0..z0 + n).unwrap_or(&[]));
+            let checked = validate_island(
+                &prepared[s].lcps[k],
+                &verdict,
+                &settings.enumeration,
+                settings.exact_twin(ctx.precision()),
+            )?;
             report.record_gpu(&checked);
             let on = if checked.verdict == Verdict::Repaired {
                 SolvedOn::Repaired
