@@ -182,15 +182,17 @@ fn physical_islands_f64_match_the_cpu() {
     if let Some((count, repaired)) = scenes_against_cpu(Precision::F64) {
         // f64 shaders use the CPU's tolerances and order: observed 0 repaired.
         println!("f64: repaired {repaired} of {count}");
-        assert!(repaired <= count / 1000, "repaired {repaired}");
+        assert_eq!(repaired, 0, "repaired {repaired}");
     }
 }
 
 #[test]
 fn physical_islands_f32_match_the_cpu_after_polish() {
     if let Some((count, repaired)) = scenes_against_cpu(Precision::F32) {
+        // Observed on lavapipe: 9 of 20,010 repaired (f32 names a basis that
+        // is only feasible to f32's 1e-4, or misses one); bound: 40.
         println!("f32: repaired {repaired} of {count}");
-        assert!(repaired <= count / 100, "repaired {repaired}");
+        assert!(repaired <= 40, "repaired {repaired}");
     }
 }
 

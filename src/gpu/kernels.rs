@@ -412,3 +412,46 @@ impl GpuContext {
         Ok(out)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gpu::GpuOptions;
+
+    #[test]
+    fn templating_replaces_the_marked_lines_exactly() {
+        let s = template(ENUMERATION_WGSL, Precision::F64, Some((1e-13, 1e-12, 1e-9))).unwrap();
+        assert!(s.contains("alias Scalar = f64; // HOST scalar"));
+        assert!(s.contains("const PIVOT_TOL: Scalar = 1e-13; // HOST pivot_tol"));
+        assert!(s.contains("const RELAXED_TOL: Scalar = 1e-9; // HOST relaxed_tol"));
+        assert!(template("fn main() {}", Precision::F32, None).is_err());
+        assert_eq!(literal(0.5), "5e-1");
+        assert_eq!(0.5f64, "5e-1".parse::<f64>().unwrap());
+    }
+
+    /// A wgpu validation error (a uniform binding of a buffer without
+    /// UNIFORM usage) comes back as Error::Gpu, not as a panic.
+    #[test]
+    fn wgpu_validation_errors_become_error_gpu() {
+        let ctx = GpuContext::new(&GpuOptions::from_env().unwrap())
+            .unwrap_or_else(|e| panic!("no GPU adapter: {e}"));
+        let p = ctx.pipelines((1e-13, 1e-12, 1e-9)).unwrap();
+        let r = ctx.scoped("a bad bind group", || {
+            let not_uniform = ctx.storage_zeroed("not uniform", 16);
+            ctx.device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("bad"),
+                layout: &p.enumeration.layout,
+                entries: &[wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: not_uniform.as_entire_binding(),
+                }],
+            })
+        });
+        match r {
+            Err(Error::Gpu(msg)) => assert!(msg.starts_with("a bad bind group: "), "{msg}"),
+            other => panic!("expected Error::Gpu, got {other:?}"),
+        }
+        // The context stays usable.
+        assert!(ctx.scoped("nothing", || ()).is_ok());
+    }
+}

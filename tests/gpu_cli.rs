@@ -1,0 +1,141 @@
+//! The command line on the GPU: `solve --backend gpu` writes what
+//! `--backend cpu` writes (f64 shaders: byte for byte), `info` lists the
+//! adapter and its features, `demo` prints its summary.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+use lcpbatch::generate::{demo_world, seed_chain, Rng};
+use lcpbatch::Scene;
+
+fn lcpbatch(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_lcpbatch"))
+        .args(args)
+        .env("XDG_RUNTIME_DIR", std::env::temp_dir())
+        .output()
+        .expect("runs")
+}
+
+fn ok(args: &[&str]) -> String {
+    let out = lcpbatch(args);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        out.status.success(),
+        "lcpbatch {args:?} failed: {err}\n(no GPU adapter? {})",
+        lcpbatch::gpu::INSTALL_HINT
+    );
+    String::from_utf8(out.stdout).expect("utf-8")
+}
+
+fn temp(name: &str, text: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("lcpbatch-gpu-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+#[test]
+fn gpu_and_cpu_backends_write_the_same_output() {
+    let mut rng = Rng::new(5);
+    let mut scenes: Vec<Scene> = (0..30).map(|_| demo_world(&mut rng)).collect();
+    scenes.push(seed_chain(0.4));
+    let scenes_file = temp(
+        "scenes.json",
+        &serde_json::json!({ "scenes": scenes }).to_string(),
+    );
+    let batch_file = temp(
+        "batch.json",
+        r#"{"problems":[{"M":[[2,1],[1,2]],"q":[-5,-6]},
+            {"M":[[0,-1,2],[2,0,-2],[-1,1,0]],"q":[-3,6,-1]},
+            {"M":[[0,-1,2],[2,0,-2],[-1,1,0]],"q":[-3,6,1]},
+            {"M":[[1,0],[0,1]],"q":[1,2]}]}"#,
+    );
+    for file in [&scenes_file, &batch_file] {
+        let f = file.to_str().unwrap();
+        let cpu = ok(&["solve", f, "--backend", "cpu"]);
+        let gpu = ok(&["solve", f, "--backend", "gpu", "--precision", "f64"]);
+        assert_eq!(gpu, cpu, "{f}: GPU output differs from the CPU's");
+        let auto = ok(&["solve", f, "--backend", "auto", "--precision", "f64"]);
+        assert_eq!(auto, cpu, "{f}: auto");
+        // f32 shaders: the same statuses and bases (z polished in f64).
+        let g32: serde_json::Value =
+            serde_json::from_str(&ok(&["solve", f, "--backend", "gpu", "--precision", "f32"]))
+                .unwrap();
+        let c: serde_json::Value = serde_json::from_str(&cpu).unwrap();
+        let key = if c.get("problems").is_some() {
+            "problems"
+        } else {
+            "scenes"
+        };
+        assert_eq!(
+            g32[key].as_array().unwrap().len(),
+            c[key].as_array().unwrap().len()
+        );
+    }
+    // --backend gpu refuses what only the CPU does.
+    let out = lcpbatch(&[
+        "solve",
+        batch_file.to_str().unwrap(),
+        "--backend",
+        "gpu",
+        "--solver",
+        "lemke",
+    ]);
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("enumeration only"));
+}
+
+#[test]
+fn info_lists_adapters_and_features() {
+    let text = ok(&["info"]);
+    assert!(text.contains("adapters:"), "{text}");
+    assert!(text.contains("features: f64"), "{text}");
+    assert!(text.contains("limits: storage binding"), "{text}");
+    assert!(text.contains("chosen: "), "{text}");
+    let f = temp(
+        "one.json",
+        r#"{"problems":[{"M":[[2,1],[1,2]],"q":[-5,-6]}]}"#,
+    );
+    let args = [
+        "solve",
+        f.to_str().unwrap(),
+        "--backend",
+        "gpu",
+        "--adapter",
+        "no such adapter 7",
+    ];
+    let out = lcpbatch(&args);
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("no adapter whose name contains `no such adapter 7`"),
+        "{err}"
+    );
+    // auto falls back to the CPU with a message.
+    let out = lcpbatch(&[
+        "solve",
+        f.to_str().unwrap(),
+        "--backend",
+        "auto",
+        "--adapter",
+        "no such adapter 7",
+    ]);
+    assert!(out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("solving on the CPU"));
+}
+
+#[test]
+fn demo_prints_its_summary() {
+    let text = ok(&["demo", "--worlds", "200"]);
+    for needle in [
+        "adapter: ",
+        "islands: ",
+        "statuses: solved",
+        "repaired 0",
+        "max error after polish",
+        "islands/s",
+    ] {
+        assert!(text.contains(needle), "`{needle}` missing in:\n{text}");
+    }
+}
