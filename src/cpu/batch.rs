@@ -55,12 +55,34 @@ pub fn solve_island(lcp: &Lcp, warm_basis: Option<u32>, s: &CpuBatchSettings) ->
             return CpuIslandResult { path, solution };
         }
     }
-    let solution =
-        enumerate_gray(lcp, &s.gray).expect("n ≤ 20 and settings validated by the caller");
+    let solution = if prefers_elimination(lcp) {
+        enumerate(lcp, &s.gray.enumeration)
+    } else {
+        enumerate_gray(lcp, &s.gray)
+    }
+    .expect("n ≤ 20 and settings validated by the caller");
     CpuIslandResult {
         path: SolvePath::Enumerated,
         solution,
     }
+}
+
+/// Which enumeration is cheaper for this island? Both give the same result.
+/// Elimination visits bases by size and stops at the first valid one; the
+/// active set is usually among the approaching contacts, so it visits about
+/// Σ_{j ≤ a} C(n, j) bases (a = #{q_i < 0}) at ~5× the cost per basis of the
+/// Gray code, which always visits all 2ⁿ (measured at n = 10 on this
+/// machine: 170 against 35 ns per basis).
+pub fn prefers_elimination(lcp: &Lcp) -> bool {
+    let n = lcp.n();
+    let a = lcp.q.iter().filter(|&&v| v < 0.0).count();
+    let mut visited = 0u64;
+    let mut c = 1u64; // C(n, j)
+    for j in 0..=a {
+        visited += c;
+        c = c * (n - j) as u64 / (j + 1) as u64;
+    }
+    5 * visited < (1u64 << n)
 }
 
 /// Solves every island of a batch, in order. `warm[i]` is island i's basis

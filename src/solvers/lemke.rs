@@ -39,8 +39,23 @@ fn complement(var: usize, n: usize) -> usize {
     }
 }
 
+/// How one run of the pivoting path ended.
+enum PathEnd {
+    /// z0 left (Solved), a secondary ray, or the pivot cap.
+    Done(Status),
+    /// A (basis, entering variable) pair came back: the path cycles. Exact
+    /// lexicographic pivoting cannot cycle; floating point can, where
+    /// rounding decides a tie (a right-hand side of 0 against 1e-17).
+    Cycled,
+}
+
 /// Solves `lcp` with Lemke's algorithm. Statuses: `Solved`, `RayTermination`,
 /// `NotConverged` (pivot cap). The counters carry the pivot count.
+///
+/// If the pivoting path cycles (see [`PathEnd::Cycled`]), the run starts over
+/// on q perturbed by 1e-10·‖q‖∞ (then 1e-7·‖q‖∞) with distinct weights per
+/// row, which breaks the ties rounding decided; the final basis is then
+/// re-solved with the true q, and the error reported is the true problem's.
 pub fn lemke(lcp: &Lcp, settings: &LemkeSettings) -> LcpSolution {
     let n = lcp.n();
     let mut counters = Counters::default();
@@ -49,51 +64,27 @@ pub fn lemke(lcp: &Lcp, settings: &LemkeSettings) -> LcpSolution {
         sol.basis = Some(0);
         return sol;
     }
-    let cols = 2 * n + 2; // w, z, z0, rhs
-    let rhs = 2 * n + 1;
-    let z0 = 2 * n;
-    let mut t = vec![0.0f64; n * cols];
-    for i in 0..n {
-        t[i * cols + i] = 1.0;
-        for j in 0..n {
-            t[i * cols + n + j] = -lcp.at(i, j);
+    let qmax = lcp.q.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let mut result = None;
+    for eta in [0.0, 1e-10, 1e-7] {
+        // Weights in [1, 2), distinct for every row (golden-ratio sequence).
+        let q: Vec<f64> = (0..n)
+            .map(|i| lcp.q[i] + eta * qmax * (1.0 + (i as f64 * 0.618_033_988_749_895).fract()))
+            .collect();
+        let (end, basic, t) = pivot_path(lcp, &q, settings, &mut counters);
+        match end {
+            PathEnd::Done(status) => {
+                result = Some((status, basic, t));
+                break;
+            }
+            PathEnd::Cycled => continue,
         }
-        t[i * cols + z0] = -1.0;
-        t[i * cols + rhs] = lcp.q[i];
     }
-    let mut basic: Vec<usize> = (0..n).collect();
-
-    // First pivot: z0 enters at the value that makes the most negative q_i zero.
-    // Lexicographic minimum of (q_i, row i of B⁻¹) over all rows.
-    let first = first_row(&t, cols, n);
-    pivot(&mut t, cols, n, first, z0);
-    counters.pivots += 1;
-    let mut entering = complement(basic[first], n);
-    basic[first] = z0;
-
-    let status = loop {
-        if counters.pivots >= settings.max_pivots {
-            break Status::NotConverged;
-        }
-        let colmax = (0..n).fold(0.0f64, |m, i| m.max(t[i * cols + entering].abs()));
-        let tol = settings.pivot_tol * colmax;
-        let candidates: Vec<usize> = (0..n).filter(|&i| t[i * cols + entering] > tol).collect();
-        // x_B = rhs − T[:, e] t for the entering variable at value t ≥ 0:
-        // rows with a positive entry decrease; the first to reach zero leaves.
-        if candidates.is_empty() || colmax == 0.0 {
-            break Status::RayTermination;
-        }
-        let best = leaving_row(&t, cols, n, entering, &candidates, |i| basic[i] == z0);
-        pivot(&mut t, cols, n, best, entering);
-        counters.pivots += 1;
-        let leaving = basic[best];
-        basic[best] = entering;
-        if leaving == z0 {
-            break Status::Solved;
-        }
-        entering = complement(leaving, n);
+    let Some((status, basic, t)) = result else {
+        return LcpSolution::from_z(lcp, Status::NotConverged, vec![0.0; n], counters);
     };
-
+    let cols = 2 * n + 2;
+    let rhs = 2 * n + 1;
     let mut z = vec![0.0; n];
     let mut support = Vec::new();
     for (i, &v) in basic.iter().enumerate() {
@@ -116,6 +107,68 @@ pub fn lemke(lcp: &Lcp, settings: &LemkeSettings) -> LcpSolution {
         }
     }
     sol
+}
+
+/// One run of the complementary pivoting path on (M, q).
+fn pivot_path(
+    lcp: &Lcp,
+    q: &[f64],
+    settings: &LemkeSettings,
+    counters: &mut Counters,
+) -> (PathEnd, Vec<usize>, Vec<f64>) {
+    let n = lcp.n();
+    let cols = 2 * n + 2; // w, z, z0, rhs
+    let rhs = 2 * n + 1;
+    let z0 = 2 * n;
+    let mut t = vec![0.0f64; n * cols];
+    for i in 0..n {
+        t[i * cols + i] = 1.0;
+        for j in 0..n {
+            t[i * cols + n + j] = -lcp.at(i, j);
+        }
+        t[i * cols + z0] = -1.0;
+        t[i * cols + rhs] = q[i];
+    }
+    let mut basic: Vec<usize> = (0..n).collect();
+
+    // First pivot: z0 enters at the value that makes the most negative q_i zero.
+    // Lexicographic minimum of (q_i, row i of B⁻¹) over all rows.
+    let first = first_row(&t, cols, n);
+    pivot(&mut t, cols, n, first, z0);
+    counters.pivots += 1;
+    let mut entering = complement(basic[first], n);
+    basic[first] = z0;
+    let mut seen = std::collections::HashSet::new();
+
+    let end = loop {
+        if counters.pivots >= settings.max_pivots {
+            break PathEnd::Done(Status::NotConverged);
+        }
+        let mut key: Vec<usize> = basic.clone();
+        key.sort_unstable();
+        key.push(entering);
+        if !seen.insert(key) {
+            break PathEnd::Cycled;
+        }
+        let colmax = (0..n).fold(0.0f64, |m, i| m.max(t[i * cols + entering].abs()));
+        let tol = settings.pivot_tol * colmax;
+        let candidates: Vec<usize> = (0..n).filter(|&i| t[i * cols + entering] > tol).collect();
+        // x_B = rhs − T[:, e] t for the entering variable at value t ≥ 0:
+        // rows with a positive entry decrease; the first to reach zero leaves.
+        if candidates.is_empty() || colmax == 0.0 {
+            break PathEnd::Done(Status::RayTermination);
+        }
+        let best = leaving_row(&t, cols, n, entering, &candidates, |i| basic[i] == z0);
+        pivot(&mut t, cols, n, best, entering);
+        counters.pivots += 1;
+        let leaving = basic[best];
+        basic[best] = entering;
+        if leaving == z0 {
+            break PathEnd::Done(Status::Solved);
+        }
+        entering = complement(leaving, n);
+    };
+    (end, basic, t)
 }
 
 /// Re-solves the final basis from the original data, M_SS z_S = −q_S: the
