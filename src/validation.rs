@@ -258,7 +258,9 @@ impl BatchReport {
         if let Some(i) = Status::ALL.iter().position(|&x| x == sol.status) {
             self.statuses[i] += 1;
         }
-        if sol.status.is_solution() && !(sol.residuals.error <= self.max_error) {
+        // NaN is kept: it must show.
+        let e = sol.residuals.error;
+        if sol.status.is_solution() && (e.is_nan() || e > self.max_error) {
             self.max_error = sol.residuals.error;
         }
     }

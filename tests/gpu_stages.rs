@@ -41,7 +41,8 @@ fn scenes() -> Vec<Scene> {
 /// |a − b| ≤ tol · scale, elementwise.
 fn close(a: &[f64], b: &[f64], scale: f64, tol: f64) -> Result<(), String> {
     for (i, (x, y)) in a.iter().zip(b).enumerate() {
-        if !((x - y).abs() <= tol * scale) {
+        let d = (x - y).abs();
+        if d.is_nan() || d > tol * scale {
             return Err(format!("entry {i}: {x} vs {y} (scale {scale})"));
         }
     }

@@ -29,7 +29,7 @@ pub const F32_FEASIBILITY_TOL: f64 = 1e-4;
 pub const F32_RELAXED_TOL: f64 = 1e-3;
 
 /// Settings of a GPU batch solve.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct GpuSolveSettings {
     /// The CPU's enumeration settings: the f64 polish and repair use them,
     /// and f64 shaders use the same tolerances. `all_solutions` is not
@@ -51,21 +51,6 @@ pub struct GpuSolveSettings {
     /// Loop work per invocation and enumeration round; None: by adapter
     /// ([`SOFTWARE_ROUND_BUDGET`] or [`HARDWARE_ROUND_BUDGET`]).
     pub round_budget: Option<u32>,
-}
-
-impl Default for GpuSolveSettings {
-    fn default() -> Self {
-        GpuSolveSettings {
-            enumeration: EnumerationSettings::default(),
-            gpu_pivot_tol: None,
-            gpu_feasibility_tol: None,
-            gpu_relaxed_tol: None,
-            lemke: LemkeSettings::default(),
-            max_binding_bytes: None,
-            max_workgroups: None,
-            round_budget: None,
-        }
-    }
 }
 
 impl GpuSolveSettings {
