@@ -406,7 +406,9 @@ fn pack_chunks(lcps: &[&Lcp], max_bytes: u64, sb: u64) -> Vec<PackedChunk> {
             let nv = values + n * n + n;
             let nz = zs + n;
             let count = (end - at + 1) as u64;
-            let too_big = nv * sb > max_bytes || nz * sb > max_bytes || count * 16 > max_bytes;
+            let too_big = nv * sb > max_bytes
+                || nz * sb > max_bytes
+                || count * std::mem::size_of::<BasisResult>() as u64 > max_bytes;
             if too_big && end > at {
                 break;
             }

@@ -15,6 +15,29 @@
 //! reused for every batch; tests create their own. wgpu's errors never panic:
 //! an uncaptured-error handler and an error scope around every submission
 //! turn them into [`Error::Gpu`].
+//!
+//! # Adapter choice
+//! [`GpuOptions`]: a forced adapter (name part, `--adapter` or
+//! [`ENV_ADAPTER`]) and backend (`--gpu-backend` or [`ENV_BACKEND`]); else
+//! `request_adapter` with PowerPreference::HighPerformance, a hardware
+//! adapter on another backend preferred over a software one; else the
+//! software fallback (Mesa lavapipe through Vulkan, llvmpipe through GL).
+//! [`GpuContext::selection`] says which it was. No adapter: [`Error::Gpu`]
+//! with [`INSTALL_HINT`].
+//!
+//! # Precision
+//! f32 everywhere, f64 where the adapter has SHADER_F64 ([`Precision::Auto`]
+//! picks f64 then). The f64 shaders do the CPU twins' arithmetic in the
+//! same order with the same tolerances: every island's basis, counters and
+//! z equal the CPU's (checked in `tests/gpu_stages.rs`). In f32 the
+//! enumeration accepts more (feasibility 1e-4) and the f64 validation decides.
+//!
+//! # llvmpipe ends long loops
+//! On lavapipe an invocation's loops stop, silently, after about 65,535
+//! iterations in all (measured: an island of n = 9 came back "no basis" after
+//! 393 of its 512 bases). The enumeration therefore runs in rounds with a
+//! loop-work budget per invocation ([`batch::SOFTWARE_ROUND_BUDGET`]), saving
+//! its place between rounds; see `shaders/enumeration.wgsl`.
 
 pub mod batch;
 pub mod kernels;

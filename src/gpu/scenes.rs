@@ -92,7 +92,8 @@ fn scene_bytes(scene: &Scene, p: &Prepared, sb: u64) -> [u64; 5] {
         nb * BODY as u64 * sb,
         nc * ROW as u64 * sb,
         values * sb,
-        nc * 16,
+        // slots, contact bodies (8 bytes each); results (32 bytes per island ≤ contacts).
+        nc * std::mem::size_of::<BasisResult>() as u64,
         nb * VELOCITY as u64 * sb,
     ]
 }
