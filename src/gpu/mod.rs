@@ -453,6 +453,15 @@ impl GpuContext {
                 v.push(e.to_string());
             }
         }));
+        // A lost device (driver reset, out of memory) is reported the same way.
+        let lost = errors.clone();
+        device.set_device_lost_callback(move |reason, message| {
+            if reason != wgpu::DeviceLostReason::Destroyed {
+                if let Ok(mut v) = lost.0.lock() {
+                    v.push(format!("device lost ({reason:?}): {message}"));
+                }
+            }
+        });
         Ok(GpuContext {
             device,
             queue,
