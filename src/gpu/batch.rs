@@ -1,15 +1,11 @@
 //! Batches of LCPs on the GPU: the enumeration stage for islands of any mix
 //! of sizes, then validation of every answer on the CPU in f64.
 //!
-//! Scheduling: islands are sorted by n (a workgroup holds one size, except
-//! at a size boundary) and enumerated in rounds: in a round an invocation
-//! spends at most a fixed budget of loop work, then saves its place. An
-//! island that is done returns at once in later rounds, and the dispatched
-//! range starts at the smallest size still unfinished, so a small island
-//! never waits on a large one beyond one round. A batch is split into chunks
-//! whose buffers stay under the device's storage-binding and buffer limits,
-//! and each dispatch into ranges of at most 65,535 workgroups; the caller
-//! sees one result per island, in its order.
+//! Scheduling: islands are sorted by n and dispatched one size at a time, so
+//! that a workgroup never waits on a larger island than its own. A batch is
+//! split into chunks whose buffers stay under the device's storage-binding
+//! and buffer limits, and each dispatch into ranges of at most 65,535
+//! workgroups; the caller sees one result per island, in its order.
 
 use std::time::Instant;
 
@@ -240,44 +236,43 @@ pub(crate) fn run_enumeration(
             ],
         })
     };
-    // Where each size starts in the table (sorted by n).
-    let mut starts: Vec<(u32, usize)> = Vec::new();
-    for (i, rec) in table.iter().enumerate() {
-        if starts.last().is_none_or(|&(n, _)| n != rec.n) {
-            starts.push((rec.n, i));
+    // One bucket per island size: a workgroup never waits on a larger island.
+    let mut buckets: Vec<(u32, Vec<(wgpu::BindGroup, u32)>)> = Vec::new();
+    let mut first = 0usize;
+    while first < table.len() {
+        let n = table[first].n;
+        let mut last = first;
+        while last < table.len() && table[last].n == n {
+            last += 1;
         }
-    }
-    // Each round dispatches the active range: from the smallest size that
-    // still has unfinished islands to the end of the table. Sizes finish in
-    // order of n, so the range shrinks from the front; an island that is
-    // done returns at once, and none works more than `budget` per round, so
-    // a small island never waits on a large one beyond its own round.
-    let (mut rounds, mut dispatches, mut per_submit) = (0usize, 0usize, 1usize);
-    let mut from = 0usize;
-    while from < table.len() {
-        let ranges = ctx.ranges(
-            from as u32,
-            (table.len() - from) as u32,
+        let r = ctx.ranges(
+            first as u32,
+            (last - first) as u32,
             max_groups,
             budget,
             &bind,
         );
+        buckets.push((n, r));
+        first = last;
+    }
+    let mut active: Vec<usize> = (0..buckets.len()).collect();
+    let (mut rounds, mut dispatches, mut per_submit) = (0usize, 0usize, 1usize);
+    while !active.is_empty() {
         for r in 0..per_submit {
             if r + 1 == per_submit {
                 // Count only what the last round of this submission leaves.
                 encoder.clear_buffer(&unfinished, 0, None);
             }
-            ctx.record(&mut encoder, stage, &ranges);
-            dispatches += ranges.len();
+            for &b in &active {
+                ctx.record(&mut encoder, stage, &buckets[b].1);
+                dispatches += buckets[b].1.len();
+            }
         }
         rounds += per_submit;
         let counts = ctx.submit_and_read(encoder, &[(&unfinished, 17 * 4)])?;
         let counts: &[u32] = bytemuck::try_cast_slice(&counts[0])
             .map_err(|e| Error::Gpu(format!("unfinished counts: {e}")))?;
-        from = starts
-            .iter()
-            .find(|&&(n, _)| counts.get(n as usize).copied().unwrap_or(0) > 0)
-            .map_or(table.len(), |&(_, at)| at);
+        active.retain(|&b| counts.get(buckets[b].0 as usize).copied().unwrap_or(0) > 0);
         // Every round visits at least one basis of every unfinished island.
         if rounds > (1 << MAX_GPU_N) + 1 {
             return Err(Error::Gpu(
