@@ -510,3 +510,233 @@ mod tests {
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }
+
+/// The GPU rows on one batch, for one context: the GPU's own answer
+/// (upload + dispatch + readback; its z in the shader's precision) and the
+/// validated answer (plus the f64 polish and repairs on the CPU).
+pub fn gpu_rows(
+    ctx: &crate::gpu::GpuContext,
+    family: BenchFamily,
+    lcps: &[Lcp],
+) -> Result<Vec<BenchRow>, Error> {
+    let settings = crate::gpu::GpuSolveSettings::default();
+    let res = crate::gpu::solve_lcp_batch(ctx, lcps, &settings)?;
+    let precision = ctx.precision().name();
+    let adapter = ctx.adapter_info().name.clone();
+    let r = &res.report;
+    // The GPU's own z, error measured in f64 on the problem.
+    let raw: Vec<LcpSolution> = lcps
+        .iter()
+        .zip(&res.islands)
+        .map(|(l, o)| {
+            let z = if o.gpu_z.len() == l.n() {
+                o.gpu_z.clone()
+            } else {
+                o.solution.z.clone()
+            };
+            LcpSolution::from_z(l, gpu_own_status(o), z, o.solution.counters)
+        })
+        .collect();
+    let validated: Vec<LcpSolution> = res.islands.iter().map(|o| o.solution.clone()).collect();
+    let mut a = BenchRow::new(
+        family.name(),
+        &format!("gpu enum {precision}"),
+        "gpu",
+        &adapter,
+        r.gpu_seconds,
+        &raw,
+    );
+    a.note =
+        "GPU's own z and verdict, before validation; time: upload + dispatch + readback".into();
+    let mut b = BenchRow::new(
+        family.name(),
+        &format!("gpu enum {precision} + f64 polish"),
+        "gpu",
+        &adapter,
+        r.gpu_seconds + r.validation_seconds,
+        &validated,
+    );
+    b.note = format!(
+        "polished={} repaired={} cpu_fallback={}",
+        r.polished, r.repaired, r.cpu_fallback
+    );
+    Ok(vec![a, b])
+}
+
+/// The GPU's own verdict on an island, before validation: a basis found
+/// (strictly or within the relaxed tolerance) is Solved, none is
+/// NoSolution; islands the GPU did not enumerate keep their final status.
+pub fn gpu_own_status(o: &crate::gpu::IslandOutcome) -> crate::Status {
+    use crate::gpu::layout::{FOUND, NONE, RELAXED};
+    match o.gpu.map(|r| r.status) {
+        Some(FOUND) | Some(RELAXED) => crate::Status::Solved,
+        Some(NONE) => crate::Status::NoSolution,
+        _ => o.solution.status,
+    }
+}
+
+/// What `lcpbatch bench` runs.
+#[derive(Clone, Debug)]
+pub struct BenchOptions {
+    /// Islands per family (default 20,000).
+    pub islands: usize,
+    pub seed: u64,
+    /// Where the JSON and the plots go (created if missing).
+    pub out_dir: std::path::PathBuf,
+    /// The GPU to use; None: CPU only.
+    pub gpu: Option<crate::gpu::GpuOptions>,
+    /// Islands per n for the time-against-n curves (default 500).
+    pub per_n: usize,
+    /// Batch sizes of the time-against-batch-size curves.
+    pub batch_sizes: Vec<usize>,
+}
+
+impl Default for BenchOptions {
+    fn default() -> Self {
+        BenchOptions {
+            islands: 20_000,
+            seed: 2026,
+            out_dir: "bench-out".into(),
+            gpu: Some(crate::gpu::GpuOptions::default()),
+            per_n: 500,
+            batch_sizes: vec![1_000, 10_000, 100_000],
+        }
+    }
+}
+
+/// GPU contexts for f32 and, where the adapter has it, f64. A missing
+/// adapter is a warning: the bench runs on the CPU.
+fn gpu_contexts(opts: &Option<crate::gpu::GpuOptions>) -> Vec<crate::gpu::GpuContext> {
+    use crate::gpu::{GpuContext, Precision};
+    let Some(base) = opts else { return Vec::new() };
+    let mut out = Vec::new();
+    for p in [Precision::F32, Precision::F64] {
+        let o = crate::gpu::GpuOptions {
+            precision: p,
+            ..base.clone()
+        };
+        match GpuContext::new(&o) {
+            Ok(ctx) if ctx.precision() == p => out.push(ctx),
+            Ok(_) => eprintln!("warning: the adapter has no f64; GPU rows in f32 only"),
+            Err(e) => {
+                eprintln!("warning: {e}; the bench runs on the CPU only");
+                break;
+            }
+        }
+    }
+    out
+}
+
+/// Runs the whole benchmark: every family through every solver, the table,
+/// `bench.json`, `time_vs_error.svg`, `time_vs_n.svg`, `time_vs_batch_size.svg`.
+pub fn run(opts: &BenchOptions) -> Result<Vec<BenchRow>, Error> {
+    std::fs::create_dir_all(&opts.out_dir).map_err(|source| Error::Io {
+        path: opts.out_dir.clone(),
+        source,
+    })?;
+    let contexts = gpu_contexts(&opts.gpu);
+    let steps =
+        (BenchFamily::ALL.len() * (9 + 2 * contexts.len()) + 12 + opts.batch_sizes.len()) as u64;
+    let bar = indicatif::ProgressBar::new(steps);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("{elapsed_precise} [{bar:30}] {pos}/{len} {msg}")
+            .expect("valid template")
+            .progress_chars("=> "),
+    );
+    let mut rows = Vec::new();
+    for family in BenchFamily::ALL {
+        bar.set_message(format!("{}: generating", family.name()));
+        let lcps = family_batch(family, opts.seed, opts.islands);
+        rows.extend(cpu_rows(family, &lcps, &|s| {
+            bar.set_message(format!("{}: {s}", family.name()));
+            bar.inc(1);
+        })?);
+        for ctx in &contexts {
+            bar.set_message(format!("{}: gpu {}", family.name(), ctx.precision().name()));
+            // The first dispatch compiles the shaders: warm up outside the timing.
+            crate::gpu::solve_lcp_batch(ctx, &lcps[..lcps.len().min(64)], &Default::default())?;
+            rows.extend(gpu_rows(ctx, family, &lcps)?);
+            bar.inc(2);
+        }
+    }
+    // Time against n: CPU enumerations and the GPU (validated) on islands of exactly n.
+    bar.set_message("time against n");
+    let mut by_n = cpu_time_vs_n(12, opts.per_n, opts.seed);
+    for ctx in &contexts {
+        let mut pts = Vec::new();
+        for n in 1..=12 {
+            let lcps = islands_of_size(n, opts.per_n, opts.seed);
+            let r = crate::gpu::solve_lcp_batch(ctx, &lcps, &Default::default())?;
+            pts.push((
+                n as f64,
+                (r.report.gpu_seconds + r.report.validation_seconds) / lcps.len() as f64,
+            ));
+            bar.inc(1);
+        }
+        by_n.push((format!("gpu {} + polish", ctx.precision().name()), pts));
+    }
+    // Time against batch size (mixed n).
+    bar.set_message("time against batch size");
+    let mut by_size: Vec<Curve> = vec![("cpu batch (all cores)".into(), Vec::new())];
+    for ctx in &contexts {
+        by_size.push((
+            format!("gpu {} + polish", ctx.precision().name()),
+            Vec::new(),
+        ));
+    }
+    for &size in &opts.batch_sizes {
+        let lcps = family_batch(BenchFamily::MixedN, opts.seed + 1, size);
+        let t = Instant::now();
+        solve_batch(&lcps, None, &CpuBatchSettings::default())?;
+        by_size[0]
+            .1
+            .push((size as f64, t.elapsed().as_secs_f64() / size as f64));
+        for (k, ctx) in contexts.iter().enumerate() {
+            let r = crate::gpu::solve_lcp_batch(ctx, &lcps, &Default::default())?;
+            by_size[k + 1].1.push((
+                size as f64,
+                (r.report.gpu_seconds + r.report.validation_seconds) / size as f64,
+            ));
+        }
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    let machine = machine_description(&contexts);
+    print_table(&rows);
+    write_json(&rows, &machine, &opts.out_dir.join("bench.json"))?;
+    plot_time_vs_error(
+        &rows,
+        &opts.out_dir.join("time_vs_error.svg"),
+        &format!("time against error — {machine}"),
+    )?;
+    plot_curves(
+        &by_n,
+        &opts.out_dir.join("time_vs_n.svg"),
+        "time per island against n",
+        "n (contacts per island)",
+        false,
+    )?;
+    plot_curves(
+        &by_size,
+        &opts.out_dir.join("time_vs_batch_size.svg"),
+        "time per island against batch size",
+        "islands per batch",
+        true,
+    )?;
+    println!("machine: {machine}");
+    println!(
+        "wrote {}/{{bench.json, time_vs_error.svg, time_vs_n.svg, time_vs_batch_size.svg}}",
+        opts.out_dir.display()
+    );
+    Ok(rows)
+}
+
+/// Cores and the adapter, in words.
+pub fn machine_description(contexts: &[crate::gpu::GpuContext]) -> String {
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let adapter = contexts
+        .first()
+        .map(|c| format!("{} ({})", c.adapter_info().name, c.adapter_info().backend))
+        .unwrap_or_else(|| "no GPU adapter".into());
+    format!("{cores} CPU threads; {adapter}")
+}

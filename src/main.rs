@@ -131,6 +131,59 @@ enum Command {
         #[command(flatten)]
         gpu: GpuArgs,
     },
+    /// Every solver on the same fixed-seed batches (well conditioned, mass
+    /// ratio 1e4, resting stacks, mixed n, warm-started resting): a table of
+    /// islands/s against error, bench.json and SVG plots of time against
+    /// error, against n and against batch size.
+    Bench {
+        /// Islands per family.
+        #[arg(long, default_value_t = 20_000)]
+        islands: usize,
+        /// Islands per n for the time-against-n curves.
+        #[arg(long, default_value_t = 500)]
+        per_n: usize,
+        /// Batch sizes for the time-against-batch-size curves.
+        #[arg(long, value_delimiter = ',', default_value = "1000,10000,100000")]
+        batch_sizes: Vec<usize>,
+        #[arg(long, default_value_t = 2026)]
+        seed: u64,
+        /// Folder for bench.json and the plots.
+        #[arg(long, default_value = "bench-out")]
+        out: PathBuf,
+        /// CPU only, even where an adapter exists.
+        #[arg(long)]
+        cpu_only: bool,
+        #[command(flatten)]
+        gpu: GpuArgs,
+    },
+    /// Stress families (mass ratios to 1e8, length and velocity scales to
+    /// 1e±3, near-parallel normals, resting stacks, chains to n = 16,
+    /// non-P-matrix and infeasible LCPs, the Siconos problems scaled by 1e±6)
+    /// through every solver and precision: error distribution, status agreement
+    /// with f64 enumeration, repaired counts, stress.json and a plot of error
+    /// against condition number.
+    Stress {
+        /// Cases per family.
+        #[arg(long, default_value_t = 500)]
+        cases: usize,
+        #[arg(long, default_value_t = 2026)]
+        seed: u64,
+        /// Folder of Siconos .dat files for the scaled family (default
+        /// $LCPBATCH_CONFORMANCE/siconos or ../shared/conformance/siconos, if present).
+        #[arg(long)]
+        siconos: Option<PathBuf>,
+        /// Solve M + αI instead of M (default 0: the problem as posed).
+        #[arg(long, default_value_t = 0.0)]
+        regularization: f64,
+        /// Folder for stress.json and the plot.
+        #[arg(long, default_value = "stress-out")]
+        out: PathBuf,
+        /// CPU only, even where an adapter exists.
+        #[arg(long)]
+        cpu_only: bool,
+        #[command(flatten)]
+        gpu: GpuArgs,
+    },
 }
 
 /// The GPU context for `backend`: Some for gpu (or an error), Some or None
@@ -273,6 +326,70 @@ fn run(cli: Cli) -> Result<(), Error> {
             gpu,
         } => demo(worlds, seed, backend, &gpu),
         Command::Info { gpu } => info(&gpu),
+        Command::Bench {
+            islands,
+            per_n,
+            batch_sizes,
+            seed,
+            out,
+            cpu_only,
+            gpu,
+        } => {
+            if islands == 0 || per_n == 0 || batch_sizes.contains(&0) {
+                return Err(Error::invalid(
+                    "bench",
+                    "--islands/--per-n/--batch-sizes",
+                    "must be positive",
+                ));
+            }
+            let opts = lcpbatch::bench::BenchOptions {
+                islands,
+                seed,
+                out_dir: out,
+                gpu: if cpu_only { None } else { Some(gpu.options()?) },
+                per_n,
+                batch_sizes,
+            };
+            lcpbatch::bench::run(&opts).map(|_| ())
+        }
+        Command::Stress {
+            cases,
+            seed,
+            siconos,
+            regularization,
+            out,
+            cpu_only,
+            gpu,
+        } => {
+            if cases == 0 {
+                return Err(Error::invalid("stress", "--cases", "must be positive"));
+            }
+            if !(regularization.is_finite() && regularization >= 0.0) {
+                return Err(Error::invalid(
+                    "stress",
+                    "--regularization",
+                    "must be a finite number ≥ 0",
+                ));
+            }
+            let siconos = siconos.or_else(|| {
+                let base = std::env::var_os("LCPBATCH_CONFORMANCE")
+                    .map(PathBuf::from)
+                    .unwrap_or_else(|| PathBuf::from("../shared/conformance"));
+                Some(base.join("siconos")).filter(|d| d.is_dir())
+            });
+            if siconos.is_none() {
+                eprintln!("Siconos problems not found; the siconos_scaled family is skipped");
+            }
+            let opts = lcpbatch::stress::StressOptions {
+                cases,
+                seed,
+                siconos,
+                out_dir: out,
+                gpu: if cpu_only { None } else { Some(gpu.options()?) },
+                regularization,
+            };
+            lcpbatch::stress::run(&opts).map(|_| ())
+        }
         Command::Solve {
             file,
             solver,

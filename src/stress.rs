@@ -591,3 +591,185 @@ pub fn plot_error_vs_condition(
         .map_err(|e| plot_err(e.to_string()))?;
     root.present().map_err(|e| plot_err(e.to_string()))
 }
+
+/// The GPU on `cases`: its own answer (z in the shader's precision) and the
+/// validated one. Returns the points and the repaired count.
+pub fn run_gpu(
+    ctx: &crate::gpu::GpuContext,
+    label: &str,
+    cases: &[StressCase],
+) -> Result<(Vec<StressPoint>, usize), crate::Error> {
+    use crate::cpu::enumeration::{enumerate, EnumerationSettings};
+    let lcps: Vec<Lcp> = cases.iter().map(|c| c.lcp.clone()).collect();
+    let res = crate::gpu::solve_lcp_batch(ctx, &lcps, &Default::default())?;
+    let p = ctx.precision().name();
+    let mut points = Vec::new();
+    for (c, o) in cases.iter().zip(&res.islands) {
+        let reference = enumerate(&c.lcp, &EnumerationSettings::default()).expect("n ≤ 20");
+        let condition = reference
+            .basis
+            .map_or(f64::NAN, |b| basis_condition(&c.lcp, b));
+        let raw_z = if o.gpu_z.len() == c.lcp.n() {
+            o.gpu_z.clone()
+        } else {
+            o.solution.z.clone()
+        };
+        for (solver, z, status) in [
+            (
+                format!("gpu {p} (no polish)"),
+                raw_z,
+                crate::bench::gpu_own_status(o),
+            ),
+            (
+                format!("gpu {p} + polish"),
+                o.solution.z.clone(),
+                o.solution.status,
+            ),
+        ] {
+            let res = c.lcp.residuals(&z);
+            let w = c.lcp.w(&z);
+            points.push(StressPoint {
+                family: label.to_string(),
+                solver,
+                parameter: c.parameter,
+                condition,
+                error: res.error,
+                status: status.name().to_string(),
+                status_matches_reference: status == reference.status,
+                finite: z.iter().chain(&w).all(|v| v.is_finite()) && res.error.is_finite(),
+            });
+        }
+    }
+    Ok((points, res.report.repaired))
+}
+
+/// What `lcpbatch stress` runs.
+#[derive(Clone, Debug)]
+pub struct StressOptions {
+    /// Cases per family (default 500).
+    pub cases: usize,
+    pub seed: u64,
+    /// The Siconos folder for the scaled family; None: skip it.
+    pub siconos: Option<std::path::PathBuf>,
+    pub out_dir: std::path::PathBuf,
+    pub gpu: Option<crate::gpu::GpuOptions>,
+    /// M + αI on every problem (default 0).
+    pub regularization: f64,
+}
+
+impl Default for StressOptions {
+    fn default() -> Self {
+        StressOptions {
+            cases: 500,
+            seed: 2026,
+            siconos: None,
+            out_dir: "stress-out".into(),
+            gpu: Some(crate::gpu::GpuOptions::default()),
+            regularization: 0.0,
+        }
+    }
+}
+
+/// Runs every family through the CPU solvers and the GPU (f32 and, where
+/// the adapter has it, f64), prints the table, writes `stress.json` and
+/// `error_vs_condition.svg`.
+pub fn run(opts: &StressOptions) -> Result<Vec<StressRow>, crate::Error> {
+    use crate::gpu::{GpuContext, GpuOptions, Precision};
+    std::fs::create_dir_all(&opts.out_dir).map_err(|source| crate::Error::Io {
+        path: opts.out_dir.clone(),
+        source,
+    })?;
+    let mut contexts = Vec::new();
+    if let Some(base) = &opts.gpu {
+        for p in [Precision::F32, Precision::F64] {
+            match GpuContext::new(&GpuOptions {
+                precision: p,
+                ..base.clone()
+            }) {
+                Ok(ctx) if ctx.precision() == p => contexts.push(ctx),
+                Ok(_) => eprintln!("warning: the adapter has no f64; GPU rows in f32 only"),
+                Err(e) => {
+                    eprintln!("warning: {e}; the stress run uses the CPU only");
+                    break;
+                }
+            }
+        }
+    }
+    let mut sets: Vec<(String, Vec<StressCase>)> = Family::ALL
+        .iter()
+        .map(|&f| (f.name().to_string(), generate(f, opts.seed, opts.cases)))
+        .collect();
+    if let Some(dir) = &opts.siconos {
+        sets.push((
+            "siconos_scaled".into(),
+            siconos_scaled(dir)?.into_iter().map(|(_, c)| c).collect(),
+        ));
+    }
+    let bar = indicatif::ProgressBar::new(sets.len() as u64);
+    let mut points = Vec::new();
+    let mut repaired = std::collections::HashMap::new();
+    for (label, cases) in &sets {
+        bar.set_message(label.clone());
+        points.extend(run_cpu(label, cases, opts.regularization));
+        if opts.regularization == 0.0 {
+            for ctx in &contexts {
+                let (pts, rep) = run_gpu(ctx, label, cases)?;
+                repaired.insert(
+                    (
+                        label.clone(),
+                        format!("gpu {} + polish", ctx.precision().name()),
+                    ),
+                    rep,
+                );
+                points.extend(pts);
+            }
+        }
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    let mut rows = summarise(&points);
+    for r in &mut rows {
+        r.repaired = repaired.get(&(r.family.clone(), r.solver.clone())).copied();
+    }
+    println!(
+        "{:<22} {:<26} {:>6} {:>9} {:>9} {:>9} {:>8} {:>9} {:>9}",
+        "family", "solver", "cases", "median", "p99", "max", "status=", "non-fin.", "repaired"
+    );
+    for r in &rows {
+        println!(
+            "{:<22} {:<26} {:>6} {:>9.1e} {:>9.1e} {:>9.1e} {:>7.1}% {:>9} {:>9}",
+            r.family,
+            r.solver,
+            r.cases,
+            r.median_error,
+            r.p99_error,
+            r.max_error,
+            100.0 * r.status_match,
+            r.non_finite,
+            r.repaired.map_or("-".into(), |v| v.to_string())
+        );
+    }
+    #[derive(serde::Serialize)]
+    struct File<'a> {
+        machine: String,
+        regularization: f64,
+        rows: &'a [StressRow],
+        points: &'a [StressPoint],
+    }
+    let file = File {
+        machine: crate::bench::machine_description(&contexts),
+        regularization: opts.regularization,
+        rows: &rows,
+        points: &points,
+    };
+    crate::io::write_atomically(
+        &opts.out_dir.join("stress.json"),
+        &serde_json::to_string(&file).expect("serialisable"),
+    )?;
+    plot_error_vs_condition(&points, &opts.out_dir.join("error_vs_condition.svg"))?;
+    println!(
+        "wrote {}/{{stress.json, error_vs_condition.svg}}",
+        opts.out_dir.display()
+    );
+    Ok(rows)
+}
