@@ -456,14 +456,42 @@ pub fn islands_of_size(n: usize, count: usize, seed: u64) -> Vec<Lcp> {
     out
 }
 
-/// Writes rows as JSON (atomically).
-pub fn write_json(rows: &[BenchRow], machine: &str, path: &Path) -> Result<(), Error> {
+/// Writes the rows and the curves (seconds per island) as JSON, atomically.
+pub fn write_json(
+    rows: &[BenchRow],
+    curves: &[(&str, &[Curve])],
+    machine: &str,
+    path: &Path,
+) -> Result<(), Error> {
+    #[derive(Serialize)]
+    struct CurveOut<'a> {
+        plot: &'a str,
+        label: &'a str,
+        /// (x, seconds per island)
+        points: &'a [(f64, f64)],
+    }
     #[derive(Serialize)]
     struct File<'a> {
         machine: &'a str,
         rows: &'a [BenchRow],
+        curves: Vec<CurveOut<'a>>,
     }
-    let text = serde_json::to_string_pretty(&File { machine, rows }).expect("serialisable");
+    let curves = curves
+        .iter()
+        .flat_map(|(plot, cs)| {
+            cs.iter().map(move |(label, points)| CurveOut {
+                plot,
+                label,
+                points,
+            })
+        })
+        .collect();
+    let text = serde_json::to_string_pretty(&File {
+        machine,
+        rows,
+        curves,
+    })
+    .expect("serialisable");
     crate::io::write_atomically(path, &text)
 }
 
@@ -703,7 +731,12 @@ pub fn run(opts: &BenchOptions) -> Result<Vec<BenchRow>, Error> {
     bar.finish_and_clear();
     let machine = machine_description(&contexts);
     print_table(&rows);
-    write_json(&rows, &machine, &opts.out_dir.join("bench.json"))?;
+    write_json(
+        &rows,
+        &[("time_vs_n", &by_n), ("time_vs_batch_size", &by_size)],
+        &machine,
+        &opts.out_dir.join("bench.json"),
+    )?;
     plot_time_vs_error(
         &rows,
         &opts.out_dir.join("time_vs_error.svg"),
