@@ -476,8 +476,17 @@ fn check_json(text: &str) {
     }
 }
 
+/// Cases per reader property: 2000 in every test run; `LCPBATCH_FUZZ_CASES`
+/// raises it for a long fuzzing run (recorded in BENCHMARKS.md).
+fn fuzz_cases() -> u32 {
+    std::env::var("LCPBATCH_FUZZ_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(2000)
+}
+
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 2000, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: fuzz_cases(), failure_persistence: None, ..ProptestConfig::default() })]
 
     #[test]
     fn dat_reader_never_panics_on_random_bytes(bytes in proptest::collection::vec(any::<u8>(), 0..200)) {
