@@ -24,6 +24,7 @@ use crate::gpu::layout::{BasisResult, FOUND, RELAXED};
 use crate::gpu::Precision;
 use crate::lcp::{lcp_error, Counters, Lcp, LcpSolution, Status};
 use crate::linalg::solve_in_place;
+use crate::prediction::SolvePath;
 use crate::Error;
 
 /// What the GPU reported for one island.
@@ -205,6 +206,12 @@ pub struct BatchReport {
     pub cpu_fallback: usize,
     /// Problems that failed their checks.
     pub invalid: usize,
+    /// Settled by prediction on the CPU before the GPU (never uploaded).
+    pub predicted: usize,
+    /// Islands per solve path, in the order of [`SolvePath::ALL`]; they add
+    /// up to `islands − invalid` (GPU-answered and repaired islands count as
+    /// Enumerated, CPU fallbacks as Lemke).
+    pub paths: [usize; 6],
     /// Largest error measure (Siconos lcp_compute_error) over islands with a
     /// solution, after polish.
     pub max_error: f64,
@@ -216,6 +223,8 @@ pub struct BatchReport {
     pub gpu_seconds: f64,
     /// Seconds of validation on the CPU.
     pub validation_seconds: f64,
+    /// Seconds of prediction on the CPU (before the GPU).
+    pub prediction_seconds: f64,
     pub chunks: usize,
     pub dispatches: usize,
     /// Enumeration rounds (see `shaders/enumeration.wgsl`).
@@ -234,11 +243,14 @@ impl BatchReport {
             repaired: 0,
             cpu_fallback: 0,
             invalid: 0,
+            predicted: 0,
+            paths: [0; 6],
             max_error: 0.0,
             max_gpu_error: 0.0,
             statuses: [0; 6],
             gpu_seconds: 0.0,
             validation_seconds: 0.0,
+            prediction_seconds: 0.0,
             chunks: 0,
             dispatches: 0,
             rounds: 0,
@@ -265,9 +277,31 @@ impl BatchReport {
         }
     }
 
+    /// Islands settled by this path.
+    pub fn path_count(&self, p: SolvePath) -> usize {
+        SolvePath::ALL
+            .iter()
+            .position(|&x| x == p)
+            .map_or(0, |i| self.paths[i])
+    }
+
+    fn path(&mut self, p: SolvePath) {
+        if let Some(i) = SolvePath::ALL.iter().position(|&x| x == p) {
+            self.paths[i] += 1;
+        }
+    }
+
+    /// Records an island settled by prediction before the GPU.
+    pub fn record_predicted(&mut self, path: SolvePath, sol: &LcpSolution) {
+        self.status(sol);
+        self.path(path);
+        self.predicted += 1;
+    }
+
     /// Records an island the GPU answered.
     pub fn record_gpu(&mut self, c: &Checked) {
         self.status(&c.solution);
+        self.path(SolvePath::Enumerated);
         match c.verdict {
             Verdict::Polished => {
                 self.polished += 1;
@@ -287,6 +321,7 @@ impl BatchReport {
     /// Records an island solved on the CPU because it is too large.
     pub fn record_cpu_fallback(&mut self, sol: &LcpSolution) {
         self.status(sol);
+        self.path(SolvePath::Lemke);
         self.cpu_fallback += 1;
     }
 
@@ -306,6 +341,11 @@ impl BatchReport {
         self.repaired += o.repaired;
         self.cpu_fallback += o.cpu_fallback;
         self.invalid += o.invalid;
+        self.predicted += o.predicted;
+        for (a, b) in self.paths.iter_mut().zip(o.paths) {
+            *a += b;
+        }
+        self.prediction_seconds += o.prediction_seconds;
         self.max_error = self.max_error.max(o.max_error);
         self.max_gpu_error = self.max_gpu_error.max(o.max_gpu_error);
         for (a, b) in self.statuses.iter_mut().zip(o.statuses) {
@@ -324,8 +364,9 @@ impl fmt::Display for BatchReport {
         writeln!(f, "adapter: {} ({})", self.adapter, self.precision.name())?;
         writeln!(
             f,
-            "islands: {} (solved on the GPU {}: polished {}, no solution confirmed {}; repaired {}; CPU fallback n > 16: {}; invalid {})",
+            "islands: {} (predicted on the CPU {}; solved on the GPU {}: polished {}, no solution confirmed {}; repaired {}; CPU fallback n > 16: {}; invalid {})",
             self.islands,
+            self.predicted,
             self.solved_on_gpu,
             self.polished,
             self.confirmed_no_solution,
@@ -340,6 +381,13 @@ impl fmt::Display for BatchReport {
             .map(|(s, c)| format!("{s} {c}"))
             .collect();
         writeln!(f, "statuses: {}", statuses.join(", "))?;
+        let paths: Vec<String> = SolvePath::ALL
+            .iter()
+            .zip(self.paths)
+            .filter(|(_, c)| *c > 0)
+            .map(|(p, c)| format!("{} {c}", p.name()))
+            .collect();
+        writeln!(f, "paths: {}", paths.join(", "))?;
         writeln!(
             f,
             "max error after polish: {:.3e} (GPU's own z: {:.3e})",
@@ -347,8 +395,13 @@ impl fmt::Display for BatchReport {
         )?;
         write!(
             f,
-            "GPU {:.3} s in {} chunk(s), {} dispatch(es), {} enumeration round(s); validation {:.3} s",
-            self.gpu_seconds, self.chunks, self.dispatches, self.rounds, self.validation_seconds
+            "prediction {:.3} s; GPU {:.3} s in {} chunk(s), {} dispatch(es), {} enumeration round(s); validation {:.3} s",
+            self.prediction_seconds,
+            self.gpu_seconds,
+            self.chunks,
+            self.dispatches,
+            self.rounds,
+            self.validation_seconds
         )
     }
 }

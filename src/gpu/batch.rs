@@ -14,6 +14,7 @@ use super::layout::{scalars_from_bytes, scalars_to_bytes, BasisResult, PackedIsl
 use super::{GpuContext, Precision, MAX_GPU_N};
 use crate::cpu::enumeration::EnumerationSettings;
 use crate::lcp::{Counters, Lcp, LcpSolution, Residuals, Status};
+use crate::prediction::{predict, SolvePath};
 use crate::solvers::lemke::{lemke, LemkeSettings};
 use crate::solvers::Solver;
 use crate::validation::{validate_island, BatchReport, GpuVerdict, Verdict};
@@ -29,7 +30,7 @@ pub const F32_FEASIBILITY_TOL: f64 = 1e-4;
 pub const F32_RELAXED_TOL: f64 = 1e-3;
 
 /// Settings of a GPU batch solve.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct GpuSolveSettings {
     /// The CPU's enumeration settings: the f64 polish and repair use them,
     /// and f64 shaders use the same tolerances. `all_solutions` is not
@@ -51,6 +52,27 @@ pub struct GpuSolveSettings {
     /// Loop work per invocation and enumeration round; None: by adapter
     /// ([`SOFTWARE_ROUND_BUDGET`] or [`HARDWARE_ROUND_BUDGET`]).
     pub round_budget: Option<u32>,
+    /// Settle islands that need no enumeration on the CPU first
+    /// ([`crate::prediction::predict`]: separating, single contact, warm
+    /// start, predicted basis), so that only the others are uploaded and
+    /// dispatched. Default true.
+    pub predict: bool,
+}
+
+impl Default for GpuSolveSettings {
+    fn default() -> Self {
+        GpuSolveSettings {
+            enumeration: EnumerationSettings::default(),
+            gpu_pivot_tol: None,
+            gpu_feasibility_tol: None,
+            gpu_relaxed_tol: None,
+            lemke: LemkeSettings::default(),
+            max_binding_bytes: None,
+            max_workgroups: None,
+            round_budget: None,
+            predict: true,
+        }
+    }
 }
 
 impl GpuSolveSettings {
@@ -91,6 +113,9 @@ pub enum SolvedOn {
     Repaired,
     /// n > 16: solved on the CPU by Lemke.
     CpuFallback,
+    /// Settled on the CPU by prediction before the GPU (see
+    /// [`IslandOutcome::path`] for which case).
+    Predicted,
     /// The problem failed its checks (status InvalidInput).
     Invalid,
 }
@@ -101,6 +126,7 @@ impl SolvedOn {
             SolvedOn::Gpu => "gpu",
             SolvedOn::Repaired => "repaired",
             SolvedOn::CpuFallback => "cpu_fallback",
+            SolvedOn::Predicted => "predicted",
             SolvedOn::Invalid => "invalid",
         }
     }
@@ -112,6 +138,9 @@ pub struct IslandOutcome {
     /// The validated solution (z, w and residuals in f64).
     pub solution: LcpSolution,
     pub solved_on: SolvedOn,
+    /// How the island was settled: a prediction case, Enumerated (GPU,
+    /// validated) or Lemke; None for a problem that failed its checks.
+    pub path: Option<SolvePath>,
     /// The algorithm whose answer this is: Enum (GPU or CPU) or Lemke.
     pub solver: Solver,
     /// What the GPU's enumeration stage reported (None when it did not run).
@@ -188,6 +217,17 @@ pub(crate) fn run_enumeration(
 ) -> Result<EnumerationRun, Error> {
     let precision = ctx.precision();
     let sb = precision.bytes();
+    if table.is_empty() {
+        // Nothing to enumerate (prediction settled every island): run what
+        // the encoder holds (assembly) and wait.
+        ctx.submit_and_read(encoder, &[])?;
+        return Ok(EnumerationRun {
+            results: Vec::new(),
+            z: Vec::new(),
+            dispatches: 0,
+            rounds: 0,
+        });
+    }
     // results: where each island's enumeration stands (zeroed: not started).
     let results_size = (table.len() * std::mem::size_of::<BasisResult>()) as u64;
     let results = ctx.storage_zeroed("results", results_size);
@@ -554,9 +594,23 @@ fn invalid_solution(lcp: &Lcp) -> LcpSolution {
 /// each answer validated in f64 on the CPU (polished, or repaired by the CPU
 /// enumeration), larger ones by Lemke on the CPU. Problems that fail their
 /// checks get status InvalidInput. Results come back in the caller's order.
+/// With `settings.predict`, islands that need no enumeration are settled on
+/// the CPU first and never uploaded (see [`solve_lcp_batch_warm`]).
 pub fn solve_lcp_batch(
     ctx: &GpuContext,
     lcps: &[Lcp],
+    settings: &GpuSolveSettings,
+) -> Result<GpuBatchResult, Error> {
+    solve_lcp_batch_warm(ctx, lcps, None, settings)
+}
+
+/// [`solve_lcp_batch`] with warm bases: `warm[i]` is island i's basis from
+/// the previous frame, if the caller has one (used by prediction only, so
+/// ignored when `settings.predict` is false).
+pub fn solve_lcp_batch_warm(
+    ctx: &GpuContext,
+    lcps: &[Lcp],
+    warm: Option<&[Option<u32>]>,
     settings: &GpuSolveSettings,
 ) -> Result<GpuBatchResult, Error> {
     settings.enumeration.validate()?;
@@ -568,11 +622,14 @@ pub fn solve_lcp_batch(
     let mut report = BatchReport::new(ctx.adapter_info().name.clone(), ctx.precision());
     let mut slots: Vec<Option<IslandOutcome>> = vec![None; lcps.len()];
     let mut on_gpu: Vec<usize> = Vec::new();
+    let warm_of = |i: usize| warm.and_then(|w| w.get(i).copied().flatten());
+    let t_predict = Instant::now();
     for (i, lcp) in lcps.iter().enumerate() {
         if lcp.validate(&format!("problem {i}")).is_err() {
             slots[i] = Some(IslandOutcome {
                 solution: invalid_solution(lcp),
                 solved_on: SolvedOn::Invalid,
+                path: None,
                 solver: Solver::Enum,
                 gpu: None,
                 gpu_z: Vec::new(),
@@ -581,7 +638,21 @@ pub fn solve_lcp_batch(
             slots[i] = Some(IslandOutcome {
                 solution: lemke(lcp, &settings.lemke),
                 solved_on: SolvedOn::CpuFallback,
+                path: Some(SolvePath::Lemke),
                 solver: Solver::Lemke,
+                gpu: None,
+                gpu_z: Vec::new(),
+            });
+        } else if let Some((path, solution)) = settings
+            .predict
+            .then(|| predict(lcp, warm_of(i), &settings.enumeration))
+            .flatten()
+        {
+            slots[i] = Some(IslandOutcome {
+                solution,
+                solved_on: SolvedOn::Predicted,
+                path: Some(path),
+                solver: Solver::Enum,
                 gpu: None,
                 gpu_z: Vec::new(),
             });
@@ -589,6 +660,7 @@ pub fn solve_lcp_batch(
             on_gpu.push(i);
         }
     }
+    report.prediction_seconds = t_predict.elapsed().as_secs_f64();
     let refs: Vec<&Lcp> = on_gpu.iter().map(|&i| &lcps[i]).collect();
     let (outputs, stats) = enumerate_on_gpu(ctx, &refs, settings)?;
     report.gpu_seconds = stats.seconds;
@@ -612,6 +684,7 @@ pub fn solve_lcp_batch(
         slots[i] = Some(IslandOutcome {
             solution: checked.solution,
             solved_on,
+            path: Some(SolvePath::Enumerated),
             solver: Solver::Enum,
             gpu: Some(o.result),
             gpu_z: o.z,
@@ -623,9 +696,10 @@ pub fn solve_lcp_batch(
         .map(|s| s.ok_or_else(|| Error::Gpu("an island got no result".into())))
         .collect::<Result<_, _>>()?;
     for o in &islands {
-        match o.solved_on {
-            SolvedOn::CpuFallback => report.record_cpu_fallback(&o.solution),
-            SolvedOn::Invalid => report.record_invalid(),
+        match (o.solved_on, o.path) {
+            (SolvedOn::CpuFallback, _) => report.record_cpu_fallback(&o.solution),
+            (SolvedOn::Invalid, _) => report.record_invalid(),
+            (SolvedOn::Predicted, Some(p)) => report.record_predicted(p, &o.solution),
             _ => {}
         }
     }

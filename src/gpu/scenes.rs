@@ -12,7 +12,7 @@
 use std::time::Instant;
 
 use super::batch::{
-    limits_for, round_budget, run_enumeration, solve_lcp_batch, GpuSolveSettings, SolvedOn,
+    limits_for, round_budget, run_enumeration, solve_lcp_batch_warm, GpuSolveSettings, SolvedOn,
 };
 use super::kernels::Pipelines;
 use super::layout::{
@@ -25,6 +25,7 @@ use crate::cpu::impulses::{apply_impulses, BodyVelocity};
 use crate::islands::Island;
 use crate::lcp::{Lcp, LcpSolution};
 use crate::pipeline::{build, IslandResult, SceneSolution};
+use crate::prediction::{predict, SolvePath};
 use crate::scene::Scene;
 use crate::solvers::lemke::lemke;
 use crate::solvers::Solver;
@@ -74,6 +75,10 @@ struct Chunk {
     table: Vec<PackedIsland>,
     /// (scene, island) of every table entry.
     keys: Vec<(usize, usize)>,
+    /// The entries of `table` that enumeration runs on (prediction settled
+    /// the others on the CPU), and their (scene, island).
+    enum_table: Vec<PackedIsland>,
+    enum_keys: Vec<(usize, usize)>,
     slots: Vec<Slot>,
     values_len: u32,
     z_len: u32,
@@ -98,7 +103,13 @@ fn scene_bytes(scene: &Scene, p: &Prepared, sb: u64) -> [u64; 5] {
     ]
 }
 
-fn pack_chunk(scenes: &[Scene], prepared: &[Prepared], members: &[usize]) -> Chunk {
+/// Packs a chunk; `settled(s, k)`: island k of scene s needs no enumeration.
+fn pack_chunk(
+    scenes: &[Scene],
+    prepared: &[Prepared],
+    members: &[usize],
+    settled: &dyn Fn(usize, usize) -> bool,
+) -> Chunk {
     let mut c = Chunk::default();
     let mut entries: Vec<(usize, usize, usize)> = Vec::new(); // (n, position in chunk, island)
     for &s in members {
@@ -139,6 +150,10 @@ fn pack_chunk(scenes: &[Scene], prepared: &[Prepared], members: &[usize]) -> Chu
             });
         }
         c.keys.push((s, k));
+        if !settled(s, k) {
+            c.enum_table.push(c.table[island_index as usize]);
+            c.enum_keys.push((s, k));
+        }
         c.values_len += (n * n + n) as u32;
         c.z_len += n as u32;
     }
@@ -250,8 +265,23 @@ fn assemble_and_enumerate(
             );
             dispatches += 1;
             if enumerate {
+                // Only the islands prediction left: a table of their own
+                // (offsets into the same values) when some were settled.
+                let enum_islands = if c.enum_table.len() == c.table.len() {
+                    islands
+                } else {
+                    ctx.storage("enumeration islands", bytemuck::cast_slice(&c.enum_table))
+                };
                 let run = run_enumeration(
-                    ctx, p, &islands, &values, &c.table, max_groups, budget, encoder, true,
+                    ctx,
+                    p,
+                    &enum_islands,
+                    &values,
+                    &c.enum_table,
+                    max_groups,
+                    budget,
+                    encoder,
+                    true,
                 )?;
                 return Ok(StageOutput {
                     results: run.results,
@@ -409,7 +439,7 @@ pub fn assemble_on_gpu(
         .map(|p| vec![None; p.islands.len()])
         .collect();
     for members in chunks {
-        let c = pack_chunk(scenes, &prepared, &members);
+        let c = pack_chunk(scenes, &prepared, &members, &|_, _| false);
         let out = assemble_and_enumerate(ctx, &pipelines, &c, max_groups, 0, false)?;
         let r = out.rows.unwrap_or_default();
         let v = out.values.unwrap_or_default();
@@ -454,6 +484,20 @@ pub fn solve_scenes(
     scenes: &[Scene],
     settings: &GpuSolveSettings,
 ) -> Result<GpuSceneResult, Error> {
+    solve_scenes_warm(ctx, scenes, None, settings)
+}
+
+/// [`solve_scenes`] with warm bases: `warm[s][k]` is the basis of island k
+/// of scene s (in `find_islands` order) from the previous frame, if any.
+/// With `settings.predict` (default), islands that need no enumeration are
+/// settled on the CPU from its f64 assembly; the GPU still assembles them
+/// (the impulse stage reads every row) but does not enumerate them.
+pub fn solve_scenes_warm(
+    ctx: &GpuContext,
+    scenes: &[Scene],
+    warm: Option<&[Vec<Option<u32>>]>,
+    settings: &GpuSolveSettings,
+) -> Result<GpuSceneResult, Error> {
     settings.enumeration.validate()?;
     if settings.enumeration.all_solutions {
         return Err(Error::Unsupported(
@@ -473,17 +517,47 @@ pub fn solve_scenes(
         .map(|p| vec![None; p.islands.len()])
         .collect();
     let mut gpu_velocities: Vec<Option<Vec<f64>>> = vec![None; scenes.len()];
+    // Prediction, on the f64 assembly, for every island the GPU would enumerate.
+    let t_predict = Instant::now();
+    let mut predicted: Vec<Vec<Option<(SolvePath, LcpSolution)>>> = prepared
+        .iter()
+        .enumerate()
+        .map(|(s, p)| {
+            p.lcps
+                .iter()
+                .enumerate()
+                .map(|(k, lcp)| {
+                    if !settings.predict || lcp.n() > MAX_GPU_N || alone.contains(&s) {
+                        return None;
+                    }
+                    let w = warm
+                        .and_then(|w| w.get(s))
+                        .and_then(|v| v.get(k).copied().flatten());
+                    predict(lcp, w, &settings.enumeration)
+                })
+                .collect()
+        })
+        .collect();
+    report.prediction_seconds += t_predict.elapsed().as_secs_f64();
 
     for members in chunks {
         let t0 = Instant::now();
-        let c = pack_chunk(scenes, &prepared, &members);
+        let c = pack_chunk(scenes, &prepared, &members, &|s, k| {
+            predicted[s][k].is_some()
+        });
         let out = assemble_and_enumerate(ctx, &pipelines, &c, max_groups, budget, true)?;
         report.gpu_seconds += t0.elapsed().as_secs_f64();
         report.chunks += 1;
         report.dispatches += out.dispatches;
         report.rounds += out.rounds;
         let t1 = Instant::now();
-        for ((rec, &(s, k)), res) in c.table.iter().zip(&c.keys).zip(&out.results) {
+        for &(s, k) in &c.keys {
+            if let Some((path, sol)) = predicted[s][k].take() {
+                report.record_predicted(path, &sol);
+                solved[s][k] = Some((sol, Solver::Enum, SolvedOn::Predicted));
+            }
+        }
+        for ((rec, &(s, k)), res) in c.enum_table.iter().zip(&c.enum_keys).zip(&out.results) {
             let (z0, n) = (rec.z as usize, rec.n as usize);
             let verdict = GpuVerdict::of(res, out.z.get(z0..z0 + n).unwrap_or(&[]));
             let checked = validate_island(
@@ -534,7 +608,8 @@ pub fn solve_scenes(
 
     // Scenes too large for one buffer: their islands as an LCP batch.
     for &s in &alone {
-        let r = solve_lcp_batch(ctx, &prepared[s].lcps, settings)?;
+        let w = warm.and_then(|w| w.get(s)).map(Vec::as_slice);
+        let r = solve_lcp_batch_warm(ctx, &prepared[s].lcps, w, settings)?;
         report.merge(&r.report);
         for (k, o) in r.islands.into_iter().enumerate() {
             solved[s][k] = Some((o.solution, o.solver, o.solved_on));

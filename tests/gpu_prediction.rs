@@ -1,0 +1,209 @@
+//! Prediction before the GPU: islands that need no enumeration are settled
+//! on the CPU and never uploaded. Results equal those with prediction off
+//! (statuses; z bit for bit where the basis is the same, else to 1e-9 — the
+//! predicted basis can differ from enumeration's only on degenerate islands,
+//! where M ≻ 0 makes z the same), path counts add up to the islands, and a
+//! warm start from the cold bases settles every island that has a basis.
+
+use lcpbatch::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};
+use lcpbatch::gpu::batch::solve_lcp_batch_warm;
+use lcpbatch::gpu::scenes::solve_scenes_warm;
+use lcpbatch::gpu::{
+    solve_lcp_batch, solve_scenes, GpuBatchResult, GpuContext, GpuOptions, GpuSolveSettings,
+    Precision, SolvedOn,
+};
+use lcpbatch::prediction::SolvePath;
+use lcpbatch::{Lcp, Scene};
+
+fn context(precision: Precision) -> Option<GpuContext> {
+    let mut o = GpuOptions::from_env().expect("GPU environment variables");
+    o.precision = precision;
+    match GpuContext::new(&o) {
+        Ok(c) => Some(c),
+        Err(e) if precision == Precision::F64 && e.to_string().contains("SHADER_F64") => {
+            eprintln!("skipping the f64 run: {e}");
+            None
+        }
+        Err(e) => panic!("no GPU adapter: {e}"),
+    }
+}
+
+fn scenes(count: usize) -> Vec<Scene> {
+    let mut rng = Rng::new(0x9e3d_2026);
+    (0..count)
+        .map(|k| match k % 7 {
+            2 => box_on_ground(rng.range(0.1, 3.0), rng.unit()),
+            4 => seed_chain(rng.unit()),
+            6 => demo_world(&mut rng),
+            _ => random_island(&mut rng, 1 + k % 12, [1.0, 10.0, 1e3][k % 3]),
+        })
+        .collect()
+}
+
+fn lcps(count: usize) -> Vec<Lcp> {
+    let mut out: Vec<Lcp> = scenes(count)
+        .iter()
+        .flat_map(|s| lcpbatch::pipeline::build(s, "scene").unwrap().2)
+        .collect();
+    // One separating island, one single contact, one invalid problem.
+    out.push(Lcp::new(vec![2.0, 1.0, 1.0, 2.0], vec![1.0, 0.5]).unwrap());
+    out.push(Lcp::new(vec![3.0], vec![-6.0]).unwrap());
+    out.push(Lcp {
+        m: vec![1.0, f64::NAN, 0.0, 1.0],
+        q: vec![1.0, -1.0],
+    });
+    out
+}
+
+fn paths_add_up(r: &GpuBatchResult) {
+    let rep = &r.report;
+    let sum: usize = rep.paths.iter().sum();
+    assert_eq!(sum + rep.invalid, rep.islands, "{rep}");
+    assert_eq!(rep.islands, r.islands.len());
+    assert_eq!(
+        rep.path_count(SolvePath::Enumerated),
+        rep.polished + rep.confirmed_no_solution + rep.repaired
+    );
+    let predicted = r
+        .islands
+        .iter()
+        .filter(|o| o.solved_on == SolvedOn::Predicted)
+        .count();
+    assert_eq!(predicted, rep.predicted);
+    for p in SolvePath::ALL {
+        let n = r.islands.iter().filter(|o| o.path == Some(p)).count();
+        assert_eq!(n, rep.path_count(p), "{}", p.name());
+    }
+    // Predicted islands never reached the GPU.
+    for o in &r.islands {
+        assert_eq!(o.gpu.is_some(), o.path == Some(SolvePath::Enumerated));
+    }
+}
+
+fn same_results(a: &GpuBatchResult, b: &GpuBatchResult) {
+    let mut bitwise = 0;
+    for (i, (x, y)) in a.islands.iter().zip(&b.islands).enumerate() {
+        assert_eq!(x.solution.status, y.solution.status, "island {i}");
+        if x.solution.basis == y.solution.basis {
+            assert_eq!(x.solution.z, y.solution.z, "island {i}");
+            bitwise += 1;
+        } else {
+            let scale = x.solution.z.iter().fold(1.0f64, |m, v| m.max(v.abs()));
+            for (p, q) in x.solution.z.iter().zip(&y.solution.z) {
+                assert!((p - q).abs() <= 1e-9 * scale, "island {i}: {p} vs {q}");
+            }
+        }
+    }
+    println!("{bitwise} of {} islands bit for bit", a.islands.len());
+}
+
+fn on_and_off(precision: Precision) {
+    let Some(ctx) = context(precision) else {
+        return;
+    };
+    let lcps = lcps(700);
+    let on = solve_lcp_batch(&ctx, &lcps, &GpuSolveSettings::default()).unwrap();
+    let off = solve_lcp_batch(
+        &ctx,
+        &lcps,
+        &GpuSolveSettings {
+            predict: false,
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    println!("on:\n{}\noff:\n{}", on.report, off.report);
+    paths_add_up(&on);
+    paths_add_up(&off);
+    assert_eq!(off.report.predicted, 0);
+    assert!(on.report.path_count(SolvePath::Separating) > 0);
+    assert!(on.report.path_count(SolvePath::SingleContact) > 0);
+    assert!(on.report.path_count(SolvePath::PredictedBasis) > 0);
+    assert!(on.report.path_count(SolvePath::Enumerated) > 0);
+    assert_eq!(on.report.path_count(SolvePath::WarmStart), 0);
+    assert_eq!(on.report.statuses, off.report.statuses);
+    same_results(&on, &off);
+
+    // Warm start from the cold bases: every island with a basis is settled
+    // without enumeration, with the same z.
+    let warm: Vec<Option<u32>> = on.islands.iter().map(|o| o.solution.basis).collect();
+    let hot = solve_lcp_batch_warm(&ctx, &lcps, Some(&warm), &Default::default()).unwrap();
+    println!("warm:\n{}", hot.report);
+    paths_add_up(&hot);
+    assert!(hot.report.path_count(SolvePath::WarmStart) > 0);
+    for (i, (c, h)) in on.islands.iter().zip(&hot.islands).enumerate() {
+        if c.solution.basis.is_some() {
+            assert_ne!(h.path, Some(SolvePath::Enumerated), "island {i}");
+        }
+    }
+    same_results(&on, &hot);
+}
+
+#[test]
+fn prediction_on_and_off_agree_f64() {
+    on_and_off(Precision::F64);
+}
+
+#[test]
+fn prediction_on_and_off_agree_f32() {
+    on_and_off(Precision::F32);
+}
+
+/// Scenes: predicted islands are assembled but not enumerated on the GPU;
+/// impulses and velocities are the same with prediction on and off.
+#[test]
+fn scene_prediction_on_and_off_agree() {
+    let Some(ctx) = context(Precision::Auto) else {
+        return;
+    };
+    let scenes = scenes(400);
+    let on = solve_scenes(&ctx, &scenes, &GpuSolveSettings::default()).unwrap();
+    let off = solve_scenes(
+        &ctx,
+        &scenes,
+        &GpuSolveSettings {
+            predict: false,
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    println!("on:\n{}\noff:\n{}", on.report, off.report);
+    assert!(on.report.predicted > 0);
+    assert_eq!(off.report.predicted, 0);
+    let sum: usize = on.report.paths.iter().sum();
+    assert_eq!(sum, on.report.islands);
+    assert_eq!(on.report.statuses, off.report.statuses);
+    let mut predicted = 0;
+    for (s, (a, b)) in on.scenes.iter().zip(&off.scenes).enumerate() {
+        for (k, (x, y)) in a.islands.iter().zip(&b.islands).enumerate() {
+            assert_eq!(x.solution.status, y.solution.status, "scene {s} island {k}");
+            let scale = x.solution.z.iter().fold(1.0f64, |m, v| m.max(v.abs()));
+            for (p, q) in x.solution.z.iter().zip(&y.solution.z) {
+                assert!((p - q).abs() <= 1e-9 * scale, "scene {s} island {k}");
+            }
+            if x.solution.basis == y.solution.basis {
+                assert_eq!(x.solution.z, y.solution.z, "scene {s} island {k}");
+            }
+            if on.solved_on[s][k] == SolvedOn::Predicted {
+                predicted += 1;
+            }
+        }
+    }
+    assert_eq!(predicted, on.report.predicted);
+    // Warm from the cold bases.
+    let warm: Vec<Vec<Option<u32>>> = on
+        .scenes
+        .iter()
+        .map(|s| s.islands.iter().map(|i| i.solution.basis).collect())
+        .collect();
+    let hot = solve_scenes_warm(&ctx, &scenes, Some(&warm), &Default::default()).unwrap();
+    println!("warm:\n{}", hot.report);
+    assert!(hot.report.path_count(SolvePath::WarmStart) > 0);
+    for (a, b) in on.scenes.iter().zip(&hot.scenes) {
+        for (x, y) in a.islands.iter().zip(&b.islands) {
+            if x.solution.basis == y.solution.basis {
+                assert_eq!(x.solution.z, y.solution.z);
+            }
+        }
+    }
+}
