@@ -576,19 +576,63 @@ pub fn gpu_rows(
     );
     a.note =
         "GPU's own z and verdict, before validation; time: upload + dispatch + readback".into();
+    let paths_note = |r: &crate::validation::BatchReport| {
+        crate::prediction::SolvePath::ALL
+            .iter()
+            .zip(r.paths)
+            .filter(|(_, c)| *c > 0)
+            .map(|(p, c)| format!("{}={c}", p.name()))
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
     let mut b = BenchRow::new(
         family.name(),
         &format!("gpu enum {precision} + f64 polish"),
         "gpu",
         &adapter,
-        r.gpu_seconds + r.validation_seconds,
+        r.prediction_seconds + r.gpu_seconds + r.validation_seconds,
         &validated,
     );
     b.note = format!(
-        "polished={} repaired={} cpu_fallback={}",
-        r.polished, r.repaired, r.cpu_fallback
+        "{}; polished={} repaired={} cpu_fallback={}",
+        paths_note(r),
+        r.polished,
+        r.repaired,
+        r.cpu_fallback
     );
-    Ok(vec![a, b])
+    let mut rows = vec![a, b];
+    if family == BenchFamily::WarmResting {
+        // The same batch again, warm-started from the cold bases.
+        let warm: Vec<Option<u32>> = res.islands.iter().map(|o| o.solution.basis).collect();
+        let hot = crate::gpu::batch::solve_lcp_batch_warm(ctx, lcps, Some(&warm), &settings)?;
+        let h = &hot.report;
+        let sols: Vec<LcpSolution> = hot.islands.iter().map(|o| o.solution.clone()).collect();
+        let mut row = BenchRow::new(
+            family.name(),
+            &format!("gpu enum {precision} + f64 polish, warm"),
+            "gpu",
+            &adapter,
+            h.prediction_seconds + h.gpu_seconds + h.validation_seconds,
+            &sols,
+        );
+        let identical = sols
+            .iter()
+            .zip(&validated)
+            .all(|(a, b)| a.z == b.z && a.status == b.status);
+        row.note = format!(
+            "{}; polished={} repaired={}{}",
+            paths_note(h),
+            h.polished,
+            h.repaired,
+            if identical {
+                "; identical to cold"
+            } else {
+                "; DIFFERS from cold"
+            }
+        );
+        rows.push(row);
+    }
+    Ok(rows)
 }
 
 /// The GPU's own verdict on an island, before validation: a basis found

@@ -207,3 +207,32 @@ fn scene_prediction_on_and_off_agree() {
         }
     }
 }
+
+/// `lcpbatch bench`'s GPU rows on the warm family: a warm row re-solves the
+/// batch from the cold bases, settles islands by warm start and gives the
+/// cold answers.
+#[test]
+fn bench_warm_gpu_row_is_identical_to_cold() {
+    use lcpbatch::bench::{family_batch, gpu_rows, BenchFamily};
+    let Some(ctx) = context(Precision::Auto) else {
+        return;
+    };
+    let lcps = family_batch(BenchFamily::WarmResting, 3, 300);
+    let rows = gpu_rows(&ctx, BenchFamily::WarmResting, &lcps).unwrap();
+    for r in &rows {
+        println!("{}: {}", r.solver, r.note);
+    }
+    let warm = rows
+        .iter()
+        .find(|r| r.solver.ends_with(", warm"))
+        .expect("a warm row");
+    assert!(warm.note.contains("identical to cold"), "{}", warm.note);
+    assert!(warm.note.contains("warm_start="), "{}", warm.note);
+    assert!(!warm.note.contains("enumerated="), "{}", warm.note);
+    let cold = gpu_rows(
+        &ctx,
+        BenchFamily::MixedN,
+        &family_batch(BenchFamily::MixedN, 3, 50),
+    );
+    assert!(cold.unwrap().iter().all(|r| !r.solver.ends_with(", warm")));
+}
