@@ -7,6 +7,7 @@
 //! (velocities after the impact). [`pipeline`] runs it for whole scenes,
 //! [`io`] reads and writes the file formats.
 
+pub mod backend;
 pub mod bench;
 pub mod cpu;
 pub mod error;

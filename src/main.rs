@@ -5,17 +5,15 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand, ValueEnum};
 
+use lcpbatch::backend::{Backend, Session};
 use lcpbatch::generate::{demo_world, Rng};
-use lcpbatch::gpu::{
-    list_adapters, solve_lcp_batch, solve_scenes, BackendChoice, GpuContext, GpuOptions,
-    GpuSolveSettings, Precision,
-};
+use lcpbatch::gpu::{list_adapters, BackendChoice, GpuContext, GpuOptions, Precision};
 use lcpbatch::io::{
     read_input, write_atomically, Input, LcpBatchOutput, LcpOutput, SceneOutput, ScenesOutput,
 };
 use lcpbatch::lcp::Status;
 use lcpbatch::pipeline::solve_scene;
-use lcpbatch::{solve, Error, Scene, Solver, SolverSettings};
+use lcpbatch::{Error, Scene, Solver, SolverSettings};
 
 #[derive(Parser)]
 #[command(
@@ -186,20 +184,15 @@ enum Command {
     },
 }
 
-/// The GPU context for `backend`: Some for gpu (or an error), Some or None
-/// for auto (saying why on stderr), None for cpu.
-fn gpu_for(backend: BackendArg, gpu: &GpuArgs) -> Result<Option<GpuContext>, Error> {
-    match backend {
-        BackendArg::Cpu => Ok(None),
-        BackendArg::Gpu => GpuContext::new(&gpu.options()?).map(Some),
-        BackendArg::Auto => match GpuContext::new(&gpu.options()?) {
-            Ok(c) => Ok(Some(c)),
-            Err(e) => {
-                eprintln!("{e}; solving on the CPU");
-                Ok(None)
-            }
-        },
-    }
+/// The backend for `backend`: on device trouble (no adapter, f64 asked of
+/// an adapter without it, a device lost in the middle of a batch) the
+/// session warns on stderr and solves on the CPU, for gpu and auto alike.
+fn backend_for(backend: BackendArg, gpu: &GpuArgs) -> Result<Backend, Error> {
+    Ok(match backend {
+        BackendArg::Cpu => Backend::Cpu,
+        BackendArg::Gpu => Backend::Gpu(gpu.options()?),
+        BackendArg::Auto => Backend::Auto(gpu.options()?),
+    })
 }
 
 fn describe(ctx: &GpuContext) -> String {
@@ -217,29 +210,28 @@ fn describe(ctx: &GpuContext) -> String {
 fn demo(worlds: usize, seed: u64, backend: BackendArg, gpu: &GpuArgs) -> Result<(), Error> {
     let mut rng = Rng::new(seed);
     let scenes: Vec<Scene> = (0..worlds).map(|_| demo_world(&mut rng)).collect();
-    let ctx = gpu_for(backend, gpu)?;
+    let mut session = Session::new(&backend_for(backend, gpu)?)?;
     let contacts: usize = scenes.iter().map(|s| s.contacts.len()).sum();
-    match ctx {
-        Some(ctx) => {
-            println!("adapter: {}", describe(&ctx));
-            // Warm-up on one world: the first dispatch compiles the shaders.
-            solve_scenes(
-                &ctx,
-                &scenes[..1.min(scenes.len())],
-                &GpuSolveSettings::default(),
-            )?;
-            let t = std::time::Instant::now();
-            let r = solve_scenes(&ctx, &scenes, &GpuSolveSettings::default())?;
-            let secs = t.elapsed().as_secs_f64();
-            let islands = r.report.islands;
+    let settings = SolverSettings::default();
+    if let Some(ctx) = session.context() {
+        println!("adapter: {}", describe(ctx));
+        // Warm-up on one world: the first dispatch compiles the shaders.
+        session.solve_scenes(&scenes[..1.min(scenes.len())], &settings)?;
+    }
+    let t = std::time::Instant::now();
+    let r = session.solve_scenes(&scenes, &settings)?;
+    let secs = t.elapsed().as_secs_f64();
+    match &r.report.gpu {
+        Some(report) => {
+            let islands = report.islands;
             println!(
                 "{worlds} simulation instances, {} bodies, {contacts} contacts, {islands} islands",
                 scenes.iter().map(|s| s.bodies.len()).sum::<usize>()
             );
-            println!("{}", r.report);
+            println!("{report}");
             println!(
                 "impulse stage: max deviation from f64 {:.2e}",
-                r.max_velocity_deviation
+                r.report.max_velocity_deviation.unwrap_or(0.0)
             );
             println!(
                 "throughput: {:.0} islands/s end to end ({:.3} s: assembly, enumeration, validation, impulses)",
@@ -247,7 +239,6 @@ fn demo(worlds: usize, seed: u64, backend: BackendArg, gpu: &GpuArgs) -> Result<
                 secs
             );
             let t = std::time::Instant::now();
-            let settings = SolverSettings::default();
             for (i, s) in scenes.iter().enumerate() {
                 solve_scene(s, &settings, &format!("scene {i}"))?;
             }
@@ -258,26 +249,23 @@ fn demo(worlds: usize, seed: u64, backend: BackendArg, gpu: &GpuArgs) -> Result<
             );
         }
         None => {
-            println!("adapter: none (CPU path)");
-            let t = std::time::Instant::now();
-            let settings = SolverSettings::default();
+            match session.fallback() {
+                Some(why) => println!("adapter: none (CPU path; GPU trouble: {why})"),
+                None => println!("adapter: none (CPU path)"),
+            }
             let mut statuses = [0usize; 6];
             let (mut islands, mut max_error) = (0usize, 0.0f64);
-            for (i, s) in scenes.iter().enumerate() {
-                let r = solve_scene(s, &settings, &format!("scene {i}"))?;
-                for isl in &r.islands {
-                    islands += 1;
-                    let k = Status::ALL
-                        .iter()
-                        .position(|&x| x == isl.solution.status)
-                        .unwrap_or(5);
-                    statuses[k] += 1;
-                    if isl.solution.status.is_solution() {
-                        max_error = max_error.max(isl.solution.residuals.error);
-                    }
+            for isl in r.scenes.iter().flat_map(|s| &s.islands) {
+                islands += 1;
+                let k = Status::ALL
+                    .iter()
+                    .position(|&x| x == isl.solution.status)
+                    .unwrap_or(5);
+                statuses[k] += 1;
+                if isl.solution.status.is_solution() {
+                    max_error = max_error.max(isl.solution.residuals.error);
                 }
             }
-            let secs = t.elapsed().as_secs_f64();
             let list: Vec<String> = Status::ALL
                 .iter()
                 .zip(statuses)
@@ -420,66 +408,35 @@ fn run(cli: Cli) -> Result<(), Error> {
                 ));
             }
             let input = read_input(&file)?;
-            let ctx = if gpu_capable {
-                gpu_for(backend, &gpu)?
+            let backend = if gpu_capable {
+                backend_for(backend, &gpu)?
             } else {
-                None
+                Backend::Cpu
             };
-            if let Some(ctx) = ctx {
-                eprintln!("adapter: {}", describe(&ctx));
-                let gs = GpuSolveSettings {
-                    enumeration: settings.enumeration,
-                    ..Default::default()
-                };
-                let text = match input {
-                    Input::Lcps(lcps) => {
-                        let r = solve_lcp_batch(&ctx, &lcps, &gs)?;
-                        eprintln!("{}", r.report);
-                        let problems = r
-                            .islands
-                            .iter()
-                            .map(|o| LcpOutput::new(o.solver.name(), &o.solution))
-                            .collect();
-                        serde_json::to_string_pretty(&LcpBatchOutput { problems })
-                            .expect("serialisable")
-                    }
-                    Input::Scenes(scenes) => {
-                        let r = solve_scenes(&ctx, &scenes, &gs)?;
-                        eprintln!("{}", r.report);
-                        let scenes = r.scenes.iter().map(SceneOutput::new).collect();
-                        serde_json::to_string_pretty(&ScenesOutput { scenes })
-                            .expect("serialisable")
-                    }
-                };
-                match output {
-                    Some(path) => write_atomically(&path, &text)?,
-                    None => println!("{text}"),
-                }
-                return Ok(());
+            let mut session = Session::new(&backend)?;
+            if let Some(ctx) = session.context() {
+                eprintln!("adapter: {}", describe(ctx));
             }
             let text = match input {
                 Input::Lcps(lcps) => {
-                    let problems = lcps
+                    let r = session.solve_lcps(&lcps, &settings)?;
+                    if let Some(report) = &r.report.gpu {
+                        eprintln!("{report}");
+                    }
+                    let problems = r
+                        .problems
                         .iter()
-                        .enumerate()
-                        .map(|(i, lcp)| {
-                            solve(lcp, &settings)
-                                .map(|s| LcpOutput::new(settings.solver.name(), &s))
-                                .map_err(|e| Error::Unsupported(format!("problem {i}: {e}")))
-                        })
-                        .collect::<Result<Vec<_>, _>>()?;
+                        .map(|p| LcpOutput::new(p.solver.name(), &p.solution))
+                        .collect();
                     serde_json::to_string_pretty(&LcpBatchOutput { problems })
                         .expect("serialisable")
                 }
                 Input::Scenes(scenes) => {
-                    let scenes = scenes
-                        .iter()
-                        .enumerate()
-                        .map(|(i, s)| {
-                            solve_scene(s, &settings, &format!("scene {i}"))
-                                .map(|r| SceneOutput::new(&r))
-                        })
-                        .collect::<Result<Vec<_>, _>>()?;
+                    let r = session.solve_scenes(&scenes, &settings)?;
+                    if let Some(report) = &r.report.gpu {
+                        eprintln!("{report}");
+                    }
+                    let scenes = r.scenes.iter().map(SceneOutput::new).collect();
                     serde_json::to_string_pretty(&ScenesOutput { scenes }).expect("serialisable")
                 }
             };

@@ -474,6 +474,18 @@ impl GpuContext {
         })
     }
 
+    /// For tests of device trouble: destroys the device, as a driver reset
+    /// would lose it, and reports the loss the way the device-lost callback
+    /// reports a real one (the callback ignores a deliberate destroy). Every
+    /// later GPU call on this context fails with [`Error::Gpu`].
+    #[doc(hidden)]
+    pub fn simulate_device_loss(&self) {
+        self.device.destroy();
+        if let Ok(mut v) = self.errors.0.lock() {
+            v.push("device lost (simulated): the device was destroyed".into());
+        }
+    }
+
     /// The chosen adapter.
     pub fn adapter_info(&self) -> &AdapterSummary {
         &self.summary
