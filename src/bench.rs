@@ -677,8 +677,8 @@ impl Default for BenchOptions {
 }
 
 /// GPU contexts for f32 and, where the adapter has it, f64. A missing
-/// adapter is a warning: the bench runs on the CPU.
-fn gpu_contexts(opts: &Option<crate::gpu::GpuOptions>) -> Vec<crate::gpu::GpuContext> {
+/// adapter is a warning: the caller runs on the CPU only.
+pub fn gpu_contexts(opts: &Option<crate::gpu::GpuOptions>) -> Vec<crate::gpu::GpuContext> {
     use crate::gpu::{GpuContext, Precision};
     let Some(base) = opts else { return Vec::new() };
     let mut out = Vec::new();
@@ -691,7 +691,7 @@ fn gpu_contexts(opts: &Option<crate::gpu::GpuOptions>) -> Vec<crate::gpu::GpuCon
             Ok(ctx) if ctx.precision() == p => out.push(ctx),
             Ok(_) => eprintln!("warning: the adapter has no f64; GPU rows in f32 only"),
             Err(e) => {
-                eprintln!("warning: {e}; the bench runs on the CPU only");
+                eprintln!("warning: {e}; CPU rows only");
                 break;
             }
         }

@@ -674,27 +674,11 @@ impl Default for StressOptions {
 /// the adapter has it, f64), prints the table, writes `stress.json` and
 /// `error_vs_condition.svg`.
 pub fn run(opts: &StressOptions) -> Result<Vec<StressRow>, crate::Error> {
-    use crate::gpu::{GpuContext, GpuOptions, Precision};
     std::fs::create_dir_all(&opts.out_dir).map_err(|source| crate::Error::Io {
         path: opts.out_dir.clone(),
         source,
     })?;
-    let mut contexts = Vec::new();
-    if let Some(base) = &opts.gpu {
-        for p in [Precision::F32, Precision::F64] {
-            match GpuContext::new(&GpuOptions {
-                precision: p,
-                ..base.clone()
-            }) {
-                Ok(ctx) if ctx.precision() == p => contexts.push(ctx),
-                Ok(_) => eprintln!("warning: the adapter has no f64; GPU rows in f32 only"),
-                Err(e) => {
-                    eprintln!("warning: {e}; the stress run uses the CPU only");
-                    break;
-                }
-            }
-        }
-    }
+    let contexts = crate::bench::gpu_contexts(&opts.gpu);
     let mut sets: Vec<(String, Vec<StressCase>)> = Family::ALL
         .iter()
         .map(|&f| (f.name().to_string(), generate(f, opts.seed, opts.cases)))
