@@ -25,6 +25,7 @@
 //! with [`Error::Unsupported`].
 
 use std::fmt;
+use std::sync::Arc;
 
 use crate::cpu::enumeration::MAX_ENUMERATION_N;
 use crate::gpu::{self, GpuContext, GpuOptions, GpuSolveSettings, SolvedOn};
@@ -113,7 +114,7 @@ pub struct SceneBatch {
 pub struct Session {
     /// True for [`Backend::Gpu`]: requests only the CPU serves are refused.
     strict: bool,
-    ctx: Option<GpuContext>,
+    ctx: Option<Arc<GpuContext>>,
     fallback: Option<String>,
     warned: bool,
     /// Settings of the GPU path (chunk sizes, tolerances); its
@@ -135,7 +136,7 @@ impl Session {
         match backend {
             Backend::Cpu => {}
             Backend::Auto(o) | Backend::Gpu(o) => match GpuContext::new(o) {
-                Ok(ctx) => s.ctx = Some(ctx),
+                Ok(ctx) => s.ctx = Some(Arc::new(ctx)),
                 Err(Error::Gpu(why)) => s.fall_back(why),
                 Err(e) => return Err(e),
             },
@@ -147,7 +148,7 @@ impl Session {
     pub fn from_context(ctx: GpuContext) -> Self {
         Session {
             strict: true,
-            ctx: Some(ctx),
+            ctx: Some(Arc::new(ctx)),
             fallback: None,
             warned: false,
             gpu_settings: GpuSolveSettings::default(),
@@ -156,7 +157,13 @@ impl Session {
 
     /// The GPU context while the GPU is in use (None on the CPU path).
     pub fn context(&self) -> Option<&GpuContext> {
-        self.ctx.as_ref()
+        self.ctx.as_deref()
+    }
+
+    /// The GPU context, shared (for tests that lose the device from another
+    /// thread in the middle of a batch).
+    pub fn shared_context(&self) -> Option<Arc<GpuContext>> {
+        self.ctx.clone()
     }
 
     /// Why the CPU took over (None: no device trouble so far).
@@ -231,7 +238,7 @@ impl Session {
         settings: &SolverSettings,
     ) -> Result<LcpBatch, Error> {
         let gs = self.gpu_request(settings)?;
-        if let (Some(gs), Some(ctx)) = (gs, self.ctx.as_ref()) {
+        if let (Some(gs), Some(ctx)) = (gs, self.ctx.as_deref()) {
             match guarded(|| gpu::solve_lcp_batch(ctx, lcps, &gs)) {
                 Ok(r) => {
                     let adapter = self.describe_adapter();
@@ -291,7 +298,7 @@ impl Session {
         settings: &SolverSettings,
     ) -> Result<SceneBatch, Error> {
         let gs = self.gpu_request(settings)?;
-        if let (Some(gs), Some(ctx)) = (gs, self.ctx.as_ref()) {
+        if let (Some(gs), Some(ctx)) = (gs, self.ctx.as_deref()) {
             match guarded(|| gpu::solve_scenes(ctx, scenes, &gs)) {
                 Ok(r) => {
                     let adapter = self.describe_adapter();

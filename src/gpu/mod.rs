@@ -477,7 +477,9 @@ impl GpuContext {
     /// For tests of device trouble: destroys the device, as a driver reset
     /// would lose it, and reports the loss the way the device-lost callback
     /// reports a real one (the callback ignores a deliberate destroy). Every
-    /// later GPU call on this context fails with [`Error::Gpu`].
+    /// later GPU call on this context fails: with [`Error::Gpu`], or with a
+    /// panic inside wgpu (`create_buffer_init` on a lost device), which
+    /// [`crate::backend`] turns into device trouble as well.
     #[doc(hidden)]
     pub fn simulate_device_loss(&self) {
         self.device.destroy();
