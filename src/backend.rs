@@ -173,17 +173,7 @@ impl Session {
 
     /// The adapter in words: name, backend, device type, how it was chosen, precision.
     pub fn describe_adapter(&self) -> Option<String> {
-        self.ctx.as_ref().map(|ctx| {
-            let a = ctx.adapter_info();
-            format!(
-                "{} ({}, {}; {}; {})",
-                a.name,
-                a.backend,
-                a.device_type,
-                ctx.selection(),
-                ctx.precision().name()
-            )
-        })
+        self.ctx.as_deref().map(describe_context)
     }
 
     /// Device trouble: drop the context, remember why, warn once.
@@ -364,4 +354,18 @@ pub fn solve_scenes(
     settings: &SolverSettings,
 ) -> Result<SceneBatch, Error> {
     Session::new(backend)?.solve_scenes(scenes, settings)
+}
+
+/// A GPU context in words: adapter name, backend, device type, how it was
+/// chosen, precision.
+pub fn describe_context(ctx: &GpuContext) -> String {
+    let a = ctx.adapter_info();
+    format!(
+        "{} ({}, {}; {}; {})",
+        a.name,
+        a.backend,
+        a.device_type,
+        ctx.selection(),
+        ctx.precision().name()
+    )
 }

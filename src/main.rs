@@ -195,18 +195,6 @@ fn backend_for(backend: BackendArg, gpu: &GpuArgs) -> Result<Backend, Error> {
     })
 }
 
-fn describe(ctx: &GpuContext) -> String {
-    let a = ctx.adapter_info();
-    format!(
-        "{} ({}, {}; {}; {})",
-        a.name,
-        a.backend,
-        a.device_type,
-        ctx.selection(),
-        ctx.precision().name()
-    )
-}
-
 fn demo(worlds: usize, seed: u64, backend: BackendArg, gpu: &GpuArgs) -> Result<(), Error> {
     let mut rng = Rng::new(seed);
     let scenes: Vec<Scene> = (0..worlds).map(|_| demo_world(&mut rng)).collect();
@@ -214,7 +202,7 @@ fn demo(worlds: usize, seed: u64, backend: BackendArg, gpu: &GpuArgs) -> Result<
     let contacts: usize = scenes.iter().map(|s| s.contacts.len()).sum();
     let settings = SolverSettings::default();
     if let Some(ctx) = session.context() {
-        println!("adapter: {}", describe(ctx));
+        println!("adapter: {}", lcpbatch::backend::describe_context(ctx));
         // Warm-up on one world: the first dispatch compiles the shaders.
         session.solve_scenes(&scenes[..1.min(scenes.len())], &settings)?;
     }
@@ -299,7 +287,7 @@ fn info(gpu: &GpuArgs) -> Result<(), Error> {
         println!("{a}");
     }
     match GpuContext::new(&o) {
-        Ok(ctx) => println!("chosen: {}", describe(&ctx)),
+        Ok(ctx) => println!("chosen: {}", lcpbatch::backend::describe_context(&ctx)),
         Err(e) => println!("chosen: none ({e}); the CPU path is used"),
     }
     Ok(())
@@ -415,7 +403,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             };
             let mut session = Session::new(&backend)?;
             if let Some(ctx) = session.context() {
-                eprintln!("adapter: {}", describe(ctx));
+                eprintln!("adapter: {}", lcpbatch::backend::describe_context(ctx));
             }
             let text = match input {
                 Input::Lcps(lcps) => {
