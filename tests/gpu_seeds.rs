@@ -58,7 +58,12 @@ fn check(precision: Precision) {
     };
     let cases = seeds();
     let lcps: Vec<Lcp> = cases.iter().map(|c| c.0.clone()).collect();
-    let r = solve_lcp_batch(&ctx, &lcps, &GpuSolveSettings::default()).unwrap();
+    // Every seed on the GPU (prediction would settle the first).
+    let gs = GpuSolveSettings {
+        predict: false,
+        ..Default::default()
+    };
+    let r = solve_lcp_batch(&ctx, &lcps, &gs).unwrap();
     println!("{}", r.report);
     for (k, ((_, z, w), o)) in cases.iter().zip(&r.islands).enumerate() {
         assert_eq!(o.solution.status, Status::Solved, "seed case {k}");

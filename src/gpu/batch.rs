@@ -57,7 +57,59 @@ pub struct GpuSolveSettings {
     /// start, predicted basis), so that only the others are uploaded and
     /// dispatched. Default true.
     pub predict: bool,
+    /// Which enumeration shader runs (default [`EnumerationKernel::Auto`]).
+    pub kernel: EnumerationKernel,
+    /// Gray-code kernel: rebuild the tableau every this many pivots (None:
+    /// [`DEFAULT_REFACTOR_PERIOD`]; 1…65,535).
+    pub refactor_period: Option<u32>,
+    /// Gray-code kernel: measure the tableau's drift at every scheduled
+    /// rebuild ([`EnumerationOutput::drift`]); for the period study.
+    pub measure_drift: bool,
 }
+
+/// The enumeration shader.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum EnumerationKernel {
+    /// Per island size, whichever measured faster ([`EnumerationKernel::for_n`]).
+    #[default]
+    Auto,
+    /// `shaders/enumeration.wgsl`: bases by size, one elimination each, stop
+    /// at the first valid one.
+    Elimination,
+    /// `shaders/enumeration_gray.wgsl`: every basis in Gray-code order, one
+    /// principal pivot each, candidates confirmed by elimination.
+    Gray,
+}
+
+/// Gray-code refactorisation period of the GPU kernel (see BENCHMARKS.md).
+pub const DEFAULT_REFACTOR_PERIOD: u32 = 32;
+
+impl EnumerationKernel {
+    /// The kernel that runs islands of n contacts.
+    pub fn for_n(self, n: usize) -> EnumerationKernel {
+        match self {
+            EnumerationKernel::Auto => {
+                if n >= GRAY_FROM_N {
+                    EnumerationKernel::Gray
+                } else {
+                    EnumerationKernel::Elimination
+                }
+            }
+            k => k,
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            EnumerationKernel::Auto => "auto",
+            EnumerationKernel::Elimination => "elimination",
+            EnumerationKernel::Gray => "gray",
+        }
+    }
+}
+
+/// Auto: the Gray-code kernel from this island size on (see BENCHMARKS.md).
+pub const GRAY_FROM_N: usize = usize::MAX;
 
 impl Default for GpuSolveSettings {
     fn default() -> Self {
@@ -71,6 +123,9 @@ impl Default for GpuSolveSettings {
             max_workgroups: None,
             round_budget: None,
             predict: true,
+            kernel: EnumerationKernel::Auto,
+            refactor_period: None,
+            measure_drift: false,
         }
     }
 }
@@ -162,6 +217,10 @@ pub struct EnumerationOutput {
     pub result: BasisResult,
     /// z of the chosen basis in the shader's precision (zeros when none).
     pub z: Vec<f64>,
+    /// Gray-code kernel with `measure_drift`: the largest difference between
+    /// the pivoted and the rebuilt tableau's t at a scheduled rebuild,
+    /// relative to the screen's scale of each entry; else 0.
+    pub drift: f64,
 }
 
 /// What one GPU run did (for the report and the benches).
@@ -191,11 +250,44 @@ pub const SOFTWARE_ROUND_BUDGET: u32 = 48_000;
 /// Loop work per invocation and round on hardware (bounds one dispatch's time).
 pub const HARDWARE_ROUND_BUDGET: u32 = 1 << 22;
 
+/// The Gray-code kernel's loop work per round for a round budget: its cost
+/// model undercounts what llvmpipe counts (measured on lavapipe: at 48,000
+/// units some n = 12 islands lost bases at period 32, at 20,000 none did at
+/// periods 1 and 32), so it gets 5/12 of the budget.
+pub fn gray_budget(budget: u32) -> u32 {
+    (budget as u64 * 5 / 12).max(1) as u32
+}
+
+/// Which enumeration shader runs per size, and its per-round parameters.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct KernelPlan {
+    /// Loop work per invocation and round.
+    pub budget: u32,
+    pub kernel: EnumerationKernel,
+    /// Gray-code refactorisation period.
+    pub period: u32,
+    pub measure: bool,
+}
+
+impl KernelPlan {
+    pub(crate) fn new(ctx: &GpuContext, settings: &GpuSolveSettings) -> Self {
+        KernelPlan {
+            budget: round_budget(ctx, settings),
+            kernel: settings.kernel,
+            period: settings.refactor_period.unwrap_or(DEFAULT_REFACTOR_PERIOD),
+            measure: settings.measure_drift,
+        }
+    }
+}
+
 /// What the enumeration stage gave for a table of islands.
 pub(crate) struct EnumerationRun {
     pub results: Vec<BasisResult>,
     /// z of every island at its table offset, in the shader's precision.
     pub z: Vec<f64>,
+    /// Per island (table order), the Gray kernel's measured drift (empty
+    /// unless measured).
+    pub drift: Vec<f64>,
     pub dispatches: usize,
     pub rounds: usize,
 }
@@ -211,7 +303,7 @@ pub(crate) fn run_enumeration(
     values: &wgpu::Buffer,
     table: &[PackedIsland],
     max_groups: u32,
-    budget: u32,
+    plan: &KernelPlan,
     mut encoder: wgpu::CommandEncoder,
     read_back: bool,
 ) -> Result<EnumerationRun, Error> {
@@ -224,6 +316,7 @@ pub(crate) fn run_enumeration(
         return Ok(EnumerationRun {
             results: Vec::new(),
             z: Vec::new(),
+            drift: Vec::new(),
             dispatches: 0,
             rounds: 0,
         });
@@ -239,47 +332,66 @@ pub(crate) fn run_enumeration(
     let unfinished = ctx.storage_zeroed("unfinished", 17 * 4);
     // least: infeasibility of each island's least infeasible basis so far.
     let least = ctx.storage_zeroed("least_infeasibility", table.len() as u64 * sb);
-    let stage = &pipelines.enumeration;
-    let bind = |params: &wgpu::Buffer| {
+    // drift: the Gray kernel's measured tableau drift per island.
+    let drift_size = table.len() as u64 * sb;
+    let drift = ctx.storage_zeroed("drift", drift_size);
+    let stage_of = |n: u32| match plan.kernel.for_n(n as usize) {
+        EnumerationKernel::Gray => &pipelines.enumeration_gray,
+        _ => &pipelines.enumeration,
+    };
+    let bind = |params: &wgpu::Buffer, gray: bool| {
+        let mut entries = vec![
+            wgpu::BindGroupEntry {
+                binding: 0,
+                resource: params.as_entire_binding(),
+            },
+            wgpu::BindGroupEntry {
+                binding: 1,
+                resource: islands.as_entire_binding(),
+            },
+            wgpu::BindGroupEntry {
+                binding: 2,
+                resource: values.as_entire_binding(),
+            },
+            wgpu::BindGroupEntry {
+                binding: 3,
+                resource: results.as_entire_binding(),
+            },
+            wgpu::BindGroupEntry {
+                binding: 4,
+                resource: z.as_entire_binding(),
+            },
+            wgpu::BindGroupEntry {
+                binding: 5,
+                resource: unfinished.as_entire_binding(),
+            },
+            wgpu::BindGroupEntry {
+                binding: 6,
+                resource: least.as_entire_binding(),
+            },
+        ];
+        if gray {
+            entries.push(wgpu::BindGroupEntry {
+                binding: 7,
+                resource: drift.as_entire_binding(),
+            });
+        }
+        let layout = if gray {
+            &pipelines.enumeration_gray.layout
+        } else {
+            &pipelines.enumeration.layout
+        };
         ctx.device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("enumeration"),
-            layout: &stage.layout,
-            entries: &[
-                wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: params.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 1,
-                    resource: islands.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 2,
-                    resource: values.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 3,
-                    resource: results.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 4,
-                    resource: z.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 5,
-                    resource: unfinished.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 6,
-                    resource: least.as_entire_binding(),
-                },
-            ],
+            layout,
+            entries: &entries,
         })
     };
     // One bucket per island size: a workgroup never waits on a larger island.
     // (One dispatch over all sizes per round was tried: 12x fewer dispatches
     // but 35% slower at 10k islands on lavapipe, whose threads then got the
     // small and the large islands in unequal halves.)
+    let flags = plan.period.clamp(1, 0xffff) | (plan.measure as u32) << 16;
     let mut buckets: Vec<(u32, Vec<(wgpu::BindGroup, u32)>)> = Vec::new();
     let mut first = 0usize;
     while first < table.len() {
@@ -288,12 +400,18 @@ pub(crate) fn run_enumeration(
         while last < table.len() && table[last].n == n {
             last += 1;
         }
+        let gray = plan.kernel.for_n(n as usize) == EnumerationKernel::Gray;
         let r = ctx.ranges(
             first as u32,
             (last - first) as u32,
             max_groups,
-            budget,
-            &bind,
+            if gray {
+                gray_budget(plan.budget)
+            } else {
+                plan.budget
+            },
+            if gray { flags } else { 0 },
+            &|p| bind(p, gray),
         );
         buckets.push((n, r));
         first = last;
@@ -307,7 +425,7 @@ pub(crate) fn run_enumeration(
                 encoder.clear_buffer(&unfinished, 0, None);
             }
             for &b in &active {
-                ctx.record(&mut encoder, stage, &buckets[b].1);
+                ctx.record(&mut encoder, stage_of(buckets[b].0), &buckets[b].1);
                 dispatches += buckets[b].1.len();
             }
         }
@@ -333,11 +451,21 @@ pub(crate) fn run_enumeration(
         return Ok(EnumerationRun {
             results: Vec::new(),
             z: Vec::new(),
+            drift: Vec::new(),
             dispatches,
             rounds,
         });
     }
-    let mut read = ctx.submit_and_read(encoder, &[(&results, results_size), (&z, z_size)])?;
+    let mut reads = vec![(&results, results_size), (&z, z_size)];
+    if plan.measure {
+        reads.push((&drift, drift_size));
+    }
+    let mut read = ctx.submit_and_read(encoder, &reads)?;
+    let drift = if plan.measure {
+        scalars_from_bytes(&read.pop().unwrap_or_default(), precision)
+    } else {
+        Vec::new()
+    };
     let z_bytes = read.pop().unwrap_or_default();
     let r_bytes = read.pop().unwrap_or_default();
     let results: Vec<BasisResult> = bytemuck::try_cast_slice(&r_bytes)
@@ -346,6 +474,7 @@ pub(crate) fn run_enumeration(
     Ok(EnumerationRun {
         results,
         z: scalars_from_bytes(&z_bytes, precision),
+        drift,
         dispatches,
         rounds,
     })
@@ -365,12 +494,13 @@ pub fn enumerate_on_gpu(
     let precision = ctx.precision();
     let pipelines = ctx.pipelines(settings.gpu_tolerances(precision))?;
     let (max_bytes, max_groups) = limits_for(ctx, settings);
-    let budget = round_budget(ctx, settings);
+    let plan = KernelPlan::new(ctx, settings);
 
     let mut out = vec![
         EnumerationOutput {
             result: BasisResult::default(),
             z: Vec::new(),
+            drift: 0.0,
         };
         lcps.len()
     ];
@@ -389,15 +519,22 @@ pub fn enumerate_on_gpu(
                 &values_buf,
                 &chunk.table,
                 max_groups,
-                budget,
+                &plan,
                 encoder,
                 true,
             )
         })??;
-        for ((&i, rec), res) in chunk.order.iter().zip(&chunk.table).zip(&run.results) {
+        for (t, ((&i, rec), res)) in chunk
+            .order
+            .iter()
+            .zip(&chunk.table)
+            .zip(&run.results)
+            .enumerate()
+        {
             let (z0, n) = (rec.z as usize, rec.n as usize);
             out[i] = EnumerationOutput {
                 result: *res,
+                drift: run.drift.get(t).copied().unwrap_or(0.0),
                 z: run
                     .z
                     .get(z0..z0 + n)
@@ -492,7 +629,7 @@ pub struct UploadedBatch<'a> {
     pipelines: std::sync::Arc<Pipelines>,
     chunks: Vec<(Vec<PackedIsland>, wgpu::Buffer, wgpu::Buffer)>,
     max_groups: u32,
-    budget: u32,
+    plan: KernelPlan,
 }
 
 impl<'a> UploadedBatch<'a> {
@@ -520,7 +657,7 @@ impl<'a> UploadedBatch<'a> {
             pipelines,
             chunks,
             max_groups,
-            budget: round_budget(ctx, settings),
+            plan: KernelPlan::new(ctx, settings),
         })
     }
 
@@ -542,7 +679,7 @@ impl<'a> UploadedBatch<'a> {
                     values,
                     table,
                     self.max_groups,
-                    self.budget,
+                    &self.plan,
                     encoder,
                     false,
                 )

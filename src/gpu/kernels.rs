@@ -15,6 +15,15 @@ use super::{GpuContext, Precision};
 use crate::Error;
 
 pub const ENUMERATION_WGSL: &str = include_str!("../../shaders/enumeration.wgsl");
+pub const ENUMERATION_GRAY_WGSL: &str = include_str!("../../shaders/enumeration_gray.wgsl");
+
+/// Gray-code kernel tolerances in f32 (f64 uses the CPU twin's,
+/// [`crate::cpu::enumeration_gray::GraySettings`]): the screen is looser
+/// than the f32 feasibility tolerance (1e-4) by more than the tableau's
+/// measured drift, so that every basis f32 elimination accepts is screened
+/// in; a principal pivot below 1e-3 of its row is replaced by a rebuild.
+pub const F32_SCREEN_TOL: f64 = 1e-3;
+pub const F32_TABLEAU_PIVOT_TOL: f64 = 1e-3;
 pub const ASSEMBLY_WGSL: &str = include_str!("../../shaders/assembly.wgsl");
 pub const IMPULSES_WGSL: &str = include_str!("../../shaders/impulses.wgsl");
 
@@ -39,6 +48,8 @@ pub struct Stage {
 /// Every stage's pipeline for one precision and one set of tolerances.
 pub struct Pipelines {
     pub enumeration: Stage,
+    /// `shaders/enumeration_gray.wgsl`: the enumeration in Gray-code order.
+    pub enumeration_gray: Stage,
     pub assemble_contacts: Stage,
     pub assemble_islands: Stage,
     pub impulses: Stage,
@@ -171,6 +182,27 @@ impl Pipelines {
             key.precision,
             Some((pivot, feas, relaxed)),
         )?;
+        let gray = crate::cpu::enumeration_gray::GraySettings::default();
+        let (screen, tab_pivot) = if key.precision == Precision::F64 {
+            (gray.screen_tol, gray.pivot_tol)
+        } else {
+            (F32_SCREEN_TOL, F32_TABLEAU_PIVOT_TOL)
+        };
+        let gray_src = template(
+            ENUMERATION_GRAY_WGSL,
+            key.precision,
+            Some((pivot, feas, relaxed)),
+        )?;
+        let gray_src = replace_host_line(
+            &gray_src,
+            "screen_tol",
+            &format!("const SCREEN_TOL: Scalar = {};", literal(screen)),
+        )?;
+        let gray_src = replace_host_line(
+            &gray_src,
+            "tableau_pivot_tol",
+            &format!("const TAB_PIVOT_TOL: Scalar = {};", literal(tab_pivot)),
+        )?;
         let assembly_src = template(ASSEMBLY_WGSL, key.precision, None)?;
         let impulses_src = template(IMPULSES_WGSL, key.precision, None)?;
         ctx.scoped("building the pipelines", || {
@@ -181,6 +213,7 @@ impl Pipelines {
                 })
             };
             let enumeration = module("enumeration.wgsl", enumeration_src);
+            let enumeration_gray = module("enumeration_gray.wgsl", gray_src);
             let assembly = module("assembly.wgsl", assembly_src);
             let impulses = module("impulses.wgsl", impulses_src);
             Pipelines {
@@ -196,6 +229,21 @@ impl Pipelines {
                         storage_entry(4, false),
                         storage_entry(5, false),
                         storage_entry(6, false),
+                    ],
+                ),
+                enumeration_gray: stage(
+                    d,
+                    &enumeration_gray,
+                    "main",
+                    &[
+                        uniform_entry(0),
+                        storage_entry(1, true),
+                        storage_entry(2, true),
+                        storage_entry(3, false),
+                        storage_entry(4, false),
+                        storage_entry(5, false),
+                        storage_entry(6, false),
+                        storage_entry(7, false),
                     ],
                 ),
                 assemble_contacts: stage(
@@ -305,12 +353,15 @@ impl GpuContext {
     /// ranges of at most `max_groups` workgroups (the per-dimension limit),
     /// each range with its own Params uniform; `bind` makes the bind group
     /// for a Params buffer. Returns (bind group, workgroups) per range.
+    /// `flags`: Params' last word (the Gray-code kernel's period and drift flag).
+    #[allow(clippy::too_many_arguments)]
     pub(crate) fn ranges(
         &self,
         first: u32,
         count: u32,
         max_groups: u32,
         budget: u32,
+        flags: u32,
         bind: &dyn Fn(&wgpu::Buffer) -> wgpu::BindGroup,
     ) -> Vec<(wgpu::BindGroup, u32)> {
         let per = max_groups.max(1) as u64 * WORKGROUP as u64;
@@ -322,7 +373,7 @@ impl GpuContext {
                 first: first + done as u32,
                 count: this,
                 budget,
-                _pad: 0,
+                _pad: flags,
             };
             // Params: which slice of the table this dispatch covers.
             let ub = self
@@ -366,7 +417,7 @@ impl GpuContext {
         max_groups: u32,
         bind: &dyn Fn(&wgpu::Buffer) -> wgpu::BindGroup,
     ) {
-        let r = self.ranges(first, count, max_groups, 0, bind);
+        let r = self.ranges(first, count, max_groups, 0, 0, bind);
         self.record(encoder, stage, &r);
     }
 

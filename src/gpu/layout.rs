@@ -92,6 +92,9 @@ pub struct BasisResult {
     /// The least infeasible basis so far (when `has_least` is 1).
     pub least: u32,
     pub has_least: u32,
+    /// Gray-code kernel: the best confirmed basis so far and whether there is
+    /// one (it visits every basis; `mask` is then its next Gray index while
+    /// in progress). Zero in the elimination kernel.
     pub _pad0: u32,
     pub _pad1: u32,
 }
@@ -113,6 +116,8 @@ pub struct Params {
     pub first: u32,
     pub count: u32,
     pub budget: u32,
+    /// Gray-code kernel: refactorisation period (bits 0..15) and "measure
+    /// the drift" (bit 16); unused by the other stages.
     pub _pad: u32,
 }
 

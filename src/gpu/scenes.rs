@@ -12,7 +12,7 @@
 use std::time::Instant;
 
 use super::batch::{
-    limits_for, round_budget, run_enumeration, solve_lcp_batch_warm, GpuSolveSettings, SolvedOn,
+    limits_for, run_enumeration, solve_lcp_batch_warm, GpuSolveSettings, KernelPlan, SolvedOn,
 };
 use super::kernels::Pipelines;
 use super::layout::{
@@ -189,8 +189,7 @@ fn assemble_and_enumerate(
     p: &Pipelines,
     c: &Chunk,
     max_groups: u32,
-    budget: u32,
-    enumerate: bool,
+    enumerate: Option<&KernelPlan>,
 ) -> Result<StageOutput, Error> {
     let precision = ctx.precision();
     let sb = precision.bytes();
@@ -264,7 +263,7 @@ fn assemble_and_enumerate(
                 },
             );
             dispatches += 1;
-            if enumerate {
+            if let Some(plan) = enumerate {
                 // Only the islands prediction left: a table of their own
                 // (offsets into the same values) when some were settled.
                 let enum_islands = if c.enum_table.len() == c.table.len() {
@@ -279,7 +278,7 @@ fn assemble_and_enumerate(
                     &values,
                     &c.enum_table,
                     max_groups,
-                    budget,
+                    plan,
                     encoder,
                     true,
                 )?;
@@ -440,7 +439,7 @@ pub fn assemble_on_gpu(
         .collect();
     for members in chunks {
         let c = pack_chunk(scenes, &prepared, &members, &|_, _| false);
-        let out = assemble_and_enumerate(ctx, &pipelines, &c, max_groups, 0, false)?;
+        let out = assemble_and_enumerate(ctx, &pipelines, &c, max_groups, None)?;
         let r = out.rows.unwrap_or_default();
         let v = out.values.unwrap_or_default();
         for (pos, &s) in c.scenes.iter().enumerate() {
@@ -507,7 +506,7 @@ pub fn solve_scenes_warm(
     let prepared = prepare(scenes)?;
     let pipelines = ctx.pipelines(settings.gpu_tolerances(ctx.precision()))?;
     let (max_bytes, max_groups) = limits_for(ctx, settings);
-    let budget = round_budget(ctx, settings);
+    let kernel_plan = KernelPlan::new(ctx, settings);
     let (chunks, alone) = plan(scenes, &prepared, max_bytes, ctx.precision().bytes());
     let mut report = BatchReport::new(ctx.adapter_info().name.clone(), ctx.precision());
     let mut max_velocity_deviation = 0.0f64;
@@ -545,7 +544,7 @@ pub fn solve_scenes_warm(
         let c = pack_chunk(scenes, &prepared, &members, &|s, k| {
             predicted[s][k].is_some()
         });
-        let out = assemble_and_enumerate(ctx, &pipelines, &c, max_groups, budget, true)?;
+        let out = assemble_and_enumerate(ctx, &pipelines, &c, max_groups, Some(&kernel_plan))?;
         report.gpu_seconds += t0.elapsed().as_secs_f64();
         report.chunks += 1;
         report.dispatches += out.dispatches;
