@@ -59,3 +59,45 @@ fn f32_plus_polish_is_as_accurate_as_f64_where_the_basis_is_conditioned() {
     // come mostly from near-parallel normals, which f32 cannot tell apart.
     eprintln!("worst f32 + polish error where cond ≤ 1e10: {worst:e}; repaired {repaired_total}");
 }
+
+/// The GPU's tolerances are relative too: scaling M and q by 1e±6 changes no
+/// status and no basis, in f64 (the exact twin) and in f32 (after validation).
+#[test]
+fn gpu_verdicts_do_not_depend_on_scale() {
+    use lcpbatch::gpu::{solve_lcp_batch, GpuSolveSettings};
+    use lcpbatch::stress::scaled;
+    for precision in [Precision::F64, Precision::F32] {
+        let mut o = GpuOptions::from_env().expect("GPU environment variables");
+        o.precision = precision;
+        let ctx = match GpuContext::new(&o) {
+            Ok(c) => c,
+            Err(e) if precision == Precision::F64 && e.to_string().contains("SHADER_F64") => {
+                eprintln!("no f64 on this adapter: {e}");
+                continue;
+            }
+            Err(e) => panic!("no GPU adapter ({e}): {INSTALL_HINT}"),
+        };
+        let lcps: Vec<_> = Family::ALL
+            .iter()
+            .flat_map(|&f| generate(f, 31, 40))
+            .map(|c| c.lcp)
+            .filter(|l| l.n() <= 16)
+            .collect();
+        let s = GpuSolveSettings::default();
+        let base = solve_lcp_batch(&ctx, &lcps, &s).expect("GPU solve");
+        for f in [1e-6, 1e6] {
+            let big: Vec<_> = lcps.iter().map(|l| scaled(l, f)).collect();
+            let r = solve_lcp_batch(&ctx, &big, &s).expect("GPU solve");
+            for (i, (a, b)) in base.islands.iter().zip(&r.islands).enumerate() {
+                assert_eq!(
+                    a.solution.status, b.solution.status,
+                    "{precision:?} case {i} scaled by {f:e}"
+                );
+                assert_eq!(
+                    a.solution.basis, b.solution.basis,
+                    "{precision:?} case {i} scaled by {f:e}"
+                );
+            }
+        }
+    }
+}
