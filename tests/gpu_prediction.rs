@@ -236,3 +236,58 @@ fn bench_warm_gpu_row_is_identical_to_cold() {
     );
     assert!(cold.unwrap().iter().all(|r| !r.solver.ends_with(", warm")));
 }
+
+/// Prediction on and off on a larger batch, one run (BENCHMARKS.md):
+/// islands uploaded, GPU seconds, end-to-end seconds; and the warm start
+/// from the cold bases.
+#[test]
+#[ignore = "measurement; run with --ignored --nocapture"]
+fn prediction_speedup() {
+    let count: usize = std::env::var("PREDICTION_BENCH_SCENES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(4000);
+    for precision in [Precision::F32, Precision::F64] {
+        let Some(ctx) = context(precision) else {
+            continue;
+        };
+        let lcps = lcps(count);
+        // Warm-up: pipelines.
+        solve_lcp_batch(&ctx, &lcps[..64], &GpuSolveSettings::default()).unwrap();
+        let run = |predict: bool, warm: Option<&[Option<u32>]>| {
+            let s = GpuSolveSettings {
+                predict,
+                ..Default::default()
+            };
+            let t = std::time::Instant::now();
+            let r = solve_lcp_batch_warm(&ctx, &lcps, warm, &s).unwrap();
+            (t.elapsed().as_secs_f64(), r)
+        };
+        let (t_off, off) = run(false, None);
+        let (t_on, on) = run(true, None);
+        let warm: Vec<Option<u32>> = on.islands.iter().map(|o| o.solution.basis).collect();
+        let (t_warm, hot) = run(true, Some(&warm));
+        for (name, t, r) in [
+            ("off", t_off, &off),
+            ("on", t_on, &on),
+            ("warm", t_warm, &hot),
+        ] {
+            let paths: Vec<String> = SolvePath::ALL
+                .iter()
+                .zip(r.report.paths)
+                .filter(|(_, c)| *c > 0)
+                .map(|(p, c)| format!("{} {c}", p.name()))
+                .collect();
+            println!(
+                "| {} | {name} | {} | {} | {:.3} | {:.3} | {:.3} | {} |",
+                precision.name(),
+                r.report.islands,
+                r.report.path_count(SolvePath::Enumerated),
+                r.report.prediction_seconds,
+                r.report.gpu_seconds,
+                t,
+                paths.join(", ")
+            );
+        }
+    }
+}
