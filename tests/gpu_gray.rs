@@ -217,8 +217,15 @@ fn gray_against_elimination_speed() {
             let refs: Vec<&Lcp> = lcps.iter().collect();
             let mut rate = Vec::new();
             for kernel in [EnumerationKernel::Elimination, EnumerationKernel::Gray] {
+                // GRAY_ROUND_BUDGET: the Gray kernel's round budget (before
+                // its 5/12 share), for the budget study.
+                let round_budget = std::env::var("GRAY_ROUND_BUDGET")
+                    .ok()
+                    .and_then(|v| v.parse().ok())
+                    .filter(|_| kernel == EnumerationKernel::Gray);
                 let s = GpuSolveSettings {
                     kernel,
+                    round_budget,
                     ..Default::default()
                 };
                 let b = UploadedBatch::new(&ctx, &refs, &s).unwrap();
