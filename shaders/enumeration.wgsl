@@ -21,7 +21,8 @@
 // 65,535 iterations in all, silently, so on software adapters the budget
 // stays below that; on hardware it only bounds the time of one dispatch.
 //
-// The host replaces the four lines marked HOST (scalar type, tolerances).
+// The host replaces the lines marked HOST (scalar type, tolerances, and for
+// a specialised build FIXED, FN, FNN).
 
 alias Scalar = f32; // HOST scalar
 const PIVOT_TOL: Scalar = 1e-6; // HOST pivot_tol
@@ -29,6 +30,18 @@ const FEASIBILITY_TOL: Scalar = 1e-4; // HOST feasibility_tol
 const RELAXED_TOL: Scalar = 1e-3; // HOST relaxed_tol
 
 const MAX_N: u32 = 16u;
+
+// Specialised build for one island size (islands of exactly FN contacts):
+// the host sets FIXED, FN and FNN = FN * FN. solve_basis_fixed then works on
+// the n x n system with the nonbasic rows and columns replaced by the
+// identity, so that every loop has a constant trip count and every private
+// array index is constant once unrolled (llvmpipe indexes private arrays
+// dynamically through memory). Its arithmetic is solve_basis' operation for
+// operation (the identity rows never pivot and add exact zeros), so its
+// answers are the same bit for bit.
+const FIXED: bool = false; // HOST fixed
+const FN: u32 = 1u; // HOST fixed_n
+const FNN: u32 = 1u; // HOST fixed_nn
 
 // One island: n contacts; M (n*n, row-major) then q (n) start at `data` in
 // `values`; z is written at `z` in `z_out`.
@@ -82,6 +95,10 @@ var<private> a: array<Scalar, 256>;
 var<private> x: array<Scalar, 16>;
 var<private> colmax: array<Scalar, 16>;
 var<private> idx: array<u32, 16>;
+
+var<private> fa: array<Scalar, FNN>;
+var<private> fx: array<Scalar, FN>;
+var<private> fcol: array<Scalar, FN>;
 
 // solve_basis' answer for a singular M_SS (infeasibilities are >= 0).
 const SINGULAR: Scalar = -1.0;
@@ -192,6 +209,127 @@ fn solve_basis(base: u32, n: u32, mask: u32) -> Scalar {
     return worst;
 }
 
+// solve_basis for islands of exactly FN contacts; z (0 off the basis) in fx.
+fn solve_basis_fixed(base: u32, mask: u32) -> Scalar {
+    let qbase = base + FNN;
+    for (var r = 0u; r < FN; r++) {
+        let br = ((mask >> r) & 1u) == 1u;
+        for (var c = 0u; c < FN; c++) {
+            let bc = ((mask >> c) & 1u) == 1u;
+            var v = Scalar(0.0);
+            if br && bc {
+                v = values[base + r * FN + c];
+            } else if r == c {
+                v = Scalar(1.0);
+            }
+            fa[r * FN + c] = v;
+        }
+        var q = Scalar(0.0);
+        if br {
+            q = -values[qbase + r];
+        }
+        fx[r] = q;
+    }
+    for (var c = 0u; c < FN; c++) {
+        var m = Scalar(0.0);
+        for (var r = 0u; r < FN; r++) {
+            m = max(m, abs(fa[r * FN + c]));
+        }
+        fcol[c] = m;
+    }
+    for (var c = 0u; c < FN; c++) {
+        var p = c;
+        var best = abs(fa[c * FN + c]);
+        for (var r = c + 1u; r < FN; r++) {
+            let v = abs(fa[r * FN + c]);
+            if v > best {
+                best = v;
+                p = r;
+            }
+        }
+        if !(best > PIVOT_TOL * fcol[c]) || best == Scalar(0.0) {
+            return SINGULAR;
+        }
+        for (var r = c + 1u; r < FN; r++) {
+            if r == p {
+                for (var j = 0u; j < FN; j++) {
+                    let t = fa[c * FN + j];
+                    fa[c * FN + j] = fa[r * FN + j];
+                    fa[r * FN + j] = t;
+                }
+                let t = fx[c];
+                fx[c] = fx[r];
+                fx[r] = t;
+            }
+        }
+        let inv = Scalar(1.0) / fa[c * FN + c];
+        for (var r = c + 1u; r < FN; r++) {
+            let f = fa[r * FN + c] * inv;
+            if f != Scalar(0.0) {
+                for (var j = c + 1u; j < FN; j++) {
+                    fa[r * FN + j] -= f * fa[c * FN + j];
+                }
+                fx[r] -= f * fx[c];
+            }
+        }
+    }
+    for (var cc = 0u; cc < FN; cc++) {
+        let c = FN - 1u - cc;
+        var s = fx[c];
+        for (var j = c + 1u; j < FN; j++) {
+            s -= fa[c * FN + j] * fx[j];
+        }
+        fx[c] = s / fa[c * FN + c];
+    }
+    var zmax = Scalar(0.0);
+    for (var r = 0u; r < FN; r++) {
+        if ((mask >> r) & 1u) == 1u {
+            zmax = max(zmax, abs(fx[r]));
+        }
+    }
+    var worst = Scalar(0.0);
+    for (var r = 0u; r < FN; r++) {
+        if ((mask >> r) & 1u) == 1u && fx[r] < Scalar(0.0) {
+            worst = max(worst, -fx[r] / zmax);
+        }
+    }
+    if worst > RELAXED_TOL {
+        return worst;
+    }
+    for (var i = 0u; i < FN; i++) {
+        if ((mask >> i) & 1u) == 1u {
+            continue;
+        }
+        let row = base + i * FN;
+        var w = values[qbase + i];
+        var scale = abs(w);
+        for (var j = 0u; j < FN; j++) {
+            if ((mask >> j) & 1u) == 1u {
+                let t = values[row + j] * fx[j];
+                w += t;
+                scale += abs(t);
+            }
+        }
+        if w < Scalar(0.0) {
+            worst = max(worst, -w / scale);
+            if worst > RELAXED_TOL {
+                return worst;
+            }
+        }
+    }
+    return worst;
+}
+
+fn write_z_fixed(at: u32, mask: u32) {
+    for (var i = 0u; i < FN; i++) {
+        var v = Scalar(0.0);
+        if ((mask >> i) & 1u) == 1u {
+            v = max(fx[i], Scalar(0.0));
+        }
+        z_out[at + i] = v;
+    }
+}
+
 // Writes z of the basis whose z_S is in x (clamped at 0 like the CPU's
 // solve_basis), zeros off the basis.
 fn write_z(at: u32, n: u32, k: u32) {
@@ -220,7 +358,10 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         return;
     }
     let island = islands[island_index];
-    let n = min(island.n, MAX_N);
+    var n = min(island.n, MAX_N);
+    if FIXED {
+        n = FN;
+    }
     let full = 1u << n;
     let worst = basis_cost(n, n);
     // The next basis: s, with k = popcount(s) basic variables.
@@ -233,11 +374,20 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         }
         spent += basis_cost(n, k);
         state.visited++;
-        let infeasibility = solve_basis(island.data, n, s);
+        var infeasibility: Scalar;
+        if FIXED {
+            infeasibility = solve_basis_fixed(island.data, s);
+        } else {
+            infeasibility = solve_basis(island.data, n, s);
+        }
         if infeasibility == SINGULAR {
             state.singular++;
         } else if infeasibility <= FEASIBILITY_TOL {
-            write_z(island.z, n, k);
+            if FIXED {
+                write_z_fixed(island.z, s);
+            } else {
+                write_z(island.z, n, k);
+            }
             state.status = 1u;
             break;
         } else if infeasibility <= RELAXED_TOL {
@@ -245,7 +395,11 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                 state.least = s;
                 state.has_least = 1u;
                 least_infeasibility[island_index] = infeasibility;
-                write_z(island.z, n, k);
+                if FIXED {
+                    write_z_fixed(island.z, s);
+                } else {
+                    write_z(island.z, n, k);
+                }
             }
         }
         if s == full - 1u {

@@ -206,17 +206,21 @@ fn gray_against_elimination_speed() {
         .and_then(|v| v.parse().ok())
         .unwrap_or(512);
     println!(
-        "| precision | n | islands | elimination islands/s | gray islands/s | gray / elimination |"
+        "| precision | n | islands | elimination islands/s | gray islands/s | gray / elimination | unrolled islands/s | unrolled / elimination |"
     );
     for precision in [Precision::F32, Precision::F64] {
         let Some(ctx) = context(precision) else {
             continue;
         };
-        for n in [6usize, 8, 10, 12] {
+        for n in [4usize, 6, 8, 10, 12] {
             let lcps = lcpbatch::bench::islands_of_size(n, per_n, 2026);
             let refs: Vec<&Lcp> = lcps.iter().collect();
             let mut rate = Vec::new();
-            for kernel in [EnumerationKernel::Elimination, EnumerationKernel::Gray] {
+            for kernel in [
+                EnumerationKernel::Elimination,
+                EnumerationKernel::Gray,
+                EnumerationKernel::Unrolled,
+            ] {
                 // GRAY_ROUND_BUDGET: the Gray kernel's round budget (before
                 // its 5/12 share), for the budget study.
                 let round_budget = std::env::var("GRAY_ROUND_BUDGET")
@@ -239,13 +243,44 @@ fn gray_against_elimination_speed() {
                 rate.push(lcps.len() as f64 / best);
             }
             println!(
-                "| {} | {n} | {} | {:.0} | {:.0} | {:.2} |",
+                "| {} | {n} | {} | {:.0} | {:.0} | {:.2} | {:.0} | {:.2} |",
                 precision.name(),
                 lcps.len(),
                 rate[0],
                 rate[1],
-                rate[1] / rate[0]
+                rate[1] / rate[0],
+                rate[2],
+                rate[2] / rate[0]
             );
         }
+    }
+}
+
+/// The specialised (unrolled) elimination kernel for n ≤ 8 gives the
+/// elimination kernel's raw output bit for bit (basis, status, counters, z).
+#[test]
+fn unrolled_kernel_equals_elimination_kernel() {
+    for precision in [Precision::F64, Precision::F32] {
+        let Some(ctx) = context(precision) else {
+            continue;
+        };
+        let lcps = islands(5, 300);
+        let refs: Vec<&Lcp> = lcps.iter().collect();
+        let run = |kernel| {
+            let s = GpuSolveSettings {
+                kernel,
+                ..Default::default()
+            };
+            enumerate_on_gpu(&ctx, &refs, &s).unwrap().0
+        };
+        let e = run(EnumerationKernel::Elimination);
+        let u = run(EnumerationKernel::Unrolled);
+        let mut small = 0;
+        for (i, (a, b)) in e.iter().zip(&u).enumerate() {
+            assert_eq!(a.result, b.result, "island {i} (n = {})", lcps[i].n());
+            assert_eq!(a.z, b.z, "island {i}");
+            small += (lcps[i].n() <= 8) as usize;
+        }
+        assert!(small > 100);
     }
 }

@@ -79,6 +79,11 @@ pub enum EnumerationKernel {
     /// `shaders/enumeration_gray.wgsl`: every basis in Gray-code order, one
     /// principal pivot each, candidates confirmed by elimination.
     Gray,
+    /// `shaders/enumeration.wgsl` specialised per island size (constant
+    /// loop bounds and private-array indices) for n ≤
+    /// [`super::kernels::FIXED_MAX_N`]; the elimination kernel above.
+    /// Same answers as Elimination, bit for bit.
+    Unrolled,
 }
 
 /// Gray-code refactorisation period of the GPU kernel (see BENCHMARKS.md).
@@ -95,6 +100,9 @@ impl EnumerationKernel {
                     EnumerationKernel::Elimination
                 }
             }
+            EnumerationKernel::Unrolled if n > super::kernels::FIXED_MAX_N => {
+                EnumerationKernel::Elimination
+            }
             k => k,
         }
     }
@@ -104,6 +112,7 @@ impl EnumerationKernel {
             EnumerationKernel::Auto => "auto",
             EnumerationKernel::Elimination => "elimination",
             EnumerationKernel::Gray => "gray",
+            EnumerationKernel::Unrolled => "unrolled",
         }
     }
 }
@@ -337,9 +346,10 @@ pub(crate) fn run_enumeration(
     let drift = ctx.storage_zeroed("drift", drift_size);
     let stage_of = |n: u32| match plan.kernel.for_n(n as usize) {
         EnumerationKernel::Gray => &pipelines.enumeration_gray,
+        EnumerationKernel::Unrolled => &pipelines.fixed(ctx)[n as usize - 1],
         _ => &pipelines.enumeration,
     };
-    let bind = |params: &wgpu::Buffer, gray: bool| {
+    let bind = |params: &wgpu::Buffer, stage: &super::kernels::Stage, gray: bool| {
         let mut entries = vec![
             wgpu::BindGroupEntry {
                 binding: 0,
@@ -376,14 +386,9 @@ pub(crate) fn run_enumeration(
                 resource: drift.as_entire_binding(),
             });
         }
-        let layout = if gray {
-            &pipelines.enumeration_gray.layout
-        } else {
-            &pipelines.enumeration.layout
-        };
         ctx.device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("enumeration"),
-            layout,
+            layout: &stage.layout,
             entries: &entries,
         })
     };
@@ -411,7 +416,7 @@ pub(crate) fn run_enumeration(
                 plan.budget
             },
             if gray { flags } else { 0 },
-            &|p| bind(p, gray),
+            &|p| bind(p, stage_of(n), gray),
         );
         buckets.push((n, r));
         first = last;

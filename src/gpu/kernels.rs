@@ -23,6 +23,8 @@ pub const ENUMERATION_GRAY_WGSL: &str = include_str!("../../shaders/enumeration_
 /// measured drift, so that every basis f32 elimination accepts is screened
 /// in; a principal pivot below 1e-3 of its row is replaced by a rebuild.
 pub const F32_SCREEN_TOL: f64 = 1e-3;
+/// Largest island size with a specialised (constant-size) elimination kernel.
+pub const FIXED_MAX_N: usize = 8;
 pub const F32_TABLEAU_PIVOT_TOL: f64 = 1e-3;
 pub const ASSEMBLY_WGSL: &str = include_str!("../../shaders/assembly.wgsl");
 pub const IMPULSES_WGSL: &str = include_str!("../../shaders/impulses.wgsl");
@@ -50,6 +52,12 @@ pub struct Pipelines {
     pub enumeration: Stage,
     /// `shaders/enumeration_gray.wgsl`: the enumeration in Gray-code order.
     pub enumeration_gray: Stage,
+    /// `shaders/enumeration.wgsl` specialised to islands of exactly n
+    /// contacts (FIXED), n = 1…[`FIXED_MAX_N`], at index n − 1; built on
+    /// first use ([`Pipelines::fixed`]: 16 more shader compilations that only
+    /// the Unrolled kernel needs).
+    enumeration_fixed: std::sync::OnceLock<Vec<Stage>>,
+    fixed_src: Vec<String>,
     pub assemble_contacts: Stage,
     pub assemble_islands: Stage,
     pub impulses: Stage,
@@ -172,6 +180,34 @@ fn stage(
 }
 
 impl Pipelines {
+    /// The specialised elimination stages, n = 1…[`FIXED_MAX_N`] at n − 1,
+    /// built on first use.
+    pub fn fixed(&self, ctx: &GpuContext) -> &[Stage] {
+        self.enumeration_fixed.get_or_init(|| {
+            let entries = [
+                uniform_entry(0),
+                storage_entry(1, true),
+                storage_entry(2, true),
+                storage_entry(3, false),
+                storage_entry(4, false),
+                storage_entry(5, false),
+                storage_entry(6, false),
+            ];
+            self.fixed_src
+                .iter()
+                .map(|src| {
+                    let m = ctx
+                        .device
+                        .create_shader_module(wgpu::ShaderModuleDescriptor {
+                            label: Some("enumeration.wgsl (fixed n)"),
+                            source: wgpu::ShaderSource::Wgsl(src.as_str().into()),
+                        });
+                    stage(&ctx.device, &m, "main", &entries)
+                })
+                .collect()
+        })
+    }
+
     fn build(ctx: &GpuContext, key: &PipelineKey) -> Result<Self, Error> {
         let d = &ctx.device;
         let pivot = f64::from_bits(key.pivot_tol_bits);
@@ -203,6 +239,13 @@ impl Pipelines {
             "tableau_pivot_tol",
             &format!("const TAB_PIVOT_TOL: Scalar = {};", literal(tab_pivot)),
         )?;
+        let fixed_src: Vec<String> = (1..=FIXED_MAX_N)
+            .map(|n| {
+                let s = replace_host_line(&enumeration_src, "fixed", "const FIXED: bool = true;")?;
+                let s = replace_host_line(&s, "fixed_n", &format!("const FN: u32 = {n}u;"))?;
+                replace_host_line(&s, "fixed_nn", &format!("const FNN: u32 = {}u;", n * n))
+            })
+            .collect::<Result<_, Error>>()?;
         let assembly_src = template(ASSEMBLY_WGSL, key.precision, None)?;
         let impulses_src = template(IMPULSES_WGSL, key.precision, None)?;
         ctx.scoped("building the pipelines", || {
@@ -246,6 +289,8 @@ impl Pipelines {
                         storage_entry(7, false),
                     ],
                 ),
+                enumeration_fixed: std::sync::OnceLock::new(),
+                fixed_src,
                 assemble_contacts: stage(
                     d,
                     &assembly,
