@@ -212,7 +212,11 @@ fn gray_against_elimination_speed() {
         let Some(ctx) = context(precision) else {
             continue;
         };
-        for n in [4usize, 6, 8, 10, 12] {
+        let sizes: Vec<usize> = std::env::var("GRAY_BENCH_SIZES")
+            .ok()
+            .map(|v| v.split(',').filter_map(|x| x.parse().ok()).collect())
+            .unwrap_or_else(|| vec![4, 6, 8, 10, 12]);
+        for n in sizes {
             let lcps = lcpbatch::bench::islands_of_size(n, per_n, 2026);
             let refs: Vec<&Lcp> = lcps.iter().collect();
             let mut rate = Vec::new();

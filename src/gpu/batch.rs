@@ -70,7 +70,8 @@ pub struct GpuSolveSettings {
 /// The enumeration shader.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum EnumerationKernel {
-    /// Per island size, whichever measured faster ([`EnumerationKernel::for_n`]).
+    /// Per island size, whichever measured faster ([`EnumerationKernel::for_n`]):
+    /// Unrolled up to [`UNROLLED_UP_TO_N`], Elimination above.
     #[default]
     Auto,
     /// `shaders/enumeration.wgsl`: bases by size, one elimination each, stop
@@ -96,6 +97,8 @@ impl EnumerationKernel {
             EnumerationKernel::Auto => {
                 if n >= GRAY_FROM_N {
                     EnumerationKernel::Gray
+                } else if n <= UNROLLED_UP_TO_N {
+                    EnumerationKernel::Unrolled
                 } else {
                     EnumerationKernel::Elimination
                 }
@@ -117,8 +120,14 @@ impl EnumerationKernel {
     }
 }
 
-/// Auto: the Gray-code kernel from this island size on (see BENCHMARKS.md).
+/// Auto: the Gray-code kernel from this island size on. Never: on lavapipe
+/// it measured 0.27–0.8× the elimination kernel's islands/s at every n from
+/// 1 to 12 (BENCHMARKS.md).
 pub const GRAY_FROM_N: usize = usize::MAX;
+/// Auto: the specialised straight-line elimination kernel up to this island
+/// size (on lavapipe 1.14–1.97× the looped kernel's islands/s at n = 1…7,
+/// 1.07–1.15× at n = 8: not clearly faster there; BENCHMARKS.md).
+pub const UNROLLED_UP_TO_N: usize = 7;
 
 impl Default for GpuSolveSettings {
     fn default() -> Self {
@@ -346,7 +355,7 @@ pub(crate) fn run_enumeration(
     let drift = ctx.storage_zeroed("drift", drift_size);
     let stage_of = |n: u32| match plan.kernel.for_n(n as usize) {
         EnumerationKernel::Gray => &pipelines.enumeration_gray,
-        EnumerationKernel::Unrolled => &pipelines.fixed(ctx)[n as usize - 1],
+        EnumerationKernel::Unrolled => pipelines.fixed(ctx, n as usize),
         _ => &pipelines.enumeration,
     };
     let bind = |params: &wgpu::Buffer, stage: &super::kernels::Stage, gray: bool| {

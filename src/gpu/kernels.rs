@@ -56,7 +56,7 @@ pub struct Pipelines {
     /// contacts (FIXED), n = 1…[`FIXED_MAX_N`], at index n − 1; built on
     /// first use ([`Pipelines::fixed`]: 16 more shader compilations that only
     /// the Unrolled kernel needs).
-    enumeration_fixed: std::sync::OnceLock<Vec<Stage>>,
+    enumeration_fixed: Vec<std::sync::OnceLock<Stage>>,
     fixed_src: Vec<String>,
     pub assemble_contacts: Stage,
     pub assemble_islands: Stage,
@@ -93,6 +93,158 @@ fn literal(v: f64) -> String {
     } else {
         format!("{s}.0")
     }
+}
+
+/// `shaders/enumeration.wgsl` (templated) specialised to islands of exactly
+/// n contacts: FIXED, FN, FNN set, and `solve_basis_fixed` replaced by
+/// [`straight_line_solver`] (no loops, every array index constant).
+pub fn fixed_source(enumeration_src: &str, n: usize) -> Result<String, Error> {
+    let s = replace_host_line(enumeration_src, "fixed", "const FIXED: bool = true;")?;
+    let s = replace_host_line(&s, "fixed_n", &format!("const FN: u32 = {n}u;"))?;
+    let s = replace_host_line(&s, "fixed_nn", &format!("const FNN: u32 = {}u;", n * n))?;
+    let start = s
+        .find("fn solve_basis_fixed(")
+        .ok_or_else(|| Error::Gpu("enumeration.wgsl has no solve_basis_fixed".into()))?;
+    let end = s[start..]
+        .find("\n}\n")
+        .map(|e| start + e + 3)
+        .ok_or_else(|| Error::Gpu("solve_basis_fixed has no end".into()))?;
+    Ok(format!(
+        "{}{}{}",
+        &s[..start],
+        straight_line_solver(n),
+        &s[end..]
+    ))
+}
+
+/// `solve_basis_fixed` for n contacts as straight-line WGSL: the loop
+/// version's operations in the same order on scalars named by their
+/// constant indices (row swaps and skipped updates become selects), so
+/// that nothing is indexed dynamically.
+pub fn straight_line_solver(n: usize) -> String {
+    use std::fmt::Write;
+    let mut o = String::new();
+    let w = &mut o;
+    let _ = writeln!(w, "fn solve_basis_fixed(base: u32, mask: u32) -> Scalar {{");
+    let _ = writeln!(w, "    let qbase = base + FNN;");
+    for r in 0..n {
+        let _ = writeln!(w, "    let b{r} = ((mask >> {r}u) & 1u) == 1u;");
+    }
+    for r in 0..n {
+        for c in 0..n {
+            let other = if r == c { "1.0" } else { "0.0" };
+            let cond = if r == c {
+                format!("b{r}")
+            } else {
+                format!("b{r} && b{c}")
+            };
+            let _ = writeln!(
+                w,
+                "    var a{r}_{c} = select(Scalar({other}), values[base + {}u], {cond});",
+                r * n + c
+            );
+        }
+        let _ = writeln!(
+            w,
+            "    var x{r} = select(Scalar(0.0), -values[qbase + {r}u], b{r});"
+        );
+    }
+    for c in 0..n {
+        let terms: Vec<String> = (0..n).map(|r| format!("abs(a{r}_{c})")).collect();
+        let mut e = "Scalar(0.0)".to_string();
+        for t in terms {
+            e = format!("max({e}, {t})");
+        }
+        let _ = writeln!(w, "    let cm{c} = {e};");
+    }
+    for c in 0..n {
+        let _ = writeln!(w, "    {{");
+        let _ = writeln!(w, "        var best = abs(a{c}_{c});");
+        let _ = writeln!(w, "        var p = {c}u;");
+        for r in c + 1..n {
+            let _ = writeln!(
+                w,
+                "        {{ let v = abs(a{r}_{c}); let g = v > best; p = select(p, {r}u, g); best = select(best, v, g); }}"
+            );
+        }
+        let _ = writeln!(
+            w,
+            "        if !(best > PIVOT_TOL * cm{c}) || best == Scalar(0.0) {{ return SINGULAR; }}"
+        );
+        for r in c + 1..n {
+            let _ = writeln!(w, "        {{ let sw = p == {r}u;");
+            for j in c..n {
+                let _ = writeln!(
+                    w,
+                    "            {{ let t = a{c}_{j}; a{c}_{j} = select(a{c}_{j}, a{r}_{j}, sw); a{r}_{j} = select(a{r}_{j}, t, sw); }}"
+                );
+            }
+            let _ = writeln!(
+                w,
+                "            {{ let t = x{c}; x{c} = select(x{c}, x{r}, sw); x{r} = select(x{r}, t, sw); }} }}"
+            );
+        }
+        let _ = writeln!(w, "        let inv = Scalar(1.0) / a{c}_{c};");
+        for r in c + 1..n {
+            let _ = writeln!(
+                w,
+                "        {{ let f = a{r}_{c} * inv; let nz = f != Scalar(0.0);"
+            );
+            for j in c + 1..n {
+                let _ = writeln!(
+                    w,
+                    "            a{r}_{j} = select(a{r}_{j}, a{r}_{j} - f * a{c}_{j}, nz);"
+                );
+            }
+            let _ = writeln!(
+                w,
+                "            x{r} = select(x{r}, x{r} - f * x{c}, nz); }}"
+            );
+        }
+        let _ = writeln!(w, "    }}");
+    }
+    for c in (0..n).rev() {
+        let _ = writeln!(w, "    {{ var s = x{c};");
+        for j in c + 1..n {
+            let _ = writeln!(w, "        s = s - a{c}_{j} * x{j};");
+        }
+        let _ = writeln!(w, "        x{c} = s / a{c}_{c}; }}");
+    }
+    for r in 0..n {
+        let _ = writeln!(w, "    fx[{r}] = x{r};");
+    }
+    let _ = writeln!(w, "    var zmax = Scalar(0.0);");
+    for r in 0..n {
+        let _ = writeln!(w, "    if b{r} {{ zmax = max(zmax, abs(x{r})); }}");
+    }
+    let _ = writeln!(w, "    var worst = Scalar(0.0);");
+    for r in 0..n {
+        let _ = writeln!(
+            w,
+            "    if b{r} && x{r} < Scalar(0.0) {{ worst = max(worst, -x{r} / zmax); }}"
+        );
+    }
+    let _ = writeln!(w, "    if worst > RELAXED_TOL {{ return worst; }}");
+    for i in 0..n {
+        let _ = writeln!(w, "    if !b{i} {{");
+        let _ = writeln!(w, "        var w = values[qbase + {i}u];");
+        let _ = writeln!(w, "        var scale = abs(w);");
+        for j in 0..n {
+            let _ = writeln!(
+                w,
+                "        if b{j} {{ let t = values[base + {}u] * x{j}; w += t; scale += abs(t); }}",
+                i * n + j
+            );
+        }
+        let _ = writeln!(
+            w,
+            "        if w < Scalar(0.0) {{ worst = max(worst, -w / scale); if worst > RELAXED_TOL {{ return worst; }} }}"
+        );
+        let _ = writeln!(w, "    }}");
+    }
+    let _ = writeln!(w, "    return worst;");
+    let _ = writeln!(w, "}}");
+    o
 }
 
 /// The shader source for `precision` (and tolerances where the shader has them).
@@ -180,10 +332,10 @@ fn stage(
 }
 
 impl Pipelines {
-    /// The specialised elimination stages, n = 1…[`FIXED_MAX_N`] at n − 1,
-    /// built on first use.
-    pub fn fixed(&self, ctx: &GpuContext) -> &[Stage] {
-        self.enumeration_fixed.get_or_init(|| {
+    /// The specialised elimination stage for islands of n contacts
+    /// (1 ≤ n ≤ [`FIXED_MAX_N`]), built on first use.
+    pub fn fixed(&self, ctx: &GpuContext, n: usize) -> &Stage {
+        self.enumeration_fixed[n - 1].get_or_init(|| {
             let entries = [
                 uniform_entry(0),
                 storage_entry(1, true),
@@ -193,18 +345,13 @@ impl Pipelines {
                 storage_entry(5, false),
                 storage_entry(6, false),
             ];
-            self.fixed_src
-                .iter()
-                .map(|src| {
-                    let m = ctx
-                        .device
-                        .create_shader_module(wgpu::ShaderModuleDescriptor {
-                            label: Some("enumeration.wgsl (fixed n)"),
-                            source: wgpu::ShaderSource::Wgsl(src.as_str().into()),
-                        });
-                    stage(&ctx.device, &m, "main", &entries)
-                })
-                .collect()
+            let m = ctx
+                .device
+                .create_shader_module(wgpu::ShaderModuleDescriptor {
+                    label: Some("enumeration.wgsl (fixed n)"),
+                    source: wgpu::ShaderSource::Wgsl(self.fixed_src[n - 1].as_str().into()),
+                });
+            stage(&ctx.device, &m, "main", &entries)
         })
     }
 
@@ -240,11 +387,7 @@ impl Pipelines {
             &format!("const TAB_PIVOT_TOL: Scalar = {};", literal(tab_pivot)),
         )?;
         let fixed_src: Vec<String> = (1..=FIXED_MAX_N)
-            .map(|n| {
-                let s = replace_host_line(&enumeration_src, "fixed", "const FIXED: bool = true;")?;
-                let s = replace_host_line(&s, "fixed_n", &format!("const FN: u32 = {n}u;"))?;
-                replace_host_line(&s, "fixed_nn", &format!("const FNN: u32 = {}u;", n * n))
-            })
+            .map(|n| fixed_source(&enumeration_src, n))
             .collect::<Result<_, Error>>()?;
         let assembly_src = template(ASSEMBLY_WGSL, key.precision, None)?;
         let impulses_src = template(IMPULSES_WGSL, key.precision, None)?;
@@ -289,7 +432,9 @@ impl Pipelines {
                         storage_entry(7, false),
                     ],
                 ),
-                enumeration_fixed: std::sync::OnceLock::new(),
+                enumeration_fixed: (0..FIXED_MAX_N)
+                    .map(|_| std::sync::OnceLock::new())
+                    .collect(),
                 fixed_src,
                 assemble_contacts: stage(
                     d,
