@@ -95,7 +95,7 @@ impl EnumerationKernel {
     pub fn for_n(self, n: usize) -> EnumerationKernel {
         match self {
             EnumerationKernel::Auto => {
-                if n >= GRAY_FROM_N {
+                if GRAY_FROM_N.is_some_and(|g| n >= g) {
                     EnumerationKernel::Gray
                 } else if n <= UNROLLED_UP_TO_N {
                     EnumerationKernel::Unrolled
@@ -120,10 +120,10 @@ impl EnumerationKernel {
     }
 }
 
-/// Auto: the Gray-code kernel from this island size on. Never: on lavapipe
+/// Auto: the Gray-code kernel from this island size on. None (never): on lavapipe
 /// it measured 0.27–0.8× the elimination kernel's islands/s at every n from
 /// 1 to 12 (BENCHMARKS.md).
-pub const GRAY_FROM_N: usize = usize::MAX;
+pub const GRAY_FROM_N: Option<usize> = None;
 /// Auto: the specialised straight-line elimination kernel up to this island
 /// size (on lavapipe 1.14–1.97× the looped kernel's islands/s at n = 1…7,
 /// 1.07–1.15× at n = 8: not clearly faster there; BENCHMARKS.md).
