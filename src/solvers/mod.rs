@@ -37,12 +37,28 @@ impl Solver {
 }
 
 /// Settings of every solver; only the chosen solver's part is read.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SolverSettings {
     pub solver: Solver,
     pub enumeration: EnumerationSettings,
     pub lemke: LemkeSettings,
     pub pgs: PgsSettings,
+    /// Enumeration only: settle what [`crate::prediction`] can before
+    /// enumerating (default true), as the GPU path does, so that both report
+    /// the same result and counters. Not used with `all_solutions`.
+    pub predict: bool,
+}
+
+impl Default for SolverSettings {
+    fn default() -> Self {
+        SolverSettings {
+            solver: Solver::default(),
+            enumeration: EnumerationSettings::default(),
+            lemke: LemkeSettings::default(),
+            pgs: PgsSettings::default(),
+            predict: true,
+        }
+    }
 }
 
 impl SolverSettings {
@@ -60,6 +76,13 @@ impl SolverSettings {
 /// of range); everything else is a status on the solution.
 pub fn solve(lcp: &Lcp, settings: &SolverSettings) -> Result<LcpSolution, crate::Error> {
     match settings.solver {
+        Solver::Enum if settings.predict && !settings.enumeration.all_solutions => {
+            settings.enumeration.validate()?;
+            match crate::prediction::predict(lcp, None, &settings.enumeration) {
+                Some((_, solution)) => Ok(solution),
+                None => enumerate(lcp, &settings.enumeration),
+            }
+        }
         Solver::Enum => enumerate(lcp, &settings.enumeration),
         Solver::Lemke => Ok(lemke(lcp, &settings.lemke)),
         Solver::Pgs => Ok(pgs(lcp, &settings.pgs)),
