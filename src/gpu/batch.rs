@@ -85,6 +85,12 @@ pub enum EnumerationKernel {
     /// [`super::kernels::FIXED_MAX_N`]; the elimination kernel above.
     /// Same answers as Elimination, bit for bit.
     Unrolled,
+    /// `shaders/enumeration_workgroup.wgsl`: one workgroup per island, its
+    /// 64 invocations solving the bases of one popcount in waves of 64
+    /// consecutive masks, stopping at the first wave with a valid basis
+    /// (the elimination kernel's order and choice: in f64 the same basis,
+    /// z and counters). Parallelism inside an island, for few large ones.
+    Workgroup,
 }
 
 /// Gray-code refactorisation period of the GPU kernel (see BENCHMARKS.md).
@@ -116,6 +122,7 @@ impl EnumerationKernel {
             EnumerationKernel::Elimination => "elimination",
             EnumerationKernel::Gray => "gray",
             EnumerationKernel::Unrolled => "unrolled",
+            EnumerationKernel::Workgroup => "workgroup",
         }
     }
 }
@@ -356,6 +363,7 @@ pub(crate) fn run_enumeration(
     let stage_of = |n: u32| match plan.kernel.for_n(n as usize) {
         EnumerationKernel::Gray => &pipelines.enumeration_gray,
         EnumerationKernel::Unrolled => pipelines.fixed(ctx, n as usize),
+        EnumerationKernel::Workgroup => &pipelines.enumeration_workgroup,
         _ => &pipelines.enumeration,
     };
     let bind = |params: &wgpu::Buffer, stage: &super::kernels::Stage, gray: bool| {
@@ -414,10 +422,17 @@ pub(crate) fn run_enumeration(
         while last < table.len() && table[last].n == n {
             last += 1;
         }
-        let gray = plan.kernel.for_n(n as usize) == EnumerationKernel::Gray;
-        let r = ctx.ranges(
+        let kernel = plan.kernel.for_n(n as usize);
+        let gray = kernel == EnumerationKernel::Gray;
+        let per_group = if kernel == EnumerationKernel::Workgroup {
+            1
+        } else {
+            super::kernels::WORKGROUP
+        };
+        let r = ctx.ranges_per_group(
             first as u32,
             (last - first) as u32,
+            per_group,
             max_groups,
             if gray {
                 gray_budget(plan.budget)

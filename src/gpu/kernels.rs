@@ -16,6 +16,8 @@ use crate::Error;
 
 pub const ENUMERATION_WGSL: &str = include_str!("../../shaders/enumeration.wgsl");
 pub const ENUMERATION_GRAY_WGSL: &str = include_str!("../../shaders/enumeration_gray.wgsl");
+pub const ENUMERATION_WORKGROUP_WGSL: &str =
+    include_str!("../../shaders/enumeration_workgroup.wgsl");
 
 /// Gray-code kernel tolerances in f32 (f64 uses the CPU twin's,
 /// [`crate::cpu::enumeration_gray::GraySettings`]): the screen is looser
@@ -52,6 +54,9 @@ pub struct Pipelines {
     pub enumeration: Stage,
     /// `shaders/enumeration_gray.wgsl`: the enumeration in Gray-code order.
     pub enumeration_gray: Stage,
+    /// `shaders/enumeration_workgroup.wgsl`: one workgroup per island, the
+    /// bases of each popcount in waves of [`WORKGROUP`] lanes.
+    pub enumeration_workgroup: Stage,
     /// `shaders/enumeration.wgsl` specialised to islands of exactly n
     /// contacts (FIXED), n = 1…[`FIXED_MAX_N`], at index n − 1; built on
     /// first use ([`Pipelines::fixed`]: 16 more shader compilations that only
@@ -386,6 +391,11 @@ impl Pipelines {
             "tableau_pivot_tol",
             &format!("const TAB_PIVOT_TOL: Scalar = {};", literal(tab_pivot)),
         )?;
+        let workgroup_src = template(
+            ENUMERATION_WORKGROUP_WGSL,
+            key.precision,
+            Some((pivot, feas, relaxed)),
+        )?;
         let fixed_src: Vec<String> = (1..=FIXED_MAX_N)
             .map(|n| fixed_source(&enumeration_src, n))
             .collect::<Result<_, Error>>()?;
@@ -400,6 +410,7 @@ impl Pipelines {
             };
             let enumeration = module("enumeration.wgsl", enumeration_src);
             let enumeration_gray = module("enumeration_gray.wgsl", gray_src);
+            let enumeration_workgroup = module("enumeration_workgroup.wgsl", workgroup_src);
             let assembly = module("assembly.wgsl", assembly_src);
             let impulses = module("impulses.wgsl", impulses_src);
             Pipelines {
@@ -430,6 +441,20 @@ impl Pipelines {
                         storage_entry(5, false),
                         storage_entry(6, false),
                         storage_entry(7, false),
+                    ],
+                ),
+                enumeration_workgroup: stage(
+                    d,
+                    &enumeration_workgroup,
+                    "main",
+                    &[
+                        uniform_entry(0),
+                        storage_entry(1, true),
+                        storage_entry(2, true),
+                        storage_entry(3, false),
+                        storage_entry(4, false),
+                        storage_entry(5, false),
+                        storage_entry(6, false),
                     ],
                 ),
                 enumeration_fixed: (0..FIXED_MAX_N)
@@ -554,7 +579,24 @@ impl GpuContext {
         flags: u32,
         bind: &dyn Fn(&wgpu::Buffer) -> wgpu::BindGroup,
     ) -> Vec<(wgpu::BindGroup, u32)> {
-        let per = max_groups.max(1) as u64 * WORKGROUP as u64;
+        self.ranges_per_group(first, count, WORKGROUP, max_groups, budget, flags, bind)
+    }
+
+    /// [`Self::ranges`] with `per_group` items per workgroup (1: the
+    /// workgroup kernel, one island per workgroup).
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn ranges_per_group(
+        &self,
+        first: u32,
+        count: u32,
+        per_group: u32,
+        max_groups: u32,
+        budget: u32,
+        flags: u32,
+        bind: &dyn Fn(&wgpu::Buffer) -> wgpu::BindGroup,
+    ) -> Vec<(wgpu::BindGroup, u32)> {
+        let per_group = per_group.max(1);
+        let per = max_groups.max(1) as u64 * per_group as u64;
         let mut out = Vec::new();
         let mut done = 0u64;
         while done < count as u64 {
@@ -573,7 +615,7 @@ impl GpuContext {
                     contents: bytemuck::bytes_of(&params),
                     usage: wgpu::BufferUsages::UNIFORM,
                 });
-            out.push((bind(&ub), this.div_ceil(WORKGROUP)));
+            out.push((bind(&ub), this.div_ceil(per_group)));
             done += this as u64;
         }
         out
