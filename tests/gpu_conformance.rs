@@ -16,18 +16,8 @@ use lcpbatch::{Lcp, Scene, SolverSettings, Status};
 
 /// A fresh context at `precision`. No adapter fails the test with the
 /// install hint: GPU tests never skip.
-fn context(precision: Precision) -> Option<GpuContext> {
-    let mut o = GpuOptions::from_env().expect("GPU environment variables");
-    o.precision = precision;
-    match GpuContext::new(&o) {
-        Ok(c) => Some(c),
-        Err(e) if precision == Precision::F64 && e.to_string().contains("SHADER_F64") => {
-            eprintln!("skipping the f64 run: {e}");
-            None
-        }
-        Err(e) => panic!("no GPU adapter: {e}"),
-    }
-}
+mod common;
+use common::gpu_context as context;
 
 /// Appends `s` to `world` as independent bodies and contacts.
 fn append(world: &mut Scene, s: Scene) {

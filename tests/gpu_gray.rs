@@ -10,22 +10,12 @@ use lcpbatch::cpu::enumeration_gray::{enumerate_gray, GraySettings};
 use lcpbatch::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};
 use lcpbatch::gpu::batch::{enumerate_on_gpu, EnumerationKernel};
 use lcpbatch::gpu::layout::{FOUND, NONE, RELAXED};
-use lcpbatch::gpu::{solve_lcp_batch, GpuContext, GpuOptions, GpuSolveSettings, Precision};
+use lcpbatch::gpu::{solve_lcp_batch, GpuSolveSettings, Precision};
 use lcpbatch::pipeline::build;
 use lcpbatch::{Lcp, Scene, Status};
 
-fn context(precision: Precision) -> Option<GpuContext> {
-    let mut o = GpuOptions::from_env().expect("GPU environment variables");
-    o.precision = precision;
-    match GpuContext::new(&o) {
-        Ok(c) => Some(c),
-        Err(e) if precision == Precision::F64 && e.to_string().contains("SHADER_F64") => {
-            eprintln!("skipping the f64 run: {e}");
-            None
-        }
-        Err(e) => panic!("no GPU adapter: {e}"),
-    }
-}
+mod common;
+use common::gpu_context as context;
 
 /// Fixed-seed physical islands n = 1…12 (mass ratios 1…1e4), resting boxes
 /// (singular bases), the seed chain, demo worlds, and non-symmetric seeds

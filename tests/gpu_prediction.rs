@@ -9,24 +9,13 @@ use lcpbatch::generate::{box_on_ground, demo_world, random_island, seed_chain, R
 use lcpbatch::gpu::batch::solve_lcp_batch_warm;
 use lcpbatch::gpu::scenes::solve_scenes_warm;
 use lcpbatch::gpu::{
-    solve_lcp_batch, solve_scenes, GpuBatchResult, GpuContext, GpuOptions, GpuSolveSettings,
-    Precision, SolvedOn,
+    solve_lcp_batch, solve_scenes, GpuBatchResult, GpuSolveSettings, Precision, SolvedOn,
 };
 use lcpbatch::prediction::SolvePath;
 use lcpbatch::{Lcp, Scene};
 
-fn context(precision: Precision) -> Option<GpuContext> {
-    let mut o = GpuOptions::from_env().expect("GPU environment variables");
-    o.precision = precision;
-    match GpuContext::new(&o) {
-        Ok(c) => Some(c),
-        Err(e) if precision == Precision::F64 && e.to_string().contains("SHADER_F64") => {
-            eprintln!("skipping the f64 run: {e}");
-            None
-        }
-        Err(e) => panic!("no GPU adapter: {e}"),
-    }
-}
+mod common;
+use common::gpu_context as context;
 
 fn scenes(count: usize) -> Vec<Scene> {
     let mut rng = Rng::new(0x9e3d_2026);

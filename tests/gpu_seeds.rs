@@ -1,25 +1,12 @@
 //! The seeds' worked examples through the GPU, in f64 and in f32.
 
-use lcpbatch::gpu::{
-    solve_lcp_batch, GpuContext, GpuOptions, GpuSolveSettings, Precision, SolvedOn,
-};
+use lcpbatch::gpu::{solve_lcp_batch, GpuSolveSettings, Precision, SolvedOn};
 use lcpbatch::{Lcp, Status};
 
 /// A fresh context at `precision`; a missing adapter fails the test with the
 /// install hint (GPU tests never skip).
-fn context(precision: Precision) -> Option<GpuContext> {
-    let mut o = GpuOptions::from_env().expect("GPU environment variables");
-    o.precision = precision;
-    match GpuContext::new(&o) {
-        Ok(c) => Some(c),
-        // f64 asked of an adapter without SHADER_F64: nothing to test at f64.
-        Err(e) if precision == Precision::F64 && e.to_string().contains("SHADER_F64") => {
-            eprintln!("skipping f64: {e}");
-            None
-        }
-        Err(e) => panic!("no GPU adapter: {e}"),
-    }
-}
+mod common;
+use common::gpu_context as context;
 
 fn seeds() -> Vec<(Lcp, Vec<f64>, Vec<f64>)> {
     vec![

@@ -9,22 +9,12 @@ use lcpbatch::generate::{box_on_ground, demo_world, random_island, seed_chain, R
 use lcpbatch::gpu::batch::enumerate_on_gpu;
 use lcpbatch::gpu::layout::{assemble_contacts_packed, pack_body, pack_contact, unpack_row};
 use lcpbatch::gpu::scenes::assemble_on_gpu;
-use lcpbatch::gpu::{GpuContext, GpuOptions, GpuSolveSettings, Precision};
+use lcpbatch::gpu::{GpuSolveSettings, Precision};
 use lcpbatch::pipeline::build;
 use lcpbatch::{Lcp, Scene};
 
-fn context(precision: Precision) -> Option<GpuContext> {
-    let mut o = GpuOptions::from_env().expect("GPU environment variables");
-    o.precision = precision;
-    match GpuContext::new(&o) {
-        Ok(c) => Some(c),
-        Err(e) if precision == Precision::F64 && e.to_string().contains("SHADER_F64") => {
-            eprintln!("skipping the f64 run: {e}");
-            None
-        }
-        Err(e) => panic!("no GPU adapter: {e}"),
-    }
-}
+mod common;
+use common::gpu_context as context;
 
 fn scenes() -> Vec<Scene> {
     let mut rng = Rng::new(7);

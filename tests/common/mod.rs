@@ -161,3 +161,21 @@ pub fn temp_dir(tag: &str) -> PathBuf {
     std::fs::create_dir_all(&dir).expect("create temp dir");
     dir
 }
+
+/// A GPU context at `precision` for the GPU tests: None (with a line on
+/// stderr) only when f64 is asked of an adapter without SHADER_F64; with no
+/// adapter at all the test fails, saying how to install one (GPU tests must
+/// never be skipped where an adapter can be installed).
+pub fn gpu_context(precision: lcpbatch::gpu::Precision) -> Option<lcpbatch::gpu::GpuContext> {
+    use lcpbatch::gpu::{GpuContext, GpuOptions, Precision, INSTALL_HINT};
+    let mut o = GpuOptions::from_env().expect("GPU environment variables");
+    o.precision = precision;
+    match GpuContext::new(&o) {
+        Ok(c) => Some(c),
+        Err(e) if precision == Precision::F64 && e.to_string().contains("SHADER_F64") => {
+            eprintln!("skipping the f64 run: {e}");
+            None
+        }
+        Err(e) => panic!("no GPU adapter ({e}): {INSTALL_HINT}"),
+    }
+}
