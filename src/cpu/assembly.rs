@@ -119,16 +119,26 @@ fn dot6(x: &[f64], y: &[f64]) -> f64 {
     x[..6].iter().zip(&y[..6]).map(|(a, b)| a * b).sum()
 }
 
-/// M_ij for contacts i and j: J_i · (M⁻¹ J_jᵀ) over the bodies they share.
-/// Sides are 0 (a, entries 0..6) and 1 (b, entries 6..12); a side whose body
-/// is static has a zero response and contributes nothing.
-pub fn matrix_entry(ci: &Contact, ri: &ContactRow, cj: &Contact, rj: &ContactRow) -> f64 {
-    let side_bodies = |c: &Contact| [Some(c.a), c.b];
-    let (bi, bj) = (side_bodies(ci), side_bodies(cj));
+/// The bodies an impulse at contact `c` can move: [a, b], a static body (or
+/// the world) as None. Static partners contribute no terms to M.
+pub fn dynamic_sides(scene: &Scene, c: &Contact) -> [Option<usize>; 2] {
+    let dynamic = |i: usize| (!scene.bodies[i].is_static()).then_some(i);
+    [dynamic(c.a), c.b.and_then(dynamic)]
+}
+
+/// M_ij for contacts i and j: J_i · (M⁻¹ J_jᵀ) over the dynamic bodies they
+/// share (`sides` from [`dynamic_sides`]). Side 0 is body a (entries 0..6),
+/// side 1 body b (entries 6..12).
+pub fn matrix_entry(
+    sides_i: [Option<usize>; 2],
+    ri: &ContactRow,
+    sides_j: [Option<usize>; 2],
+    rj: &ContactRow,
+) -> f64 {
     let mut m = 0.0;
     for si in 0..2 {
         for sj in 0..2 {
-            if bi[si].is_some() && bi[si] == bj[sj] {
+            if sides_i[si].is_some() && sides_i[si] == sides_j[sj] {
                 m += dot6(&ri.jacobian[6 * si..], &rj.response[6 * sj..]);
             }
         }
@@ -140,15 +150,15 @@ pub fn matrix_entry(ci: &Contact, ri: &ContactRow, cj: &Contact, rj: &ContactRow
 /// island's contacts in order, and q.
 pub fn assemble_island(scene: &Scene, rows: &[ContactRow], island: &Island) -> Lcp {
     let n = island.len();
+    let sides: Vec<[Option<usize>; 2]> = island
+        .contacts
+        .iter()
+        .map(|&c| dynamic_sides(scene, &scene.contacts[c]))
+        .collect();
     let mut m = vec![0.0; n * n];
     for (i, &ci) in island.contacts.iter().enumerate() {
         for (j, &cj) in island.contacts.iter().enumerate() {
-            m[i * n + j] = matrix_entry(
-                &scene.contacts[ci],
-                &rows[ci],
-                &scene.contacts[cj],
-                &rows[cj],
-            );
+            m[i * n + j] = matrix_entry(sides[i], &rows[ci], sides[j], &rows[cj]);
         }
     }
     let q = island.contacts.iter().map(|&c| rows[c].q).collect();
