@@ -7,7 +7,16 @@
 //! - `gpu_dispatch`: the enumeration rounds alone on a batch uploaded once;
 //! - `gpu_solve_validated`: `solve_lcp_batch`, i.e. the above plus the f64
 //!   validation (polish) of every island on the CPU;
-//! - `cpu_enumeration`: `cpu::enumeration::enumerate` island by island, one thread.
+//! - `cpu_enumeration`: `cpu::enumeration::enumerate` island by island, one thread;
+//! - `gpu_workgroup/<precision>/n=<n>`, n = 8, 10, 12, 14, 16
+//!   (LCPBATCH_WORKGROUP_SIZES, e.g. `9,11`): the same batch
+//!   of islands of exactly n contacts (`bench::islands_of_size`, seed 2026,
+//!   LCPBATCH_WORKGROUP_ISLANDS per n, default 128) through the per-island
+//!   elimination kernel and the workgroup kernel (one workgroup per island),
+//!   uploaded once, dispatches alone (every round), and through
+//!   `cpu::enumeration::enumerate` on one thread. Both precisions where the
+//!   adapter has f64; `cargo bench --bench gpu_path -- gpu_workgroup` runs
+//!   these alone.
 //!
 //! The device and the pipelines are made once, and one batch is solved
 //! before any timing: lavapipe compiles a shader at its first dispatch.
@@ -20,10 +29,11 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use lcpbatch::bench::islands_of_size;
 use lcpbatch::cpu::enumeration::{enumerate, EnumerationSettings};
 use lcpbatch::generate::{random_island, Rng};
-use lcpbatch::gpu::batch::{enumerate_on_gpu, UploadedBatch};
-use lcpbatch::gpu::{solve_lcp_batch, GpuContext, GpuOptions, GpuSolveSettings};
+use lcpbatch::gpu::batch::{enumerate_on_gpu, EnumerationKernel, UploadedBatch};
+use lcpbatch::gpu::{solve_lcp_batch, GpuContext, GpuOptions, GpuSolveSettings, Precision};
 use lcpbatch::pipeline::build;
 use lcpbatch::Lcp;
 
@@ -125,5 +135,64 @@ fn bench_gpu(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench_gpu);
+/// The workgroup kernel against the per-island elimination kernel and the
+/// CPU enumeration (one thread), per island size, on the same batch.
+fn bench_workgroup(c: &mut Criterion) {
+    let base = GpuOptions::from_env().expect("GPU environment variables");
+    let count: usize = std::env::var("LCPBATCH_WORKGROUP_ISLANDS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(128);
+    let sizes: Vec<usize> = std::env::var("LCPBATCH_WORKGROUP_SIZES")
+        .ok()
+        .map(|v| v.split(',').filter_map(|x| x.trim().parse().ok()).collect())
+        .filter(|v: &Vec<usize>| !v.is_empty())
+        .unwrap_or_else(|| vec![8, 10, 12, 14, 16]);
+    for precision in [Precision::F32, Precision::F64] {
+        let ctx = match GpuContext::new(&GpuOptions {
+            precision,
+            ..base.clone()
+        }) {
+            Ok(c) => c,
+            Err(e) if precision == Precision::F64 => {
+                eprintln!("f64 skipped: {e}");
+                continue;
+            }
+            Err(e) => panic!("no GPU adapter: {e}"),
+        };
+        let p = precision.name();
+        for &n in &sizes {
+            let lcps = islands_of_size(n, count, 2026);
+            let refs: Vec<&Lcp> = lcps.iter().collect();
+            let mut g = c.benchmark_group(format!("gpu_workgroup/{p}/n={n}"));
+            g.sample_size(10)
+                .warm_up_time(Duration::from_millis(300))
+                .measurement_time(Duration::from_secs(2))
+                .throughput(Throughput::Elements(lcps.len() as u64));
+            for kernel in [EnumerationKernel::Elimination, EnumerationKernel::Workgroup] {
+                let s = GpuSolveSettings {
+                    kernel,
+                    predict: false,
+                    ..Default::default()
+                };
+                let b = UploadedBatch::new(&ctx, &refs, &s).expect("upload");
+                b.dispatch().expect("warm-up dispatch");
+                g.bench_function(BenchmarkId::from_parameter(kernel.name()), |bench| {
+                    bench.iter(|| black_box(b.dispatch().expect("dispatch")))
+                });
+            }
+            let es = EnumerationSettings::default();
+            g.bench_function(BenchmarkId::from_parameter("cpu"), |bench| {
+                bench.iter(|| {
+                    for l in &lcps {
+                        black_box(enumerate(black_box(l), &es).expect("enumerable"));
+                    }
+                })
+            });
+            g.finish();
+        }
+    }
+}
+
+criterion_group!(benches, bench_gpu, bench_workgroup);
 criterion_main!(benches);

@@ -2,14 +2,12 @@
 //! one workgroup per island, the bases of each popcount in waves of 64)
 //! against the CPU twin (`cpu::enumeration::enumerate`) and the per-island
 //! elimination kernel: same status, basis, z and counters in f64; same
-//! validated answers in f32. The ignored test is the measurement behind
-//! BENCHMARKS.md (islands/s of both kernels and the CPU, n = 8…16).
-
-use std::time::Instant;
+//! validated answers in f32. Speeds: `cargo bench --bench gpu_path --
+//! gpu_workgroup` (BENCHMARKS.md).
 
 use lcpbatch::bench::islands_of_size;
 use lcpbatch::cpu::enumeration::{enumerate, EnumerationSettings};
-use lcpbatch::gpu::batch::{enumerate_on_gpu, EnumerationKernel, UploadedBatch};
+use lcpbatch::gpu::batch::{enumerate_on_gpu, EnumerationKernel};
 use lcpbatch::gpu::layout::{FOUND, NONE, RELAXED};
 use lcpbatch::gpu::{solve_lcp_batch, GpuContext, GpuOptions, GpuSolveSettings, Precision};
 use lcpbatch::stress::{generate, Family};
@@ -177,71 +175,6 @@ fn workgroup_kernel_batches_equal_elimination_batches_in_f32() {
         let scale = a.solution.z.iter().fold(1.0f64, |m, v| m.max(v.abs()));
         for (x, y) in a.solution.z.iter().zip(&b.solution.z) {
             assert!((x - y).abs() <= 1e-9 * scale, "island {i}");
-        }
-    }
-}
-
-/// Islands/s of the workgroup kernel, the elimination kernel and the CPU
-/// enumeration (one thread) on the same batch of islands of exactly n
-/// contacts, n = 8, 10, 12, 14, 16 (WORKGROUP_BENCH_SIZES), dispatches only
-/// (uploaded once, no readback), best of 3. `WORKGROUP_BENCH_ISLANDS`
-/// islands per n (default 200).
-#[test]
-#[ignore = "measurement (BENCHMARKS.md)"]
-fn workgroup_against_elimination_speed() {
-    let count: usize = std::env::var("WORKGROUP_BENCH_ISLANDS")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(200);
-    let sizes: Vec<usize> = std::env::var("WORKGROUP_BENCH_SIZES")
-        .ok()
-        .map(|v| v.split(',').filter_map(|x| x.trim().parse().ok()).collect())
-        .unwrap_or_else(|| vec![8, 10, 12, 14, 16]);
-    let precisions = std::env::var("WORKGROUP_BENCH_PRECISIONS").unwrap_or("f32,f64".into());
-    println!("| precision | n | islands | elimination islands/s | workgroup islands/s | workgroup / elimination | cpu (1 thread) islands/s | mean bases visited |");
-    println!("|---|---|---|---|---|---|---|---|");
-    for precision in [Precision::F32, Precision::F64] {
-        if !precisions.contains(precision.name()) {
-            continue;
-        }
-        let Some(ctx) = context(precision) else {
-            continue;
-        };
-        for &n in &sizes {
-            let lcps = islands_of_size(n, count, 2026);
-            let refs: Vec<&Lcp> = lcps.iter().collect();
-            let rate = |k: EnumerationKernel| {
-                let b = UploadedBatch::new(&ctx, &refs, &kernel(k)).unwrap();
-                b.dispatch().unwrap();
-                let mut best = f64::INFINITY;
-                for _ in 0..3 {
-                    let t = Instant::now();
-                    b.dispatch().unwrap();
-                    best = best.min(t.elapsed().as_secs_f64());
-                }
-                lcps.len() as f64 / best
-            };
-            let e = rate(EnumerationKernel::Elimination);
-            let w = rate(EnumerationKernel::Workgroup);
-            let es = EnumerationSettings::default();
-            let mut best = f64::INFINITY;
-            let mut visited = 0u64;
-            for _ in 0..3 {
-                let t = Instant::now();
-                visited = 0;
-                for l in &lcps {
-                    visited += enumerate(l, &es).unwrap().counters.bases_visited;
-                }
-                best = best.min(t.elapsed().as_secs_f64());
-            }
-            let c = lcps.len() as f64 / best;
-            println!(
-                "| {} | {n} | {} | {e:.0} | {w:.0} | {:.2} | {c:.0} | {:.1} |",
-                precision.name(),
-                lcps.len(),
-                w / e,
-                visited as f64 / lcps.len() as f64
-            );
         }
     }
 }

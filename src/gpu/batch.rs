@@ -71,7 +71,8 @@ pub struct GpuSolveSettings {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum EnumerationKernel {
     /// Per island size, whichever measured faster ([`EnumerationKernel::for_n`]):
-    /// Unrolled up to [`UNROLLED_UP_TO_N`], Elimination above.
+    /// Unrolled up to [`UNROLLED_UP_TO_N`], Workgroup from
+    /// [`WORKGROUP_FROM_N`], Elimination between.
     #[default]
     Auto,
     /// `shaders/enumeration.wgsl`: bases by size, one elimination each, stop
@@ -103,6 +104,8 @@ impl EnumerationKernel {
             EnumerationKernel::Auto => {
                 if GRAY_FROM_N.is_some_and(|g| n >= g) {
                     EnumerationKernel::Gray
+                } else if WORKGROUP_FROM_N.is_some_and(|w| n >= w) {
+                    EnumerationKernel::Workgroup
                 } else if n <= UNROLLED_UP_TO_N {
                     EnumerationKernel::Unrolled
                 } else {
@@ -135,6 +138,14 @@ pub const GRAY_FROM_N: Option<usize> = None;
 /// size (on lavapipe 1.14–1.97× the looped kernel's islands/s at n = 1…7,
 /// 1.07–1.15× at n = 8: not clearly faster there; BENCHMARKS.md).
 pub const UNROLLED_UP_TO_N: usize = 7;
+/// Auto: the workgroup kernel (one workgroup per island) from this island
+/// size on. On lavapipe (2 cores, 128 islands of one size per batch) it
+/// measured 0.70–0.75× the per-island elimination kernel's islands/s at
+/// n = 8, 0.94× (f64) and 1.39× (f32) at n = 9, and was faster in every
+/// run from n = 10 on: 1.02–1.10× at 10, 1.2–1.7× at 11…16 (BENCHMARKS.md).
+/// Its 64 lanes solve bases of one size side by side, where the per-island
+/// kernel's lanes diverge (each island stops at a different basis).
+pub const WORKGROUP_FROM_N: Option<usize> = Some(10);
 
 impl Default for GpuSolveSettings {
     fn default() -> Self {
