@@ -21,8 +21,8 @@ pub mod pipeline;
 pub mod prediction;
 pub mod scene;
 pub mod solvers;
-pub mod validation;
 pub mod stress;
+pub mod validation;
 
 pub use error::Error;
 pub use lcp::{Lcp, LcpSolution, Residuals, SolutionSet, Status};
