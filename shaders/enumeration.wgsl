@@ -21,15 +21,12 @@
 // 65,535 iterations in all, silently, so on software adapters the budget
 // stays below that; on hardware it only bounds the time of one dispatch.
 //
-// The host replaces the lines marked HOST (scalar type, tolerances, and for
-// a specialised build FIXED, FN, FNN).
-
-alias Scalar = f32; // HOST scalar
-const PIVOT_TOL: Scalar = 1e-6; // HOST pivot_tol
-const FEASIBILITY_TOL: Scalar = 1e-4; // HOST feasibility_tol
-const RELAXED_TOL: Scalar = 1e-3; // HOST relaxed_tol
-
-const MAX_N: u32 = 16u;
+// Shared with the other enumeration kernels: shaders/enumeration_basis.wgsl
+// (scalar type, tolerances, MAX_N, Island, bindings 0-6, the elimination
+// scratch a / x / colmax / idx, SINGULAR, solve_basis, write_z,
+// basis_cost), which the host prepends to this file before templating.
+// The host replaces the lines marked HOST (in the shared file: scalar type,
+// tolerances; here, for a specialised build: FIXED, FN, FNN).
 
 // Specialised build for one island size (islands of exactly FN contacts):
 // the host sets FIXED, FN and FNN = FN * FN. solve_basis_fixed then works on
@@ -42,15 +39,6 @@ const MAX_N: u32 = 16u;
 const FIXED: bool = false; // HOST fixed
 const FN: u32 = 1u; // HOST fixed_n
 const FNN: u32 = 1u; // HOST fixed_nn
-
-// One island: n contacts; M (n*n, row-major) then q (n) start at `data` in
-// `values`; z is written at `z` in `z_out`.
-struct Island {
-    n: u32,
-    data: u32,
-    z: u32,
-    _pad: u32,
-}
 
 // One dispatch covers islands first .. first + count of the island table
 // (one dispatch per island size n, split to stay under 65,535 workgroups);
@@ -80,134 +68,10 @@ struct BasisResult {
     _pad1: u32,
 }
 
-@group(0) @binding(0) var<uniform> params: Params;
-@group(0) @binding(1) var<storage, read> islands: array<Island>;
-@group(0) @binding(2) var<storage, read> values: array<Scalar>;
-@group(0) @binding(3) var<storage, read_write> results: array<BasisResult>;
-@group(0) @binding(4) var<storage, read_write> z_out: array<Scalar>;
-// Islands of each size n still in progress after this round.
-@group(0) @binding(5) var<storage, read_write> unfinished: array<atomic<u32>, 17>;
-// Infeasibility of each island's least infeasible basis so far.
-@group(0) @binding(6) var<storage, read_write> least_infeasibility: array<Scalar>;
-
-// Private scratch of one invocation: the principal system and its solution.
-var<private> a: array<Scalar, 256>;
-var<private> x: array<Scalar, 16>;
-var<private> colmax: array<Scalar, 16>;
-var<private> idx: array<u32, 16>;
-
+// Scratch of solve_basis_fixed (solve_basis' is in enumeration_basis.wgsl).
 var<private> fa: array<Scalar, FNN>;
 var<private> fx: array<Scalar, FN>;
 var<private> fcol: array<Scalar, FN>;
-
-// solve_basis' answer for a singular M_SS (infeasibilities are >= 0).
-const SINGULAR: Scalar = -1.0;
-
-// Solves basis `mask` of the island whose M starts at `base`; z_S in x[0..k].
-// Returns SINGULAR, or the basis' relative infeasibility (0: feasible; the
-// measure stops growing once it exceeds RELAXED_TOL, as on the CPU).
-fn solve_basis(base: u32, n: u32, mask: u32) -> Scalar {
-    var k = 0u;
-    for (var i = 0u; i < n; i++) {
-        if ((mask >> i) & 1u) == 1u {
-            idx[k] = i;
-            k++;
-        }
-    }
-    let qbase = base + n * n;
-    for (var r = 0u; r < k; r++) {
-        let row = base + idx[r] * n;
-        for (var c = 0u; c < k; c++) {
-            a[r * k + c] = values[row + idx[c]];
-        }
-        x[r] = -values[qbase + idx[r]];
-    }
-    // Column maxima of M_SS before elimination (the pivot scale).
-    for (var c = 0u; c < k; c++) {
-        var m = Scalar(0.0);
-        for (var r = 0u; r < k; r++) {
-            m = max(m, abs(a[r * k + c]));
-        }
-        colmax[c] = m;
-    }
-    for (var c = 0u; c < k; c++) {
-        var p = c;
-        var best = abs(a[c * k + c]);
-        for (var r = c + 1u; r < k; r++) {
-            let v = abs(a[r * k + c]);
-            if v > best {
-                best = v;
-                p = r;
-            }
-        }
-        if !(best > PIVOT_TOL * colmax[c]) || best == Scalar(0.0) {
-            return SINGULAR;
-        }
-        if p != c {
-            for (var j = 0u; j < k; j++) {
-                let t = a[c * k + j];
-                a[c * k + j] = a[p * k + j];
-                a[p * k + j] = t;
-            }
-            let t = x[c];
-            x[c] = x[p];
-            x[p] = t;
-        }
-        let inv = Scalar(1.0) / a[c * k + c];
-        for (var r = c + 1u; r < k; r++) {
-            let f = a[r * k + c] * inv;
-            if f != Scalar(0.0) {
-                for (var j = c + 1u; j < k; j++) {
-                    a[r * k + j] -= f * a[c * k + j];
-                }
-                x[r] -= f * x[c];
-            }
-        }
-    }
-    for (var cc = 0u; cc < k; cc++) {
-        let c = k - 1u - cc;
-        var s = x[c];
-        for (var j = c + 1u; j < k; j++) {
-            s -= a[c * k + j] * x[j];
-        }
-        x[c] = s / a[c * k + c];
-    }
-    // Infeasibility of z_S.
-    var zmax = Scalar(0.0);
-    for (var r = 0u; r < k; r++) {
-        zmax = max(zmax, abs(x[r]));
-    }
-    var worst = Scalar(0.0);
-    for (var r = 0u; r < k; r++) {
-        if x[r] < Scalar(0.0) {
-            worst = max(worst, -x[r] / zmax);
-        }
-    }
-    if worst > RELAXED_TOL {
-        return worst;
-    }
-    // Infeasibility of w off S.
-    for (var i = 0u; i < n; i++) {
-        if ((mask >> i) & 1u) == 1u {
-            continue;
-        }
-        let row = base + i * n;
-        var w = values[qbase + i];
-        var scale = abs(w);
-        for (var r = 0u; r < k; r++) {
-            let t = values[row + idx[r]] * x[r];
-            w += t;
-            scale += abs(t);
-        }
-        if w < Scalar(0.0) {
-            worst = max(worst, -w / scale);
-            if worst > RELAXED_TOL {
-                return worst;
-            }
-        }
-    }
-    return worst;
-}
 
 // solve_basis for islands of exactly FN contacts; z (0 off the basis) in fx.
 fn solve_basis_fixed(base: u32, mask: u32) -> Scalar {
@@ -328,23 +192,6 @@ fn write_z_fixed(at: u32, mask: u32) {
         }
         z_out[at + i] = v;
     }
-}
-
-// Writes z of the basis whose z_S is in x (clamped at 0 like the CPU's
-// solve_basis), zeros off the basis.
-fn write_z(at: u32, n: u32, k: u32) {
-    for (var i = 0u; i < n; i++) {
-        z_out[at + i] = Scalar(0.0);
-    }
-    for (var r = 0u; r < k; r++) {
-        z_out[at + idx[r]] = max(x[r], Scalar(0.0));
-    }
-}
-
-// Upper bound of the loop iterations `solve_basis` spends on a basis with k
-// basic variables out of n, plus one for the caller's loop.
-fn basis_cost(n: u32, k: u32) -> u32 {
-    return 9u + 4u * n + 8u * k + 5u * k * k + (k * k * k) / 3u + n * k;
 }
 
 @compute @workgroup_size(64)

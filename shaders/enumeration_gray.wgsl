@@ -16,7 +16,7 @@
 // has no tableau: singular to the pivot test, or a principal pivot order that
 // does not exist) and could beat the best basis so far by (popcount, mask)
 // is confirmed by `solve_basis`, enumeration.wgsl's elimination with its
-// tolerances. The best confirmed basis is chosen; when none is valid, the
+// tolerances (shared: shaders/enumeration_basis.wgsl). The best confirmed basis is chosen; when none is valid, the
 // least infeasible one within RELAXED_TOL (ties to the smaller key), as on
 // the CPU. Every basis is visited (counters: visited 2^n, singular among the
 // confirmed ones).
@@ -31,23 +31,15 @@
 // pivoted t is compared with the rebuilt one; the largest difference,
 // relative to the screen's scale of each entry, goes to `drift[island]`.
 //
-// The host replaces the lines marked HOST.
+// Shared with the other enumeration kernels: shaders/enumeration_basis.wgsl
+// (scalar type, PIVOT_TOL / FEASIBILITY_TOL / RELAXED_TOL, MAX_N, Island,
+// bindings 0-6, the elimination scratch a / x / colmax / idx, SINGULAR,
+// and enumeration.wgsl's elimination: solve_basis, write_z, basis_cost),
+// which the host prepends to this file before templating. The host
+// replaces the lines marked HOST (here: SCREEN_TOL, TAB_PIVOT_TOL).
 
-alias Scalar = f32; // HOST scalar
-const PIVOT_TOL: Scalar = 1e-6; // HOST pivot_tol
-const FEASIBILITY_TOL: Scalar = 1e-4; // HOST feasibility_tol
-const RELAXED_TOL: Scalar = 1e-3; // HOST relaxed_tol
 const SCREEN_TOL: Scalar = 1e-3; // HOST screen_tol
 const TAB_PIVOT_TOL: Scalar = 1e-3; // HOST tableau_pivot_tol
-
-const MAX_N: u32 = 16u;
-
-struct Island {
-    n: u32,
-    data: u32,
-    z: u32,
-    _pad: u32,
-}
 
 // flags: refactorisation period (bits 0..15), measure drift (bit 16).
 struct Params {
@@ -68,13 +60,7 @@ struct BasisResult {
     has_best: u32,
 }
 
-@group(0) @binding(0) var<uniform> params: Params;
-@group(0) @binding(1) var<storage, read> islands: array<Island>;
-@group(0) @binding(2) var<storage, read> values: array<Scalar>;
-@group(0) @binding(3) var<storage, read_write> results: array<BasisResult>;
-@group(0) @binding(4) var<storage, read_write> z_out: array<Scalar>;
-@group(0) @binding(5) var<storage, read_write> unfinished: array<atomic<u32>, 17>;
-@group(0) @binding(6) var<storage, read_write> least_infeasibility: array<Scalar>;
+// Bindings 0-6: enumeration_basis.wgsl.
 @group(0) @binding(7) var<storage, read_write> drift: array<Scalar>;
 
 // The tableau: T (row-major, stride n) and t.
@@ -82,13 +68,6 @@ var<private> tab: array<Scalar, 256>;
 var<private> rhs: array<Scalar, 16>;
 var<private> saved: array<Scalar, 16>;
 var<private> valid: bool;
-// Elimination scratch (as in enumeration.wgsl).
-var<private> a: array<Scalar, 256>;
-var<private> x: array<Scalar, 16>;
-var<private> colmax: array<Scalar, 16>;
-var<private> idx: array<u32, 16>;
-
-const SINGULAR: Scalar = -1.0;
 
 // Principal pivot on r. False (tableau invalid) when |T_rr| is too small.
 fn pivot(n: u32, r: u32) -> bool {
@@ -193,121 +172,6 @@ fn screen(n: u32, mask: u32, qmax: Scalar, mmax: Scalar) -> bool {
         }
     }
     return true;
-}
-
-// enumeration.wgsl's solve_basis: elimination with partial pivoting, then
-// the relative infeasibility (SINGULAR for a singular M_SS); z_S in x.
-fn solve_basis(base: u32, n: u32, mask: u32) -> Scalar {
-    var k = 0u;
-    for (var i = 0u; i < n; i++) {
-        if ((mask >> i) & 1u) == 1u {
-            idx[k] = i;
-            k++;
-        }
-    }
-    let qbase = base + n * n;
-    for (var r = 0u; r < k; r++) {
-        let row = base + idx[r] * n;
-        for (var c = 0u; c < k; c++) {
-            a[r * k + c] = values[row + idx[c]];
-        }
-        x[r] = -values[qbase + idx[r]];
-    }
-    for (var c = 0u; c < k; c++) {
-        var m = Scalar(0.0);
-        for (var r = 0u; r < k; r++) {
-            m = max(m, abs(a[r * k + c]));
-        }
-        colmax[c] = m;
-    }
-    for (var c = 0u; c < k; c++) {
-        var p = c;
-        var best = abs(a[c * k + c]);
-        for (var r = c + 1u; r < k; r++) {
-            let v = abs(a[r * k + c]);
-            if v > best {
-                best = v;
-                p = r;
-            }
-        }
-        if !(best > PIVOT_TOL * colmax[c]) || best == Scalar(0.0) {
-            return SINGULAR;
-        }
-        if p != c {
-            for (var j = 0u; j < k; j++) {
-                let t = a[c * k + j];
-                a[c * k + j] = a[p * k + j];
-                a[p * k + j] = t;
-            }
-            let t = x[c];
-            x[c] = x[p];
-            x[p] = t;
-        }
-        let inv = Scalar(1.0) / a[c * k + c];
-        for (var r = c + 1u; r < k; r++) {
-            let f = a[r * k + c] * inv;
-            if f != Scalar(0.0) {
-                for (var j = c + 1u; j < k; j++) {
-                    a[r * k + j] -= f * a[c * k + j];
-                }
-                x[r] -= f * x[c];
-            }
-        }
-    }
-    for (var cc = 0u; cc < k; cc++) {
-        let c = k - 1u - cc;
-        var s = x[c];
-        for (var j = c + 1u; j < k; j++) {
-            s -= a[c * k + j] * x[j];
-        }
-        x[c] = s / a[c * k + c];
-    }
-    var zmax = Scalar(0.0);
-    for (var r = 0u; r < k; r++) {
-        zmax = max(zmax, abs(x[r]));
-    }
-    var worst = Scalar(0.0);
-    for (var r = 0u; r < k; r++) {
-        if x[r] < Scalar(0.0) {
-            worst = max(worst, -x[r] / zmax);
-        }
-    }
-    if worst > RELAXED_TOL {
-        return worst;
-    }
-    for (var i = 0u; i < n; i++) {
-        if ((mask >> i) & 1u) == 1u {
-            continue;
-        }
-        let row = base + i * n;
-        var w = values[qbase + i];
-        var scale = abs(w);
-        for (var r = 0u; r < k; r++) {
-            let t = values[row + idx[r]] * x[r];
-            w += t;
-            scale += abs(t);
-        }
-        if w < Scalar(0.0) {
-            worst = max(worst, -w / scale);
-            if worst > RELAXED_TOL {
-                return worst;
-            }
-        }
-    }
-    return worst;
-}
-
-fn basis_cost(n: u32, k: u32) -> u32 {
-    return 9u + 4u * n + 8u * k + 5u * k * k + (k * k * k) / 3u + n * k;
-}
-
-fn write_z(at: u32, n: u32, k: u32) {
-    for (var i = 0u; i < n; i++) {
-        z_out[at + i] = Scalar(0.0);
-    }
-    for (var r = 0u; r < k; r++) {
-        z_out[at + idx[r]] = max(x[r], Scalar(0.0));
-    }
 }
 
 // (popcount, mask) order: does a come before b?

@@ -2,9 +2,10 @@
 // Same choice as shaders/enumeration.wgsl and its CPU twin
 // (src/cpu/enumeration.rs): bases by increasing popcount k, each popcount by
 // increasing mask, the first valid one chosen; when none is valid, the least
-// infeasible within RELAXED_TOL (the first on a tie). solve_basis below is
-// enumeration.wgsl's, operation for operation, so in f64 the answers (basis,
-// z, and the visited / singular counters) are the sequential kernel's.
+// infeasible within RELAXED_TOL (the first on a tie). solve_basis is
+// enumeration.wgsl's (one copy, in shaders/enumeration_basis.wgsl), so in
+// f64 the answers (basis, z, and the visited / singular counters) are the
+// sequential kernel's.
 //
 // Parallelism inside one island: the bases of level k, in increasing mask
 // order (colex rank 0 .. C(n, k) - 1), are visited in waves of WG = 64: in
@@ -28,22 +29,13 @@
 // Dispatch: workgroup params.first + workgroup_id.x handles that island
 // (one workgroup per island, not per 64 islands).
 //
-// The host replaces the lines marked HOST (scalar type, tolerances).
+// Shared with the other enumeration kernels: shaders/enumeration_basis.wgsl
+// (scalar type, tolerances, MAX_N, Island, bindings 0-6, the elimination
+// scratch a / x / colmax / idx, SINGULAR, solve_basis, write_z,
+// basis_cost), which the host prepends to this file before templating;
+// the host replaces the lines marked HOST there (scalar type, tolerances).
 
-alias Scalar = f32; // HOST scalar
-const PIVOT_TOL: Scalar = 1e-6; // HOST pivot_tol
-const FEASIBILITY_TOL: Scalar = 1e-4; // HOST feasibility_tol
-const RELAXED_TOL: Scalar = 1e-3; // HOST relaxed_tol
-
-const MAX_N: u32 = 16u;
 const WG: u32 = 64u;
-
-struct Island {
-    n: u32,
-    data: u32,
-    z: u32,
-    _pad: u32,
-}
 
 struct Params {
     first: u32,
@@ -65,19 +57,6 @@ struct BasisResult {
     _pad1: u32,
 }
 
-@group(0) @binding(0) var<uniform> params: Params;
-@group(0) @binding(1) var<storage, read> islands: array<Island>;
-@group(0) @binding(2) var<storage, read> values: array<Scalar>;
-@group(0) @binding(3) var<storage, read_write> results: array<BasisResult>;
-@group(0) @binding(4) var<storage, read_write> z_out: array<Scalar>;
-@group(0) @binding(5) var<storage, read_write> unfinished: array<atomic<u32>, 17>;
-@group(0) @binding(6) var<storage, read_write> least_infeasibility: array<Scalar>;
-
-var<private> a: array<Scalar, 256>;
-var<private> x: array<Scalar, 16>;
-var<private> colmax: array<Scalar, 16>;
-var<private> idx: array<u32, 16>;
-
 // binom[c * 17 + i] = C(c, i), c, i = 0..16.
 var<workgroup> binom: array<u32, 289>;
 // The workgroup's state (lane 0 writes, everyone reads after a barrier).
@@ -93,133 +72,6 @@ var<workgroup> wg_relaxed: array<atomic<u32>, 2>;
 var<workgroup> wg_inf: array<Scalar, 64>;
 // Singular bases of this round that count (before the chosen one).
 var<workgroup> wg_singular: atomic<u32>;
-
-// solve_basis' answer for a singular M_SS (infeasibilities are >= 0).
-const SINGULAR: Scalar = -1.0;
-
-// Solves basis `mask` of the island whose M starts at `base`; z_S in x[0..k].
-// Returns SINGULAR, or the basis' relative infeasibility (0: feasible; the
-// measure stops growing once it exceeds RELAXED_TOL, as on the CPU).
-fn solve_basis(base: u32, n: u32, mask: u32) -> Scalar {
-    var k = 0u;
-    for (var i = 0u; i < n; i++) {
-        if ((mask >> i) & 1u) == 1u {
-            idx[k] = i;
-            k++;
-        }
-    }
-    let qbase = base + n * n;
-    for (var r = 0u; r < k; r++) {
-        let row = base + idx[r] * n;
-        for (var c = 0u; c < k; c++) {
-            a[r * k + c] = values[row + idx[c]];
-        }
-        x[r] = -values[qbase + idx[r]];
-    }
-    // Column maxima of M_SS before elimination (the pivot scale).
-    for (var c = 0u; c < k; c++) {
-        var m = Scalar(0.0);
-        for (var r = 0u; r < k; r++) {
-            m = max(m, abs(a[r * k + c]));
-        }
-        colmax[c] = m;
-    }
-    for (var c = 0u; c < k; c++) {
-        var p = c;
-        var best = abs(a[c * k + c]);
-        for (var r = c + 1u; r < k; r++) {
-            let v = abs(a[r * k + c]);
-            if v > best {
-                best = v;
-                p = r;
-            }
-        }
-        if !(best > PIVOT_TOL * colmax[c]) || best == Scalar(0.0) {
-            return SINGULAR;
-        }
-        if p != c {
-            for (var j = 0u; j < k; j++) {
-                let t = a[c * k + j];
-                a[c * k + j] = a[p * k + j];
-                a[p * k + j] = t;
-            }
-            let t = x[c];
-            x[c] = x[p];
-            x[p] = t;
-        }
-        let inv = Scalar(1.0) / a[c * k + c];
-        for (var r = c + 1u; r < k; r++) {
-            let f = a[r * k + c] * inv;
-            if f != Scalar(0.0) {
-                for (var j = c + 1u; j < k; j++) {
-                    a[r * k + j] -= f * a[c * k + j];
-                }
-                x[r] -= f * x[c];
-            }
-        }
-    }
-    for (var cc = 0u; cc < k; cc++) {
-        let c = k - 1u - cc;
-        var s = x[c];
-        for (var j = c + 1u; j < k; j++) {
-            s -= a[c * k + j] * x[j];
-        }
-        x[c] = s / a[c * k + c];
-    }
-    // Infeasibility of z_S.
-    var zmax = Scalar(0.0);
-    for (var r = 0u; r < k; r++) {
-        zmax = max(zmax, abs(x[r]));
-    }
-    var worst = Scalar(0.0);
-    for (var r = 0u; r < k; r++) {
-        if x[r] < Scalar(0.0) {
-            worst = max(worst, -x[r] / zmax);
-        }
-    }
-    if worst > RELAXED_TOL {
-        return worst;
-    }
-    // Infeasibility of w off S.
-    for (var i = 0u; i < n; i++) {
-        if ((mask >> i) & 1u) == 1u {
-            continue;
-        }
-        let row = base + i * n;
-        var w = values[qbase + i];
-        var scale = abs(w);
-        for (var r = 0u; r < k; r++) {
-            let t = values[row + idx[r]] * x[r];
-            w += t;
-            scale += abs(t);
-        }
-        if w < Scalar(0.0) {
-            worst = max(worst, -w / scale);
-            if worst > RELAXED_TOL {
-                return worst;
-            }
-        }
-    }
-    return worst;
-}
-
-// Writes z of the basis whose z_S is in x (clamped at 0 like the CPU's
-// solve_basis), zeros off the basis.
-fn write_z(at: u32, n: u32, k: u32) {
-    for (var i = 0u; i < n; i++) {
-        z_out[at + i] = Scalar(0.0);
-    }
-    for (var r = 0u; r < k; r++) {
-        z_out[at + idx[r]] = max(x[r], Scalar(0.0));
-    }
-}
-
-// Upper bound of the loop iterations `solve_basis` spends on a basis with k
-// basic variables out of n, plus one for the caller's loop.
-fn basis_cost(n: u32, k: u32) -> u32 {
-    return 9u + 4u * n + 8u * k + 5u * k * k + (k * k * k) / 3u + n * k;
-}
-
 
 // The mask of rank `r` among the masks of n bits with k set, in increasing
 // order (colex: rank = sum of C(c_i, i) over the set bits c_1 < ... < c_k).

@@ -1,10 +1,14 @@
 //! Shaders, bind group layouts and pipelines, and the buffer plumbing every
 //! stage shares (upload, dispatch in ranges, readback).
 //!
-//! The WGSL files are valid on their own with `Scalar = f32`; the host
-//! templates them by replacing the lines marked `// HOST ...` (scalar type
-//! and tolerances) when it builds a pipeline. Pipelines are built once per
-//! (precision, tolerances) and cached in the [`super::GpuContext`].
+//! The WGSL files are valid on their own with `Scalar = f32`, except the
+//! three enumeration kernels, whose common part (scalar type, tolerances,
+//! bindings 0-6, the elimination `solve_basis`) lives once in
+//! `shaders/enumeration_basis.wgsl` and is prepended to each of them
+//! ([`enumeration_source`]). The host templates the sources by replacing the
+//! lines marked `// HOST ...` (scalar type and tolerances) when it builds a
+//! pipeline. Pipelines are built once per (precision, tolerances) and cached
+//! in the [`super::GpuContext`].
 
 use std::sync::Arc;
 
@@ -14,6 +18,9 @@ use super::layout::Params;
 use super::{GpuContext, Precision};
 use crate::Error;
 
+/// The part every enumeration kernel shares (WGSL has no include):
+/// prepended to each kernel's source by [`enumeration_source`].
+pub const ENUMERATION_BASIS_WGSL: &str = include_str!("../../shaders/enumeration_basis.wgsl");
 pub const ENUMERATION_WGSL: &str = include_str!("../../shaders/enumeration.wgsl");
 pub const ENUMERATION_GRAY_WGSL: &str = include_str!("../../shaders/enumeration_gray.wgsl");
 pub const ENUMERATION_WORKGROUP_WGSL: &str =
@@ -98,6 +105,12 @@ fn literal(v: f64) -> String {
     } else {
         format!("{s}.0")
     }
+}
+
+/// An enumeration kernel's complete source (before templating):
+/// `shaders/enumeration_basis.wgsl`, then the kernel's own file.
+pub fn enumeration_source(kernel: &str) -> String {
+    format!("{ENUMERATION_BASIS_WGSL}\n{kernel}")
 }
 
 /// `shaders/enumeration.wgsl` (templated) specialised to islands of exactly
@@ -366,7 +379,7 @@ impl Pipelines {
         let feas = f64::from_bits(key.feasibility_tol_bits);
         let relaxed = f64::from_bits(key.relaxed_tol_bits);
         let enumeration_src = template(
-            ENUMERATION_WGSL,
+            &enumeration_source(ENUMERATION_WGSL),
             key.precision,
             Some((pivot, feas, relaxed)),
         )?;
@@ -377,7 +390,7 @@ impl Pipelines {
             (F32_SCREEN_TOL, F32_TABLEAU_PIVOT_TOL)
         };
         let gray_src = template(
-            ENUMERATION_GRAY_WGSL,
+            &enumeration_source(ENUMERATION_GRAY_WGSL),
             key.precision,
             Some((pivot, feas, relaxed)),
         )?;
@@ -392,7 +405,7 @@ impl Pipelines {
             &format!("const TAB_PIVOT_TOL: Scalar = {};", literal(tab_pivot)),
         )?;
         let workgroup_src = template(
-            ENUMERATION_WORKGROUP_WGSL,
+            &enumeration_source(ENUMERATION_WORKGROUP_WGSL),
             key.precision,
             Some((pivot, feas, relaxed)),
         )?;
@@ -703,7 +716,12 @@ mod tests {
 
     #[test]
     fn templating_replaces_the_marked_lines_exactly() {
-        let s = template(ENUMERATION_WGSL, Precision::F64, Some((1e-13, 1e-12, 1e-9))).unwrap();
+        let s = template(
+            &enumeration_source(ENUMERATION_WGSL),
+            Precision::F64,
+            Some((1e-13, 1e-12, 1e-9)),
+        )
+        .unwrap();
         assert!(s.contains("alias Scalar = f64; // HOST scalar"));
         assert!(s.contains("const PIVOT_TOL: Scalar = 1e-13; // HOST pivot_tol"));
         assert!(s.contains("const RELAXED_TOL: Scalar = 1e-9; // HOST relaxed_tol"));
