@@ -421,23 +421,38 @@ pub fn plot_curves(
     root.present().map_err(|e| plot_err(e.to_string()))
 }
 
-/// Seconds per island of the CPU enumerations on random islands of exactly
-/// n contacts, n = 1…`max_n`, `count` islands each.
+/// Seconds per island of the CPU enumerations (bare, and the CPU batch path
+/// with prediction on one thread) on random islands of exactly n contacts,
+/// n = 1…`max_n`, `count` islands each.
 pub fn cpu_time_vs_n(max_n: usize, count: usize, seed: u64) -> Vec<Curve> {
     let es = EnumerationSettings::default();
     let gs = GraySettings::default();
+    let bs = CpuBatchSettings {
+        threads: 1,
+        ..Default::default()
+    };
     let mut elim = Vec::new();
     let mut gray = Vec::new();
+    let mut batch = Vec::new();
     for n in 1..=max_n {
         let lcps = islands_of_size(n, count, seed);
         let (t, _) = timed(&lcps, |l| enumerate(l, &es).expect("n ≤ 20"));
         elim.push((n as f64, t / lcps.len() as f64));
         let (t, _) = timed(&lcps, |l| enumerate_gray(l, &gs).expect("n ≤ 20"));
         gray.push((n as f64, t / lcps.len() as f64));
+        // The CPU path as the library runs it, with prediction, like the GPU path.
+        let (t, _) = timed(&lcps, |l| {
+            crate::cpu::batch::solve_island(l, None, &bs).solution
+        });
+        batch.push((n as f64, t / lcps.len() as f64));
     }
     vec![
         ("cpu enum (elimination)".into(), elim),
         ("cpu enum (gray code)".into(), gray),
+        (
+            "cpu batch, 1 thread (prediction + enumeration)".into(),
+            batch,
+        ),
     ]
 }
 
