@@ -31,9 +31,13 @@ struct Params {
     _pad1: u32,
 }
 
+// flags: bit 0 (DYNAMIC_A) a is dynamic, bit 1 (DYNAMIC_B) b is dynamic
+// (not static; never set for the world).
 struct ContactBodies {
     a: u32,
     b: u32,
+    flags: u32,
+    _pad: u32,
 }
 
 struct Island {
@@ -160,8 +164,10 @@ fn dot6(row_i: u32, side_i: u32, row_j: u32, side_j: u32) -> Scalar {
     return s;
 }
 
-// M_ij over the bodies contacts ci and cj share (static bodies have a zero
-// response and add nothing; the world is no body).
+// M_ij over the dynamic bodies contacts ci and cj share: static partners
+// (and the world) contribute no terms, as in the twin's dynamic_sides. A
+// side of ci that is dynamic is a body, and the same body in cj is dynamic
+// there too.
 fn matrix_entry(ci: u32, cj: u32) -> Scalar {
     let bi = contact_bodies[ci];
     let bj = contact_bodies[cj];
@@ -169,8 +175,11 @@ fn matrix_entry(ci: u32, cj: u32) -> Scalar {
     let side_j = array<u32, 2>(bj.a, bj.b);
     var m = Scalar(0.0);
     for (var si = 0u; si < 2u; si++) {
+        if ((bi.flags >> si) & 1u) == 0u {
+            continue;
+        }
         for (var sj = 0u; sj < 2u; sj++) {
-            if side_i[si] != NO_BODY && side_i[si] == side_j[sj] {
+            if side_i[si] == side_j[sj] {
                 m += dot6(ci, si, cj, sj);
             }
         }

@@ -7,11 +7,14 @@ use lcpbatch::cpu::assembly::ContactRow;
 use lcpbatch::cpu::enumeration::{enumerate, EnumerationSettings};
 use lcpbatch::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};
 use lcpbatch::gpu::batch::enumerate_on_gpu;
-use lcpbatch::gpu::layout::{assemble_contacts_packed, pack_body, pack_contact, unpack_row};
+use lcpbatch::gpu::layout::{
+    assemble_contacts_packed, pack_body, pack_contact, unpack_row, DYNAMIC_A, DYNAMIC_B,
+};
 use lcpbatch::gpu::scenes::assemble_on_gpu;
 use lcpbatch::gpu::{GpuSolveSettings, Precision};
+use lcpbatch::islands::find_islands;
 use lcpbatch::pipeline::build;
-use lcpbatch::{Lcp, Scene};
+use lcpbatch::{Body, Contact, Lcp, Scene};
 
 mod common;
 use common::gpu_context as context;
@@ -63,7 +66,7 @@ fn assembly(precision: Precision, tol: f64) {
         scene
             .contacts
             .iter()
-            .for_each(|c| pack_contact(c, 0, &mut ids, &mut contacts));
+            .for_each(|c| pack_contact(c, &scene.bodies, 0, &mut ids, &mut contacts));
         let twin = assemble_contacts_packed(&bodies, &ids, &contacts);
         for (k, (g, c)) in gpu.rows[s].iter().zip(&rows).enumerate() {
             let t = unpack_row(&twin[k * 36..(k + 1) * 36]);
@@ -122,6 +125,107 @@ fn assembly_matches_cpu_twin_f32() {
 #[test]
 fn assembly_matches_cpu_twin_f64() {
     assembly(Precision::F64, 1e-12);
+}
+
+/// A moving platform (static: inv_mass 0, zero inertia, but a velocity and
+/// a spin, like a kinematic body) under two boxes, four contacts each; one
+/// contact per box names the platform as body a (normal −y), the others as
+/// body b. The platform is static, so it joins no islands (two islands) and
+/// its side is flagged static in the packed records; the GPU's M and q (M
+/// skips the static sides, q keeps the platform's velocity) equal the CPU's.
+#[test]
+fn moving_static_platform_matches_cpu_f64() {
+    let Some(ctx) = context(Precision::F64) else {
+        return;
+    };
+    let mut platform = Body::fixed([0.0, -0.5, 0.0]);
+    platform.velocity = [0.3, 0.8, -0.2];
+    platform.angular_velocity = [0.1, 0.4, -0.3];
+    assert!(platform.is_static());
+    let mut bodies = vec![platform];
+    let mut contacts = Vec::new();
+    for (k, x) in [-2.0, 2.0].into_iter().enumerate() {
+        let mut b = Body::new(
+            1.0 / (1.0 + k as f64),
+            [6.0, 5.0 + k as f64, 4.0],
+            [x, 0.5, 0.1],
+        );
+        b.velocity = [0.2 * x, -1.0, 0.1];
+        b.angular_velocity = [0.5, -0.2, 0.3 * x];
+        let body = bodies.len();
+        bodies.push(b);
+        for (i, (dx, dz)) in [(-0.5, -0.5), (0.5, -0.5), (-0.5, 0.5), (0.5, 0.5)]
+            .into_iter()
+            .enumerate()
+        {
+            let point = [x + dx, 0.0, 0.1 + dz];
+            contacts.push(if i == 3 {
+                Contact {
+                    a: 0,
+                    b: Some(body),
+                    point,
+                    normal: [0.0, -1.0, 0.0],
+                    restitution: 0.25,
+                }
+            } else {
+                Contact {
+                    a: body,
+                    b: Some(0),
+                    point,
+                    normal: [0.0, 1.0, 0.0],
+                    restitution: 0.5,
+                }
+            });
+        }
+    }
+    let scene = Scene { bodies, contacts };
+
+    let islands = find_islands(&scene);
+    assert_eq!(islands.len(), 2, "the platform joins no islands");
+    assert_eq!(islands[0].contacts, vec![0, 1, 2, 3]);
+    assert_eq!(islands[1].contacts, vec![4, 5, 6, 7]);
+
+    let (mut packed, mut ids, mut packed_contacts) = (Vec::new(), Vec::new(), Vec::new());
+    scene.bodies.iter().for_each(|b| pack_body(b, &mut packed));
+    for c in &scene.contacts {
+        pack_contact(c, &scene.bodies, 0, &mut ids, &mut packed_contacts);
+    }
+    for (k, id) in ids.iter().enumerate() {
+        let expected = if k % 4 == 3 { DYNAMIC_B } else { DYNAMIC_A };
+        assert_eq!(id.flags, expected, "contact {k}: dynamic sides");
+    }
+
+    let (_, rows, lcps) = build(&scene, "platform").unwrap();
+    assert_eq!(lcps.len(), 2);
+    // The platform's motion reaches q: at rest it would give other values.
+    let mut at_rest = scene.clone();
+    at_rest.bodies[0].velocity = [0.0; 3];
+    at_rest.bodies[0].angular_velocity = [0.0; 3];
+    let (_, rest_rows, _) = build(&at_rest, "platform at rest").unwrap();
+    for (k, (r, r0)) in rows.iter().zip(&rest_rows).enumerate() {
+        assert!((r.v_rel - r0.v_rel).abs() > 1e-3, "contact {k}: v_rel");
+    }
+
+    let gpu = assemble_on_gpu(
+        &ctx,
+        std::slice::from_ref(&scene),
+        &GpuSolveSettings::default(),
+    )
+    .unwrap();
+    for (k, (g, c)) in gpu.rows[0].iter().zip(&rows).enumerate() {
+        for ((name, gv), (_, cv)) in row_parts(g).into_iter().zip(row_parts(c)) {
+            let scale = cv.iter().fold(1e-300f64, |m, v| m.max(v.abs()));
+            close(&gv, &cv, scale, 1e-12).unwrap_or_else(|e| panic!("contact {k}: {name}: {e}"));
+        }
+    }
+    for (k, (g, c)) in gpu.lcps[0].iter().zip(&lcps).enumerate() {
+        let g = g.as_ref().expect("n = 4");
+        assert_eq!((g.m.len(), g.q.len()), (16, 4), "island {k}");
+        let scale = c.m.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        close(&g.m, &c.m, scale, 1e-12).unwrap_or_else(|e| panic!("island {k}: M: {e}"));
+        let qs = c.q.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        close(&g.q, &c.q, qs, 1e-12).unwrap_or_else(|e| panic!("island {k}: q: {e}"));
+    }
 }
 
 /// Enumeration alone, on the CPU's f64 LCPs: in f64 the same basis and the

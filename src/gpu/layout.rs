@@ -122,13 +122,24 @@ pub struct Params {
 }
 
 /// WGSL `ContactBodies`: the two bodies of a contact (b = [`NO_BODY`] for the
-/// world), as indices into the packed bodies.
+/// world), as indices into the packed bodies, and which of them are dynamic
+/// (16 bytes).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Pod, Zeroable)]
 pub struct ContactBodies {
     pub a: u32,
     pub b: u32,
+    /// [`DYNAMIC_A`] | [`DYNAMIC_B`]: the sides whose body is not static
+    /// ([`Body::is_static`]); the island stage skips the others, as
+    /// [`crate::cpu::assembly::dynamic_sides`] does. Never set for the world.
+    pub flags: u32,
+    pub _pad: u32,
 }
+
+/// [`ContactBodies::flags`]: body a is dynamic.
+pub const DYNAMIC_A: u32 = 1;
+/// [`ContactBodies::flags`]: body b is dynamic.
+pub const DYNAMIC_B: u32 = 2;
 
 /// WGSL `Slot`: one row of one island (assembly's island stage runs one
 /// invocation per slot): the island and the contact of that row.
@@ -191,16 +202,28 @@ pub fn unpack_body(v: &[f64]) -> Body {
 }
 
 /// Packs one contact: its body indices (offset by `first_body`, the scene's
-/// first body in the packed buffer) and its scalars.
+/// first body in the packed buffer), which of them are dynamic (`bodies`:
+/// the scene's bodies, indexed by the contact) and its scalars.
 pub fn pack_contact(
     c: &Contact,
+    bodies: &[Body],
     first_body: u32,
     ids: &mut Vec<ContactBodies>,
     out: &mut Vec<f64>,
 ) {
+    let dynamic = |i: usize| !bodies[i].is_static();
+    let mut flags = 0;
+    if dynamic(c.a) {
+        flags |= DYNAMIC_A;
+    }
+    if c.b.is_some_and(dynamic) {
+        flags |= DYNAMIC_B;
+    }
     ids.push(ContactBodies {
         a: first_body + c.a as u32,
         b: c.b.map_or(NO_BODY, |b| first_body + b as u32),
+        flags,
+        _pad: 0,
     });
     let start = out.len();
     out.resize(start + CONTACT, 0.0);

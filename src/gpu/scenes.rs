@@ -97,7 +97,8 @@ fn scene_bytes(scene: &Scene, p: &Prepared, sb: u64) -> [u64; 5] {
         nb * BODY as u64 * sb,
         nc * ROW as u64 * sb,
         values * sb,
-        // slots, contact bodies (8 bytes each); results (32 bytes per island ≤ contacts).
+        // slots (8 bytes each), contact bodies (16 bytes each); results
+        // (32 bytes per island ≤ contacts).
         nc * std::mem::size_of::<BasisResult>() as u64,
         nb * VELOCITY as u64 * sb,
     ]
@@ -123,7 +124,7 @@ fn pack_chunk(
             pack_body(b, &mut c.bodies);
         }
         for ct in &scene.contacts {
-            pack_contact(ct, fb, &mut c.ids, &mut c.contacts);
+            pack_contact(ct, &scene.bodies, fb, &mut c.ids, &mut c.contacts);
         }
         let pos = c.scenes.len() - 1;
         for (k, isl) in prepared[s].islands.iter().enumerate() {
