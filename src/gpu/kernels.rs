@@ -323,6 +323,20 @@ fn storage_entry(binding: u32, read_only: bool) -> wgpu::BindGroupLayoutEntry {
     }
 }
 
+/// The bindings every enumeration kernel shares (shaders/enumeration_basis.wgsl):
+/// params, islands, values, results, z, unfinished, least_infeasibility.
+fn enumeration_entries() -> [wgpu::BindGroupLayoutEntry; 7] {
+    [
+        uniform_entry(0),
+        storage_entry(1, true),
+        storage_entry(2, true),
+        storage_entry(3, false),
+        storage_entry(4, false),
+        storage_entry(5, false),
+        storage_entry(6, false),
+    ]
+}
+
 fn stage(
     device: &wgpu::Device,
     module: &wgpu::ShaderModule,
@@ -354,15 +368,7 @@ impl Pipelines {
     /// (1 ≤ n ≤ [`FIXED_MAX_N`]), built on first use.
     pub fn fixed(&self, ctx: &GpuContext, n: usize) -> &Stage {
         self.enumeration_fixed[n - 1].get_or_init(|| {
-            let entries = [
-                uniform_entry(0),
-                storage_entry(1, true),
-                storage_entry(2, true),
-                storage_entry(3, false),
-                storage_entry(4, false),
-                storage_entry(5, false),
-                storage_entry(6, false),
-            ];
+            let entries = enumeration_entries();
             let m = ctx
                 .device
                 .create_shader_module(wgpu::ShaderModuleDescriptor {
@@ -427,48 +433,18 @@ impl Pipelines {
             let assembly = module("assembly.wgsl", assembly_src);
             let impulses = module("impulses.wgsl", impulses_src);
             Pipelines {
-                enumeration: stage(
-                    d,
-                    &enumeration,
-                    "main",
-                    &[
-                        uniform_entry(0),
-                        storage_entry(1, true),
-                        storage_entry(2, true),
-                        storage_entry(3, false),
-                        storage_entry(4, false),
-                        storage_entry(5, false),
-                        storage_entry(6, false),
-                    ],
-                ),
+                enumeration: stage(d, &enumeration, "main", &enumeration_entries()),
                 enumeration_gray: stage(
                     d,
                     &enumeration_gray,
                     "main",
-                    &[
-                        uniform_entry(0),
-                        storage_entry(1, true),
-                        storage_entry(2, true),
-                        storage_entry(3, false),
-                        storage_entry(4, false),
-                        storage_entry(5, false),
-                        storage_entry(6, false),
-                        storage_entry(7, false),
-                    ],
+                    &[enumeration_entries().as_slice(), &[storage_entry(7, false)]].concat(),
                 ),
                 enumeration_workgroup: stage(
                     d,
                     &enumeration_workgroup,
                     "main",
-                    &[
-                        uniform_entry(0),
-                        storage_entry(1, true),
-                        storage_entry(2, true),
-                        storage_entry(3, false),
-                        storage_entry(4, false),
-                        storage_entry(5, false),
-                        storage_entry(6, false),
-                    ],
+                    &enumeration_entries(),
                 ),
                 enumeration_fixed: (0..FIXED_MAX_N)
                     .map(|_| std::sync::OnceLock::new())
