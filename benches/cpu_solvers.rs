@@ -31,7 +31,12 @@ fn islands(n: usize) -> Vec<Lcp> {
 fn bench_solvers(c: &mut Criterion) {
     let sets: Vec<(usize, Vec<Lcp>)> = (1..=MAX_N).map(|n| (n, islands(n))).collect();
     for solver in [Solver::Enum, Solver::Lemke, Solver::Pgs] {
-        let settings = SolverSettings::with_solver(solver);
+        // Bare solvers: no prediction before enumeration (BENCHMARKS.md's
+        // `enum` column is exhaustive enumeration alone).
+        let settings = SolverSettings {
+            predict: false,
+            ..SolverSettings::with_solver(solver)
+        };
         let mut group = c.benchmark_group(format!("cpu_{}", solver.name()));
         group
             .sample_size(10)
