@@ -193,6 +193,11 @@ impl Scratch {
 /// Solves one complementary basis of `lcp` and reports its z, w and
 /// feasibility. This is the "polish" step of GPU validation: the GPU picks the
 /// basis, f64 recomputes it. Negative z within tolerance are clamped to 0.
+///
+/// # Panics
+/// If n > [`MAX_ENUMERATION_N`] (its scratch is fixed-size); every caller in
+/// the crate checks n first (the GPU enumerates n ≤ 16, prediction and the
+/// enumerations stop above 20).
 pub fn solve_basis(lcp: &Lcp, mask: u32, settings: &EnumerationSettings) -> BasisOutcome {
     let n = lcp.n();
     assert!(
