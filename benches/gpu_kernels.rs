@@ -2,9 +2,12 @@
 //! the GPU on and off, in islands per second (criterion; replaces the
 //! measurement tests that printed the tables in BENCHMARKS.md).
 //!
-//! - `gpu_kernel/<precision>/n=<n>`: the elimination, Gray-code and
-//!   specialised (unrolled) kernels on the same batch of islands of exactly
-//!   n contacts, uploaded once, dispatch alone (every enumeration round);
+//! - `gpu_kernel/<precision>/n=<n>`: the elimination, Gray-code,
+//!   specialised (unrolled) and tree kernels, and Auto's choice, on the same
+//!   batch of islands of exactly n contacts, uploaded once, dispatch alone
+//!   (every enumeration round; Tree: every island through the tree kernel,
+//!   the undecided ones then by elimination; Auto: the positive definite
+//!   ones through the tree);
 //! - `gpu_prediction/<precision>`: `solve_lcp_batch_warm` on demo-world
 //!   islands with prediction off, on, and on with last frame's bases (warm).
 //!
@@ -64,8 +67,14 @@ fn bench_kernels(c: &mut Criterion) {
                 EnumerationKernel::Elimination,
                 EnumerationKernel::Gray,
                 EnumerationKernel::Unrolled,
+                EnumerationKernel::Tree,
+                EnumerationKernel::Auto,
             ] {
-                if kernel == EnumerationKernel::Unrolled && n > 8 {
+                if matches!(
+                    kernel,
+                    EnumerationKernel::Unrolled | EnumerationKernel::Tree
+                ) && n > 8
+                {
                     continue; // specialised kernels exist for n ≤ 8
                 }
                 let s = GpuSolveSettings {

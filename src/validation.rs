@@ -229,6 +229,10 @@ pub struct BatchReport {
     pub dispatches: usize,
     /// Enumeration rounds (see `shaders/enumeration.wgsl`).
     pub rounds: usize,
+    /// Islands the tree kernel (`shaders/enumeration_tree.wgsl`) decided,
+    /// and those it left to the elimination kernel.
+    pub tree_decided: usize,
+    pub tree_undecided: usize,
 }
 
 impl BatchReport {
@@ -254,6 +258,8 @@ impl BatchReport {
             chunks: 0,
             dispatches: 0,
             rounds: 0,
+            tree_decided: 0,
+            tree_undecided: 0,
         }
     }
 
@@ -356,6 +362,8 @@ impl BatchReport {
         self.chunks += o.chunks;
         self.dispatches += o.dispatches;
         self.rounds += o.rounds;
+        self.tree_decided += o.tree_decided;
+        self.tree_undecided += o.tree_undecided;
     }
 }
 
@@ -388,6 +396,13 @@ impl fmt::Display for BatchReport {
             .map(|(p, c)| format!("{} {c}", p.name()))
             .collect();
         writeln!(f, "paths: {}", paths.join(", "))?;
+        if self.tree_decided + self.tree_undecided > 0 {
+            writeln!(
+                f,
+                "tree kernel: decided {}, left to elimination {}",
+                self.tree_decided, self.tree_undecided
+            )?;
+        }
         writeln!(
             f,
             "max error after polish: {:.3e} (GPU's own z: {:.3e})",

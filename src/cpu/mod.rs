@@ -7,4 +7,5 @@ pub mod assembly;
 pub mod batch;
 pub mod enumeration;
 pub mod enumeration_gray;
+pub mod enumeration_tree;
 pub mod impulses;

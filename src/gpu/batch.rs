@@ -10,11 +10,14 @@
 use std::time::Instant;
 
 use super::kernels::Pipelines;
-use super::layout::{scalars_from_bytes, scalars_to_bytes, BasisResult, PackedIsland};
+use super::layout::{
+    scalars_from_bytes, scalars_to_bytes, BasisResult, PackedIsland, TREE_DECIDED, TREE_UNDECIDED,
+};
 use super::{GpuContext, Precision, MAX_GPU_N};
 use crate::cpu::enumeration::EnumerationSettings;
+use crate::cpu::enumeration_tree::TREE_MAX_N;
 use crate::lcp::{Counters, Lcp, LcpSolution, Residuals, Status};
-use crate::prediction::{predict, SolvePath};
+use crate::prediction::{is_positive_definite, predict, SolvePath};
 use crate::solvers::lemke::{lemke, LemkeSettings};
 use crate::solvers::Solver;
 use crate::validation::{validate_island, BatchReport, GpuVerdict, Verdict};
@@ -86,6 +89,12 @@ pub enum EnumerationKernel {
     /// [`super::kernels::FIXED_MAX_N`]; the elimination kernel above.
     /// Same answers as Elimination, bit for bit.
     Unrolled,
+    /// `shaders/enumeration_tree.wgsl` first, on every island of n ≤
+    /// [`TREE_MAX_N`]: all bases screened by principal pivots down the tree
+    /// of bases, the screened ones confirmed by elimination; the islands it
+    /// leaves undecided, and the larger ones, go to Auto's kernel. Auto
+    /// sends only positive definite islands to it ([`AUTO_TREE`]).
+    Tree,
     /// `shaders/enumeration_workgroup.wgsl`: one workgroup per island, its
     /// 64 invocations solving the bases of one popcount in waves of 64
     /// consecutive masks, stopping at the first wave with a valid basis
@@ -99,9 +108,11 @@ pub const DEFAULT_REFACTOR_PERIOD: u32 = 32;
 
 impl EnumerationKernel {
     /// The kernel that runs islands of n contacts.
+    /// For [`EnumerationKernel::Tree`]: the kernel after the tree (the tree
+    /// itself is chosen per island, [`KernelPlan::tree_for`]).
     pub fn for_n(self, n: usize) -> EnumerationKernel {
         match self {
-            EnumerationKernel::Auto => {
+            EnumerationKernel::Auto | EnumerationKernel::Tree => {
                 if GRAY_FROM_N.is_some_and(|g| n >= g) {
                     EnumerationKernel::Gray
                 } else if WORKGROUP_FROM_N.is_some_and(|w| n >= w) {
@@ -125,6 +136,7 @@ impl EnumerationKernel {
             EnumerationKernel::Elimination => "elimination",
             EnumerationKernel::Gray => "gray",
             EnumerationKernel::Unrolled => "unrolled",
+            EnumerationKernel::Tree => "tree",
             EnumerationKernel::Workgroup => "workgroup",
         }
     }
@@ -146,6 +158,9 @@ pub const UNROLLED_UP_TO_N: usize = 7;
 /// Its 64 lanes solve bases of one size side by side, where the per-island
 /// kernel's lanes diverge (each island stops at a different basis).
 pub const WORKGROUP_FROM_N: Option<usize> = Some(10);
+/// Auto: positive definite islands of n ≤ [`TREE_MAX_N`] go to the tree
+/// kernel first (see BENCHMARKS.md for what it measured against the others).
+pub const AUTO_TREE: bool = true;
 
 impl Default for GpuSolveSettings {
     fn default() -> Self {
@@ -268,6 +283,9 @@ pub struct RunStats {
     pub rounds: usize,
     /// Seconds of upload + dispatch + readback.
     pub seconds: f64,
+    /// Islands the tree kernel decided, and those it left to elimination.
+    pub tree_decided: usize,
+    pub tree_undecided: usize,
 }
 
 /// Largest bytes per binding and workgroups per dispatch for this batch.
@@ -296,7 +314,7 @@ pub fn gray_budget(budget: u32) -> u32 {
 
 /// Which enumeration shader runs per size, and its per-round parameters.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct KernelPlan {
+pub struct KernelPlan {
     /// Loop work per invocation and round.
     pub budget: u32,
     pub kernel: EnumerationKernel,
@@ -314,6 +332,19 @@ impl KernelPlan {
             measure: settings.measure_drift,
         }
     }
+
+    /// Does this island go to the tree kernel first? n ≤ [`TREE_MAX_N`]
+    /// and: every such island with [`EnumerationKernel::Tree`]; with Auto
+    /// ([`AUTO_TREE`]), those whose M is positive definite, where every
+    /// pivot of the tree exists (O(n³) Cholesky on the CPU).
+    pub fn tree_for(&self, lcp: &Lcp) -> bool {
+        lcp.n() <= TREE_MAX_N
+            && match self.kernel {
+                EnumerationKernel::Tree => true,
+                EnumerationKernel::Auto => AUTO_TREE && is_positive_definite(lcp),
+                _ => false,
+            }
+    }
 }
 
 /// What the enumeration stage gave for a table of islands.
@@ -326,10 +357,15 @@ pub(crate) struct EnumerationRun {
     pub drift: Vec<f64>,
     pub dispatches: usize,
     pub rounds: usize,
+    /// Islands the tree kernel decided, and those it left to elimination.
+    pub tree_decided: usize,
+    pub tree_undecided: usize,
 }
 
-/// Runs the enumeration stage over `table` (sorted by n; M and q in
-/// `values`), in rounds until every island is done. `encoder` may hold
+/// Runs the enumeration stage over `table` (sorted by n, then by `tree`; M
+/// and q in `values`), in rounds until every island is done. `tree[i]`
+/// (empty: none): entry i runs the tree kernel in the first round, and the
+/// size's kernel after it only if left undecided. `encoder` may hold
 /// earlier work (assembly); it is submitted with the first round.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn run_enumeration(
@@ -338,11 +374,13 @@ pub(crate) fn run_enumeration(
     islands: &wgpu::Buffer,
     values: &wgpu::Buffer,
     table: &[PackedIsland],
+    tree: &[bool],
     max_groups: u32,
     plan: &KernelPlan,
     mut encoder: wgpu::CommandEncoder,
     read_back: bool,
 ) -> Result<EnumerationRun, Error> {
+    let in_tree = |i: usize| tree.get(i).copied().unwrap_or(false);
     let precision = ctx.precision();
     let sb = precision.bytes();
     if table.is_empty() {
@@ -355,6 +393,8 @@ pub(crate) fn run_enumeration(
             drift: Vec::new(),
             dispatches: 0,
             rounds: 0,
+            tree_decided: 0,
+            tree_undecided: 0,
         });
     }
     // results: where each island's enumeration stands (zeroed: not started).
@@ -425,14 +465,29 @@ pub(crate) fn run_enumeration(
     // but 35% slower at 10k islands on lavapipe, whose threads then got the
     // small and the large islands in unequal halves.)
     let flags = plan.period.clamp(1, 0xffff) | (plan.measure as u32) << 16;
-    let mut buckets: Vec<(u32, Vec<(wgpu::BindGroup, u32)>)> = Vec::new();
+    // Per bucket: n, the tree kernel's ranges (tree buckets) and the size
+    // kernel's ranges.
+    type Ranges = Vec<(wgpu::BindGroup, u32)>;
+    let mut buckets: Vec<(u32, Option<Ranges>, Ranges)> = Vec::new();
     let mut first = 0usize;
     while first < table.len() {
         let n = table[first].n;
+        let t = in_tree(first);
         let mut last = first;
-        while last < table.len() && table[last].n == n {
+        while last < table.len() && table[last].n == n && in_tree(last) == t {
             last += 1;
         }
+        let tree_ranges = t.then(|| {
+            ctx.ranges_per_group(
+                first as u32,
+                (last - first) as u32,
+                super::kernels::WORKGROUP,
+                max_groups,
+                plan.budget,
+                0,
+                &|p| bind(p, pipelines.tree(ctx, n as usize), false),
+            )
+        });
         let kernel = plan.kernel.for_n(n as usize);
         let gray = kernel == EnumerationKernel::Gray;
         let per_group = if kernel == EnumerationKernel::Workgroup {
@@ -453,7 +508,7 @@ pub(crate) fn run_enumeration(
             if gray { flags } else { 0 },
             &|p| bind(p, stage_of(n), gray),
         );
-        buckets.push((n, r));
+        buckets.push((n, tree_ranges, r));
         first = last;
     }
     let mut active: Vec<usize> = (0..buckets.len()).collect();
@@ -465,8 +520,17 @@ pub(crate) fn run_enumeration(
                 encoder.clear_buffer(&unfinished, 0, None);
             }
             for &b in &active {
-                ctx.record(&mut encoder, stage_of(buckets[b].0), &buckets[b].1);
-                dispatches += buckets[b].1.len();
+                let (n, tree_ranges, ranges) = &buckets[b];
+                match tree_ranges {
+                    Some(t) if rounds + r == 0 => {
+                        ctx.record(&mut encoder, pipelines.tree(ctx, *n as usize), t);
+                        dispatches += t.len();
+                    }
+                    _ => {
+                        ctx.record(&mut encoder, stage_of(*n), ranges);
+                        dispatches += ranges.len();
+                    }
+                }
             }
         }
         rounds += per_submit;
@@ -494,6 +558,8 @@ pub(crate) fn run_enumeration(
             drift: Vec::new(),
             dispatches,
             rounds,
+            tree_decided: 0,
+            tree_undecided: 0,
         });
     }
     let mut reads = vec![(&results, results_size), (&z, z_size)];
@@ -511,7 +577,16 @@ pub(crate) fn run_enumeration(
     let results: Vec<BasisResult> = bytemuck::try_cast_slice(&r_bytes)
         .map_err(|e| Error::Gpu(format!("results: {e}")))?
         .to_vec();
+    let tree_count = |v: u32| {
+        results
+            .iter()
+            .enumerate()
+            .filter(|&(i, r)| in_tree(i) && r._pad1 == v)
+            .count()
+    };
     Ok(EnumerationRun {
+        tree_decided: tree_count(TREE_DECIDED),
+        tree_undecided: tree_count(TREE_UNDECIDED),
         results,
         z: scalars_from_bytes(&z_bytes, precision),
         drift,
@@ -544,7 +619,8 @@ pub fn enumerate_on_gpu(
         };
         lcps.len()
     ];
-    for chunk in pack_chunks(lcps, max_bytes, precision.bytes()) {
+    let tree: Vec<bool> = lcps.iter().map(|l| plan.tree_for(l)).collect();
+    for chunk in pack_chunks(lcps, &tree, max_bytes, precision.bytes()) {
         let run = ctx.scoped("enumeration", || -> Result<EnumerationRun, Error> {
             let (islands_buf, values_buf) = chunk.upload(ctx, precision);
             let encoder = ctx
@@ -558,6 +634,7 @@ pub fn enumerate_on_gpu(
                 &islands_buf,
                 &values_buf,
                 &chunk.table,
+                &chunk.tree,
                 max_groups,
                 &plan,
                 encoder,
@@ -585,6 +662,8 @@ pub fn enumerate_on_gpu(
         stats.chunks += 1;
         stats.dispatches += run.dispatches;
         stats.rounds += run.rounds;
+        stats.tree_decided += run.tree_decided;
+        stats.tree_undecided += run.tree_undecided;
     }
     stats.seconds = start.elapsed().as_secs_f64();
     Ok((out, stats))
@@ -592,9 +671,12 @@ pub fn enumerate_on_gpu(
 
 /// A chunk of an LCP batch, packed for the enumeration stage.
 struct PackedChunk {
-    /// The caller's indices of the chunk's islands, sorted by n.
+    /// The caller's indices of the chunk's islands, sorted by n, then by
+    /// `tree`.
     order: Vec<usize>,
     table: Vec<PackedIsland>,
+    /// Per table entry: runs the tree kernel first.
+    tree: Vec<bool>,
     /// M (row-major) then q of every island, in f64.
     data: Vec<f64>,
 }
@@ -611,11 +693,12 @@ impl PackedChunk {
 }
 
 /// Sorts the islands by n (one dispatch per size: no island waits on a
-/// larger one) and packs them into chunks whose buffers stay under
-/// `max_bytes`.
-fn pack_chunks(lcps: &[&Lcp], max_bytes: u64, sb: u64) -> Vec<PackedChunk> {
+/// larger one), then by `tree` (the tree kernel's islands together), and
+/// packs them into chunks whose buffers stay under `max_bytes`.
+fn pack_chunks(lcps: &[&Lcp], tree: &[bool], max_bytes: u64, sb: u64) -> Vec<PackedChunk> {
+    let in_tree = |i: usize| tree.get(i).copied().unwrap_or(false);
     let mut order: Vec<usize> = (0..lcps.len()).collect();
-    order.sort_by_key(|&i| lcps[i].n());
+    order.sort_by_key(|&i| (lcps[i].n(), in_tree(i)));
     let mut chunks = Vec::new();
     let mut at = 0;
     while at < order.len() {
@@ -653,6 +736,7 @@ fn pack_chunks(lcps: &[&Lcp], max_bytes: u64, sb: u64) -> Vec<PackedChunk> {
         }
         chunks.push(PackedChunk {
             order: order[at..end].to_vec(),
+            tree: order[at..end].iter().map(|&i| in_tree(i)).collect(),
             table,
             data,
         });
@@ -667,7 +751,8 @@ fn pack_chunks(lcps: &[&Lcp], max_bytes: u64, sb: u64) -> Vec<PackedChunk> {
 pub struct UploadedBatch<'a> {
     ctx: &'a GpuContext,
     pipelines: std::sync::Arc<Pipelines>,
-    chunks: Vec<(Vec<PackedIsland>, wgpu::Buffer, wgpu::Buffer)>,
+    /// Per chunk: table, tree flags, islands and values buffers.
+    chunks: Vec<(Vec<PackedIsland>, Vec<bool>, wgpu::Buffer, wgpu::Buffer)>,
     max_groups: u32,
     plan: KernelPlan,
 }
@@ -683,12 +768,14 @@ impl<'a> UploadedBatch<'a> {
         let precision = ctx.precision();
         let pipelines = ctx.pipelines(settings.gpu_tolerances(precision))?;
         let (max_bytes, max_groups) = limits_for(ctx, settings);
+        let plan = KernelPlan::new(ctx, settings);
+        let tree: Vec<bool> = lcps.iter().map(|l| plan.tree_for(l)).collect();
         let chunks = ctx.scoped("upload", || {
-            pack_chunks(lcps, max_bytes, precision.bytes())
+            pack_chunks(lcps, &tree, max_bytes, precision.bytes())
                 .into_iter()
                 .map(|c| {
                     let (i, v) = c.upload(ctx, precision);
-                    (c.table, i, v)
+                    (c.table, c.tree, i, v)
                 })
                 .collect()
         })?;
@@ -697,14 +784,14 @@ impl<'a> UploadedBatch<'a> {
             pipelines,
             chunks,
             max_groups,
-            plan: KernelPlan::new(ctx, settings),
+            plan,
         })
     }
 
     /// Runs the enumeration of every island and waits; returns the rounds.
     pub fn dispatch(&self) -> Result<usize, Error> {
         let mut rounds = 0;
-        for (table, islands, values) in &self.chunks {
+        for (table, tree, islands, values) in &self.chunks {
             let run = self.ctx.scoped("enumeration", || {
                 let encoder =
                     self.ctx
@@ -718,6 +805,7 @@ impl<'a> UploadedBatch<'a> {
                     islands,
                     values,
                     table,
+                    tree,
                     self.max_groups,
                     &self.plan,
                     encoder,
@@ -844,6 +932,8 @@ pub fn solve_lcp_batch_warm(
     report.chunks = stats.chunks;
     report.dispatches = stats.dispatches;
     report.rounds = stats.rounds;
+    report.tree_decided = stats.tree_decided;
+    report.tree_undecided = stats.tree_undecided;
     let start = Instant::now();
     for (&i, o) in on_gpu.iter().zip(outputs) {
         let verdict = GpuVerdict::of(&o.result, &o.z);

@@ -16,6 +16,7 @@ use wgpu::util::DeviceExt;
 
 use super::layout::Params;
 use super::{GpuContext, Precision};
+use crate::cpu::enumeration_tree::{TreeSettings, TREE_MAX_N};
 use crate::Error;
 
 /// The part every enumeration kernel shares (WGSL has no include):
@@ -25,6 +26,7 @@ pub const ENUMERATION_WGSL: &str = include_str!("../../shaders/enumeration.wgsl"
 pub const ENUMERATION_GRAY_WGSL: &str = include_str!("../../shaders/enumeration_gray.wgsl");
 pub const ENUMERATION_WORKGROUP_WGSL: &str =
     include_str!("../../shaders/enumeration_workgroup.wgsl");
+pub const ENUMERATION_TREE_WGSL: &str = include_str!("../../shaders/enumeration_tree.wgsl");
 
 /// Gray-code kernel tolerances in f32 (f64 uses the CPU twin's,
 /// [`crate::cpu::enumeration_gray::GraySettings`]): the screen is looser
@@ -35,6 +37,11 @@ pub const F32_SCREEN_TOL: f64 = 1e-3;
 /// Largest island size with a specialised (constant-size) elimination kernel.
 pub const FIXED_MAX_N: usize = 8;
 pub const F32_TABLEAU_PIVOT_TOL: f64 = 1e-3;
+/// Tree kernel in f32: a pivot T_dd at most this times M_dd leaves the
+/// island to elimination (f64 uses [`crate::cpu::enumeration_tree::TreeSettings`]'s).
+/// With f32's 6e-8 rounding it bounds a leaf's error near 1e-4, under the
+/// screen's 1e-3.
+pub const F32_TREE_PIVOT_TOL: f64 = 1e-3;
 pub const ASSEMBLY_WGSL: &str = include_str!("../../shaders/assembly.wgsl");
 pub const IMPULSES_WGSL: &str = include_str!("../../shaders/impulses.wgsl");
 
@@ -70,6 +77,11 @@ pub struct Pipelines {
     /// the Unrolled kernel needs).
     enumeration_fixed: Vec<std::sync::OnceLock<Stage>>,
     fixed_src: Vec<String>,
+    /// `shaders/enumeration_tree.wgsl` for islands of exactly n contacts,
+    /// n = 1…[`TREE_MAX_N`], at index n − 1; built on first use
+    /// ([`Pipelines::tree`]).
+    enumeration_tree: Vec<std::sync::OnceLock<Stage>>,
+    tree_src: Vec<String>,
     pub assemble_contacts: Stage,
     pub assemble_islands: Stage,
     pub impulses: Stage,
@@ -265,6 +277,162 @@ pub fn straight_line_solver(n: usize) -> String {
     o
 }
 
+/// `shaders/enumeration_tree.wgsl` (templated) for islands of exactly n
+/// contacts: FN, WORDS, RANKS and the rank table set, and the placeholder
+/// `tree_pass` replaced by [`tree_pass_source`].
+pub fn tree_source(tree_src: &str, n: usize) -> Result<String, Error> {
+    let ranks = 1usize << n;
+    let mut by_rank: Vec<u32> = (0..ranks as u32).collect();
+    by_rank.sort_by_key(|&m| (m.count_ones(), m));
+    let table: Vec<String> = by_rank.iter().map(|m| format!("{m}u")).collect();
+    let s = replace_host_line(tree_src, "fixed_n", &format!("const FN: u32 = {n}u;"))?;
+    let s = replace_host_line(
+        &s,
+        "words",
+        &format!("const WORDS: u32 = {}u;", ranks.div_ceil(32)),
+    )?;
+    let s = replace_host_line(&s, "ranks", &format!("const RANKS: u32 = {ranks}u;"))?;
+    let s = replace_host_line(
+        &s,
+        "rank_mask",
+        &format!(
+            "var<private> rank_mask: array<u32, {ranks}> = array<u32, {ranks}>({});",
+            table.join(", ")
+        ),
+    )?;
+    let start = s
+        .find("fn tree_pass(")
+        .ok_or_else(|| Error::Gpu("enumeration_tree.wgsl has no tree_pass".into()))?;
+    let end = s[start..]
+        .find("\n}\n")
+        .map(|e| start + e + 3)
+        .ok_or_else(|| Error::Gpu("tree_pass has no end".into()))?;
+    Ok(format!(
+        "{}{}{}",
+        &s[..start],
+        tree_pass_source(n),
+        &s[end..]
+    ))
+}
+
+/// The screen pass of `shaders/enumeration_tree.wgsl` for n contacts as
+/// straight-line WGSL: the depth-first walk of
+/// [`crate::cpu::enumeration_tree`] unrolled, each pivot's results named by
+/// the depth that made them (`a{d}_{i}_{j}`, `t{d}_{i}`) inside a block per
+/// subtree, each leaf's screen setting its bit of the candidate bitmap.
+pub fn tree_pass_source(n: usize) -> String {
+    use std::fmt::Write;
+    let mut o = String::new();
+    let _ = writeln!(o, "fn tree_pass(base: u32) -> bool {{");
+    let mut tab = vec![String::new(); n * n];
+    let mut rhs = vec![String::new(); n];
+    let mut mmax = "Scalar(0.0)".to_string();
+    for i in 0..n {
+        for j in 0..n {
+            let _ = writeln!(o, "let m{i}_{j} = values[base + {}u];", i * n + j);
+            tab[i * n + j] = format!("m{i}_{j}");
+            let _ = writeln!(o, "let mm{} = max({mmax}, abs(m{i}_{j}));", i * n + j);
+            mmax = format!("mm{}", i * n + j);
+        }
+    }
+    let mut qmax = "Scalar(0.0)".to_string();
+    for i in 0..n {
+        let _ = writeln!(o, "let q{i} = values[base + {}u];", n * n + i);
+        rhs[i] = format!("q{i}");
+        let _ = writeln!(o, "let qm{i} = max({qmax}, abs(q{i}));");
+        qmax = format!("qm{i}");
+    }
+    let _ = writeln!(o, "let mmax = {mmax};\nlet qmax = {qmax};\nvar ok = true;");
+    let words = (1usize << n).div_ceil(32);
+    for w in 0..words {
+        let _ = writeln!(o, "var c{w} = 0u;");
+    }
+    let mut rank = vec![0usize; 1 << n];
+    let mut by_rank: Vec<usize> = (0..1usize << n).collect();
+    by_rank.sort_by_key(|&m| (m.count_ones(), m));
+    for (r, &m) in by_rank.iter().enumerate() {
+        rank[m] = r;
+    }
+    tree_node(&mut o, n, 0, 0, &tab, &rhs, &rank);
+    for w in 0..words {
+        let _ = writeln!(o, "cand[{w}] = c{w};");
+    }
+    let _ = writeln!(o, "return ok;\n}}");
+    o
+}
+
+/// One node of [`tree_pass_source`]'s walk: depth d, basis `mask` of the
+/// indices below d, tableau entries and t named in `tab` and `rhs`.
+fn tree_node(
+    o: &mut String,
+    n: usize,
+    d: usize,
+    mask: usize,
+    tab: &[String],
+    rhs: &[String],
+    rank: &[usize],
+) {
+    use std::fmt::Write;
+    if d == n {
+        // The screen (the CPU twin's `Walk::screen`).
+        let basic: Vec<usize> = (0..n).filter(|i| mask >> i & 1 == 1).collect();
+        let _ = writeln!(o, "{{");
+        let (mut zm, mut zs) = ("Scalar(0.0)".to_string(), "Scalar(0.0)".to_string());
+        for &i in &basic {
+            zm = format!("max({zm}, abs({}))", rhs[i]);
+            zs = format!("({zs} + abs({}))", rhs[i]);
+        }
+        let _ = writeln!(o, "let zm = {zm};\nlet ws = qmax + mmax * {zs};");
+        let tests: Vec<String> = (0..n)
+            .map(|i| {
+                let scale = if mask >> i & 1 == 1 { "zm" } else { "ws" };
+                format!("({} >= -SCREEN_TOL * {scale})", rhs[i])
+            })
+            .collect();
+        let r = rank[mask];
+        let _ = writeln!(
+            o,
+            "c{w} = c{w} | select(0u, {bit}u, {});\n}}",
+            tests.join(" & "),
+            w = r / 32,
+            bit = 1u32 << (r % 32)
+        );
+        return;
+    }
+    // Index d nonbasic: the same tableau.
+    tree_node(o, n, d + 1, mask, tab, rhs, rank);
+    // Index d basic: the principal pivot on T_dd (columns > d and t).
+    let _ = writeln!(o, "{{");
+    let p = &tab[d * n + d];
+    let _ = writeln!(
+        o,
+        "ok = ok & ({p} > TREE_PIVOT_TOL * m{d}_{d});\nlet i{d} = Scalar(1.0) / {p};\nlet n{d} = -i{d};"
+    );
+    let mut tab2 = tab.to_vec();
+    let mut rhs2 = rhs.to_vec();
+    for j in d + 1..n {
+        let _ = writeln!(o, "let a{d}_{d}_{j} = {} * n{d};", tab[d * n + j]);
+        tab2[d * n + j] = format!("a{d}_{d}_{j}");
+    }
+    let _ = writeln!(o, "let t{d}_{d} = -{} * i{d};", rhs[d]);
+    rhs2[d] = format!("t{d}_{d}");
+    for i in (0..n).filter(|&i| i != d) {
+        let f = &tab[i * n + d];
+        for j in d + 1..n {
+            let _ = writeln!(
+                o,
+                "let a{d}_{i}_{j} = {} + {f} * a{d}_{d}_{j};",
+                tab[i * n + j]
+            );
+            tab2[i * n + j] = format!("a{d}_{i}_{j}");
+        }
+        let _ = writeln!(o, "let t{d}_{i} = {} + {f} * t{d}_{d};", rhs[i]);
+        rhs2[i] = format!("t{d}_{i}");
+    }
+    tree_node(o, n, d + 1, mask | 1 << d, &tab2, &rhs2, rank);
+    let _ = writeln!(o, "}}");
+}
+
 /// The shader source for `precision` (and tolerances where the shader has them).
 pub fn template(
     src: &str,
@@ -379,6 +547,20 @@ impl Pipelines {
         })
     }
 
+    /// The tree stage for islands of n contacts (1 ≤ n ≤ [`TREE_MAX_N`]),
+    /// built on first use.
+    pub fn tree(&self, ctx: &GpuContext, n: usize) -> &Stage {
+        self.enumeration_tree[n - 1].get_or_init(|| {
+            let m = ctx
+                .device
+                .create_shader_module(wgpu::ShaderModuleDescriptor {
+                    label: Some("enumeration_tree.wgsl"),
+                    source: wgpu::ShaderSource::Wgsl(self.tree_src[n - 1].as_str().into()),
+                });
+            stage(&ctx.device, &m, "main", &enumeration_entries())
+        })
+    }
+
     fn build(ctx: &GpuContext, key: &PipelineKey) -> Result<Self, Error> {
         let d = &ctx.device;
         let pivot = f64::from_bits(key.pivot_tol_bits);
@@ -418,6 +600,38 @@ impl Pipelines {
         let fixed_src: Vec<String> = (1..=FIXED_MAX_N)
             .map(|n| fixed_source(&enumeration_src, n))
             .collect::<Result<_, Error>>()?;
+        let tree = TreeSettings::default();
+        let (tree_screen, tree_pivot) = if key.precision == Precision::F64 {
+            (tree.screen_tol, tree.pivot_tol)
+        } else {
+            (F32_SCREEN_TOL, F32_TREE_PIVOT_TOL)
+        };
+        let tree_src = template(
+            &enumeration_source(ENUMERATION_TREE_WGSL),
+            key.precision,
+            Some((pivot, feas, relaxed)),
+        )?;
+        let tree_src = replace_host_line(
+            &tree_src,
+            "screen_tol",
+            &format!("const SCREEN_TOL: Scalar = {};", literal(tree_screen)),
+        )?;
+        let tree_src = replace_host_line(
+            &tree_src,
+            "tree_pivot_tol",
+            &format!("const TREE_PIVOT_TOL: Scalar = {};", literal(tree_pivot)),
+        )?;
+        let tree_src = replace_host_line(
+            &tree_src,
+            "max_confirmations",
+            &format!(
+                "const MAX_CONFIRMATIONS: u32 = {}u;",
+                tree.max_confirmations
+            ),
+        )?;
+        let tree_src: Vec<String> = (1..=TREE_MAX_N)
+            .map(|n| tree_source(&tree_src, n))
+            .collect::<Result<_, Error>>()?;
         let assembly_src = template(ASSEMBLY_WGSL, key.precision, None)?;
         let impulses_src = template(IMPULSES_WGSL, key.precision, None)?;
         ctx.scoped("building the pipelines", || {
@@ -450,6 +664,10 @@ impl Pipelines {
                     .map(|_| std::sync::OnceLock::new())
                     .collect(),
                 fixed_src,
+                enumeration_tree: (0..TREE_MAX_N)
+                    .map(|_| std::sync::OnceLock::new())
+                    .collect(),
+                tree_src,
                 assemble_contacts: stage(
                     d,
                     &assembly,

@@ -94,10 +94,18 @@ pub struct BasisResult {
     pub has_least: u32,
     /// Gray-code kernel: the best confirmed basis so far and whether there is
     /// one (it visits every basis; `mask` is then its next Gray index while
-    /// in progress). Zero in the elimination kernel.
+    /// in progress). Zero in the elimination kernel. Tree kernel: `_pad1` is
+    /// [`TREE_DECIDED`] or [`TREE_UNDECIDED`] (then carried through the
+    /// elimination that follows).
     pub _pad0: u32,
     pub _pad1: u32,
 }
+
+/// [`BasisResult::_pad1`] after the tree kernel: it chose the basis.
+pub const TREE_DECIDED: u32 = 1;
+/// [`BasisResult::_pad1`] after the tree kernel: it left the island to the
+/// elimination kernel.
+pub const TREE_UNDECIDED: u32 = 2;
 
 /// [`BasisResult::status`]: a valid basis was found.
 pub const FOUND: u32 = 1;

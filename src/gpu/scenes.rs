@@ -79,6 +79,8 @@ struct Chunk {
     /// the others on the CPU), and their (scene, island).
     enum_table: Vec<PackedIsland>,
     enum_keys: Vec<(usize, usize)>,
+    /// Per `enum_table` entry: runs the tree kernel first.
+    enum_tree: Vec<bool>,
     slots: Vec<Slot>,
     values_len: u32,
     z_len: u32,
@@ -104,12 +106,15 @@ fn scene_bytes(scene: &Scene, p: &Prepared, sb: u64) -> [u64; 5] {
     ]
 }
 
-/// Packs a chunk; `settled(s, k)`: island k of scene s needs no enumeration.
+/// Packs a chunk; `settled(s, k)`: island k of scene s needs no
+/// enumeration; `tree(s, k)`: it runs the tree kernel first (the table is
+/// sorted by n, then by this).
 fn pack_chunk(
     scenes: &[Scene],
     prepared: &[Prepared],
     members: &[usize],
     settled: &dyn Fn(usize, usize) -> bool,
+    tree: &dyn Fn(usize, usize) -> bool,
 ) -> Chunk {
     let mut c = Chunk::default();
     let mut entries: Vec<(usize, usize, usize)> = Vec::new(); // (n, position in chunk, island)
@@ -133,7 +138,7 @@ fn pack_chunk(
             }
         }
     }
-    entries.sort_by_key(|e| e.0);
+    entries.sort_by_key(|&(n, pos, k)| (n, tree(c.scenes[pos], k)));
     for (n, pos, k) in entries {
         let s = c.scenes[pos];
         let fc = c.first_contact[pos];
@@ -154,6 +159,7 @@ fn pack_chunk(
         if !settled(s, k) {
             c.enum_table.push(c.table[island_index as usize]);
             c.enum_keys.push((s, k));
+            c.enum_tree.push(tree(s, k));
         }
         c.values_len += (n * n + n) as u32;
         c.z_len += n as u32;
@@ -278,6 +284,7 @@ fn assemble_and_enumerate(
                     &enum_islands,
                     &values,
                     &c.enum_table,
+                    &c.enum_tree,
                     max_groups,
                     plan,
                     encoder,
@@ -439,7 +446,7 @@ pub fn assemble_on_gpu(
         .map(|p| vec![None; p.islands.len()])
         .collect();
     for members in chunks {
-        let c = pack_chunk(scenes, &prepared, &members, &|_, _| false);
+        let c = pack_chunk(scenes, &prepared, &members, &|_, _| false, &|_, _| false);
         let out = assemble_and_enumerate(ctx, &pipelines, &c, max_groups, None)?;
         let r = out.rows.unwrap_or_default();
         let v = out.values.unwrap_or_default();
@@ -542,9 +549,13 @@ pub fn solve_scenes_warm(
 
     for members in chunks {
         let t0 = Instant::now();
-        let c = pack_chunk(scenes, &prepared, &members, &|s, k| {
-            predicted[s][k].is_some()
-        });
+        let c = pack_chunk(
+            scenes,
+            &prepared,
+            &members,
+            &|s, k| predicted[s][k].is_some(),
+            &|s, k| kernel_plan.tree_for(&prepared[s].lcps[k]),
+        );
         let out = assemble_and_enumerate(ctx, &pipelines, &c, max_groups, Some(&kernel_plan))?;
         report.gpu_seconds += t0.elapsed().as_secs_f64();
         report.chunks += 1;

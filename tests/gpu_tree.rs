@@ -1,0 +1,175 @@
+//! The tree kernel (`shaders/enumeration_tree.wgsl`) against its CPU twin
+//! (`cpu::enumeration_tree`) and against the elimination kernel: what it
+//! decides is the twin's decision (f64: the same basis, z and counters); what
+//! it leaves undecided the elimination kernel finishes; whole batches give
+//! the elimination kernel's answers. Its speed is measured by
+//! `cargo bench --bench gpu_kernels`.
+
+use lcpbatch::cpu::enumeration::enumerate;
+use lcpbatch::cpu::enumeration_tree::{enumerate_tree, TreeOutcome, TreeSettings};
+use lcpbatch::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};
+use lcpbatch::gpu::batch::{enumerate_on_gpu, EnumerationKernel};
+use lcpbatch::gpu::layout::{FOUND, TREE_DECIDED, TREE_UNDECIDED};
+use lcpbatch::gpu::{solve_lcp_batch, GpuSolveSettings, Precision};
+use lcpbatch::pipeline::build;
+use lcpbatch::prediction::is_positive_definite;
+use lcpbatch::{Lcp, Scene};
+
+mod common;
+use common::gpu_context as context;
+
+/// Fixed-seed physical islands n = 1…8 (mass ratios 1…1e4; most positive
+/// definite), resting boxes (semidefinite: small pivots), the seed chain,
+/// demo worlds, and small non-symmetric problems with zero diagonals.
+fn islands(seed: u64, count: usize) -> Vec<Lcp> {
+    let mut rng = Rng::new(seed);
+    let mut scenes: Vec<Scene> = vec![box_on_ground(1.0, 0.5), seed_chain(0.3)];
+    for k in 0..count {
+        scenes.push(random_island(&mut rng, 1 + k % 8, [1.0, 1e2, 1e4][k % 3]));
+    }
+    for _ in 0..10 {
+        scenes.push(demo_world(&mut rng));
+    }
+    let mut lcps: Vec<Lcp> = scenes
+        .iter()
+        .flat_map(|s| build(s, "scene").unwrap().2)
+        .filter(|l| l.n() <= 8)
+        .collect();
+    for q in [[-3.0, 6.0, -1.0], [-3.0, 6.0, 1.0], [1.0, 1.0, 1.0]] {
+        lcps.push(
+            Lcp::new(
+                vec![0.0, -1.0, 2.0, 2.0, 0.0, -2.0, -1.0, 1.0, 0.0],
+                q.to_vec(),
+            )
+            .unwrap(),
+        );
+    }
+    lcps.push(Lcp::new(vec![2.0, 1.0, 1.0, 2.0], vec![-3.0, -3.0]).unwrap());
+    lcps
+}
+
+fn tree_only() -> GpuSolveSettings {
+    GpuSolveSettings {
+        kernel: EnumerationKernel::Tree,
+        predict: false,
+        ..Default::default()
+    }
+}
+
+/// f64: every island the kernel decides, the twin decides the same way
+/// (basis, z to 1e-12, visited, singular); every island it leaves, the twin
+/// leaves too and the elimination kernel's answer follows.
+#[test]
+fn tree_kernel_equals_its_cpu_twin_in_f64() {
+    let Some(ctx) = context(Precision::F64) else {
+        return;
+    };
+    let lcps = islands(41, 400);
+    let refs: Vec<&Lcp> = lcps.iter().collect();
+    let (out, stats) = enumerate_on_gpu(&ctx, &refs, &tree_only()).unwrap();
+    let elimination = GpuSolveSettings {
+        kernel: EnumerationKernel::Elimination,
+        predict: false,
+        ..Default::default()
+    };
+    let (elim, _) = enumerate_on_gpu(&ctx, &refs, &elimination).unwrap();
+    println!(
+        "{} islands: tree decided {}, left {}",
+        lcps.len(),
+        stats.tree_decided,
+        stats.tree_undecided
+    );
+    let (mut decided, mut left) = (0, 0);
+    for (i, (l, o)) in lcps.iter().zip(&out).enumerate() {
+        let r = &o.result;
+        match enumerate_tree(l, &TreeSettings::default()) {
+            TreeOutcome::Decided(cpu) => {
+                decided += 1;
+                assert_eq!(r._pad1, TREE_DECIDED, "island {i}: {l:?}");
+                assert_eq!(r.status, FOUND, "island {i}");
+                assert_eq!(Some(r.mask), cpu.basis, "island {i}");
+                assert_eq!(r.visited as u64, cpu.counters.bases_visited);
+                assert_eq!(r.singular as u64, cpu.counters.singular_bases);
+                let scale = cpu.z.iter().fold(1.0f64, |m, v| m.max(v.abs()));
+                for (a, b) in o.z.iter().zip(&cpu.z) {
+                    assert!((a - b).abs() <= 1e-12 * scale, "island {i}");
+                }
+            }
+            TreeOutcome::Undecided(why) => {
+                left += 1;
+                assert_eq!(r._pad1, TREE_UNDECIDED, "island {i} ({why:?})");
+                // Finished by the elimination kernel: its record and z.
+                let mut e = elim[i].result;
+                e._pad1 = TREE_UNDECIDED;
+                assert_eq!(*r, e, "island {i}");
+                assert_eq!(o.z, elim[i].z, "island {i}");
+            }
+        }
+    }
+    assert_eq!((decided, left), (stats.tree_decided, stats.tree_undecided));
+    assert!(decided > 200 && left > 10, "decided {decided}, left {left}");
+}
+
+/// What the tree decides is enumeration's choice: on positive definite
+/// islands the CPU twin (which the kernel equals in f64) gives the basis and
+/// z of the CPU elimination enumeration, and leaves few undecided (a Schur
+/// complement below 1e-8 of its diagonal: ill-conditioned, not singular).
+#[test]
+fn tree_decisions_are_enumerations_on_positive_definite_islands() {
+    let lcps = islands(43, 600);
+    let (mut pd, mut left) = (0, 0);
+    for (i, l) in lcps.iter().enumerate() {
+        if !is_positive_definite(l) {
+            continue;
+        }
+        pd += 1;
+        let e = enumerate(l, &Default::default()).unwrap();
+        match enumerate_tree(l, &TreeSettings::default()) {
+            TreeOutcome::Decided(t) => {
+                assert_eq!(t.basis, e.basis, "island {i}");
+                assert_eq!(t.z, e.z, "island {i}");
+            }
+            TreeOutcome::Undecided(_) => left += 1,
+        }
+    }
+    println!("{pd} positive definite islands, {left} undecided");
+    assert!(pd > 300, "{pd}");
+    assert!(left * 50 <= pd, "{left} of {pd} undecided");
+}
+
+/// Whole batches with the default kernel choice (Auto: positive definite
+/// islands through the tree) and with every island through it give the
+/// elimination kernel's statuses and bases, in both precisions, with
+/// prediction off; in f64 nothing is repaired.
+#[test]
+fn tree_batches_equal_elimination_batches() {
+    for precision in [Precision::F64, Precision::F32] {
+        let Some(ctx) = context(precision) else {
+            continue;
+        };
+        let lcps = islands(47, 400);
+        let with = |kernel| GpuSolveSettings {
+            kernel,
+            predict: false,
+            ..Default::default()
+        };
+        let e = solve_lcp_batch(&ctx, &lcps, &with(EnumerationKernel::Elimination)).unwrap();
+        for kernel in [EnumerationKernel::Auto, EnumerationKernel::Tree] {
+            let t = solve_lcp_batch(&ctx, &lcps, &with(kernel)).unwrap();
+            println!("{} {kernel:?}:\n{}", precision.name(), t.report);
+            assert!(t.report.tree_decided > 100, "{}", t.report);
+            assert_eq!(e.report.statuses, t.report.statuses);
+            if precision == Precision::F64 {
+                assert_eq!(t.report.repaired, 0);
+            }
+            for (i, (a, b)) in e.islands.iter().zip(&t.islands).enumerate() {
+                assert_eq!(a.solution.status, b.solution.status, "island {i}");
+                assert_eq!(a.solution.basis, b.solution.basis, "island {i}");
+                let scale = a.solution.z.iter().fold(1.0f64, |m, v| m.max(v.abs()));
+                for (x, y) in a.solution.z.iter().zip(&b.solution.z) {
+                    assert!((x - y).abs() <= 1e-9 * scale, "island {i}");
+                }
+            }
+        }
+    }
+}
