@@ -6,7 +6,7 @@
 use lcpbatch::cpu::assembly::ContactRow;
 use lcpbatch::cpu::enumeration::{enumerate, EnumerationSettings};
 use lcpbatch::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};
-use lcpbatch::gpu::batch::enumerate_on_gpu;
+use lcpbatch::gpu::batch::{enumerate_on_gpu, EnumerationKernel};
 use lcpbatch::gpu::layout::{
     assemble_contacts_packed, pack_body, pack_contact, unpack_row, DYNAMIC_A, DYNAMIC_B,
 };
@@ -228,7 +228,9 @@ fn moving_static_platform_matches_cpu_f64() {
     }
 }
 
-/// Enumeration alone, on the CPU's f64 LCPs: in f64 the same basis and the
+/// Enumeration alone (the elimination kernel: Auto would send positive
+/// definite islands to the tree kernel, which `tests/gpu_tree.rs` compares
+/// with its own twin), on the CPU's f64 LCPs: in f64 the same basis and the
 /// same counters as the twin, island by island.
 #[test]
 fn enumeration_matches_cpu_twin_f64() {
@@ -240,7 +242,11 @@ fn enumeration_matches_cpu_twin_f64() {
         .flat_map(|s| build(s, "scene").unwrap().2)
         .collect();
     let refs: Vec<&Lcp> = lcps.iter().collect();
-    let (out, stats) = enumerate_on_gpu(&ctx, &refs, &GpuSolveSettings::default()).unwrap();
+    let elimination = GpuSolveSettings {
+        kernel: EnumerationKernel::Elimination,
+        ..Default::default()
+    };
+    let (out, stats) = enumerate_on_gpu(&ctx, &refs, &elimination).unwrap();
     for (i, (l, o)) in lcps.iter().zip(&out).enumerate() {
         let c = enumerate(l, &EnumerationSettings::default()).unwrap();
         assert_eq!(Some(o.result.mask), c.basis, "island {i}: basis");

@@ -181,6 +181,8 @@ struct StageOutput {
     resident: Resident,
     dispatches: usize,
     rounds: usize,
+    /// Islands the tree kernel decided, and those it left to elimination.
+    tree: (usize, usize),
 }
 
 fn entry(binding: u32, b: &wgpu::Buffer) -> wgpu::BindGroupEntry<'_> {
@@ -298,6 +300,7 @@ fn assemble_and_enumerate(
                     resident: Resident { bodies, rows },
                     dispatches: dispatches + run.dispatches,
                     rounds: run.rounds,
+                    tree: (run.tree_decided, run.tree_undecided),
                 });
             }
             let got =
@@ -311,6 +314,7 @@ fn assemble_and_enumerate(
                 resident: Resident { bodies, rows },
                 dispatches,
                 rounds: 0,
+                tree: (0, 0),
             })
         },
     )?
@@ -561,6 +565,8 @@ pub fn solve_scenes_warm(
         report.chunks += 1;
         report.dispatches += out.dispatches;
         report.rounds += out.rounds;
+        report.tree_decided += out.tree.0;
+        report.tree_undecided += out.tree.1;
         let t1 = Instant::now();
         for &(s, k) in &c.keys {
             if let Some((path, sol)) = predicted[s][k].take() {
