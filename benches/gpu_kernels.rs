@@ -7,7 +7,8 @@
 //!   batch of islands of exactly n contacts, uploaded once, dispatch alone
 //!   (every enumeration round; Tree: every island through the tree kernel,
 //!   the undecided ones then by elimination; Auto: the positive definite
-//!   ones through the tree);
+//!   ones through the tree; both with the tree up to n = 10, whose first
+//!   dispatch compiles for half a minute on lavapipe);
 //! - `gpu_prediction/<precision>`: `solve_lcp_batch_warm` on demo-world
 //!   islands with prediction off, on, and on with last frame's bases (warm).
 //!
@@ -21,6 +22,7 @@ use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use lcpbatch::bench::{family_batch, islands_of_size, BenchFamily};
+use lcpbatch::cpu::enumeration_tree::TREE_MAX_N;
 use lcpbatch::gpu::batch::{solve_lcp_batch_warm, EnumerationKernel, UploadedBatch};
 use lcpbatch::gpu::{GpuContext, GpuOptions, GpuSolveSettings, Precision};
 use lcpbatch::Lcp;
@@ -70,16 +72,18 @@ fn bench_kernels(c: &mut Criterion) {
                 EnumerationKernel::Tree,
                 EnumerationKernel::Auto,
             ] {
-                if matches!(
-                    kernel,
-                    EnumerationKernel::Unrolled | EnumerationKernel::Tree
-                ) && n > 8
-                {
+                if kernel == EnumerationKernel::Unrolled && n > 8 {
                     continue; // specialised kernels exist for n ≤ 8
+                }
+                if kernel == EnumerationKernel::Tree && n > TREE_MAX_N {
+                    continue;
                 }
                 let s = GpuSolveSettings {
                     kernel,
                     predict: false,
+                    // The tree up to its largest size (the default stops at
+                    // 8 for compile time).
+                    tree_max_n: TREE_MAX_N,
                     ..Default::default()
                 };
                 let b = UploadedBatch::new(&ctx, &refs, &s).expect("upload");

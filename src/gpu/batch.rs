@@ -68,6 +68,9 @@ pub struct GpuSolveSettings {
     /// Gray-code kernel: measure the tableau's drift at every scheduled
     /// rebuild ([`EnumerationOutput::drift`]); for the period study.
     pub measure_drift: bool,
+    /// Largest island the tree kernel takes (default [`DEFAULT_TREE_MAX_N`];
+    /// values above [`TREE_MAX_N`] act as it, 0 turns the tree off).
+    pub tree_max_n: usize,
 }
 
 /// The enumeration shader.
@@ -90,7 +93,7 @@ pub enum EnumerationKernel {
     /// Same answers as Elimination, bit for bit.
     Unrolled,
     /// `shaders/enumeration_tree.wgsl` first, on every island of n ≤
-    /// [`TREE_MAX_N`]: all bases screened by principal pivots down the tree
+    /// [`GpuSolveSettings::tree_max_n`]: all bases screened by principal pivots down the tree
     /// of bases, the screened ones confirmed by elimination; the islands it
     /// leaves undecided, and the larger ones, go to Auto's kernel. Auto
     /// sends only positive definite islands to it ([`AUTO_TREE`]).
@@ -158,9 +161,16 @@ pub const UNROLLED_UP_TO_N: usize = 7;
 /// Its 64 lanes solve bases of one size side by side, where the per-island
 /// kernel's lanes diverge (each island stops at a different basis).
 pub const WORKGROUP_FROM_N: Option<usize> = Some(10);
-/// Auto: positive definite islands of n ≤ [`TREE_MAX_N`] go to the tree
-/// kernel first (see BENCHMARKS.md for what it measured against the others).
+/// Auto: positive definite islands of n ≤ [`GpuSolveSettings::tree_max_n`]
+/// go to the tree kernel first (on lavapipe 4–11× the islands/s of the
+/// elimination kernels at n = 6…10; BENCHMARKS.md).
 pub const AUTO_TREE: bool = true;
+/// Default [`GpuSolveSettings::tree_max_n`]: the tree kernel's code grows as
+/// 2ⁿ, and lavapipe took 3.6 s to compile it at n = 8 (both tree and
+/// elimination kernels of that size, first dispatch, no shader cache), 10 s
+/// at n = 9 and 35 s at n = 10, once per process and size (Mesa's disk cache
+/// keeps them between runs). Raise it for long runs of 9 or 10 contacts.
+pub const DEFAULT_TREE_MAX_N: usize = 8;
 
 impl Default for GpuSolveSettings {
     fn default() -> Self {
@@ -177,6 +187,7 @@ impl Default for GpuSolveSettings {
             kernel: EnumerationKernel::Auto,
             refactor_period: None,
             measure_drift: false,
+            tree_max_n: DEFAULT_TREE_MAX_N,
         }
     }
 }
@@ -321,6 +332,8 @@ pub struct KernelPlan {
     /// Gray-code refactorisation period.
     pub period: u32,
     pub measure: bool,
+    /// Largest island for the tree kernel (≤ [`TREE_MAX_N`]).
+    pub tree_max_n: usize,
 }
 
 impl KernelPlan {
@@ -330,15 +343,16 @@ impl KernelPlan {
             kernel: settings.kernel,
             period: settings.refactor_period.unwrap_or(DEFAULT_REFACTOR_PERIOD),
             measure: settings.measure_drift,
+            tree_max_n: settings.tree_max_n.min(TREE_MAX_N),
         }
     }
 
-    /// Does this island go to the tree kernel first? n ≤ [`TREE_MAX_N`]
+    /// Does this island go to the tree kernel first? n ≤ `tree_max_n`
     /// and: every such island with [`EnumerationKernel::Tree`]; with Auto
     /// ([`AUTO_TREE`]), those whose M is positive definite, where every
     /// pivot of the tree exists (O(n³) Cholesky on the CPU).
     pub fn tree_for(&self, lcp: &Lcp) -> bool {
-        lcp.n() <= TREE_MAX_N
+        lcp.n() <= self.tree_max_n
             && match self.kernel {
                 EnumerationKernel::Tree => true,
                 EnumerationKernel::Auto => AUTO_TREE && is_positive_definite(lcp),

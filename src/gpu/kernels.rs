@@ -81,7 +81,8 @@ pub struct Pipelines {
     /// n = 1…[`TREE_MAX_N`], at index n − 1; built on first use
     /// ([`Pipelines::tree`]).
     enumeration_tree: Vec<std::sync::OnceLock<Stage>>,
-    tree_src: Vec<String>,
+    /// The templated tree kernel, before [`tree_source`] specialises it.
+    tree_src: String,
     pub assemble_contacts: Stage,
     pub assemble_islands: Stage,
     pub impulses: Stage,
@@ -551,11 +552,14 @@ impl Pipelines {
     /// built on first use.
     pub fn tree(&self, ctx: &GpuContext, n: usize) -> &Stage {
         self.enumeration_tree[n - 1].get_or_init(|| {
+            // The placeholder and HOST lines were checked when the
+            // pipelines were built (`tree_source` at n = 1).
+            let src = tree_source(&self.tree_src, n).unwrap_or_default();
             let m = ctx
                 .device
                 .create_shader_module(wgpu::ShaderModuleDescriptor {
                     label: Some("enumeration_tree.wgsl"),
-                    source: wgpu::ShaderSource::Wgsl(self.tree_src[n - 1].as_str().into()),
+                    source: wgpu::ShaderSource::Wgsl(src.into()),
                 });
             stage(&ctx.device, &m, "main", &enumeration_entries())
         })
@@ -629,9 +633,7 @@ impl Pipelines {
                 tree.max_confirmations
             ),
         )?;
-        let tree_src: Vec<String> = (1..=TREE_MAX_N)
-            .map(|n| tree_source(&tree_src, n))
-            .collect::<Result<_, Error>>()?;
+        tree_source(&tree_src, 1)?;
         let assembly_src = template(ASSEMBLY_WGSL, key.precision, None)?;
         let impulses_src = template(IMPULSES_WGSL, key.precision, None)?;
         ctx.scoped("building the pipelines", || {
