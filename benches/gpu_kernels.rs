@@ -7,8 +7,7 @@
 //!   batch of islands of exactly n contacts, uploaded once, dispatch alone
 //!   (every enumeration round; Tree: every island through the tree kernel,
 //!   the undecided ones then by elimination; Auto: the positive definite
-//!   ones through the tree; both with the tree up to n = 10, whose first
-//!   dispatch compiles for half a minute on lavapipe);
+//!   ones through the tree);
 //! - `gpu_prediction/<precision>`: `solve_lcp_batch_warm` on demo-world
 //!   islands with prediction off, on, and on with last frame's bases (warm).
 //!
@@ -81,9 +80,6 @@ fn bench_kernels(c: &mut Criterion) {
                 let s = GpuSolveSettings {
                     kernel,
                     predict: false,
-                    // The tree up to its largest size (the default stops at
-                    // 8 for compile time).
-                    tree_max_n: TREE_MAX_N,
                     ..Default::default()
                 };
                 let b = UploadedBatch::new(&ctx, &refs, &s).expect("upload");

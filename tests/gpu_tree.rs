@@ -6,7 +6,7 @@
 //! `cargo bench --bench gpu_kernels`.
 
 use lcpbatch::cpu::enumeration::enumerate;
-use lcpbatch::cpu::enumeration_tree::{enumerate_tree, TreeOutcome, TreeSettings};
+use lcpbatch::cpu::enumeration_tree::{enumerate_tree, TreeOutcome, TreeSettings, TREE_MAX_N};
 use lcpbatch::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};
 use lcpbatch::gpu::batch::{enumerate_on_gpu, EnumerationKernel};
 use lcpbatch::gpu::layout::{FOUND, TREE_DECIDED, TREE_UNDECIDED};
@@ -108,6 +108,52 @@ fn tree_kernel_equals_its_cpu_twin_in_f64() {
     }
     assert_eq!((decided, left), (stats.tree_decided, stats.tree_undecided));
     assert!(decided > 200 && left > 10, "decided {decided}, left {left}");
+}
+
+/// Above n = 8 the kernel loops over the bases of the first n − 8 indices
+/// around the straight-line tree of the last 8: the same decisions as the
+/// twin (f64: basis, z, counters), n = 9…12.
+#[test]
+fn tree_kernel_with_a_prefix_loop_equals_its_cpu_twin_in_f64() {
+    let Some(ctx) = context(Precision::F64) else {
+        return;
+    };
+    let settings = GpuSolveSettings {
+        tree_max_n: TREE_MAX_N,
+        ..tree_only()
+    };
+    for n in 9..=TREE_MAX_N {
+        let lcps = lcpbatch::bench::islands_of_size(n, 48, 7 + n as u64);
+        let refs: Vec<&Lcp> = lcps.iter().collect();
+        let (out, stats) = enumerate_on_gpu(&ctx, &refs, &settings).unwrap();
+        println!(
+            "n = {n}: tree decided {}, left {}",
+            stats.tree_decided, stats.tree_undecided
+        );
+        assert!(stats.tree_decided >= 30, "n = {n}: {}", stats.tree_decided);
+        for (i, (l, o)) in lcps.iter().zip(&out).enumerate() {
+            let r = &o.result;
+            match enumerate_tree(l, &TreeSettings::default()) {
+                TreeOutcome::Decided(cpu) => {
+                    assert_eq!(r._pad1, TREE_DECIDED, "n = {n}, island {i}");
+                    assert_eq!(Some(r.mask), cpu.basis, "n = {n}, island {i}");
+                    assert_eq!(r.visited as u64, cpu.counters.bases_visited);
+                    assert_eq!(r.singular as u64, cpu.counters.singular_bases);
+                    let scale = cpu.z.iter().fold(1.0f64, |m, v| m.max(v.abs()));
+                    for (a, b) in o.z.iter().zip(&cpu.z) {
+                        assert!((a - b).abs() <= 1e-12 * scale, "n = {n}, island {i}");
+                    }
+                }
+                TreeOutcome::Undecided(why) => {
+                    assert_eq!(r._pad1, TREE_UNDECIDED, "n = {n}, island {i} ({why:?})");
+                    assert_eq!(
+                        Some(r.mask),
+                        enumerate(l, &Default::default()).unwrap().basis
+                    );
+                }
+            }
+        }
+    }
 }
 
 /// What the tree decides is enumeration's choice: on positive definite

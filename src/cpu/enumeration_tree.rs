@@ -37,12 +37,11 @@
 use crate::cpu::enumeration::{solve_basis, BasisOutcome, EnumerationSettings};
 use crate::lcp::{Counters, Lcp, LcpSolution, Status};
 
-/// Largest island the GPU's tree kernel is generated for: its code grows as
-/// 2ⁿ and its compile time faster (on lavapipe 3.6 s at n = 8, 10 s at 9,
-/// 35 s at 10; the GPU path uses it up to
-/// [`crate::gpu::batch::DEFAULT_TREE_MAX_N`] unless told otherwise). The
-/// CPU twin takes any n up to 16.
-pub const TREE_MAX_N: usize = 10;
+/// Largest island the GPU's tree kernel is generated for (its bitmap of
+/// screened bases has 2ⁿ bits and its straight-line part assumes n − 8 ≤ 5;
+/// `tests/gpu_tree.rs` checks every size up to it). The CPU twin takes any
+/// n up to 16.
+pub const TREE_MAX_N: usize = 12;
 /// Largest n the CPU twin takes (2ⁿ leaves, one bit each).
 pub const TREE_TWIN_MAX_N: usize = 16;
 

@@ -68,8 +68,8 @@ pub struct GpuSolveSettings {
     /// Gray-code kernel: measure the tableau's drift at every scheduled
     /// rebuild ([`EnumerationOutput::drift`]); for the period study.
     pub measure_drift: bool,
-    /// Largest island the tree kernel takes (default [`DEFAULT_TREE_MAX_N`];
-    /// values above [`TREE_MAX_N`] act as it, 0 turns the tree off).
+    /// Largest island the tree kernel takes (default [`TREE_MAX_N`]; values
+    /// above it act as it; 0 turns the tree off).
     pub tree_max_n: usize,
 }
 
@@ -162,15 +162,11 @@ pub const UNROLLED_UP_TO_N: usize = 7;
 /// kernel's lanes diverge (each island stops at a different basis).
 pub const WORKGROUP_FROM_N: Option<usize> = Some(10);
 /// Auto: positive definite islands of n ≤ [`GpuSolveSettings::tree_max_n`]
-/// go to the tree kernel first (on lavapipe 4–11× the islands/s of the
-/// elimination kernels at n = 6…10; BENCHMARKS.md).
+/// go to the tree kernel first (on lavapipe 2–27× the islands/s of Auto's
+/// other kernels at n = 6…12, BENCHMARKS.md). Its first dispatch per size
+/// compiles for 1.5 s (n = 6) to 9 s (n = 12) on lavapipe without Mesa's
+/// shader cache, once per process.
 pub const AUTO_TREE: bool = true;
-/// Default [`GpuSolveSettings::tree_max_n`]: the tree kernel's code grows as
-/// 2ⁿ, and lavapipe took 3.6 s to compile it at n = 8 (both tree and
-/// elimination kernels of that size, first dispatch, no shader cache), 10 s
-/// at n = 9 and 35 s at n = 10, once per process and size (Mesa's disk cache
-/// keeps them between runs). Raise it for long runs of 9 or 10 contacts.
-pub const DEFAULT_TREE_MAX_N: usize = 8;
 
 impl Default for GpuSolveSettings {
     fn default() -> Self {
@@ -187,7 +183,7 @@ impl Default for GpuSolveSettings {
             kernel: EnumerationKernel::Auto,
             refactor_period: None,
             measure_drift: false,
-            tree_max_n: DEFAULT_TREE_MAX_N,
+            tree_max_n: TREE_MAX_N,
         }
     }
 }

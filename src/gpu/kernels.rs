@@ -278,28 +278,21 @@ pub fn straight_line_solver(n: usize) -> String {
     o
 }
 
+/// Levels of the tree written out as straight-line code in the tree kernel;
+/// above that, a loop over the bases of the first n − 8 indices runs the
+/// straight-line tree of the last 8 under each (code and compile time stay
+/// those of n = 8).
+pub const TREE_INNER_LEVELS: usize = 8;
+
 /// `shaders/enumeration_tree.wgsl` (templated) for islands of exactly n
-/// contacts: FN, WORDS, RANKS and the rank table set, and the placeholder
-/// `tree_pass` replaced by [`tree_pass_source`].
+/// contacts: FN and WORDS set, and the placeholder `tree_pass` replaced by
+/// [`tree_pass_source`].
 pub fn tree_source(tree_src: &str, n: usize) -> Result<String, Error> {
-    let ranks = 1usize << n;
-    let mut by_rank: Vec<u32> = (0..ranks as u32).collect();
-    by_rank.sort_by_key(|&m| (m.count_ones(), m));
-    let table: Vec<String> = by_rank.iter().map(|m| format!("{m}u")).collect();
     let s = replace_host_line(tree_src, "fixed_n", &format!("const FN: u32 = {n}u;"))?;
     let s = replace_host_line(
         &s,
         "words",
-        &format!("const WORDS: u32 = {}u;", ranks.div_ceil(32)),
-    )?;
-    let s = replace_host_line(&s, "ranks", &format!("const RANKS: u32 = {ranks}u;"))?;
-    let s = replace_host_line(
-        &s,
-        "rank_mask",
-        &format!(
-            "var<private> rank_mask: array<u32, {ranks}> = array<u32, {ranks}>({});",
-            table.join(", ")
-        ),
+        &format!("const WORDS: u32 = {}u;", (1usize << n).div_ceil(32)),
     )?;
     let start = s
         .find("fn tree_pass(")
@@ -316,22 +309,24 @@ pub fn tree_source(tree_src: &str, n: usize) -> Result<String, Error> {
     ))
 }
 
-/// The screen pass of `shaders/enumeration_tree.wgsl` for n contacts as
-/// straight-line WGSL: the depth-first walk of
-/// [`crate::cpu::enumeration_tree`] unrolled, each pivot's results named by
-/// the depth that made them (`a{d}_{i}_{j}`, `t{d}_{i}`) inside a block per
-/// subtree, each leaf's screen setting its bit of the candidate bitmap.
+/// The screen pass of `shaders/enumeration_tree.wgsl` for n contacts (n ≤
+/// [`TREE_INNER_LEVELS`] + 5) as WGSL: the depth-first walk of
+/// [`crate::cpu::enumeration_tree`] with the same operations in the same
+/// order. The first P = n − 8 levels (none when n ≤ 8) run in a loop over
+/// their 2^P bases `pre`, each pivot of the prefix under `if` (llvmpipe
+/// computes it either way; P is small); the last levels are unrolled, each
+/// pivot's results named by the depth that made them (`a{d}_{i}_{j}`,
+/// `t{d}_{i}`) inside a block per subtree, and each leaf's screen sets bit
+/// `mask` of the candidate bitmap (word `mask / 32` is a constant as long as
+/// P ≤ 5).
 pub fn tree_pass_source(n: usize) -> String {
     use std::fmt::Write;
     let mut o = String::new();
     let _ = writeln!(o, "fn tree_pass(base: u32) -> bool {{");
-    let mut tab = vec![String::new(); n * n];
-    let mut rhs = vec![String::new(); n];
     let mut mmax = "Scalar(0.0)".to_string();
     for i in 0..n {
         for j in 0..n {
             let _ = writeln!(o, "let m{i}_{j} = values[base + {}u];", i * n + j);
-            tab[i * n + j] = format!("m{i}_{j}");
             let _ = writeln!(o, "let mm{} = max({mmax}, abs(m{i}_{j}));", i * n + j);
             mmax = format!("mm{}", i * n + j);
         }
@@ -339,7 +334,6 @@ pub fn tree_pass_source(n: usize) -> String {
     let mut qmax = "Scalar(0.0)".to_string();
     for i in 0..n {
         let _ = writeln!(o, "let q{i} = values[base + {}u];", n * n + i);
-        rhs[i] = format!("q{i}");
         let _ = writeln!(o, "let qm{i} = max({qmax}, abs(q{i}));");
         qmax = format!("qm{i}");
     }
@@ -348,13 +342,54 @@ pub fn tree_pass_source(n: usize) -> String {
     for w in 0..words {
         let _ = writeln!(o, "var c{w} = 0u;");
     }
-    let mut rank = vec![0usize; 1 << n];
-    let mut by_rank: Vec<usize> = (0..1usize << n).collect();
-    by_rank.sort_by_key(|&m| (m.count_ones(), m));
-    for (r, &m) in by_rank.iter().enumerate() {
-        rank[m] = r;
+    let prefix = n.saturating_sub(TREE_INNER_LEVELS);
+    let mut tab: Vec<String> = (0..n * n)
+        .map(|k| format!("m{}_{}", k / n, k % n))
+        .collect();
+    let mut rhs: Vec<String> = (0..n).map(|i| format!("q{i}")).collect();
+    if prefix == 0 {
+        let _ = writeln!(o, "let pre = 0u;");
+    } else {
+        let _ = writeln!(o, "for (var pre = 0u; pre < {}u; pre++) {{", 1u32 << prefix);
+        // The prefix's tableau: columns ≥ 1 and t, pivoted on each index d
+        // < P that `pre` makes basic.
+        for i in 0..n {
+            for j in 1..n {
+                let _ = writeln!(o, "var x{i}_{j} = m{i}_{j};");
+                tab[i * n + j] = format!("x{i}_{j}");
+            }
+            let _ = writeln!(o, "var y{i} = q{i};");
+            rhs[i] = format!("y{i}");
+        }
+        for d in 0..prefix {
+            let _ = writeln!(o, "let b{d} = ((pre >> {d}u) & 1u) == 1u;");
+            let _ = writeln!(o, "if b{d} {{");
+            let p = &tab[d * n + d];
+            let _ = writeln!(
+                o,
+                "ok = ok & ({p} > TREE_PIVOT_TOL * m{d}_{d});\nlet i{d} = Scalar(1.0) / {p};\nlet n{d} = -i{d};"
+            );
+            for j in d + 1..n {
+                let _ = writeln!(o, "let r{j} = {} * n{d};", tab[d * n + j]);
+            }
+            let _ = writeln!(o, "let tr = -{} * i{d};", rhs[d]);
+            for i in (0..n).filter(|&i| i != d) {
+                let _ = writeln!(o, "let f{i} = {};", tab[i * n + d]);
+                for j in d + 1..n {
+                    let _ = writeln!(o, "{0} = {0} + f{i} * r{j};", tab[i * n + j]);
+                }
+                let _ = writeln!(o, "{0} = {0} + f{i} * tr;", rhs[i]);
+            }
+            for j in d + 1..n {
+                let _ = writeln!(o, "{} = r{j};", tab[d * n + j]);
+            }
+            let _ = writeln!(o, "{} = tr;\n}}", rhs[d]);
+        }
     }
-    tree_node(&mut o, n, 0, 0, &tab, &rhs, &rank);
+    tree_node(&mut o, n, prefix, prefix, 0, &tab, &rhs);
+    if prefix > 0 {
+        let _ = writeln!(o, "}}");
+    }
     for w in 0..words {
         let _ = writeln!(o, "cand[{w}] = c{w};");
     }
@@ -362,46 +397,61 @@ pub fn tree_pass_source(n: usize) -> String {
     o
 }
 
-/// One node of [`tree_pass_source`]'s walk: depth d, basis `mask` of the
-/// indices below d, tableau entries and t named in `tab` and `rhs`.
+/// One node of [`tree_pass_source`]'s unrolled levels: depth d, the basic
+/// indices in d' ∈ [prefix, d) in `mask` (those below `prefix` are `pre`'s,
+/// known at run time as `b{i}`), tableau entries and t named in `tab` and
+/// `rhs`.
 fn tree_node(
     o: &mut String,
     n: usize,
+    prefix: usize,
     d: usize,
     mask: usize,
     tab: &[String],
     rhs: &[String],
-    rank: &[usize],
 ) {
     use std::fmt::Write;
     if d == n {
-        // The screen (the CPU twin's `Walk::screen`).
-        let basic: Vec<usize> = (0..n).filter(|i| mask >> i & 1 == 1).collect();
+        // The screen (the CPU twin's `Walk::screen`): a prefix index is
+        // basic when its `b` is set; select(0, |t|, false) adds 0 to the sum
+        // and leaves the max, as the twin's skip does.
         let _ = writeln!(o, "{{");
         let (mut zm, mut zs) = ("Scalar(0.0)".to_string(), "Scalar(0.0)".to_string());
-        for &i in &basic {
-            zm = format!("max({zm}, abs({}))", rhs[i]);
-            zs = format!("({zs} + abs({}))", rhs[i]);
+        for i in 0..n {
+            let a = format!("abs({})", rhs[i]);
+            if i < prefix {
+                let v = format!("select(Scalar(0.0), {a}, b{i})");
+                zm = format!("max({zm}, {v})");
+                zs = format!("({zs} + {v})");
+            } else if mask >> i & 1 == 1 {
+                zm = format!("max({zm}, {a})");
+                zs = format!("({zs} + {a})");
+            }
         }
         let _ = writeln!(o, "let zm = {zm};\nlet ws = qmax + mmax * {zs};");
         let tests: Vec<String> = (0..n)
             .map(|i| {
-                let scale = if mask >> i & 1 == 1 { "zm" } else { "ws" };
+                let scale = if i < prefix {
+                    format!("select(ws, zm, b{i})")
+                } else if mask >> i & 1 == 1 {
+                    "zm".to_string()
+                } else {
+                    "ws".to_string()
+                };
                 format!("({} >= -SCREEN_TOL * {scale})", rhs[i])
             })
             .collect();
-        let r = rank[mask];
         let _ = writeln!(
             o,
-            "c{w} = c{w} | select(0u, {bit}u, {});\n}}",
+            "c{w} = c{w} | select(0u, 1u << (pre | {low}u), {});\n}}",
             tests.join(" & "),
-            w = r / 32,
-            bit = 1u32 << (r % 32)
+            w = mask / 32,
+            low = mask % 32
         );
         return;
     }
     // Index d nonbasic: the same tableau.
-    tree_node(o, n, d + 1, mask, tab, rhs, rank);
+    tree_node(o, n, prefix, d + 1, mask, tab, rhs);
     // Index d basic: the principal pivot on T_dd (columns > d and t).
     let _ = writeln!(o, "{{");
     let p = &tab[d * n + d];
@@ -430,7 +480,7 @@ fn tree_node(
         let _ = writeln!(o, "let t{d}_{i} = {} + {f} * t{d}_{d};", rhs[i]);
         rhs2[i] = format!("t{d}_{i}");
     }
-    tree_node(o, n, d + 1, mask | 1 << d, &tab2, &rhs2, rank);
+    tree_node(o, n, prefix, d + 1, mask | 1 << d, &tab2, &rhs2);
     let _ = writeln!(o, "}}");
 }
 
