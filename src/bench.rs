@@ -609,8 +609,10 @@ pub fn gpu_rows(
         &validated,
     );
     b.note = format!(
-        "{}; polished={} repaired={} cpu_fallback={}",
+        "{}; tree decided={} undecided={}; polished={} repaired={} cpu_fallback={}",
         paths_note(r),
+        r.tree_decided,
+        r.tree_undecided,
         r.polished,
         r.repaired,
         r.cpu_fallback

@@ -25,8 +25,11 @@
 //! undecided: the caller enumerates it by elimination instead.
 //!
 //! # Screen and confirmation
-//! A leaf passes the screen when z_S ≥ −tol·max|t_S| and
-//! w_N ≥ −tol·(max|q| + max|M|·Σ|t_S|), the Gray-code screen. The passing
+//! A leaf passes the screen when z_S ≥ −tol·max|t_S| and, for each i off
+//! S, w_i ≥ −tol·(|q_i| + max_j |M_ij|·Σ|t_S|): an upper bound of
+//! enumeration's own scale of w_i, |q_i| + Σ_j |M_ij z_j|, that keeps rows
+//! of small entries (a heavy body's contacts beside a light one's) from
+//! being screened against the large ones. The passing
 //! bases are confirmed by [`solve_basis`] in enumeration's order (fewest
 //! basic z, then smallest mask), at most `max_confirmations` of them: the
 //! first feasible to the strict tolerance is enumeration's choice, since
@@ -101,14 +104,20 @@ pub fn screen_tree(lcp: &Lcp, s: &TreeSettings) -> Result<Vec<u32>, Undecided> {
     if n == 0 || n > TREE_TWIN_MAX_N {
         return Err(Undecided::Size);
     }
-    // Scales of the screen, in the kernel's order (row-major, then q).
-    let mmax = lcp.m.iter().fold(0.0f64, |a, v| a.max(v.abs()));
-    let qmax = lcp.q.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+    // Scales of the screen, in the kernel's order.
+    let rowmax = (0..n)
+        .map(|i| {
+            lcp.m[i * n..(i + 1) * n]
+                .iter()
+                .fold(0.0f64, |a, v| a.max(v.abs()))
+        })
+        .collect();
     let mut walk = Walk {
         n,
         s,
         diag: (0..n).map(|d| lcp.m[d * n + d]).collect(),
-        wscale: (qmax, mmax),
+        qabs: lcp.q.iter().map(|v| v.abs()).collect(),
+        rowmax,
         passed: Vec::new(),
         small_pivot: false,
     };
@@ -127,8 +136,9 @@ struct Walk<'a> {
     s: &'a TreeSettings,
     /// M_dd, the scale of the pivot test.
     diag: Vec<f64>,
-    /// (max|q|, max|M|): the screen's scale of w.
-    wscale: (f64, f64),
+    /// |q_i| and max_j |M_ij|: the screen's scale of w_i.
+    qabs: Vec<f64>,
+    rowmax: Vec<f64>,
     passed: Vec<u32>,
     small_pivot: bool,
 }
@@ -186,10 +196,13 @@ impl Walk<'_> {
                 zsum = zsum + a;
             }
         }
-        let wscale = self.wscale.0 + self.wscale.1 * zsum;
         let mut pass = true;
         for (i, &v) in t.iter().enumerate() {
-            let scale = if mask >> i & 1 == 1 { zmax } else { wscale };
+            let scale = if mask >> i & 1 == 1 {
+                zmax
+            } else {
+                self.qabs[i] + self.rowmax[i] * zsum
+            };
             pass &= v >= -tol * scale;
         }
         pass

@@ -323,21 +323,20 @@ pub fn tree_pass_source(n: usize) -> String {
     use std::fmt::Write;
     let mut o = String::new();
     let _ = writeln!(o, "fn tree_pass(base: u32) -> bool {{");
-    let mut mmax = "Scalar(0.0)".to_string();
+    // The screen's scale of w_i: |q_i| + rm{i}·Σ|z_S|, rm{i} = max_j |M_ij|.
     for i in 0..n {
+        let mut rm = "Scalar(0.0)".to_string();
         for j in 0..n {
             let _ = writeln!(o, "let m{i}_{j} = values[base + {}u];", i * n + j);
-            let _ = writeln!(o, "let mm{} = max({mmax}, abs(m{i}_{j}));", i * n + j);
-            mmax = format!("mm{}", i * n + j);
+            rm = format!("max({rm}, abs(m{i}_{j}))");
         }
+        let _ = writeln!(o, "let rm{i} = {rm};");
     }
-    let mut qmax = "Scalar(0.0)".to_string();
     for i in 0..n {
         let _ = writeln!(o, "let q{i} = values[base + {}u];", n * n + i);
-        let _ = writeln!(o, "let qm{i} = max({qmax}, abs(q{i}));");
-        qmax = format!("qm{i}");
+        let _ = writeln!(o, "let qa{i} = abs(q{i});");
     }
-    let _ = writeln!(o, "let mmax = {mmax};\nlet qmax = {qmax};\nvar ok = true;");
+    let _ = writeln!(o, "var ok = true;");
     let words = (1usize << n).div_ceil(32);
     for w in 0..words {
         let _ = writeln!(o, "var c{w} = 0u;");
@@ -428,15 +427,16 @@ fn tree_node(
                 zs = format!("({zs} + {a})");
             }
         }
-        let _ = writeln!(o, "let zm = {zm};\nlet ws = qmax + mmax * {zs};");
+        let _ = writeln!(o, "let zm = {zm};\nlet zs = {zs};");
         let tests: Vec<String> = (0..n)
             .map(|i| {
+                let ws = format!("(qa{i} + rm{i} * zs)");
                 let scale = if i < prefix {
-                    format!("select(ws, zm, b{i})")
+                    format!("select({ws}, zm, b{i})")
                 } else if mask >> i & 1 == 1 {
                     "zm".to_string()
                 } else {
-                    "ws".to_string()
+                    ws
                 };
                 format!("({} >= -SCREEN_TOL * {scale})", rhs[i])
             })
