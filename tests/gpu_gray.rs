@@ -7,12 +7,10 @@
 
 use lcpbatch::cpu::enumeration::enumerate;
 use lcpbatch::cpu::enumeration_gray::{enumerate_gray, GraySettings};
-use lcpbatch::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};
 use lcpbatch::gpu::batch::{enumerate_on_gpu, EnumerationKernel};
 use lcpbatch::gpu::layout::{FOUND, NONE, RELAXED};
 use lcpbatch::gpu::{solve_lcp_batch, GpuSolveSettings, Precision};
-use lcpbatch::pipeline::build;
-use lcpbatch::{Lcp, Scene, Status};
+use lcpbatch::{Lcp, Status};
 
 mod common;
 use common::gpu_context as context;
@@ -21,27 +19,7 @@ use common::gpu_context as context;
 /// (singular bases), the seed chain, demo worlds, and non-symmetric seeds
 /// with zero diagonals (no principal pivot order from the empty basis).
 fn islands(seed: u64, count: usize) -> Vec<Lcp> {
-    let mut rng = Rng::new(seed);
-    let mut scenes: Vec<Scene> = vec![box_on_ground(1.0, 0.5), seed_chain(0.3)];
-    for k in 0..count {
-        scenes.push(random_island(&mut rng, 1 + k % 12, [1.0, 1e2, 1e4][k % 3]));
-    }
-    for _ in 0..10 {
-        scenes.push(demo_world(&mut rng));
-    }
-    let mut lcps: Vec<Lcp> = scenes
-        .iter()
-        .flat_map(|s| build(s, "scene").unwrap().2)
-        .collect();
-    for q in [[-3.0, 6.0, -1.0], [-3.0, 6.0, 1.0], [1.0, 1.0, 1.0]] {
-        lcps.push(
-            Lcp::new(
-                vec![0.0, -1.0, 2.0, 2.0, 0.0, -2.0, -1.0, 1.0, 0.0],
-                q.to_vec(),
-            )
-            .unwrap(),
-        );
-    }
+    let mut lcps = common::physical_islands(seed, count, 12);
     lcps.push(Lcp::new(vec![1.0, 1.0, 1.0, 1.0], vec![-1.0, -1.0]).unwrap());
     lcps.push(Lcp::new(vec![-1.0, 0.0, 0.0, -1.0], vec![-1.0, -1.0]).unwrap());
     lcps

@@ -7,43 +7,20 @@
 
 use lcpbatch::cpu::enumeration::enumerate;
 use lcpbatch::cpu::enumeration_tree::{enumerate_tree, TreeOutcome, TreeSettings, TREE_MAX_N};
-use lcpbatch::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};
 use lcpbatch::gpu::batch::{enumerate_on_gpu, EnumerationKernel};
 use lcpbatch::gpu::layout::{FOUND, TREE_DECIDED, TREE_UNDECIDED};
 use lcpbatch::gpu::{solve_lcp_batch, GpuSolveSettings, Precision};
-use lcpbatch::pipeline::build;
 use lcpbatch::prediction::is_positive_definite;
-use lcpbatch::{Lcp, Scene};
+use lcpbatch::Lcp;
 
 mod common;
 use common::gpu_context as context;
 
-/// Fixed-seed physical islands n = 1…8 (mass ratios 1…1e4; most positive
-/// definite), resting boxes (semidefinite: small pivots), the seed chain,
-/// demo worlds, and small non-symmetric problems with zero diagonals.
+/// Physical islands n = 1…8 (most positive definite; resting boxes are
+/// semidefinite: small pivots), seed 002's non-symmetric problems (zero
+/// diagonals) and a positive definite 2×2.
 fn islands(seed: u64, count: usize) -> Vec<Lcp> {
-    let mut rng = Rng::new(seed);
-    let mut scenes: Vec<Scene> = vec![box_on_ground(1.0, 0.5), seed_chain(0.3)];
-    for k in 0..count {
-        scenes.push(random_island(&mut rng, 1 + k % 8, [1.0, 1e2, 1e4][k % 3]));
-    }
-    for _ in 0..10 {
-        scenes.push(demo_world(&mut rng));
-    }
-    let mut lcps: Vec<Lcp> = scenes
-        .iter()
-        .flat_map(|s| build(s, "scene").unwrap().2)
-        .filter(|l| l.n() <= 8)
-        .collect();
-    for q in [[-3.0, 6.0, -1.0], [-3.0, 6.0, 1.0], [1.0, 1.0, 1.0]] {
-        lcps.push(
-            Lcp::new(
-                vec![0.0, -1.0, 2.0, 2.0, 0.0, -2.0, -1.0, 1.0, 0.0],
-                q.to_vec(),
-            )
-            .unwrap(),
-        );
-    }
+    let mut lcps = common::physical_islands(seed, count, 8);
     lcps.push(Lcp::new(vec![2.0, 1.0, 1.0, 2.0], vec![-3.0, -3.0]).unwrap());
     lcps
 }

@@ -13,6 +13,8 @@ use lcpbatch::gpu::{solve_lcp_batch, GpuContext, GpuOptions, GpuSolveSettings, P
 use lcpbatch::stress::{generate, Family};
 use lcpbatch::{Lcp, Status};
 
+mod common;
+
 fn context(precision: Precision) -> Option<GpuContext> {
     let mut o = GpuOptions::from_env().expect("GPU environment variables");
     o.precision = precision;
@@ -42,15 +44,7 @@ fn islands(per_n: usize, seed: u64) -> Vec<Lcp> {
                 .filter(|l| l.n() <= 16),
         );
     }
-    for q in [[-3.0, 6.0, -1.0], [-3.0, 6.0, 1.0], [1.0, 1.0, 1.0]] {
-        lcps.push(
-            Lcp::new(
-                vec![0.0, -1.0, 2.0, 2.0, 0.0, -2.0, -1.0, 1.0, 0.0],
-                q.to_vec(),
-            )
-            .unwrap(),
-        );
-    }
+    lcps.extend(common::seed_002_problems());
     lcps.push(Lcp::new(vec![-1.0, 0.0, 0.0, -1.0], vec![-1.0, -1.0]).unwrap());
     lcps
 }

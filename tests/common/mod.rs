@@ -179,3 +179,45 @@ pub fn gpu_context(precision: lcpbatch::gpu::Precision) -> Option<lcpbatch::gpu:
         Err(e) => panic!("no GPU adapter ({e}): {INSTALL_HINT}"),
     }
 }
+
+/// Seed 002's non-symmetric M (zero diagonal: no principal pivot order from
+/// the empty basis) with q = (−3, 6, −1), (−3, 6, 1) and (1, 1, 1).
+pub fn seed_002_problems() -> Vec<Lcp> {
+    [[-3.0, 6.0, -1.0], [-3.0, 6.0, 1.0], [1.0, 1.0, 1.0]]
+        .iter()
+        .map(|q| {
+            Lcp::new(
+                vec![0.0, -1.0, 2.0, 2.0, 0.0, -2.0, -1.0, 1.0, 0.0],
+                q.to_vec(),
+            )
+            .unwrap()
+        })
+        .collect()
+}
+
+/// Fixed-seed physical islands of at most `max_n` contacts: `count` random
+/// islands of 1…max_n contacts (mass ratios 1, 1e2, 1e4 in turn), a box
+/// resting on 4 coplanar contacts, the seed chain and 10 demo worlds; then
+/// [`seed_002_problems`].
+pub fn physical_islands(seed: u64, count: usize, max_n: usize) -> Vec<Lcp> {
+    use lcpbatch::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};
+    let mut rng = Rng::new(seed);
+    let mut scenes = vec![box_on_ground(1.0, 0.5), seed_chain(0.3)];
+    for k in 0..count {
+        scenes.push(random_island(
+            &mut rng,
+            1 + k % max_n,
+            [1.0, 1e2, 1e4][k % 3],
+        ));
+    }
+    for _ in 0..10 {
+        scenes.push(demo_world(&mut rng));
+    }
+    let mut lcps: Vec<Lcp> = scenes
+        .iter()
+        .flat_map(|s| lcpbatch::pipeline::build(s, "scene").unwrap().2)
+        .filter(|l| l.n() <= max_n)
+        .collect();
+    lcps.extend(seed_002_problems());
+    lcps
+}
