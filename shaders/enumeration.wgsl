@@ -40,33 +40,8 @@ const FIXED: bool = false; // HOST fixed
 const FN: u32 = 1u; // HOST fixed_n
 const FNN: u32 = 1u; // HOST fixed_nn
 
-// One dispatch covers islands first .. first + count of the island table
-// (one dispatch per island size n, split to stay under 65,535 workgroups);
-// `budget`: loop work per invocation and round.
-struct Params {
-    first: u32,
-    count: u32,
-    budget: u32,
-    _pad: u32,
-}
-
-// Where the enumeration of one island stands. status 0: in progress, the
-// next basis to visit is `mask` (zero-initialised: start at the empty basis);
-// 1: `mask` is the chosen valid basis (z written); 2: no basis is valid or
-// within RELAXED_TOL; 3: none is valid, `mask` is the least infeasible basis
-// within RELAXED_TOL (z written). visited / singular count bases as the
-// CPU's Counters do. `least` (when `has_least` is 1) is the least infeasible
-// basis so far, its infeasibility in `least_infeasibility`.
-struct BasisResult {
-    mask: u32,
-    status: u32,
-    visited: u32,
-    singular: u32,
-    least: u32,
-    has_least: u32,
-    _pad0: u32,
-    _pad1: u32,
-}
+// Params and BasisResult (where an island's enumeration stands):
+// shaders/enumeration_basis.wgsl.
 
 // Scratch of solve_basis_fixed (solve_basis' is in enumeration_basis.wgsl).
 var<private> fa: array<Scalar, FNN>;

@@ -1,17 +1,17 @@
-// Shared part of the three enumeration kernels (shaders/enumeration.wgsl,
-// shaders/enumeration_gray.wgsl, shaders/enumeration_workgroup.wgsl): the
-// scalar type and tolerances, the island table, bindings 0-6, the
-// elimination scratch, and the elimination itself (solve_basis, write_z,
-// basis_cost). WGSL has no include, so the host (src/gpu/kernels.rs,
+// Shared part of the four enumeration kernels (shaders/enumeration.wgsl,
+// shaders/enumeration_gray.wgsl, shaders/enumeration_workgroup.wgsl,
+// shaders/enumeration_tree.wgsl): the scalar type and tolerances, the
+// island table, Params and BasisResult, bindings 0-6, the elimination
+// scratch, and the elimination itself (solve_basis, write_z, basis_cost). WGSL has no include, so the host (src/gpu/kernels.rs,
 // `enumeration_source`) prepends this file to each kernel's source before it
 // replaces the lines marked HOST in the combined text. One copy keeps the
 // kernels' eliminations operation for operation the same, which the GPU
 // tests check bit for bit against each other and against the CPU twins
 // (src/cpu/enumeration.rs, src/cpu/enumeration_gray.rs).
 //
-// Each kernel defines what differs between them: Params and BasisResult
-// (used by bindings 0 and 3 below), any further bindings and scratch, and
-// its entry point. Not valid on its own: compile it only with a kernel.
+// Each kernel defines what differs between them: any further bindings,
+// constants and scratch, and its entry point. Not valid on its own: compile
+// it only with a kernel.
 
 alias Scalar = f32; // HOST scalar
 const PIVOT_TOL: Scalar = 1e-6; // HOST pivot_tol
@@ -29,7 +29,40 @@ struct Island {
     _pad: u32,
 }
 
-// Params and BasisResult are the kernel's own.
+// One dispatch covers islands first .. first + count of the island table
+// (one dispatch per island size n, split to stay under 65,535 workgroups);
+// `budget`: loop work per invocation and round; `flags`: the Gray-code
+// kernel's refactorisation period (bits 0..15) and drift switch (bit 16),
+// 0 for the others.
+struct Params {
+    first: u32,
+    count: u32,
+    budget: u32,
+    flags: u32,
+}
+
+// Where the enumeration of one island stands. status 0: in progress, the
+// next basis to visit is `mask` (zero-initialised: start at the empty basis);
+// 1: `mask` is the chosen valid basis (z written); 2: no basis is valid or
+// within RELAXED_TOL; 3: none is valid, `mask` is the least infeasible basis
+// within RELAXED_TOL (z written). visited / singular count bases as the
+// CPU's Counters do. `least` (when `has_least` is 1) is the least infeasible
+// basis so far, its infeasibility in `least_infeasibility`. `_pad0` and
+// `_pad1` are each kernel's own (see its header): the Gray-code kernel's
+// best confirmed basis and whether it has one, the workgroup kernel's rank
+// of the next basis, the tree kernel's DECIDED / UNDECIDED; the elimination
+// kernel carries them through.
+struct BasisResult {
+    mask: u32,
+    status: u32,
+    visited: u32,
+    singular: u32,
+    least: u32,
+    has_least: u32,
+    _pad0: u32,
+    _pad1: u32,
+}
+
 @group(0) @binding(0) var<uniform> params: Params;
 @group(0) @binding(1) var<storage, read> islands: array<Island>;
 @group(0) @binding(2) var<storage, read> values: array<Scalar>;

@@ -41,24 +41,10 @@
 const SCREEN_TOL: Scalar = 1e-3; // HOST screen_tol
 const TAB_PIVOT_TOL: Scalar = 1e-3; // HOST tableau_pivot_tol
 
-// flags: refactorisation period (bits 0..15), measure drift (bit 16).
-struct Params {
-    first: u32,
-    count: u32,
-    budget: u32,
-    flags: u32,
-}
-
-struct BasisResult {
-    mask: u32,
-    status: u32,
-    visited: u32,
-    singular: u32,
-    least: u32,
-    has_least: u32,
-    best: u32,
-    has_best: u32,
-}
+// Params and BasisResult: shaders/enumeration_basis.wgsl; params.flags is
+// the refactorisation period (bits 0..15) and the drift switch (bit 16);
+// BasisResult's `_pad0` is the best confirmed basis so far and `_pad1`
+// whether there is one.
 
 // Bindings 0-6: enumeration_basis.wgsl.
 @group(0) @binding(7) var<storage, read_write> drift: array<Scalar>;
@@ -258,7 +244,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         first = false;
         state.visited++;
         // A basis that cannot beat the best confirmed one needs no check.
-        var check = state.has_best == 0u || key_less(mask, state.best);
+        var check = state._pad1 == 0u || key_less(mask, state._pad0);
         if check && valid {
             check = screen(n, mask, qmax, mmax);
             spent += 2u * n;
@@ -270,8 +256,8 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             if inf == SINGULAR {
                 state.singular++;
             } else if inf <= FEASIBILITY_TOL {
-                state.best = mask;
-                state.has_best = 1u;
+                state._pad0 = mask;
+                state._pad1 = 1u;
                 write_z(island.z, n, nk);
             } else if inf <= RELAXED_TOL {
                 let li = least_infeasibility[island_index];
@@ -279,7 +265,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
                     state.least = mask;
                     state.has_least = 1u;
                     least_infeasibility[island_index] = inf;
-                    if state.has_best == 0u {
+                    if state._pad1 == 0u {
                         write_z(island.z, n, nk);
                     }
                 }
@@ -287,9 +273,9 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         }
         k++;
         if k == full {
-            if state.has_best == 1u {
+            if state._pad1 == 1u {
                 state.status = 1u;
-                k = state.best;
+                k = state._pad0;
             } else if state.has_least == 1u {
                 state.status = 3u;
                 k = state.least;

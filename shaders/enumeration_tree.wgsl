@@ -35,24 +35,7 @@ const FN: u32 = 8u; // HOST fixed_n
 // Words of the candidate bitmap: ceil(2^FN / 32).
 const WORDS: u32 = 8u; // HOST words
 
-struct Params {
-    first: u32,
-    count: u32,
-    budget: u32,
-    _pad: u32,
-}
-
-// The elimination kernel's layout (shaders/enumeration.wgsl).
-struct BasisResult {
-    mask: u32,
-    status: u32,
-    visited: u32,
-    singular: u32,
-    least: u32,
-    has_least: u32,
-    _pad0: u32,
-    _pad1: u32,
-}
+// Params and BasisResult: shaders/enumeration_basis.wgsl.
 
 // BasisResult._pad1: what the tree did with the island.
 const DECIDED: u32 = 1u;

@@ -37,25 +37,9 @@
 
 const WG: u32 = 64u;
 
-struct Params {
-    first: u32,
-    count: u32,
-    budget: u32,
-    _pad: u32,
-}
-
-// As in enumeration.wgsl; while status is 0, `mask` is the next basis to
-// visit and `_pad0` its rank among the masks of its popcount.
-struct BasisResult {
-    mask: u32,
-    status: u32,
-    visited: u32,
-    singular: u32,
-    least: u32,
-    has_least: u32,
-    _pad0: u32,
-    _pad1: u32,
-}
+// Params and BasisResult: shaders/enumeration_basis.wgsl. While status is
+// 0, `mask` is the next basis to visit and `_pad0` its rank among the masks
+// of its popcount.
 
 // binom[c * 17 + i] = C(c, i), c, i = 0..16.
 var<workgroup> binom: array<u32, 289>;

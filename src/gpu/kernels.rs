@@ -133,19 +133,20 @@ pub fn fixed_source(enumeration_src: &str, n: usize) -> Result<String, Error> {
     let s = replace_host_line(enumeration_src, "fixed", "const FIXED: bool = true;")?;
     let s = replace_host_line(&s, "fixed_n", &format!("const FN: u32 = {n}u;"))?;
     let s = replace_host_line(&s, "fixed_nn", &format!("const FNN: u32 = {}u;", n * n))?;
-    let start = s
-        .find("fn solve_basis_fixed(")
-        .ok_or_else(|| Error::Gpu("enumeration.wgsl has no solve_basis_fixed".into()))?;
-    let end = s[start..]
+    replace_function(&s, "solve_basis_fixed", &straight_line_solver(n))
+}
+
+/// Replaces the WGSL function `name` of `src` (from `fn name(` to the first
+/// line that is a lone `}`) with `function`.
+fn replace_function(src: &str, name: &str, function: &str) -> Result<String, Error> {
+    let start = src
+        .find(&format!("fn {name}("))
+        .ok_or_else(|| Error::Gpu(format!("shader has no function {name}")))?;
+    let end = src[start..]
         .find("\n}\n")
         .map(|e| start + e + 3)
-        .ok_or_else(|| Error::Gpu("solve_basis_fixed has no end".into()))?;
-    Ok(format!(
-        "{}{}{}",
-        &s[..start],
-        straight_line_solver(n),
-        &s[end..]
-    ))
+        .ok_or_else(|| Error::Gpu(format!("function {name} has no end")))?;
+    Ok(format!("{}{function}{}", &src[..start], &src[end..]))
 }
 
 /// `solve_basis_fixed` for n contacts as straight-line WGSL: the loop
@@ -294,19 +295,7 @@ pub fn tree_source(tree_src: &str, n: usize) -> Result<String, Error> {
         "words",
         &format!("const WORDS: u32 = {}u;", (1usize << n).div_ceil(32)),
     )?;
-    let start = s
-        .find("fn tree_pass(")
-        .ok_or_else(|| Error::Gpu("enumeration_tree.wgsl has no tree_pass".into()))?;
-    let end = s[start..]
-        .find("\n}\n")
-        .map(|e| start + e + 3)
-        .ok_or_else(|| Error::Gpu("tree_pass has no end".into()))?;
-    Ok(format!(
-        "{}{}{}",
-        &s[..start],
-        tree_pass_source(n),
-        &s[end..]
-    ))
+    replace_function(&s, "tree_pass", &tree_pass_source(n))
 }
 
 /// The screen pass of `shaders/enumeration_tree.wgsl` for n contacts (n ≤
