@@ -30,6 +30,9 @@
 
 const SCREEN_TOL: Scalar = 1e-3; // HOST screen_tol
 const TREE_PIVOT_TOL: Scalar = 1e-3; // HOST tree_pivot_tol
+// Semidefinite islands (params.flags bit 0): a pivot at most this times M_dd
+// is singular and cuts its subtree (src/cpu/enumeration_tree.rs).
+const SINGULAR_PIVOT_TOL: Scalar = 1e-5; // HOST tree_singular_tol
 const MAX_CONFIRMATIONS: u32 = 8u; // HOST max_confirmations
 const FN: u32 = 8u; // HOST fixed_n
 // Words of the candidate bitmap: ceil(2^FN / 32).
@@ -46,8 +49,9 @@ const UNDECIDED: u32 = 2u;
 var<private> cand: array<u32, WORDS>;
 
 // Placeholder of the generated screen pass: fills `cand`, returns false
-// when a pivot was too small.
-fn tree_pass(base: u32) -> bool {
+// when a pivot was too small (`semi`: M is symmetric positive
+// semidefinite, singular pivots cut their subtree instead).
+fn tree_pass(base: u32, semi: bool) -> bool {
     return false;
 }
 
@@ -64,7 +68,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let island = islands[island_index];
     var ok = island.n == FN;
     if ok {
-        ok = tree_pass(island.data);
+        ok = tree_pass(island.data, (params.flags & 1u) == 1u);
     }
     var singular = 0u;
     var chosen = 0u;

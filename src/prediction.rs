@@ -99,6 +99,51 @@ pub fn is_positive_definite(lcp: &Lcp) -> bool {
     true
 }
 
+/// Is M symmetric positive semidefinite? Cholesky with diagonal pivoting:
+/// the largest remaining diagonal entry is eliminated first, and once it is
+/// at most 1e-9 times the largest diagonal entry of M, every remaining entry
+/// must be that small too (a PSD matrix with a zero diagonal entry has a
+/// zero row). A box resting on 4 coplanar contacts answers true; a matrix
+/// with a negative direction, or a non-symmetric one, false. O(n³).
+pub fn is_positive_semidefinite(lcp: &Lcp) -> bool {
+    let n = lcp.n();
+    if n > MAX_ENUMERATION_N || !lcp.is_symmetric() {
+        return false;
+    }
+    let mut a = [0.0f64; MAX_ENUMERATION_N * MAX_ENUMERATION_N];
+    for i in 0..n {
+        for j in 0..n {
+            a[i * n + j] = 0.5 * (lcp.at(i, j) + lcp.at(j, i));
+        }
+    }
+    let dmax = (0..n).map(|i| a[i * n + i]).fold(0.0f64, f64::max);
+    let tol = 1e-9 * dmax;
+    let mut left: Vec<usize> = (0..n).collect();
+    while !left.is_empty() {
+        let (k, &p) = left
+            .iter()
+            .enumerate()
+            .max_by(|x, y| a[x.1 * n + x.1].total_cmp(&a[y.1 * n + y.1]))
+            .expect("not empty");
+        let d = a[p * n + p];
+        if !(d > tol) {
+            // The rest must vanish (this includes d < −tol: not PSD).
+            return left
+                .iter()
+                .all(|&i| left.iter().all(|&j| a[i * n + j].abs() <= tol));
+        }
+        left.swap_remove(k);
+        // Schur complement on the remaining indices.
+        for &i in &left {
+            let f = a[i * n + p] / d;
+            for &j in &left {
+                a[i * n + j] -= f * a[p * n + j];
+            }
+        }
+    }
+    true
+}
+
 /// Tries the cheap paths on one island. `warm_basis` is the caller's basis
 /// from the previous frame, if any. None: the island needs enumeration.
 pub fn predict(
@@ -165,6 +210,23 @@ pub fn predict(
 mod tests {
     use super::*;
     use crate::cpu::enumeration::enumerate;
+
+    #[test]
+    fn semidefinite_test() {
+        let psd = |m: Vec<f64>| is_positive_semidefinite(&Lcp::new(m, vec![0.0; 2]).unwrap());
+        assert!(psd(vec![2.0, 1.0, 1.0, 2.0]));
+        assert!(psd(vec![1.0, 1.0, 1.0, 1.0])); // rank one
+        assert!(psd(vec![0.0, 0.0, 0.0, 1.0]));
+        assert!(!psd(vec![1.0, 2.0, 2.0, 1.0])); // eigenvalue −1
+        assert!(!psd(vec![0.0, 1.0, 1.0, 1.0])); // zero diagonal, nonzero row
+        assert!(!psd(vec![1.0, 0.5, -0.5, 1.0])); // not symmetric
+                                                  // A box resting on 4 coplanar contacts: rank 3 of 4.
+        let scene = crate::generate::box_on_ground(1.0, 0.5);
+        let lcps = crate::pipeline::build(&scene, "scene").unwrap().2;
+        assert!(lcps
+            .iter()
+            .all(|l| is_positive_semidefinite(l) && !is_positive_definite(l)));
+    }
 
     #[test]
     fn cheap_paths_agree_with_enumeration() {

@@ -24,6 +24,15 @@
 //! matrix that is not positive definite after all) leaves the island
 //! undecided: the caller enumerates it by elimination instead.
 //!
+//! Semidefinite islands (resting contacts: a box on 4 coplanar contacts has
+//! a singular M) take one more rule. When M is symmetric positive
+//! semidefinite and M_{S∪d} is singular, so is every principal submatrix
+//! that contains S ∪ {d} (a null vector xᵀMx = 0 of the smaller one is a
+//! null vector of M, hence of the larger), so no basis below that node has a
+//! solution: a pivot at most `singular_tol` · M_dd (singular to working
+//! precision) cuts the subtree, and only pivots between the two tolerances
+//! leave the island undecided.
+//!
 //! # Screen and confirmation
 //! A leaf passes the screen when z_S ≥ −tol·max|t_S| and, for each i off
 //! S, w_i ≥ −tol·(|q_i| + max_j |M_ij|·Σ|t_S|): an upper bound of
@@ -60,6 +69,10 @@ pub struct TreeSettings {
     /// (default 1e-8: in f64 a leaf's t then keeps about 8 digits, far more
     /// than the screen needs).
     pub pivot_tol: f64,
+    /// Semidefinite islands: a pivot at most this times M_dd is singular and
+    /// its subtree is cut (default 1e-14, a few rounding errors of M_dd:
+    /// where elimination also finds M_SS singular).
+    pub singular_tol: f64,
     /// Screened bases confirmed by elimination at most (default 8).
     pub max_confirmations: u32,
 }
@@ -70,6 +83,7 @@ impl Default for TreeSettings {
             enumeration: EnumerationSettings::default(),
             screen_tol: 1e-6,
             pivot_tol: 1e-8,
+            singular_tol: 1e-14,
             max_confirmations: 8,
         }
     }
@@ -98,8 +112,10 @@ pub enum TreeOutcome {
 
 /// The screen pass: the masks of the bases that pass the screen, in
 /// enumeration's order (popcount, then mask), or why the island is
-/// undecided.
-pub fn screen_tree(lcp: &Lcp, s: &TreeSettings) -> Result<Vec<u32>, Undecided> {
+/// undecided. `semidefinite`: M is symmetric positive semidefinite
+/// ([`crate::prediction::is_positive_semidefinite`]), so singular pivots cut
+/// their subtree (see the module docs).
+pub fn screen_tree(lcp: &Lcp, semidefinite: bool, s: &TreeSettings) -> Result<Vec<u32>, Undecided> {
     let n = lcp.n();
     if n == 0 || n > TREE_TWIN_MAX_N {
         return Err(Undecided::Size);
@@ -118,6 +134,7 @@ pub fn screen_tree(lcp: &Lcp, s: &TreeSettings) -> Result<Vec<u32>, Undecided> {
         diag: (0..n).map(|d| lcp.m[d * n + d]).collect(),
         qabs: lcp.q.iter().map(|v| v.abs()).collect(),
         rowmax,
+        semidefinite,
         passed: Vec::new(),
         small_pivot: false,
     };
@@ -139,6 +156,7 @@ struct Walk<'a> {
     /// |q_i| and max_j |M_ij|: the screen's scale of w_i.
     qabs: Vec<f64>,
     rowmax: Vec<f64>,
+    semidefinite: bool,
     passed: Vec<u32>,
     small_pivot: bool,
 }
@@ -158,6 +176,9 @@ impl Walk<'_> {
         self.node(d + 1, mask, t.clone(), rhs.clone());
         // Index d basic: principal pivot on T_dd (columns > d and t only).
         let p = t[d * n + d];
+        if self.semidefinite && !(p > self.s.singular_tol * self.diag[d]) {
+            return; // M_{S∪d} singular: so is every basis below.
+        }
         if !(p > self.s.pivot_tol * self.diag[d]) {
             self.small_pivot = true;
         }
@@ -213,8 +234,9 @@ impl Walk<'_> {
 /// ones in enumeration's order. Decided: the same basis, z and status as
 /// [`crate::cpu::enumeration::enumerate`] with `s.enumeration`, provided
 /// enumeration's basis passes the screen (see the module docs).
-pub fn enumerate_tree(lcp: &Lcp, s: &TreeSettings) -> TreeOutcome {
-    let passed = match screen_tree(lcp, s) {
+/// `semidefinite` as in [`screen_tree`].
+pub fn enumerate_tree(lcp: &Lcp, semidefinite: bool, s: &TreeSettings) -> TreeOutcome {
+    let passed = match screen_tree(lcp, semidefinite, s) {
         Ok(p) => p,
         Err(why) => return TreeOutcome::Undecided(why),
     };
@@ -255,7 +277,7 @@ mod tests {
             }
             pd += 1;
             let e = enumerate(lcp, &s.enumeration).unwrap();
-            match enumerate_tree(lcp, &s) {
+            match enumerate_tree(lcp, false, &s) {
                 TreeOutcome::Decided(t) => {
                     decided += 1;
                     assert_eq!(t.basis, e.basis);
@@ -279,18 +301,19 @@ mod tests {
         )
         .unwrap();
         assert_eq!(
-            enumerate_tree(&lcp, &TreeSettings::default()),
+            enumerate_tree(&lcp, false, &TreeSettings::default()),
             TreeOutcome::Undecided(Undecided::SmallPivot)
         );
         // Positive definite 2×2: z = M⁻¹(−q) = (1, 1).
         let lcp = Lcp::new(vec![2.0, 1.0, 1.0, 2.0], vec![-3.0, -3.0]).unwrap();
-        let TreeOutcome::Decided(sol) = enumerate_tree(&lcp, &TreeSettings::default()) else {
+        let TreeOutcome::Decided(sol) = enumerate_tree(&lcp, false, &TreeSettings::default())
+        else {
             panic!("undecided");
         };
         assert_eq!(sol.basis, Some(0b11));
         assert!((sol.z[0] - 1.0).abs() < 1e-15 && (sol.z[1] - 1.0).abs() < 1e-15);
         // The screen ranks bases by enumeration's order.
-        let passed = screen_tree(&lcp, &TreeSettings::default()).unwrap();
+        let passed = screen_tree(&lcp, false, &TreeSettings::default()).unwrap();
         assert_eq!(passed, vec![0b11]);
     }
 
@@ -299,7 +322,7 @@ mod tests {
         // q = 0: every basis with z_S = 0 passes the screen; the empty basis
         // is feasible and first.
         let lcp = Lcp::new(vec![2.0, 1.0, 1.0, 2.0], vec![0.0, 0.0]).unwrap();
-        let passed = screen_tree(&lcp, &TreeSettings::default()).unwrap();
+        let passed = screen_tree(&lcp, false, &TreeSettings::default()).unwrap();
         assert_eq!(passed, vec![0b00, 0b01, 0b10, 0b11]);
         // Negative q with a cap of 0 confirmations.
         let s = TreeSettings {
@@ -307,7 +330,7 @@ mod tests {
             ..TreeSettings::default()
         };
         assert_eq!(
-            enumerate_tree(&lcp, &s),
+            enumerate_tree(&lcp, false, &s),
             TreeOutcome::Undecided(Undecided::NotConfirmed)
         );
     }

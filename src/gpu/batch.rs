@@ -17,7 +17,7 @@ use super::{GpuContext, Precision, MAX_GPU_N};
 use crate::cpu::enumeration::EnumerationSettings;
 use crate::cpu::enumeration_tree::TREE_MAX_N;
 use crate::lcp::{Counters, Lcp, LcpSolution, Residuals, Status};
-use crate::prediction::{is_positive_definite, predict, SolvePath};
+use crate::prediction::{is_positive_definite, is_positive_semidefinite, predict, SolvePath};
 use crate::solvers::lemke::{lemke, LemkeSettings};
 use crate::solvers::Solver;
 use crate::validation::{validate_island, BatchReport, GpuVerdict, Verdict};
@@ -343,18 +343,45 @@ impl KernelPlan {
         }
     }
 
-    /// Does this island go to the tree kernel first? n ≤ `tree_max_n`
-    /// and: every such island with [`EnumerationKernel::Tree`]; with Auto
-    /// ([`AUTO_TREE`]), those whose M is positive definite, where every
-    /// pivot of the tree exists (O(n³) Cholesky on the CPU).
-    pub fn tree_for(&self, lcp: &Lcp) -> bool {
-        lcp.n() <= self.tree_max_n
-            && match self.kernel {
-                EnumerationKernel::Tree => true,
-                EnumerationKernel::Auto => AUTO_TREE && is_positive_definite(lcp),
-                _ => false,
-            }
+    /// Does this island go to the tree kernel first, and how? Only when n ≤
+    /// `tree_max_n`. Positive definite M (every pivot of the tree exists):
+    /// [`TreeRoute::Definite`]; symmetric positive semidefinite M (resting
+    /// contacts): [`TreeRoute::Semidefinite`]; both tested on the CPU in
+    /// O(n³). Auto ([`AUTO_TREE`]) routes only these;
+    /// [`EnumerationKernel::Tree`] sends the others too, as Definite.
+    pub fn tree_for(&self, lcp: &Lcp) -> TreeRoute {
+        if lcp.n() > self.tree_max_n
+            || !matches!(
+                self.kernel,
+                EnumerationKernel::Tree | EnumerationKernel::Auto
+            )
+            || (self.kernel == EnumerationKernel::Auto && !AUTO_TREE)
+        {
+            return TreeRoute::Off;
+        }
+        if is_positive_definite(lcp) {
+            TreeRoute::Definite
+        } else if is_positive_semidefinite(lcp) {
+            TreeRoute::Semidefinite
+        } else if self.kernel == EnumerationKernel::Tree {
+            TreeRoute::Definite
+        } else {
+            TreeRoute::Off
+        }
     }
+}
+
+/// How an island goes through the tree kernel (`shaders/enumeration_tree.wgsl`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum TreeRoute {
+    /// Not at all: Auto's kernel for its size.
+    #[default]
+    Off,
+    /// A pivot at most the tree pivot tolerance leaves the island undecided.
+    Definite,
+    /// M is symmetric positive semidefinite: a pivot singular to working
+    /// precision cuts its subtree (no basis below it is nonsingular).
+    Semidefinite,
 }
 
 /// What the enumeration stage gave for a table of islands.
@@ -384,13 +411,14 @@ pub(crate) fn run_enumeration(
     islands: &wgpu::Buffer,
     values: &wgpu::Buffer,
     table: &[PackedIsland],
-    tree: &[bool],
+    tree: &[TreeRoute],
     max_groups: u32,
     plan: &KernelPlan,
     mut encoder: wgpu::CommandEncoder,
     read_back: bool,
 ) -> Result<EnumerationRun, Error> {
-    let in_tree = |i: usize| tree.get(i).copied().unwrap_or(false);
+    let route = |i: usize| tree.get(i).copied().unwrap_or_default();
+    let in_tree = |i: usize| route(i) != TreeRoute::Off;
     let precision = ctx.precision();
     let sb = precision.bytes();
     if table.is_empty() {
@@ -482,19 +510,20 @@ pub(crate) fn run_enumeration(
     let mut first = 0usize;
     while first < table.len() {
         let n = table[first].n;
-        let t = in_tree(first);
+        let t = route(first);
         let mut last = first;
-        while last < table.len() && table[last].n == n && in_tree(last) == t {
+        while last < table.len() && table[last].n == n && route(last) == t {
             last += 1;
         }
-        let tree_ranges = t.then(|| {
+        // params.flags bit 0: semidefinite (singular pivots cut subtrees).
+        let tree_ranges = (t != TreeRoute::Off).then(|| {
             ctx.ranges_per_group(
                 first as u32,
                 (last - first) as u32,
                 super::kernels::WORKGROUP,
                 max_groups,
                 plan.budget,
-                0,
+                (t == TreeRoute::Semidefinite) as u32,
                 &|p| bind(p, pipelines.tree(ctx, n as usize), false),
             )
         });
@@ -629,7 +658,7 @@ pub fn enumerate_on_gpu(
         };
         lcps.len()
     ];
-    let tree: Vec<bool> = lcps.iter().map(|l| plan.tree_for(l)).collect();
+    let tree: Vec<TreeRoute> = lcps.iter().map(|l| plan.tree_for(l)).collect();
     for chunk in pack_chunks(lcps, &tree, max_bytes, precision.bytes()) {
         let run = ctx.scoped("enumeration", || -> Result<EnumerationRun, Error> {
             let (islands_buf, values_buf) = chunk.upload(ctx, precision);
@@ -685,8 +714,8 @@ struct PackedChunk {
     /// `tree`.
     order: Vec<usize>,
     table: Vec<PackedIsland>,
-    /// Per table entry: runs the tree kernel first.
-    tree: Vec<bool>,
+    /// Per table entry: how it goes through the tree kernel.
+    tree: Vec<TreeRoute>,
     /// M (row-major) then q of every island, in f64.
     data: Vec<f64>,
 }
@@ -705,10 +734,10 @@ impl PackedChunk {
 /// Sorts the islands by n (one dispatch per size: no island waits on a
 /// larger one), then by `tree` (the tree kernel's islands together), and
 /// packs them into chunks whose buffers stay under `max_bytes`.
-fn pack_chunks(lcps: &[&Lcp], tree: &[bool], max_bytes: u64, sb: u64) -> Vec<PackedChunk> {
-    let in_tree = |i: usize| tree.get(i).copied().unwrap_or(false);
+fn pack_chunks(lcps: &[&Lcp], tree: &[TreeRoute], max_bytes: u64, sb: u64) -> Vec<PackedChunk> {
+    let route = |i: usize| tree.get(i).copied().unwrap_or_default();
     let mut order: Vec<usize> = (0..lcps.len()).collect();
-    order.sort_by_key(|&i| (lcps[i].n(), in_tree(i)));
+    order.sort_by_key(|&i| (lcps[i].n(), route(i)));
     let mut chunks = Vec::new();
     let mut at = 0;
     while at < order.len() {
@@ -746,7 +775,7 @@ fn pack_chunks(lcps: &[&Lcp], tree: &[bool], max_bytes: u64, sb: u64) -> Vec<Pac
         }
         chunks.push(PackedChunk {
             order: order[at..end].to_vec(),
-            tree: order[at..end].iter().map(|&i| in_tree(i)).collect(),
+            tree: order[at..end].iter().map(|&i| route(i)).collect(),
             table,
             data,
         });
@@ -762,7 +791,12 @@ pub struct UploadedBatch<'a> {
     ctx: &'a GpuContext,
     pipelines: std::sync::Arc<Pipelines>,
     /// Per chunk: table, tree flags, islands and values buffers.
-    chunks: Vec<(Vec<PackedIsland>, Vec<bool>, wgpu::Buffer, wgpu::Buffer)>,
+    chunks: Vec<(
+        Vec<PackedIsland>,
+        Vec<TreeRoute>,
+        wgpu::Buffer,
+        wgpu::Buffer,
+    )>,
     max_groups: u32,
     plan: KernelPlan,
 }
@@ -779,7 +813,7 @@ impl<'a> UploadedBatch<'a> {
         let pipelines = ctx.pipelines(settings.gpu_tolerances(precision))?;
         let (max_bytes, max_groups) = limits_for(ctx, settings);
         let plan = KernelPlan::new(ctx, settings);
-        let tree: Vec<bool> = lcps.iter().map(|l| plan.tree_for(l)).collect();
+        let tree: Vec<TreeRoute> = lcps.iter().map(|l| plan.tree_for(l)).collect();
         let chunks = ctx.scoped("upload", || {
             pack_chunks(lcps, &tree, max_bytes, precision.bytes())
                 .into_iter()

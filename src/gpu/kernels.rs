@@ -42,6 +42,10 @@ pub const F32_TABLEAU_PIVOT_TOL: f64 = 1e-3;
 /// With f32's 6e-8 rounding it bounds a leaf's error near 1e-4, under the
 /// screen's 1e-3.
 pub const F32_TREE_PIVOT_TOL: f64 = 1e-3;
+/// Tree kernel in f32, semidefinite islands: a pivot at most this times
+/// M_dd is singular (f32 rounds a singular Schur complement to about 1e-7
+/// of M_dd) and cuts its subtree.
+pub const F32_TREE_SINGULAR_TOL: f64 = 1e-5;
 pub const ASSEMBLY_WGSL: &str = include_str!("../../shaders/assembly.wgsl");
 pub const IMPULSES_WGSL: &str = include_str!("../../shaders/impulses.wgsl");
 
@@ -311,7 +315,7 @@ pub fn tree_source(tree_src: &str, n: usize) -> Result<String, Error> {
 pub fn tree_pass_source(n: usize) -> String {
     use std::fmt::Write;
     let mut o = String::new();
-    let _ = writeln!(o, "fn tree_pass(base: u32) -> bool {{");
+    let _ = writeln!(o, "fn tree_pass(base: u32, semi: bool) -> bool {{");
     // The screen's scale of w_i: |q_i| + rm{i}·Σ|z_S|, rm{i} = max_j |M_ij|.
     for i in 0..n {
         let mut rm = "Scalar(0.0)".to_string();
@@ -339,6 +343,7 @@ pub fn tree_pass_source(n: usize) -> String {
         let _ = writeln!(o, "let pre = 0u;");
     } else {
         let _ = writeln!(o, "for (var pre = 0u; pre < {}u; pre++) {{", 1u32 << prefix);
+        let _ = writeln!(o, "var live = true;");
         // The prefix's tableau: columns ≥ 1 and t, pivoted on each index d
         // < P that `pre` makes basic.
         for i in 0..n {
@@ -353,10 +358,8 @@ pub fn tree_pass_source(n: usize) -> String {
             let _ = writeln!(o, "let b{d} = ((pre >> {d}u) & 1u) == 1u;");
             let _ = writeln!(o, "if b{d} {{");
             let p = &tab[d * n + d];
-            let _ = writeln!(
-                o,
-                "ok = ok & ({p} > TREE_PIVOT_TOL * m{d}_{d});\nlet i{d} = Scalar(1.0) / {p};\nlet n{d} = -i{d};"
-            );
+            pivot_tests(&mut o, d, p, "live", "live = live");
+            let _ = writeln!(o, "let i{d} = Scalar(1.0) / {p};\nlet n{d} = -i{d};");
             for j in d + 1..n {
                 let _ = writeln!(o, "let r{j} = {} * n{d};", tab[d * n + j]);
             }
@@ -374,7 +377,8 @@ pub fn tree_pass_source(n: usize) -> String {
             let _ = writeln!(o, "{} = tr;\n}}", rhs[d]);
         }
     }
-    tree_node(&mut o, n, prefix, prefix, 0, &tab, &rhs);
+    let live = if prefix == 0 { "true" } else { "live" };
+    tree_node(&mut o, n, prefix, prefix, 0, live, &tab, &rhs);
     if prefix > 0 {
         let _ = writeln!(o, "}}");
     }
@@ -385,16 +389,31 @@ pub fn tree_pass_source(n: usize) -> String {
     o
 }
 
+/// The tests of a pivot `p` on d (the twin's `Walk::node`): on a
+/// semidefinite island a singular pivot cuts the subtree (`{set} & !dead{d}`
+/// names whether the subtree is live); else a pivot at most TREE_PIVOT_TOL
+/// · M_dd in a live subtree leaves the island undecided.
+fn pivot_tests(o: &mut String, d: usize, p: &str, live: &str, set: &str) {
+    use std::fmt::Write;
+    let _ = writeln!(
+        o,
+        "let dead{d} = semi & !({p} > SINGULAR_PIVOT_TOL * m{d}_{d});\nok = ok & !({live} & !dead{d} & !({p} > TREE_PIVOT_TOL * m{d}_{d}));\n{set} & !dead{d};"
+    );
+}
+
 /// One node of [`tree_pass_source`]'s unrolled levels: depth d, the basic
 /// indices in d' ∈ [prefix, d) in `mask` (those below `prefix` are `pre`'s,
-/// known at run time as `b{i}`), tableau entries and t named in `tab` and
+/// known at run time as `b{i}`), whether the subtree is live (`live`: not
+/// cut by a singular pivot), tableau entries and t named in `tab` and
 /// `rhs`.
+#[allow(clippy::too_many_arguments)]
 fn tree_node(
     o: &mut String,
     n: usize,
     prefix: usize,
     d: usize,
     mask: usize,
+    live: &str,
     tab: &[String],
     rhs: &[String],
 ) {
@@ -432,7 +451,7 @@ fn tree_node(
             .collect();
         let _ = writeln!(
             o,
-            "c{w} = c{w} | select(0u, 1u << (pre | {low}u), {});\n}}",
+            "c{w} = c{w} | select(0u, 1u << (pre | {low}u), {live} & {});\n}}",
             tests.join(" & "),
             w = mask / 32,
             low = mask % 32
@@ -440,14 +459,12 @@ fn tree_node(
         return;
     }
     // Index d nonbasic: the same tableau.
-    tree_node(o, n, prefix, d + 1, mask, tab, rhs);
+    tree_node(o, n, prefix, d + 1, mask, live, tab, rhs);
     // Index d basic: the principal pivot on T_dd (columns > d and t).
     let _ = writeln!(o, "{{");
     let p = &tab[d * n + d];
-    let _ = writeln!(
-        o,
-        "ok = ok & ({p} > TREE_PIVOT_TOL * m{d}_{d});\nlet i{d} = Scalar(1.0) / {p};\nlet n{d} = -i{d};"
-    );
+    pivot_tests(o, d, p, live, &format!("let l{d} = {live}"));
+    let _ = writeln!(o, "let i{d} = Scalar(1.0) / {p};\nlet n{d} = -i{d};");
     let mut tab2 = tab.to_vec();
     let mut rhs2 = rhs.to_vec();
     for j in d + 1..n {
@@ -469,7 +486,16 @@ fn tree_node(
         let _ = writeln!(o, "let t{d}_{i} = {} + {f} * t{d}_{d};", rhs[i]);
         rhs2[i] = format!("t{d}_{i}");
     }
-    tree_node(o, n, prefix, d + 1, mask | 1 << d, &tab2, &rhs2);
+    tree_node(
+        o,
+        n,
+        prefix,
+        d + 1,
+        mask | 1 << d,
+        &format!("l{d}"),
+        &tab2,
+        &rhs2,
+    );
     let _ = writeln!(o, "}}");
 }
 
@@ -644,10 +670,10 @@ impl Pipelines {
             .map(|n| fixed_source(&enumeration_src, n))
             .collect::<Result<_, Error>>()?;
         let tree = TreeSettings::default();
-        let (tree_screen, tree_pivot) = if key.precision == Precision::F64 {
-            (tree.screen_tol, tree.pivot_tol)
+        let (tree_screen, tree_pivot, tree_singular) = if key.precision == Precision::F64 {
+            (tree.screen_tol, tree.pivot_tol, tree.singular_tol)
         } else {
-            (F32_SCREEN_TOL, F32_TREE_PIVOT_TOL)
+            (F32_SCREEN_TOL, F32_TREE_PIVOT_TOL, F32_TREE_SINGULAR_TOL)
         };
         let tree_src = template(
             &enumeration_source(ENUMERATION_TREE_WGSL),
@@ -663,6 +689,14 @@ impl Pipelines {
             &tree_src,
             "tree_pivot_tol",
             &format!("const TREE_PIVOT_TOL: Scalar = {};", literal(tree_pivot)),
+        )?;
+        let tree_src = replace_host_line(
+            &tree_src,
+            "tree_singular_tol",
+            &format!(
+                "const SINGULAR_PIVOT_TOL: Scalar = {};",
+                literal(tree_singular)
+            ),
         )?;
         let tree_src = replace_host_line(
             &tree_src,

@@ -13,6 +13,7 @@ use std::time::Instant;
 
 use super::batch::{
     limits_for, run_enumeration, solve_lcp_batch_warm, GpuSolveSettings, KernelPlan, SolvedOn,
+    TreeRoute,
 };
 use super::kernels::Pipelines;
 use super::layout::{
@@ -79,8 +80,8 @@ struct Chunk {
     /// the others on the CPU), and their (scene, island).
     enum_table: Vec<PackedIsland>,
     enum_keys: Vec<(usize, usize)>,
-    /// Per `enum_table` entry: runs the tree kernel first.
-    enum_tree: Vec<bool>,
+    /// Per `enum_table` entry: how it goes through the tree kernel.
+    enum_tree: Vec<TreeRoute>,
     slots: Vec<Slot>,
     values_len: u32,
     z_len: u32,
@@ -114,7 +115,7 @@ fn pack_chunk(
     prepared: &[Prepared],
     members: &[usize],
     settled: &dyn Fn(usize, usize) -> bool,
-    tree: &dyn Fn(usize, usize) -> bool,
+    tree: &dyn Fn(usize, usize) -> TreeRoute,
 ) -> Chunk {
     let mut c = Chunk::default();
     let mut entries: Vec<(usize, usize, usize)> = Vec::new(); // (n, position in chunk, island)
@@ -450,7 +451,9 @@ pub fn assemble_on_gpu(
         .map(|p| vec![None; p.islands.len()])
         .collect();
     for members in chunks {
-        let c = pack_chunk(scenes, &prepared, &members, &|_, _| false, &|_, _| false);
+        let c = pack_chunk(scenes, &prepared, &members, &|_, _| false, &|_, _| {
+            TreeRoute::Off
+        });
         let out = assemble_and_enumerate(ctx, &pipelines, &c, max_groups, None)?;
         let r = out.rows.unwrap_or_default();
         let v = out.values.unwrap_or_default();
