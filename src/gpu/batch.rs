@@ -161,9 +161,10 @@ pub const UNROLLED_UP_TO_N: usize = 7;
 /// Its 64 lanes solve bases of one size side by side, where the per-island
 /// kernel's lanes diverge (each island stops at a different basis).
 pub const WORKGROUP_FROM_N: Option<usize> = Some(10);
-/// Auto: positive definite islands of n ≤ [`GpuSolveSettings::tree_max_n`]
-/// go to the tree kernel first (on lavapipe 2–27× the islands/s of Auto's
-/// other kernels at n = 6…12, BENCHMARKS.md). Its first dispatch per size
+/// Auto: positive definite and semidefinite islands of n ≤
+/// [`GpuSolveSettings::tree_max_n`] go to the tree kernel first (on lavapipe
+/// 2–27× the islands/s of Auto's other kernels at n = 6…12 on definite
+/// islands, 20–30× on resting stacks; BENCHMARKS.md). Its first dispatch per size
 /// compiles for 1.5 s (n = 6) to 9 s (n = 12) on lavapipe without Mesa's
 /// shader cache, once per process.
 pub const AUTO_TREE: bool = true;
