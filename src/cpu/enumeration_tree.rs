@@ -120,25 +120,29 @@ pub fn screen_tree(lcp: &Lcp, semidefinite: bool, s: &TreeSettings) -> Result<Ve
     if n == 0 || n > TREE_TWIN_MAX_N {
         return Err(Undecided::Size);
     }
-    // Scales of the screen, in the kernel's order.
-    let rowmax = (0..n)
-        .map(|i| {
-            lcp.m[i * n..(i + 1) * n]
-                .iter()
-                .fold(0.0f64, |a, v| a.max(v.abs()))
-        })
-        .collect();
     let mut walk = Walk {
         n,
         s,
-        diag: (0..n).map(|d| lcp.m[d * n + d]).collect(),
-        qabs: lcp.q.iter().map(|v| v.abs()).collect(),
-        rowmax,
+        diag: [0.0; TREE_TWIN_MAX_N],
+        qabs: [0.0; TREE_TWIN_MAX_N],
+        rowmax: [0.0; TREE_TWIN_MAX_N],
         semidefinite,
+        tab: [0.0; SLOTS * TREE_TWIN_MAX_N * TREE_TWIN_MAX_N],
+        rhs: [0.0; SLOTS * TREE_TWIN_MAX_N],
         passed: Vec::new(),
         small_pivot: false,
     };
-    walk.node(0, 0, lcp.m.clone(), lcp.q.clone());
+    // Scales of the screen, in the kernel's order; slot 0 holds M and q.
+    for i in 0..n {
+        walk.diag[i] = lcp.m[i * n + i];
+        walk.qabs[i] = lcp.q[i].abs();
+        walk.rowmax[i] = lcp.m[i * n..(i + 1) * n]
+            .iter()
+            .fold(0.0f64, |a, v| a.max(v.abs()));
+        walk.rhs[i] = lcp.q[i];
+    }
+    walk.tab[..n * n].copy_from_slice(&lcp.m);
+    walk.node(0, 0, 0);
     if walk.small_pivot {
         return Err(Undecided::SmallPivot);
     }
@@ -147,67 +151,79 @@ pub fn screen_tree(lcp: &Lcp, semidefinite: bool, s: &TreeSettings) -> Result<Ve
     Ok(passed)
 }
 
-/// The depth-first walk's state.
+/// Tableaux the walk keeps at once: one per depth on the current path.
+const SLOTS: usize = TREE_TWIN_MAX_N + 1;
+
+/// The depth-first walk's state. Tableau slot k (n×n row-major, and t) is
+/// the tableau after the k-th pivot on the current path; a node's "index
+/// basic" child writes slot k + 1 from slot k, so nothing is copied for the
+/// "index nonbasic" child and nothing is allocated per node.
 struct Walk<'a> {
     n: usize,
     s: &'a TreeSettings,
     /// M_dd, the scale of the pivot test.
-    diag: Vec<f64>,
+    diag: [f64; TREE_TWIN_MAX_N],
     /// |q_i| and max_j |M_ij|: the screen's scale of w_i.
-    qabs: Vec<f64>,
-    rowmax: Vec<f64>,
+    qabs: [f64; TREE_TWIN_MAX_N],
+    rowmax: [f64; TREE_TWIN_MAX_N],
     semidefinite: bool,
+    tab: [f64; SLOTS * TREE_TWIN_MAX_N * TREE_TWIN_MAX_N],
+    rhs: [f64; SLOTS * TREE_TWIN_MAX_N],
     passed: Vec<u32>,
     small_pivot: bool,
 }
 
 impl Walk<'_> {
-    /// Node at depth d with basis `mask` (indices < d) and its tableau `t`
-    /// (n×n row-major; only columns ≥ d are current) and `rhs`.
-    fn node(&mut self, d: usize, mask: u32, t: Vec<f64>, rhs: Vec<f64>) {
+    /// Node at depth d with basis `mask` (indices < d) and its tableau in
+    /// slot `k` (only columns ≥ d are current).
+    fn node(&mut self, d: usize, mask: u32, k: usize) {
         let n = self.n;
+        if self.small_pivot {
+            return; // undecided whatever the rest gives
+        }
+        let (nn, t0, r0) = (n * n, k * n * n, k * n);
         if d == n {
-            if self.screen(mask, &rhs) {
+            if self.screen(mask, r0) {
                 self.passed.push(mask);
             }
             return;
         }
         // Index d nonbasic: the same tableau.
-        self.node(d + 1, mask, t.clone(), rhs.clone());
-        // Index d basic: principal pivot on T_dd (columns > d and t only).
-        let p = t[d * n + d];
+        self.node(d + 1, mask, k);
+        // Index d basic: principal pivot on T_dd (columns > d and t only),
+        // into slot k + 1.
+        let p = self.tab[t0 + d * n + d];
         if self.semidefinite && !(p > self.s.singular_tol * self.diag[d]) {
             return; // M_{S∪d} singular: so is every basis below.
         }
         if !(p > self.s.pivot_tol * self.diag[d]) {
             self.small_pivot = true;
+            return;
         }
         let inv = 1.0 / p;
         let ninv = -inv;
-        let mut t2 = t.clone();
-        let mut rhs2 = rhs.clone();
+        let (t1, r1) = (t0 + nn, r0 + n);
         // Row d: T'_dj = −T_dj/T_dd, t'_d = −t_d/T_dd.
         for j in d + 1..n {
-            t2[d * n + j] = t[d * n + j] * ninv;
+            self.tab[t1 + d * n + j] = self.tab[t0 + d * n + j] * ninv;
         }
-        let tr = -rhs[d] * inv;
-        rhs2[d] = tr;
+        let tr = -self.rhs[r0 + d] * inv;
+        self.rhs[r1 + d] = tr;
         // Other rows: T'_ij = T_ij + T_id·T'_dj, t'_i = t_i + T_id·t'_d.
-        for i in 0..n {
-            if i == d {
-                continue;
-            }
-            let f = t[i * n + d];
+        for i in (0..n).filter(|&i| i != d) {
+            let f = self.tab[t0 + i * n + d];
             for j in d + 1..n {
-                t2[i * n + j] = t[i * n + j] + f * t2[d * n + j];
+                self.tab[t1 + i * n + j] = self.tab[t0 + i * n + j] + f * self.tab[t1 + d * n + j];
             }
-            rhs2[i] = rhs[i] + f * tr;
+            self.rhs[r1 + i] = self.rhs[r0 + i] + f * tr;
         }
-        self.node(d + 1, mask | 1 << d, t2, rhs2);
+        self.node(d + 1, mask | 1 << d, k + 1);
     }
 
-    /// The Gray-code screen on the basic solution t of `mask`.
-    fn screen(&self, mask: u32, t: &[f64]) -> bool {
+    /// The Gray-code screen on the basic solution t of `mask` (at `at` in
+    /// `rhs`).
+    fn screen(&self, mask: u32, at: usize) -> bool {
+        let t = &self.rhs[at..at + self.n];
         let tol = self.s.screen_tol;
         let (mut zmax, mut zsum) = (0.0f64, 0.0f64);
         for (i, &v) in t.iter().enumerate() {
