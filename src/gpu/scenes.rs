@@ -561,7 +561,10 @@ pub fn solve_scenes_warm(
             &prepared,
             &members,
             &|s, k| predicted[s][k].is_some(),
-            &|s, k| kernel_plan.tree_for(&prepared[s].lcps[k]),
+            &|s, k| match predicted[s][k] {
+                Some(_) => TreeRoute::Off,
+                None => kernel_plan.tree_for(&prepared[s].lcps[k]),
+            },
         );
         let out = assemble_and_enumerate(ctx, &pipelines, &c, max_groups, Some(&kernel_plan))?;
         report.gpu_seconds += t0.elapsed().as_secs_f64();
