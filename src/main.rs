@@ -203,8 +203,20 @@ fn demo(worlds: usize, seed: u64, backend: BackendArg, gpu: &GpuArgs) -> Result<
     let settings = SolverSettings::default();
     if let Some(ctx) = session.context() {
         println!("adapter: {}", lcpbatch::backend::describe_context(ctx));
-        // Warm-up on one world: the first dispatch compiles the shaders.
-        session.solve_scenes(&scenes[..1.min(scenes.len())], &settings)?;
+        // Warm-up, untimed: the first dispatch of a kernel compiles it (the
+        // enumeration kernels are specialised per island size, and a
+        // software adapter takes up to seconds each), so one world for each
+        // island size of the batch goes first.
+        let mut sizes = std::collections::BTreeSet::new();
+        let mut warm_up = Vec::new();
+        for s in &scenes {
+            let (_, _, lcps) = lcpbatch::pipeline::build(s, "scene")?;
+            if lcps.iter().any(|l| !sizes.contains(&l.n())) {
+                sizes.extend(lcps.iter().map(|l| l.n()));
+                warm_up.push(s.clone());
+            }
+        }
+        session.solve_scenes(&warm_up, &settings)?;
     }
     let t = std::time::Instant::now();
     let r = session.solve_scenes(&scenes, &settings)?;

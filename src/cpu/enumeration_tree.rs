@@ -230,7 +230,7 @@ impl Walk<'_> {
             if mask >> i & 1 == 1 {
                 let a = v.abs();
                 zmax = zmax.max(a);
-                zsum = zsum + a;
+                zsum += a;
             }
         }
         let mut pass = true;
