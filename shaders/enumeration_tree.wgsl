@@ -1,5 +1,7 @@
 // Enumeration down the tree of bases, for islands of exactly FN contacts
-// whose M is positive definite: one invocation per island screens all 2^FN
+// whose M is positive definite or, with params.flags bit 0, symmetric
+// positive semidefinite (resting contacts; a singular pivot then cuts its
+// subtree, whose bases are all singular): one invocation per island screens all 2^FN
 // bases by principal pivots taken depth first, then confirms the screened
 // ones by elimination in enumeration's order. CPU twin:
 // src/cpu/enumeration_tree.rs (same pivots in the same order, same screen,
@@ -18,7 +20,8 @@
 //
 // Output, in the BasisResult: status 1 with the basis, its z, visited =
 // 2^FN, the singular count among the confirmed bases and _pad1 = DECIDED;
-// or, when a pivot was at most TREE_PIVOT_TOL * M_dd or no screened basis
+// or, when a pivot (outside a cut subtree) was at most TREE_PIVOT_TOL * M_dd
+// (and, if semidefinite, above SINGULAR_PIVOT_TOL * M_dd) or no screened basis
 // among the first MAX_CONFIRMATIONS is feasible, a record left at the start
 // of an elimination (status 0, mask 0) with _pad1 = UNDECIDED, counted in
 // `unfinished`: the host's next round runs the elimination kernel of the
