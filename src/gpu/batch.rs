@@ -163,7 +163,7 @@ pub const UNROLLED_UP_TO_N: usize = 7;
 pub const WORKGROUP_FROM_N: Option<usize> = Some(10);
 /// Auto: positive definite and semidefinite islands of n ≤
 /// [`GpuSolveSettings::tree_max_n`] go to the tree kernel first (on lavapipe
-/// 2–27× the islands/s of Auto's other kernels at n = 6…12 on definite
+/// 2–25× the islands/s of Auto's other kernels at n = 6…12 on definite
 /// islands, 17–33× end to end on resting stacks; BENCHMARKS.md). Its first dispatch per size
 /// compiles for 1.5 s (n = 6) to 9 s (n = 12) on lavapipe without Mesa's
 /// shader cache, once per process.
