@@ -151,9 +151,27 @@ pub fn predict(
     warm_basis: Option<u32>,
     settings: &EnumerationSettings,
 ) -> Option<(SolvePath, LcpSolution)> {
+    prediction(lcp, warm_basis, settings).ok()
+}
+
+/// An island prediction could not settle, and what it learnt of M on the
+/// way: whether M is positive definite (its step 4), which the caller's
+/// choice of enumeration needs too; None when the step did not run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Unsettled {
+    pub definite: Option<bool>,
+}
+
+/// [`predict`], keeping what it learnt of an island it could not settle.
+pub fn prediction(
+    lcp: &Lcp,
+    warm_basis: Option<u32>,
+    settings: &EnumerationSettings,
+) -> Result<(SolvePath, LcpSolution), Unsettled> {
     let n = lcp.n();
+    let unknown = Unsettled { definite: None };
     if n > MAX_ENUMERATION_N {
-        return None;
+        return Err(unknown);
     }
     let settle = |path: SolvePath, mask: u32, bases: u64| {
         let BasisOutcome::Solved {
@@ -172,38 +190,45 @@ pub fn predict(
     };
     // 1. Separating: the empty basis, feasible iff q ≥ 0.
     if lcp.q.iter().all(|&v| v >= 0.0) {
-        return settle(SolvePath::Separating, 0, 1);
+        return settle(SolvePath::Separating, 0, 1).ok_or(unknown);
     }
     // 2. One approaching contact: z = −q/M when M > 0, else no solution.
     if n == 1 {
-        return settle(SolvePath::SingleContact, 1, 2).or_else(|| {
-            let mut sol = LcpSolution::from_z(
-                lcp,
-                Status::NoSolution,
-                vec![0.0],
-                Counters {
-                    bases_visited: 2,
-                    ..Counters::default()
-                },
-            );
-            sol.basis = None;
-            Some((SolvePath::SingleContact, sol))
-        });
+        return settle(SolvePath::SingleContact, 1, 2)
+            .or_else(|| {
+                let mut sol = LcpSolution::from_z(
+                    lcp,
+                    Status::NoSolution,
+                    vec![0.0],
+                    Counters {
+                        bases_visited: 2,
+                        ..Counters::default()
+                    },
+                );
+                sol.basis = None;
+                Some((SolvePath::SingleContact, sol))
+            })
+            .ok_or(unknown);
     }
     // 3. Last frame's basis.
     if let Some(mask) = warm_basis.filter(|&m| m >> n == 0) {
         if let Some(found) = settle(SolvePath::WarmStart, mask, 1) {
-            return Some(found);
+            return Ok(found);
         }
     }
     // 4. The approaching contacts, when the solution is unique.
     let approaching = (0..n)
         .filter(|&i| lcp.q[i] < 0.0)
         .fold(0u32, |m, i| m | 1 << i);
-    if is_positive_definite(lcp) {
-        return settle(SolvePath::PredictedBasis, approaching, 1);
+    let definite = is_positive_definite(lcp);
+    if definite {
+        if let Some(found) = settle(SolvePath::PredictedBasis, approaching, 1) {
+            return Ok(found);
+        }
     }
-    None
+    Err(Unsettled {
+        definite: Some(definite),
+    })
 }
 
 #[cfg(test)]

@@ -6,7 +6,7 @@
 use crate::cpu::enumeration::{enumerate, MAX_ENUMERATION_N};
 use crate::cpu::enumeration_gray::{enumerate_gray, GraySettings};
 use crate::lcp::{Lcp, LcpSolution};
-use crate::prediction::{is_positive_definite, predict, SolvePath};
+use crate::prediction::{is_positive_definite, prediction, SolvePath};
 use crate::solvers::lemke::{lemke, LemkeSettings};
 
 /// Settings of the CPU batch path.
@@ -50,12 +50,15 @@ pub fn solve_island(lcp: &Lcp, warm_basis: Option<u32>, s: &CpuBatchSettings) ->
             solution: lemke(lcp, &s.lemke),
         };
     }
+    let mut definite = None;
     if s.predict {
-        if let Some((path, solution)) = predict(lcp, warm_basis, &s.gray.enumeration) {
-            return CpuIslandResult { path, solution };
+        match prediction(lcp, warm_basis, &s.gray.enumeration) {
+            Ok((path, solution)) => return CpuIslandResult { path, solution },
+            Err(unsettled) => definite = unsettled.definite,
         }
     }
-    let solution = if prefers_elimination(lcp) {
+    let definite = definite.unwrap_or_else(|| is_positive_definite(lcp));
+    let solution = if prefers_elimination(lcp, definite) {
         enumerate(lcp, &s.gray.enumeration)
     } else {
         enumerate_gray(lcp, &s.gray)
@@ -79,8 +82,12 @@ pub fn solve_island(lcp: &Lcp, warm_basis: Option<u32>, s: &CpuBatchSettings) ->
 ///   (a = #{q_i < 0}) at ~5× the cost per basis of the Gray code, which
 ///   always visits all 2ⁿ (measured at n = 10 on this machine: 170 against
 ///   35 ns per basis).
-pub fn prefers_elimination(lcp: &Lcp) -> bool {
-    if !is_positive_definite(lcp) {
+///
+/// `definite`: whether M is positive definite
+/// ([`crate::prediction::is_positive_definite`], which prediction has
+/// usually run already).
+pub fn prefers_elimination(lcp: &Lcp, definite: bool) -> bool {
+    if !definite {
         return true;
     }
     let n = lcp.n();

@@ -17,7 +17,9 @@ use super::{GpuContext, Precision, MAX_GPU_N};
 use crate::cpu::enumeration::EnumerationSettings;
 use crate::cpu::enumeration_tree::TREE_MAX_N;
 use crate::lcp::{Counters, Lcp, LcpSolution, Residuals, Status};
-use crate::prediction::{is_positive_definite, is_positive_semidefinite, predict, SolvePath};
+use crate::prediction::{
+    is_positive_definite, is_positive_semidefinite, prediction, SolvePath, Unsettled,
+};
 use crate::solvers::lemke::{lemke, LemkeSettings};
 use crate::solvers::Solver;
 use crate::validation::{validate_island, BatchReport, GpuVerdict, Verdict};
@@ -350,7 +352,9 @@ impl KernelPlan {
     /// contacts): [`TreeRoute::Semidefinite`]; both tested on the CPU in
     /// O(n³). Auto ([`AUTO_TREE`]) routes only these;
     /// [`EnumerationKernel::Tree`] sends the others too, as Definite.
-    pub fn tree_for(&self, lcp: &Lcp) -> TreeRoute {
+    /// `definite`: whether M is positive definite, when the caller knows
+    /// (prediction tests it; else it is tested here).
+    pub fn tree_for(&self, lcp: &Lcp, definite: Option<bool>) -> TreeRoute {
         if lcp.n() > self.tree_max_n
             || !matches!(
                 self.kernel,
@@ -360,7 +364,7 @@ impl KernelPlan {
         {
             return TreeRoute::Off;
         }
-        if is_positive_definite(lcp) {
+        if definite.unwrap_or_else(|| is_positive_definite(lcp)) {
             TreeRoute::Definite
         } else if is_positive_semidefinite(lcp) {
             TreeRoute::Semidefinite
@@ -643,6 +647,17 @@ pub fn enumerate_on_gpu(
     lcps: &[&Lcp],
     settings: &GpuSolveSettings,
 ) -> Result<(Vec<EnumerationOutput>, RunStats), Error> {
+    enumerate_known(ctx, lcps, &[], settings)
+}
+
+/// [`enumerate_on_gpu`] with `definite[i]`: whether island i's M is
+/// positive definite, where prediction found out (empty: nothing known).
+fn enumerate_known(
+    ctx: &GpuContext,
+    lcps: &[&Lcp],
+    definite: &[Option<bool>],
+    settings: &GpuSolveSettings,
+) -> Result<(Vec<EnumerationOutput>, RunStats), Error> {
     let start = Instant::now();
     let mut stats = RunStats::default();
     check_gpu_sizes(lcps)?;
@@ -659,7 +674,11 @@ pub fn enumerate_on_gpu(
         };
         lcps.len()
     ];
-    let tree: Vec<TreeRoute> = lcps.iter().map(|l| plan.tree_for(l)).collect();
+    let tree: Vec<TreeRoute> = lcps
+        .iter()
+        .enumerate()
+        .map(|(i, l)| plan.tree_for(l, definite.get(i).copied().flatten()))
+        .collect();
     for chunk in pack_chunks(lcps, &tree, max_bytes, precision.bytes()) {
         let run = ctx.scoped("enumeration", || -> Result<EnumerationRun, Error> {
             let (islands_buf, values_buf) = chunk.upload(ctx, precision);
@@ -814,7 +833,7 @@ impl<'a> UploadedBatch<'a> {
         let pipelines = ctx.pipelines(settings.gpu_tolerances(precision))?;
         let (max_bytes, max_groups) = limits_for(ctx, settings);
         let plan = KernelPlan::new(ctx, settings);
-        let tree: Vec<TreeRoute> = lcps.iter().map(|l| plan.tree_for(l)).collect();
+        let tree: Vec<TreeRoute> = lcps.iter().map(|l| plan.tree_for(l, None)).collect();
         let chunks = ctx.scoped("upload", || {
             pack_chunks(lcps, &tree, max_bytes, precision.bytes())
                 .into_iter()
@@ -932,6 +951,8 @@ pub fn solve_lcp_batch_warm(
     let mut report = BatchReport::new(ctx.adapter_info().name.clone(), ctx.precision());
     let mut slots: Vec<Option<IslandOutcome>> = vec![None; lcps.len()];
     let mut on_gpu: Vec<usize> = Vec::new();
+    // Per island on the GPU: whether M is positive definite, if prediction found out.
+    let mut definite: Vec<Option<bool>> = Vec::new();
     let warm_of = |i: usize| warm.and_then(|w| w.get(i).copied().flatten());
     let t_predict = Instant::now();
     for (i, lcp) in lcps.iter().enumerate() {
@@ -953,26 +974,32 @@ pub fn solve_lcp_batch_warm(
                 gpu: None,
                 gpu_z: Vec::new(),
             });
-        } else if let Some((path, solution)) = settings
-            .predict
-            .then(|| predict(lcp, warm_of(i), &settings.enumeration))
-            .flatten()
-        {
-            slots[i] = Some(IslandOutcome {
-                solution,
-                solved_on: SolvedOn::Predicted,
-                path: Some(path),
-                solver: Solver::Enum,
-                gpu: None,
-                gpu_z: Vec::new(),
-            });
         } else {
-            on_gpu.push(i);
+            let predicted = match settings.predict {
+                true => prediction(lcp, warm_of(i), &settings.enumeration),
+                false => Err(Unsettled { definite: None }),
+            };
+            match predicted {
+                Ok((path, solution)) => {
+                    slots[i] = Some(IslandOutcome {
+                        solution,
+                        solved_on: SolvedOn::Predicted,
+                        path: Some(path),
+                        solver: Solver::Enum,
+                        gpu: None,
+                        gpu_z: Vec::new(),
+                    })
+                }
+                Err(unsettled) => {
+                    on_gpu.push(i);
+                    definite.push(unsettled.definite);
+                }
+            }
         }
     }
     report.prediction_seconds = t_predict.elapsed().as_secs_f64();
     let refs: Vec<&Lcp> = on_gpu.iter().map(|&i| &lcps[i]).collect();
-    let (outputs, stats) = enumerate_on_gpu(ctx, &refs, settings)?;
+    let (outputs, stats) = enumerate_known(ctx, &refs, &definite, settings)?;
     report.gpu_seconds = stats.seconds;
     report.chunks = stats.chunks;
     report.dispatches = stats.dispatches;

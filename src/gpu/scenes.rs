@@ -26,7 +26,7 @@ use crate::cpu::impulses::{apply_impulses, BodyVelocity};
 use crate::islands::Island;
 use crate::lcp::{Lcp, LcpSolution};
 use crate::pipeline::{build, IslandResult, SceneSolution};
-use crate::prediction::{predict, SolvePath};
+use crate::prediction::prediction;
 use crate::scene::Scene;
 use crate::solvers::lemke::lemke;
 use crate::solvers::Solver;
@@ -533,7 +533,9 @@ pub fn solve_scenes_warm(
     let mut gpu_velocities: Vec<Option<Vec<f64>>> = vec![None; scenes.len()];
     // Prediction, on the f64 assembly, for every island the GPU would enumerate.
     let t_predict = Instant::now();
-    let mut predicted: Vec<Vec<Option<(SolvePath, LcpSolution)>>> = prepared
+    // Per scene, per island: the settled solution, or whether M is positive
+    // definite where prediction found out (for the tree kernel's route).
+    let (mut predicted, definite): (Vec<Vec<_>>, Vec<Vec<_>>) = prepared
         .iter()
         .enumerate()
         .map(|(s, p)| {
@@ -542,16 +544,19 @@ pub fn solve_scenes_warm(
                 .enumerate()
                 .map(|(k, lcp)| {
                     if !settings.predict || lcp.n() > MAX_GPU_N || alone.contains(&s) {
-                        return None;
+                        return (None, None);
                     }
                     let w = warm
                         .and_then(|w| w.get(s))
                         .and_then(|v| v.get(k).copied().flatten());
-                    predict(lcp, w, &settings.enumeration)
+                    match prediction(lcp, w, &settings.enumeration) {
+                        Ok(settled) => (Some(settled), None),
+                        Err(unsettled) => (None, unsettled.definite),
+                    }
                 })
-                .collect()
+                .unzip()
         })
-        .collect();
+        .unzip();
     report.prediction_seconds += t_predict.elapsed().as_secs_f64();
 
     for members in chunks {
@@ -563,7 +568,7 @@ pub fn solve_scenes_warm(
             &|s, k| predicted[s][k].is_some(),
             &|s, k| match predicted[s][k] {
                 Some(_) => TreeRoute::Off,
-                None => kernel_plan.tree_for(&prepared[s].lcps[k]),
+                None => kernel_plan.tree_for(&prepared[s].lcps[k], definite[s][k]),
             },
         );
         let out = assemble_and_enumerate(ctx, &pipelines, &c, max_groups, Some(&kernel_plan))?;
