@@ -43,120 +43,15 @@ const FNN: u32 = 1u; // HOST fixed_nn
 // Params and BasisResult (where an island's enumeration stands):
 // shaders/enumeration_basis.wgsl.
 
-// Scratch of solve_basis_fixed (solve_basis' is in enumeration_basis.wgsl).
-var<private> fa: array<Scalar, FNN>;
+// z of solve_basis_fixed (0 off the basis), for write_z_fixed.
 var<private> fx: array<Scalar, FN>;
-var<private> fcol: array<Scalar, FN>;
 
-// solve_basis for islands of exactly FN contacts; z (0 off the basis) in fx.
+// solve_basis for islands of exactly FN contacts; z (0 off the basis) in
+// fx. Placeholder: the host replaces it with straight-line code for FN
+// (src/gpu/kernels.rs, `straight_line_solver`) in every specialised build,
+// and the general build (FIXED false) never calls it.
 fn solve_basis_fixed(base: u32, mask: u32) -> Scalar {
-    let qbase = base + FNN;
-    for (var r = 0u; r < FN; r++) {
-        let br = ((mask >> r) & 1u) == 1u;
-        for (var c = 0u; c < FN; c++) {
-            let bc = ((mask >> c) & 1u) == 1u;
-            var v = Scalar(0.0);
-            if br && bc {
-                v = values[base + r * FN + c];
-            } else if r == c {
-                v = Scalar(1.0);
-            }
-            fa[r * FN + c] = v;
-        }
-        var q = Scalar(0.0);
-        if br {
-            q = -values[qbase + r];
-        }
-        fx[r] = q;
-    }
-    for (var c = 0u; c < FN; c++) {
-        var m = Scalar(0.0);
-        for (var r = 0u; r < FN; r++) {
-            m = max(m, abs(fa[r * FN + c]));
-        }
-        fcol[c] = m;
-    }
-    for (var c = 0u; c < FN; c++) {
-        var p = c;
-        var best = abs(fa[c * FN + c]);
-        for (var r = c + 1u; r < FN; r++) {
-            let v = abs(fa[r * FN + c]);
-            if v > best {
-                best = v;
-                p = r;
-            }
-        }
-        if !(best > PIVOT_TOL * fcol[c]) || best == Scalar(0.0) {
-            return SINGULAR;
-        }
-        for (var r = c + 1u; r < FN; r++) {
-            if r == p {
-                for (var j = 0u; j < FN; j++) {
-                    let t = fa[c * FN + j];
-                    fa[c * FN + j] = fa[r * FN + j];
-                    fa[r * FN + j] = t;
-                }
-                let t = fx[c];
-                fx[c] = fx[r];
-                fx[r] = t;
-            }
-        }
-        let inv = Scalar(1.0) / fa[c * FN + c];
-        for (var r = c + 1u; r < FN; r++) {
-            let f = fa[r * FN + c] * inv;
-            if f != Scalar(0.0) {
-                for (var j = c + 1u; j < FN; j++) {
-                    fa[r * FN + j] -= f * fa[c * FN + j];
-                }
-                fx[r] -= f * fx[c];
-            }
-        }
-    }
-    for (var cc = 0u; cc < FN; cc++) {
-        let c = FN - 1u - cc;
-        var s = fx[c];
-        for (var j = c + 1u; j < FN; j++) {
-            s -= fa[c * FN + j] * fx[j];
-        }
-        fx[c] = s / fa[c * FN + c];
-    }
-    var zmax = Scalar(0.0);
-    for (var r = 0u; r < FN; r++) {
-        if ((mask >> r) & 1u) == 1u {
-            zmax = max(zmax, abs(fx[r]));
-        }
-    }
-    var worst = Scalar(0.0);
-    for (var r = 0u; r < FN; r++) {
-        if ((mask >> r) & 1u) == 1u && fx[r] < Scalar(0.0) {
-            worst = max(worst, -fx[r] / zmax);
-        }
-    }
-    if worst > RELAXED_TOL {
-        return worst;
-    }
-    for (var i = 0u; i < FN; i++) {
-        if ((mask >> i) & 1u) == 1u {
-            continue;
-        }
-        let row = base + i * FN;
-        var w = values[qbase + i];
-        var scale = abs(w);
-        for (var j = 0u; j < FN; j++) {
-            if ((mask >> j) & 1u) == 1u {
-                let t = values[row + j] * fx[j];
-                w += t;
-                scale += abs(t);
-            }
-        }
-        if w < Scalar(0.0) {
-            worst = max(worst, -w / scale);
-            if worst > RELAXED_TOL {
-                return worst;
-            }
-        }
-    }
-    return worst;
+    return SINGULAR;
 }
 
 fn write_z_fixed(at: u32, mask: u32) {

@@ -5,20 +5,12 @@
 mod common;
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 
-use common::temp_dir;
+use common::{lcpbatch, temp_dir};
 use lcpbatch::generate::{box_on_ground, random_island, seed_chain, Rng};
 use lcpbatch::pipeline::solve_scene;
 use lcpbatch::{solve, Lcp, Scene, Solver, SolverSettings};
 use serde_json::{json, Value};
-
-fn lcpbatch(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_lcpbatch"))
-        .args(args)
-        .output()
-        .expect("run lcpbatch")
-}
 
 fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
     let p = dir.join(name);

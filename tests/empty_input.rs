@@ -2,17 +2,11 @@
 //! backend (the GPU path has nothing to dispatch and must not trip over it).
 
 use std::path::PathBuf;
-use std::process::{Command, Output};
 
 use lcpbatch::gpu::{GpuContext, GpuOptions};
 
-fn lcpbatch(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_lcpbatch"))
-        .args(args)
-        .env("XDG_RUNTIME_DIR", std::env::temp_dir())
-        .output()
-        .expect("runs")
-}
+mod common;
+use common::lcpbatch;
 
 fn temp(name: &str, text: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("lcpbatch-empty-{}", std::process::id()));

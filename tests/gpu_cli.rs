@@ -3,19 +3,13 @@
 //! adapter and its features, `demo` prints its summary.
 
 use std::path::PathBuf;
-use std::process::{Command, Output};
 
 use lcpbatch::generate::{demo_world, seed_chain, Rng};
 use lcpbatch::gpu::{GpuContext, GpuOptions, Precision};
 use lcpbatch::Scene;
 
-fn lcpbatch(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_lcpbatch"))
-        .args(args)
-        .env("XDG_RUNTIME_DIR", std::env::temp_dir())
-        .output()
-        .expect("runs")
-}
+mod common;
+use common::lcpbatch;
 
 fn ok(args: &[&str]) -> String {
     let out = lcpbatch(args);

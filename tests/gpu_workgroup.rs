@@ -9,24 +9,12 @@ use lcpbatch::bench::islands_of_size;
 use lcpbatch::cpu::enumeration::{enumerate, EnumerationSettings};
 use lcpbatch::gpu::batch::{enumerate_on_gpu, EnumerationKernel};
 use lcpbatch::gpu::layout::{FOUND, NONE, RELAXED};
-use lcpbatch::gpu::{solve_lcp_batch, GpuContext, GpuOptions, GpuSolveSettings, Precision};
+use lcpbatch::gpu::{solve_lcp_batch, GpuContext, GpuSolveSettings, Precision};
 use lcpbatch::stress::{generate, Family};
 use lcpbatch::{Lcp, Status};
 
 mod common;
-
-fn context(precision: Precision) -> Option<GpuContext> {
-    let mut o = GpuOptions::from_env().expect("GPU environment variables");
-    o.precision = precision;
-    match GpuContext::new(&o) {
-        Ok(c) => Some(c),
-        Err(e) if precision == Precision::F64 && e.to_string().contains("SHADER_F64") => {
-            eprintln!("skipping the f64 run: {e}");
-            None
-        }
-        Err(e) => panic!("no GPU adapter: {e}"),
-    }
-}
+use common::gpu_context as context;
 
 /// Random physical islands of exactly n = 8…16 contacts (`per_n` each),
 /// resting stacks and chains (n ≤ 16), and small hand-made problems with

@@ -153,10 +153,13 @@ fn replace_function(src: &str, name: &str, function: &str) -> Result<String, Err
     Ok(format!("{}{function}{}", &src[..start], &src[end..]))
 }
 
-/// `solve_basis_fixed` for n contacts as straight-line WGSL: the loop
-/// version's operations in the same order on scalars named by their
-/// constant indices (row swaps and skipped updates become selects), so
-/// that nothing is indexed dynamically.
+/// `solve_basis_fixed` for n contacts as straight-line WGSL: `solve_basis`'
+/// elimination (shaders/enumeration_basis.wgsl) on the n×n system whose
+/// nonbasic rows and columns are the identity, in the same order, on
+/// scalars named by their constant indices (row swaps and skipped updates
+/// become selects), so that nothing is indexed dynamically. The identity
+/// rows never pivot and add exact zeros, so the answers are `solve_basis`'
+/// bit for bit (`tests/gpu_gray.rs`, `unrolled_kernel_equals_elimination_kernel`).
 pub fn straight_line_solver(n: usize) -> String {
     use std::fmt::Write;
     let mut o = String::new();
@@ -512,23 +515,21 @@ pub fn template(
     };
     let mut s = replace_host_line(src, "scalar", &format!("alias Scalar = {ty};"))?;
     if let Some((pivot, feas, relaxed)) = tolerances {
-        s = replace_host_line(
-            &s,
-            "relaxed_tol",
-            &format!("const RELAXED_TOL: Scalar = {};", literal(relaxed)),
-        )?;
-        s = replace_host_line(
-            &s,
-            "pivot_tol",
-            &format!("const PIVOT_TOL: Scalar = {};", literal(pivot)),
-        )?;
-        s = replace_host_line(
-            &s,
-            "feasibility_tol",
-            &format!("const FEASIBILITY_TOL: Scalar = {};", literal(feas)),
-        )?;
+        s = host_scalar(&s, "relaxed_tol", "RELAXED_TOL", relaxed)?;
+        s = host_scalar(&s, "pivot_tol", "PIVOT_TOL", pivot)?;
+        s = host_scalar(&s, "feasibility_tol", "FEASIBILITY_TOL", feas)?;
     }
     Ok(s)
+}
+
+/// Replaces the `// HOST <what>` line of `src` with the scalar constant
+/// `const <name>: Scalar = <value>;` (the value exactly).
+fn host_scalar(src: &str, what: &str, name: &str, value: f64) -> Result<String, Error> {
+    replace_host_line(
+        src,
+        what,
+        &format!("const {name}: Scalar = {};", literal(value)),
+    )
 }
 
 fn uniform_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
@@ -651,16 +652,8 @@ impl Pipelines {
             key.precision,
             Some((pivot, feas, relaxed)),
         )?;
-        let gray_src = replace_host_line(
-            &gray_src,
-            "screen_tol",
-            &format!("const SCREEN_TOL: Scalar = {};", literal(screen)),
-        )?;
-        let gray_src = replace_host_line(
-            &gray_src,
-            "tableau_pivot_tol",
-            &format!("const TAB_PIVOT_TOL: Scalar = {};", literal(tab_pivot)),
-        )?;
+        let gray_src = host_scalar(&gray_src, "screen_tol", "SCREEN_TOL", screen)?;
+        let gray_src = host_scalar(&gray_src, "tableau_pivot_tol", "TAB_PIVOT_TOL", tab_pivot)?;
         let workgroup_src = template(
             &enumeration_source(ENUMERATION_WORKGROUP_WGSL),
             key.precision,
@@ -680,23 +673,13 @@ impl Pipelines {
             key.precision,
             Some((pivot, feas, relaxed)),
         )?;
-        let tree_src = replace_host_line(
-            &tree_src,
-            "screen_tol",
-            &format!("const SCREEN_TOL: Scalar = {};", literal(tree_screen)),
-        )?;
-        let tree_src = replace_host_line(
-            &tree_src,
-            "tree_pivot_tol",
-            &format!("const TREE_PIVOT_TOL: Scalar = {};", literal(tree_pivot)),
-        )?;
-        let tree_src = replace_host_line(
+        let tree_src = host_scalar(&tree_src, "screen_tol", "SCREEN_TOL", tree_screen)?;
+        let tree_src = host_scalar(&tree_src, "tree_pivot_tol", "TREE_PIVOT_TOL", tree_pivot)?;
+        let tree_src = host_scalar(
             &tree_src,
             "tree_singular_tol",
-            &format!(
-                "const SINGULAR_PIVOT_TOL: Scalar = {};",
-                literal(tree_singular)
-            ),
+            "SINGULAR_PIVOT_TOL",
+            tree_singular,
         )?;
         let tree_src = replace_host_line(
             &tree_src,

@@ -221,3 +221,13 @@ pub fn physical_islands(seed: u64, count: usize, max_n: usize) -> Vec<Lcp> {
     lcps.extend(seed_002_problems());
     lcps
 }
+
+/// Runs the `lcpbatch` binary with `args` (lavapipe quietened by
+/// XDG_RUNTIME_DIR) and returns what it printed and its exit status.
+pub fn lcpbatch(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_lcpbatch"))
+        .args(args)
+        .env("XDG_RUNTIME_DIR", std::env::temp_dir())
+        .output()
+        .expect("run lcpbatch")
+}
