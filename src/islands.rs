@@ -23,6 +23,33 @@ impl Island {
     }
 }
 
+/// One island of a scene and its LCP, as the solvers see it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct IslandProblem {
+    /// The scene's contact indices, in the order of the LCP's rows.
+    pub contacts: Vec<usize>,
+    /// The island's (M, q): M = J M⁻¹ Jᵀ over its contacts, q the approach
+    /// velocities with restitution.
+    pub lcp: crate::lcp::Lcp,
+}
+
+impl Scene {
+    /// Checks the scene (errors name `item`, e.g. "scene 3", with the
+    /// contact or body and the field) and returns its islands with their
+    /// LCPs, assembled in f64: what [`crate::Solver::solve_scenes`] solves.
+    pub fn islands(&self, item: &str) -> Result<Vec<IslandProblem>, crate::Error> {
+        self.validate(item)?;
+        let rows = crate::cpu::assembly::assemble_contacts(self);
+        Ok(find_islands(self)
+            .into_iter()
+            .map(|isl| IslandProblem {
+                lcp: crate::cpu::assembly::assemble_island(self, &rows, &isl),
+                contacts: isl.contacts,
+            })
+            .collect())
+    }
+}
+
 fn find(parent: &mut [usize], mut x: usize) -> usize {
     while parent[x] != x {
         parent[x] = parent[parent[x]];
@@ -79,6 +106,7 @@ mod tests {
             point: [0.0; 3],
             normal: [0.0, 1.0, 0.0],
             restitution: 0.0,
+            id: None,
         }
     }
 

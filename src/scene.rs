@@ -34,6 +34,11 @@ pub struct Contact {
     pub normal: [f64; 3],
     /// Coefficient of restitution ε ∈ [0, 1].
     pub restitution: f64,
+    /// The caller's id of this contact, stable across frames (e.g. a feature
+    /// pair from collision detection): with `Settings::warm_start` an island
+    /// starts from the basis its contacts had in the last call. Optional.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub id: Option<u64>,
 }
 
 /// One simulation instance at one instant.
@@ -177,6 +182,25 @@ impl Body {
 }
 
 impl Contact {
+    /// A contact without an id: normal `normal` (unit, from b to a) at
+    /// `point`, between body `a` and body `b` (None: the static world).
+    pub fn new(
+        a: usize,
+        b: Option<usize>,
+        point: [f64; 3],
+        normal: [f64; 3],
+        restitution: f64,
+    ) -> Self {
+        Contact {
+            a,
+            b,
+            point,
+            normal,
+            restitution,
+            id: None,
+        }
+    }
+
     pub fn point(&self) -> DVec3 {
         DVec3::from_array(self.point)
     }
@@ -280,6 +304,7 @@ mod tests {
             point: [0.0; 3],
             normal: [0.0, 1.0, 0.0],
             restitution: 0.5,
+            id: None,
         }
     }
 

@@ -166,6 +166,7 @@ fn moving_static_platform_matches_cpu_f64() {
                     point,
                     normal: [0.0, -1.0, 0.0],
                     restitution: 0.25,
+                    id: None,
                 }
             } else {
                 Contact {
@@ -174,6 +175,7 @@ fn moving_static_platform_matches_cpu_f64() {
                     point,
                     normal: [0.0, 1.0, 0.0],
                     restitution: 0.5,
+                    id: None,
                 }
             });
         }

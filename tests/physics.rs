@@ -28,6 +28,7 @@ fn contact(a: usize, b: Option<usize>, point: DVec3, normal: DVec3, e: f64) -> C
         point: point.to_array(),
         normal: normal.to_array(),
         restitution: e,
+        id: None,
     }
 }
 

@@ -113,44 +113,48 @@ pub fn solve_batch(
     let threads = match s.threads {
         0 => std::thread::available_parallelism().map_or(1, |n| n.get()),
         t => t,
-    }
-    .min(lcps.len().max(1));
+    };
     let warm_of = |i: usize| warm.and_then(|w| w.get(i).copied().flatten());
-    if threads <= 1 {
-        return Ok(lcps
-            .iter()
-            .enumerate()
-            .map(|(i, l)| solve_island(l, warm_of(i), s))
-            .collect());
+    Ok(parallel_map(lcps.len(), threads, |i| {
+        solve_island(&lcps[i], warm_of(i), s)
+    }))
+}
+
+/// `f(0), …, f(count − 1)` in order, computed on up to `threads` threads
+/// (0 or 1: on this one). Work is handed out in interleaved chunks of 64
+/// indices, so that large and small islands spread evenly over the threads.
+pub fn parallel_map<T: Send>(
+    count: usize,
+    threads: usize,
+    f: impl Fn(usize) -> T + Sync,
+) -> Vec<T> {
+    let threads = threads.min(count.div_ceil(64)).max(1);
+    if threads == 1 {
+        return (0..count).map(f).collect();
     }
-    // Interleaved chunks of 64 islands so that large and small islands spread
-    // evenly over the threads.
     let chunk = 64;
-    let mut out: Vec<Option<CpuIslandResult>> = vec![None; lcps.len()];
+    let mut out: Vec<Option<T>> = (0..count).map(|_| None).collect();
     let next = std::sync::atomic::AtomicUsize::new(0);
     let results = std::sync::Mutex::new(&mut out);
     std::thread::scope(|scope| {
         for _ in 0..threads {
             scope.spawn(|| loop {
                 let start = next.fetch_add(chunk, std::sync::atomic::Ordering::Relaxed);
-                if start >= lcps.len() {
+                if start >= count {
                     break;
                 }
-                let end = (start + chunk).min(lcps.len());
-                let part: Vec<CpuIslandResult> = (start..end)
-                    .map(|i| solve_island(&lcps[i], warm_of(i), s))
-                    .collect();
-                let mut guard = results.lock().expect("no worker panics");
+                let end = (start + chunk).min(count);
+                let part: Vec<T> = (start..end).map(&f).collect();
+                let mut guard = results.lock().unwrap_or_else(|p| p.into_inner());
                 for (k, r) in part.into_iter().enumerate() {
                     guard[start + k] = Some(r);
                 }
             });
         }
     });
-    Ok(out
-        .into_iter()
-        .map(|r| r.expect("every chunk was solved"))
-        .collect())
+    out.into_iter()
+        .map(|r| r.expect("every chunk was computed"))
+        .collect()
 }
 
 #[cfg(test)]

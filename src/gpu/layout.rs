@@ -288,6 +288,7 @@ pub fn assemble_contacts_packed(
             point: [v[0], v[1], v[2]],
             normal: [v[3], v[4], v[5]],
             restitution: v[contact::RESTITUTION],
+            id: None,
         };
         pack_row(&assemble_contact(&bodies, &c), &mut out);
     }

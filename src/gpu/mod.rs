@@ -47,8 +47,11 @@ pub mod scenes;
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
-pub use batch::{solve_lcp_batch, GpuBatchResult, GpuSolveSettings, IslandOutcome, SolvedOn};
-pub use scenes::{solve_scenes, GpuSceneResult};
+pub use batch::{
+    solve_lcp_batch, solve_lcp_batch_warm, EnumerationKernel, GpuBatchResult, GpuSolveSettings,
+    IslandOutcome, SolvedOn,
+};
+pub use scenes::{solve_scenes, solve_scenes_warm, GpuSceneResult};
 
 use crate::Error;
 

@@ -26,7 +26,7 @@ use crate::cpu::impulses::{apply_impulses, BodyVelocity};
 use crate::islands::Island;
 use crate::lcp::{Lcp, LcpSolution};
 use crate::pipeline::{build, IslandResult, SceneSolution};
-use crate::prediction::prediction;
+use crate::prediction::{prediction, SolvePath};
 use crate::scene::Scene;
 use crate::solvers::lemke::lemke;
 use crate::solvers::Solver;
@@ -40,6 +40,9 @@ pub struct GpuSceneResult {
     pub scenes: Vec<SceneSolution>,
     /// Per scene, per island (in `SceneSolution::islands` order).
     pub solved_on: Vec<Vec<SolvedOn>>,
+    /// Per scene, per island: how it was settled (a prediction case,
+    /// Enumerated or Lemke).
+    pub paths: Vec<Vec<SolvePath>>,
     pub report: BatchReport,
     /// Largest |GPU velocity − f64 velocity| / (1 + |f64 velocity|) of the
     /// impulse stage over every body.
@@ -526,7 +529,7 @@ pub fn solve_scenes_warm(
     let mut report = BatchReport::new(ctx.adapter_info().name.clone(), ctx.precision());
     let mut max_velocity_deviation = 0.0f64;
     // Per scene, per island: the solution, its solver and where it came from.
-    let mut solved: Vec<Vec<Option<(LcpSolution, Solver, SolvedOn)>>> = prepared
+    let mut solved: Vec<Vec<Option<(LcpSolution, Solver, SolvedOn, SolvePath)>>> = prepared
         .iter()
         .map(|p| vec![None; p.islands.len()])
         .collect();
@@ -582,7 +585,7 @@ pub fn solve_scenes_warm(
         for &(s, k) in &c.keys {
             if let Some((path, sol)) = predicted[s][k].take() {
                 report.record_predicted(path, &sol);
-                solved[s][k] = Some((sol, Solver::Enum, SolvedOn::Predicted));
+                solved[s][k] = Some((sol, Solver::Enum, SolvedOn::Predicted, path));
             }
         }
         for ((rec, &(s, k)), res) in c.enum_table.iter().zip(&c.enum_keys).zip(&out.results) {
@@ -600,14 +603,15 @@ pub fn solve_scenes_warm(
             } else {
                 SolvedOn::Gpu
             };
-            solved[s][k] = Some((checked.solution, Solver::Enum, on));
+            solved[s][k] = Some((checked.solution, Solver::Enum, on, SolvePath::Enumerated));
         }
         for &s in &c.scenes {
             for (k, isl) in prepared[s].islands.iter().enumerate() {
                 if isl.len() > MAX_GPU_N {
                     let sol = lemke(&prepared[s].lcps[k], &settings.lemke);
                     report.record_cpu_fallback(&sol);
-                    solved[s][k] = Some((sol, Solver::Lemke, SolvedOn::CpuFallback));
+                    solved[s][k] =
+                        Some((sol, Solver::Lemke, SolvedOn::CpuFallback, SolvePath::Lemke));
                 }
             }
         }
@@ -618,7 +622,7 @@ pub fn solve_scenes_warm(
         for (pos, &s) in c.scenes.iter().enumerate() {
             let fc = c.first_contact[pos] as usize;
             for (k, isl) in prepared[s].islands.iter().enumerate() {
-                if let Some((sol, _, _)) = &solved[s][k] {
+                if let Some((sol, _, _, _)) = &solved[s][k] {
                     for (&ct, &zi) in isl.contacts.iter().zip(&sol.z) {
                         z[fc + ct] = zi;
                     }
@@ -640,24 +644,28 @@ pub fn solve_scenes_warm(
         let r = solve_lcp_batch_warm(ctx, &prepared[s].lcps, w, settings)?;
         report.merge(&r.report);
         for (k, o) in r.islands.into_iter().enumerate() {
-            solved[s][k] = Some((o.solution, o.solver, o.solved_on));
+            let path = o.path.unwrap_or(SolvePath::Enumerated);
+            solved[s][k] = Some((o.solution, o.solver, o.solved_on, path));
         }
     }
 
     let mut out_scenes = Vec::with_capacity(scenes.len());
     let mut solved_on = Vec::with_capacity(scenes.len());
+    let mut paths = Vec::with_capacity(scenes.len());
     for (s, (scene, p)) in scenes.iter().zip(prepared).enumerate() {
         let mut impulses = vec![0.0; scene.contacts.len()];
         let mut results = Vec::with_capacity(p.islands.len());
         let mut on = Vec::with_capacity(p.islands.len());
+        let mut path_of = Vec::with_capacity(p.islands.len());
         for ((island, lcp), slot) in p.islands.into_iter().zip(p.lcps).zip(&mut solved[s]) {
-            let (solution, solver, where_) = slot
+            let (solution, solver, where_, path) = slot
                 .take()
                 .ok_or_else(|| Error::Gpu(format!("scene {s}: an island got no result")))?;
             for (&c, &zi) in island.contacts.iter().zip(&solution.z) {
                 impulses[c] = zi;
             }
             on.push(where_);
+            path_of.push(path);
             results.push(IslandResult {
                 contacts: island.contacts,
                 solver,
@@ -685,10 +693,12 @@ pub fn solve_scenes_warm(
             rows: p.rows,
         });
         solved_on.push(on);
+        paths.push(path_of);
     }
     Ok(GpuSceneResult {
         scenes: out_scenes,
         solved_on,
+        paths,
         report,
         max_velocity_deviation,
     })

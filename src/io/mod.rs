@@ -514,6 +514,48 @@ pub struct ScenesOutput {
     pub scenes: Vec<SceneOutput>,
 }
 
+impl LcpBatchOutput {
+    /// The output of an LCP batch's report.
+    pub fn of(report: &crate::Report) -> Self {
+        LcpBatchOutput {
+            problems: report
+                .islands
+                .iter()
+                .map(|isl| LcpOutput::new(isl.method.name(), &isl.solution))
+                .collect(),
+        }
+    }
+}
+
+impl ScenesOutput {
+    /// The output of a scene batch's report.
+    pub fn of(report: &crate::Report) -> Self {
+        ScenesOutput {
+            scenes: report
+                .scenes
+                .iter()
+                .map(|sc| SceneOutput {
+                    contacts: sc
+                        .impulses
+                        .iter()
+                        .map(|&impulse| ContactOutput { impulse })
+                        .collect(),
+                    bodies: sc.bodies.clone(),
+                    islands: report.islands[sc.islands.clone()]
+                        .iter()
+                        .map(|r| IslandOutput {
+                            contacts: r.contacts.clone(),
+                            status: r.solution.status.name().to_string(),
+                            error: r.solution.residuals.error,
+                            solver: r.method.name().to_string(),
+                        })
+                        .collect(),
+                })
+                .collect(),
+        }
+    }
+}
+
 /// Writes `text` to `path` atomically: a temporary file beside it, renamed
 /// into place, so that a failure leaves no partial output.
 pub fn write_atomically(path: &Path, text: &str) -> Result<(), Error> {

@@ -1,19 +1,20 @@
-//! The `lcpbatch` command line.
+//! The `lcpbatch` command line: a client of the library's public API
+//! (`Solver`, `Settings`, `Report`, the formats in `lcpbatch::io`).
+
+mod bench;
+mod stress;
 
 use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand, ValueEnum};
 
-use lcpbatch::backend::{Backend, Session};
 use lcpbatch::generate::{demo_world, Rng};
-use lcpbatch::gpu::{list_adapters, BackendChoice, GpuContext, GpuOptions, Precision};
-use lcpbatch::io::{
-    read_input, write_atomically, Input, LcpBatchOutput, LcpOutput, SceneOutput, ScenesOutput,
+use lcpbatch::io::{read_input, write_atomically, Input, LcpBatchOutput, ScenesOutput};
+use lcpbatch::{
+    list_adapters, Backend, BackendChoice, Error, GpuSettings, Method, Precision, Scene, Settings,
+    Solver,
 };
-use lcpbatch::lcp::Status;
-use lcpbatch::pipeline::solve_scene;
-use lcpbatch::{Error, Scene, Solver, SolverSettings};
 
 #[derive(Parser)]
 #[command(
@@ -67,13 +68,13 @@ struct GpuArgs {
 
 impl GpuArgs {
     /// Environment first, flags over it.
-    fn options(&self) -> Result<GpuOptions, Error> {
-        let mut o = GpuOptions::from_env()?;
+    fn settings(&self) -> Result<GpuSettings, Error> {
+        let mut o = GpuSettings::from_env()?;
         if let Some(a) = &self.adapter {
-            o.adapter_name = Some(a.clone());
+            o.adapter = Some(a.clone());
         }
         if let Some(b) = &self.gpu_backend {
-            o.backend = BackendChoice::parse(b)?;
+            o.api = BackendChoice::parse(b)?;
         }
         if let Some(p) = self.precision {
             o.precision = match p {
@@ -184,113 +185,95 @@ enum Command {
     },
 }
 
-/// The backend for `backend`: on device trouble (no adapter, f64 asked of
-/// an adapter without it, a device lost in the middle of a batch) the
-/// session warns on stderr and solves on the CPU, for gpu and auto alike.
-fn backend_for(backend: BackendArg, gpu: &GpuArgs) -> Result<Backend, Error> {
-    Ok(match backend {
-        BackendArg::Cpu => Backend::Cpu,
-        BackendArg::Gpu => Backend::Gpu(gpu.options()?),
-        BackendArg::Auto => Backend::Auto(gpu.options()?),
+impl BackendArg {
+    fn backend(self) -> Backend {
+        match self {
+            BackendArg::Auto => Backend::Auto,
+            BackendArg::Gpu => Backend::Gpu,
+            BackendArg::Cpu => Backend::Cpu,
+        }
+    }
+}
+
+/// A solver on `backend` with the GPU flags; on device trouble (no
+/// adapter, f64 asked of an adapter without it, a device lost in the middle
+/// of a batch) it warns on stderr and solves on the CPU.
+fn solver_for(backend: Backend, gpu: &GpuArgs, settings: Settings) -> Result<Solver, Error> {
+    Solver::new(Settings {
+        backend,
+        gpu: gpu.settings()?,
+        ..settings
     })
+}
+
+/// Solves `scenes` once untimed (the first dispatch of a GPU kernel compiles
+/// it, per island size: one world for each size of the batch), then timed.
+fn timed(solver: &mut Solver, scenes: &[Scene]) -> Result<(lcpbatch::Report, f64), Error> {
+    if solver.device().kind != lcpbatch::DeviceKind::Cpu {
+        let mut sizes = std::collections::BTreeSet::new();
+        let mut warm_up = Vec::new();
+        for (i, s) in scenes.iter().enumerate() {
+            let islands = s.islands(&format!("scene {i}"))?;
+            if islands.iter().any(|p| !sizes.contains(&p.lcp.n())) {
+                sizes.extend(islands.iter().map(|p| p.lcp.n()));
+                warm_up.push(s.clone());
+            }
+        }
+        solver.solve_scenes(&warm_up)?;
+    }
+    let t = std::time::Instant::now();
+    let r = solver.solve_scenes(scenes)?;
+    Ok((r, t.elapsed().as_secs_f64()))
 }
 
 fn demo(worlds: usize, seed: u64, backend: BackendArg, gpu: &GpuArgs) -> Result<(), Error> {
     let mut rng = Rng::new(seed);
     let scenes: Vec<Scene> = (0..worlds).map(|_| demo_world(&mut rng)).collect();
-    let mut session = Session::new(&backend_for(backend, gpu)?)?;
     let contacts: usize = scenes.iter().map(|s| s.contacts.len()).sum();
-    let settings = SolverSettings::default();
-    if let Some(ctx) = session.context() {
-        println!("adapter: {}", lcpbatch::backend::describe_context(ctx));
-        // Warm-up, untimed: the first dispatch of a kernel compiles it (the
-        // enumeration kernels are specialised per island size, and a
-        // software adapter takes up to seconds each), so one world for each
-        // island size of the batch goes first.
-        let mut sizes = std::collections::BTreeSet::new();
-        let mut warm_up = Vec::new();
-        for s in &scenes {
-            let (_, _, lcps) = lcpbatch::pipeline::build(s, "scene")?;
-            if lcps.iter().any(|l| !sizes.contains(&l.n())) {
-                sizes.extend(lcps.iter().map(|l| l.n()));
-                warm_up.push(s.clone());
-            }
-        }
-        session.solve_scenes(&warm_up, &settings)?;
-    }
-    let t = std::time::Instant::now();
-    let r = session.solve_scenes(&scenes, &settings)?;
-    let secs = t.elapsed().as_secs_f64();
-    match &r.report.gpu {
-        Some(report) => {
-            let islands = report.islands;
-            println!(
-                "{worlds} simulation instances, {} bodies, {contacts} contacts, {islands} islands",
-                scenes.iter().map(|s| s.bodies.len()).sum::<usize>()
-            );
-            println!("{report}");
-            println!(
-                "impulse stage: max deviation from f64 {:.2e}",
-                r.report.max_velocity_deviation.unwrap_or(0.0)
-            );
-            println!(
-                "throughput: {:.0} islands/s end to end ({:.3} s: assembly, enumeration, validation, impulses)",
-                islands as f64 / secs,
-                secs
-            );
-            let t = std::time::Instant::now();
-            for (i, s) in scenes.iter().enumerate() {
-                solve_scene(s, &settings, &format!("scene {i}"))?;
-            }
-            let cpu = t.elapsed().as_secs_f64();
-            println!(
-                "CPU path on the same batch (one thread, f64 enumeration): {:.0} islands/s ({cpu:.3} s)",
-                islands as f64 / cpu
-            );
-        }
-        None => {
-            match session.fallback() {
-                Some(why) => println!("adapter: none (CPU path; GPU trouble: {why})"),
-                None => println!("adapter: none (CPU path)"),
-            }
-            let mut statuses = [0usize; 6];
-            let (mut islands, mut max_error) = (0usize, 0.0f64);
-            for isl in r.scenes.iter().flat_map(|s| &s.islands) {
-                islands += 1;
-                let k = Status::ALL
-                    .iter()
-                    .position(|&x| x == isl.solution.status)
-                    .unwrap_or(5);
-                statuses[k] += 1;
-                if isl.solution.status.is_solution() {
-                    max_error = max_error.max(isl.solution.residuals.error);
-                }
-            }
-            let list: Vec<String> = Status::ALL
-                .iter()
-                .zip(statuses)
-                .filter(|(_, c)| *c > 0)
-                .map(|(s, c)| format!("{s} {c}"))
-                .collect();
-            println!("{worlds} simulation instances, {contacts} contacts, {islands} islands");
-            println!("statuses: {}", list.join(", "));
-            println!("max error: {max_error:.3e}");
-            println!(
-                "throughput: {:.0} islands/s ({secs:.3} s)",
-                islands as f64 / secs
-            );
-        }
+    let bodies: usize = scenes.iter().map(|s| s.bodies.len()).sum();
+    let mut solver = solver_for(backend.backend(), gpu, Settings::default())?;
+    let (report, secs) = timed(&mut solver, &scenes)?;
+    let islands = report.islands.len();
+    println!(
+        "{worlds} simulation instances, {bodies} bodies, {contacts} contacts, {islands} islands"
+    );
+    println!("{report}");
+    println!(
+        "throughput: {:.0} islands/s end to end ({secs:.3} s)",
+        islands as f64 / secs
+    );
+    // The other path on the same batch, so that the choice can be judged.
+    let other = if report.on_gpu() {
+        Some(solver_for(Backend::Cpu, gpu, Settings::default())?)
+    } else if report.fallback.is_none() && !list_adapters(gpu.settings()?.api).is_empty() {
+        Some(solver_for(Backend::Gpu, gpu, Settings::default())?)
+    } else {
+        None
+    };
+    if let Some(mut other) = other.filter(|o| o.fallback().is_none()) {
+        let (r, t) = timed(&mut other, &scenes)?;
+        let kind = match r.device.kind {
+            lcpbatch::DeviceKind::Cpu => "CPU path",
+            lcpbatch::DeviceKind::HardwareGpu => "GPU path (hardware)",
+            lcpbatch::DeviceKind::SoftwareGpu => "GPU path (software adapter)",
+        };
+        println!(
+            "for comparison, {kind} on the same batch: {:.0} islands/s ({t:.3} s; {}), {:.2}x the chosen path",
+            islands as f64 / t,
+            r.device.name,
+            secs / t
+        );
     }
     Ok(())
 }
 
 fn info(gpu: &GpuArgs) -> Result<(), Error> {
-    let o = gpu.options()?;
-    let adapters = list_adapters(o.backend);
+    let g = gpu.settings()?;
+    let adapters = list_adapters(g.api);
     if adapters.is_empty() {
         println!(
             "no GPU adapter found: {}\nthe CPU path is used.",
-            lcpbatch::gpu::INSTALL_HINT
+            lcpbatch::INSTALL_HINT
         );
         return Ok(());
     }
@@ -298,9 +281,12 @@ fn info(gpu: &GpuArgs) -> Result<(), Error> {
     for a in &adapters {
         println!("{a}");
     }
-    match GpuContext::new(&o) {
-        Ok(ctx) => println!("chosen: {}", lcpbatch::backend::describe_context(&ctx)),
-        Err(e) => println!("chosen: none ({e}); the CPU path is used"),
+    let auto = solver_for(Backend::Auto, gpu, Settings::default())?;
+    println!("backend auto: {} ({})", auto.device().name, auto.choice());
+    let named = solver_for(Backend::Gpu, gpu, Settings::default())?;
+    match named.fallback() {
+        None => println!("backend gpu: {}", named.device().name),
+        Some(why) => println!("backend gpu: none ({why}); the CPU path is used"),
     }
     Ok(())
 }
@@ -330,15 +316,19 @@ fn run(cli: Cli) -> Result<(), Error> {
                     "must be positive",
                 ));
             }
-            let opts = lcpbatch::bench::BenchOptions {
+            let opts = bench::BenchOptions {
                 islands,
                 seed,
                 out_dir: out,
-                gpu: if cpu_only { None } else { Some(gpu.options()?) },
+                gpu: if cpu_only {
+                    None
+                } else {
+                    Some(gpu.settings()?)
+                },
                 per_n,
                 batch_sizes,
             };
-            lcpbatch::bench::run(&opts).map(|_| ())
+            bench::run(&opts).map(|_| ())
         }
         Command::Stress {
             cases,
@@ -368,15 +358,19 @@ fn run(cli: Cli) -> Result<(), Error> {
             if siconos.is_none() {
                 eprintln!("Siconos problems not found; the siconos_scaled family is skipped");
             }
-            let opts = lcpbatch::stress::StressOptions {
+            let opts = stress::StressOptions {
                 cases,
                 seed,
                 siconos,
                 out_dir: out,
-                gpu: if cpu_only { None } else { Some(gpu.options()?) },
+                gpu: if cpu_only {
+                    None
+                } else {
+                    Some(gpu.settings()?)
+                },
                 regularization,
             };
-            lcpbatch::stress::run(&opts).map(|_| ())
+            stress::run(&opts).map(|_| ())
         }
         Command::Solve {
             file,
@@ -386,21 +380,18 @@ fn run(cli: Cli) -> Result<(), Error> {
             backend,
             gpu,
         } => {
-            let mut settings = SolverSettings::with_solver(match solver {
-                SolverArg::Enum => Solver::Enum,
-                SolverArg::Lemke => Solver::Lemke,
-                SolverArg::Pgs => Solver::Pgs,
-            });
-            if all_solutions {
-                if settings.solver != Solver::Enum {
-                    return Err(Error::Unsupported(
-                        "--all-solutions needs --solver enum".into(),
-                    ));
-                }
-                settings.enumeration.all_solutions = true;
+            let method = match solver {
+                SolverArg::Enum => Method::Enumeration,
+                SolverArg::Lemke => Method::Lemke,
+                SolverArg::Pgs => Method::Pgs,
+            };
+            if all_solutions && method != Method::Enumeration {
+                return Err(Error::Unsupported(
+                    "--all-solutions needs --solver enum".into(),
+                ));
             }
             // The GPU enumerates; Lemke, PGS and --all-solutions run on the CPU.
-            let gpu_capable = settings.solver == Solver::Enum && !all_solutions;
+            let gpu_capable = method == Method::Enumeration && !all_solutions;
             if backend == BackendArg::Gpu && !gpu_capable {
                 return Err(Error::Unsupported(
                     "--backend gpu solves by enumeration only (no --solver lemke/pgs, no --all-solutions)"
@@ -408,38 +399,29 @@ fn run(cli: Cli) -> Result<(), Error> {
                 ));
             }
             let input = read_input(&file)?;
+            let settings = Settings {
+                method,
+                all_solutions,
+                ..Settings::default()
+            };
             let backend = if gpu_capable {
-                backend_for(backend, &gpu)?
+                backend.backend()
             } else {
                 Backend::Cpu
             };
-            let mut session = Session::new(&backend)?;
-            if let Some(ctx) = session.context() {
-                eprintln!("adapter: {}", lcpbatch::backend::describe_context(ctx));
+            let mut solver = solver_for(backend, &gpu, settings)?;
+            let report = match &input {
+                Input::Lcps(lcps) => solver.solve_lcps(lcps)?,
+                Input::Scenes(scenes) => solver.solve_scenes(scenes)?,
+            };
+            if report.on_gpu() {
+                eprintln!("{report}");
             }
             let text = match input {
-                Input::Lcps(lcps) => {
-                    let r = session.solve_lcps(&lcps, &settings)?;
-                    if let Some(report) = &r.report.gpu {
-                        eprintln!("{report}");
-                    }
-                    let problems = r
-                        .problems
-                        .iter()
-                        .map(|p| LcpOutput::new(p.solver.name(), &p.solution))
-                        .collect();
-                    serde_json::to_string_pretty(&LcpBatchOutput { problems })
-                        .expect("serialisable")
-                }
-                Input::Scenes(scenes) => {
-                    let r = session.solve_scenes(&scenes, &settings)?;
-                    if let Some(report) = &r.report.gpu {
-                        eprintln!("{report}");
-                    }
-                    let scenes = r.scenes.iter().map(SceneOutput::new).collect();
-                    serde_json::to_string_pretty(&ScenesOutput { scenes }).expect("serialisable")
-                }
-            };
+                Input::Lcps(_) => serde_json::to_string_pretty(&LcpBatchOutput::of(&report)),
+                Input::Scenes(_) => serde_json::to_string_pretty(&ScenesOutput::of(&report)),
+            }
+            .expect("serialisable");
             match output {
                 Some(path) => write_atomically(&path, &text)?,
                 None => println!("{text}"),

@@ -1,0 +1,360 @@
+//! What a [`crate::Solver`] call found: one [`Report`] type for LCP batches
+//! and scene batches, on every backend.
+//!
+//! Per island (an LCP of the batch, or a contact island of a scene): the
+//! status, z, w, the error measure, the basis and the path that settled it
+//! ([`IslandReport`]). Per batch: counts per path ([`PathCounts`]) and per
+//! status, the largest error and which island has it, time per phase
+//! ([`Timings`]), where it ran and why ([`Report::device`],
+//! [`Report::choice`]) and the reason the CPU took over, if it did
+//! ([`Report::fallback`]).
+
+use std::fmt;
+
+use crate::cpu::impulses::BodyVelocity;
+use crate::gpu::Precision;
+use crate::lcp::{LcpSolution, Status};
+use crate::settings::Method;
+
+/// How an island was settled.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SolvePath {
+    /// q ≥ 0: no impulse needed (prediction).
+    Separating,
+    /// n = 1, closed form (prediction).
+    SingleContact,
+    /// The basis remembered from the previous call was still valid.
+    WarmStart,
+    /// The basis of the approaching contacts was valid and M positive definite.
+    PredictedBasis,
+    /// Enumerated on the GPU; its basis is valid in f64 (polished), or its
+    /// "no solution" was confirmed on the CPU.
+    EnumeratedGpu,
+    /// Enumerated on the GPU, but the answer failed the f64 check: the CPU
+    /// enumeration solved it.
+    Repaired,
+    /// Enumerated on the CPU.
+    EnumeratedCpu,
+    /// Lemke on the CPU: asked for, or an island too large to enumerate.
+    Lemke,
+    /// Projected Gauss–Seidel on the CPU.
+    Pgs,
+    /// The problem failed its checks (status `invalid_input`).
+    Invalid,
+}
+
+impl SolvePath {
+    /// The snake_case name used in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            SolvePath::Separating => "separating",
+            SolvePath::SingleContact => "single_contact",
+            SolvePath::WarmStart => "warm_start",
+            SolvePath::PredictedBasis => "predicted_basis",
+            SolvePath::EnumeratedGpu => "enumerated_gpu",
+            SolvePath::Repaired => "repaired",
+            SolvePath::EnumeratedCpu => "enumerated_cpu",
+            SolvePath::Lemke => "lemke",
+            SolvePath::Pgs => "pgs",
+            SolvePath::Invalid => "invalid",
+        }
+    }
+
+    /// Settled by prediction, before either backend enumerates.
+    pub fn is_prediction(self) -> bool {
+        matches!(
+            self,
+            SolvePath::Separating
+                | SolvePath::SingleContact
+                | SolvePath::WarmStart
+                | SolvePath::PredictedBasis
+        )
+    }
+}
+
+impl fmt::Display for SolvePath {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// One island's (or one LCP's) result.
+#[derive(Clone, Debug)]
+pub struct IslandReport {
+    /// The scene it belongs to (None for an LCP batch).
+    pub scene: Option<usize>,
+    /// The scene's contact indices in the order of the LCP's rows (for an
+    /// LCP batch: 0..n).
+    pub contacts: Vec<usize>,
+    /// The algorithm whose answer this is (enumeration hands islands beyond
+    /// its size limit to Lemke).
+    pub method: Method,
+    /// How it was settled.
+    pub path: SolvePath,
+    /// Status, z, w, residuals (the error measure), basis and counters, all in f64.
+    pub solution: LcpSolution,
+}
+
+impl IslandReport {
+    /// The status of the solve.
+    pub fn status(&self) -> Status {
+        self.solution.status
+    }
+
+    /// The Siconos error measure ‖z − max(0, z − w)‖ / ‖q‖.
+    pub fn error(&self) -> f64 {
+        self.solution.residuals.error
+    }
+}
+
+/// One scene after the impact.
+#[derive(Clone, Debug)]
+pub struct SceneReport {
+    /// Normal impulse of every contact, in the scene's order.
+    pub impulses: Vec<f64>,
+    /// Velocities of every body after the impulses.
+    pub bodies: Vec<BodyVelocity>,
+    /// Its islands: indices into [`Report::islands`].
+    pub islands: std::ops::Range<usize>,
+}
+
+/// Islands per path, and what validation did to the GPU's answers.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct PathCounts {
+    pub separating: usize,
+    pub single_contact: usize,
+    pub warm_start: usize,
+    pub predicted_basis: usize,
+    /// Enumerated on the GPU and confirmed in f64 (`polished` + GPU "no
+    /// solution" confirmed on the CPU).
+    pub enumerated_gpu: usize,
+    pub enumerated_cpu: usize,
+    pub lemke: usize,
+    pub pgs: usize,
+    pub invalid: usize,
+    /// GPU answers whose basis was valid in f64 (z, w recomputed in f64).
+    pub polished: usize,
+    /// GPU answers that failed in f64 and were re-solved on the CPU.
+    pub repaired: usize,
+    /// Islands the GPU backend handed to the CPU because they are too large
+    /// for its kernels (n > 16; solved by Lemke).
+    pub cpu_fallback: usize,
+}
+
+impl PathCounts {
+    fn add(&mut self, path: SolvePath) {
+        let c = match path {
+            SolvePath::Separating => &mut self.separating,
+            SolvePath::SingleContact => &mut self.single_contact,
+            SolvePath::WarmStart => &mut self.warm_start,
+            SolvePath::PredictedBasis => &mut self.predicted_basis,
+            SolvePath::EnumeratedGpu => &mut self.enumerated_gpu,
+            SolvePath::Repaired => &mut self.repaired,
+            SolvePath::EnumeratedCpu => &mut self.enumerated_cpu,
+            SolvePath::Lemke => &mut self.lemke,
+            SolvePath::Pgs => &mut self.pgs,
+            SolvePath::Invalid => &mut self.invalid,
+        };
+        *c += 1;
+    }
+
+    /// (name, count) of every non-zero count, in a fixed order.
+    pub fn nonzero(&self) -> Vec<(&'static str, usize)> {
+        [
+            ("separating", self.separating),
+            ("single_contact", self.single_contact),
+            ("warm_start", self.warm_start),
+            ("predicted_basis", self.predicted_basis),
+            ("enumerated_gpu", self.enumerated_gpu),
+            ("polished", self.polished),
+            ("repaired", self.repaired),
+            ("enumerated_cpu", self.enumerated_cpu),
+            ("lemke", self.lemke),
+            ("cpu_fallback", self.cpu_fallback),
+            ("pgs", self.pgs),
+            ("invalid", self.invalid),
+        ]
+        .into_iter()
+        .filter(|(_, c)| *c > 0)
+        .collect()
+    }
+}
+
+/// Seconds per phase of one call (0 for a phase that did not run).
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
+pub struct Timings {
+    /// Scenes: checks, islands and assembly (on the GPU path, the CPU's f64
+    /// assembly that validation uses).
+    pub build: f64,
+    /// Prediction on the CPU (before the GPU; on the CPU path it is part of `solve`).
+    pub prediction: f64,
+    /// GPU: upload, dispatch and readback (assembly, enumeration, impulses).
+    pub gpu: f64,
+    /// Checking the GPU's answers in f64.
+    pub validation: f64,
+    /// CPU solves (prediction included on the CPU path; the GPU path's
+    /// Lemke fallbacks are in its total only).
+    pub solve: f64,
+    /// Scenes: velocities after the impulses.
+    pub impulses: f64,
+    /// The whole call.
+    pub total: f64,
+}
+
+/// What kind of device solved the batch.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum DeviceKind {
+    /// The CPU path in f64.
+    Cpu,
+    /// A hardware GPU.
+    HardwareGpu,
+    /// A software adapter (lavapipe, llvmpipe, WARP).
+    SoftwareGpu,
+}
+
+/// Where the batch was solved.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Device {
+    pub kind: DeviceKind,
+    /// The adapter in words (name, backend, device type, how chosen,
+    /// precision), or `cpu (N threads)`.
+    pub name: String,
+    /// Shader precision on the GPU; F64 on the CPU.
+    pub precision: Precision,
+}
+
+/// GPU-only figures of a batch.
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
+pub struct GpuFigures {
+    pub chunks: usize,
+    pub dispatches: usize,
+    /// Enumeration rounds (see `shaders/enumeration.wgsl`).
+    pub rounds: usize,
+    /// Islands the tree kernel decided, and those it left to elimination.
+    pub tree_decided: usize,
+    pub tree_undecided: usize,
+    /// Largest error measure of the GPU's own z, before the f64 polish.
+    pub max_gpu_error: f64,
+    /// Scenes: largest relative deviation of the GPU's impulse stage from
+    /// its f64 twin.
+    pub max_velocity_deviation: f64,
+}
+
+/// Everything a call found; see the module docs.
+#[derive(Clone, Debug)]
+pub struct Report {
+    /// One per LCP (in the caller's order), or per island of each scene
+    /// (scene by scene, islands in the order of [`crate::Scene`]'s contact graph).
+    pub islands: Vec<IslandReport>,
+    /// Scene batches only: one per scene (empty for LCP batches).
+    pub scenes: Vec<SceneReport>,
+    pub counts: PathCounts,
+    /// Islands per status, in the order of [`Status::ALL`].
+    pub statuses: [usize; 6],
+    /// Largest error measure over islands whose status is a solution, and
+    /// the index of that island in `islands` (None when there is none).
+    pub max_error: Option<(f64, usize)>,
+    pub timings: Timings,
+    pub device: Device,
+    /// Why this device: the backend asked for and what was found.
+    pub choice: String,
+    /// Why the CPU took over from the GPU (None: no device trouble).
+    pub fallback: Option<String>,
+    /// GPU figures when the GPU solved the batch.
+    pub gpu: Option<GpuFigures>,
+}
+
+impl Report {
+    /// Counts, statuses and the largest error from `islands`.
+    pub(crate) fn new(
+        islands: Vec<IslandReport>,
+        scenes: Vec<SceneReport>,
+        device: Device,
+        choice: String,
+    ) -> Self {
+        let mut counts = PathCounts::default();
+        let mut statuses = [0usize; 6];
+        let mut max_error: Option<(f64, usize)> = None;
+        for (i, isl) in islands.iter().enumerate() {
+            counts.add(isl.path);
+            let s = isl.solution.status;
+            statuses[Status::ALL.iter().position(|&x| x == s).unwrap_or(5)] += 1;
+            let e = isl.solution.residuals.error;
+            // NaN compares false: a NaN error always replaces the maximum,
+            // so that it is reported, never hidden.
+            if s.is_solution() && !max_error.is_some_and(|(m, _)| e <= m) {
+                max_error = Some((e, i));
+            }
+        }
+        Report {
+            islands,
+            scenes,
+            counts,
+            statuses,
+            max_error,
+            timings: Timings::default(),
+            device,
+            choice,
+            fallback: None,
+            gpu: None,
+        }
+    }
+
+    /// (status, count) of every status that occurs, in [`Status::ALL`] order.
+    pub fn status_counts(&self) -> Vec<(Status, usize)> {
+        Status::ALL
+            .iter()
+            .zip(self.statuses)
+            .filter(|(_, c)| *c > 0)
+            .map(|(&s, c)| (s, c))
+            .collect()
+    }
+
+    /// Whether the GPU solved the batch.
+    pub fn on_gpu(&self) -> bool {
+        self.device.kind != DeviceKind::Cpu
+    }
+}
+
+impl fmt::Display for Report {
+    /// A few lines: device and why, islands per path, statuses, the largest
+    /// error (with the island that has it) and time per phase.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(f, "device: {} ({})", self.device.name, self.choice)?;
+        if let Some(why) = &self.fallback {
+            writeln!(f, "GPU trouble, solved on the CPU: {why}")?;
+        }
+        let paths: Vec<String> = self
+            .counts
+            .nonzero()
+            .iter()
+            .map(|(n, c)| format!("{n} {c}"))
+            .collect();
+        writeln!(f, "{} islands: {}", self.islands.len(), paths.join(", "))?;
+        let statuses: Vec<String> = self
+            .status_counts()
+            .iter()
+            .map(|(s, c)| format!("{s} {c}"))
+            .collect();
+        writeln!(f, "statuses: {}", statuses.join(", "))?;
+        match self.max_error {
+            Some((e, i)) => writeln!(f, "max error: {e:.3e} (island {i})")?,
+            None => writeln!(f, "max error: none (no island has a solution)")?,
+        }
+        if let Some(g) = &self.gpu {
+            writeln!(
+                f,
+                "gpu: {} chunk(s), {} dispatch(es), {} round(s), tree {} decided / {} undecided, max error before polish {:.3e}",
+                g.chunks, g.dispatches, g.rounds, g.tree_decided, g.tree_undecided, g.max_gpu_error
+            )?;
+        }
+        let t = &self.timings;
+        write!(
+            f,
+            "time: total {:.3} s (build {:.3}, prediction {:.3}, gpu {:.3}, validation {:.3}, solve {:.3}, impulses {:.3})",
+            t.total, t.build, t.prediction, t.gpu, t.validation, t.solve, t.impulses
+        )
+    }
+}

@@ -1,0 +1,413 @@
+//! Every knob of a [`crate::Solver`], its default and its check.
+//!
+//! One plain struct, [`Settings`], with documented public fields; the GPU's
+//! are grouped in [`GpuSettings`]. [`Settings::validate`] (called by
+//! [`crate::Solver::new`]) refuses a value out of range with an error that
+//! names the field, e.g. `settings: pivot_tol: 2 is not in [0, 1)`.
+
+use crate::cpu::enumeration::EnumerationSettings;
+use crate::gpu::{BackendChoice, EnumerationKernel, GpuOptions, GpuSolveSettings, Precision};
+use crate::linalg::PIVOT_TOL;
+use crate::solvers::lemke::LemkeSettings;
+use crate::solvers::pgs::PgsSettings;
+use crate::Error;
+
+/// Where islands are solved.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Backend {
+    /// The GPU when a hardware adapter exists (or one is named in
+    /// [`GpuSettings::adapter`]), else the CPU. A software adapter
+    /// (lavapipe, llvmpipe) is slower than the CPU path on every batch
+    /// measured (BENCHMARKS.md), so `Auto` never picks one by itself; the
+    /// report says why it chose what it chose.
+    #[default]
+    Auto,
+    /// The CPU path in f64 over every core.
+    Cpu,
+    /// The GPU, software adapters included, every answer validated on the
+    /// CPU in f64. On device trouble (no adapter, no f64 where f64 was asked,
+    /// a device lost) the CPU solves the batch, with a warning and the reason
+    /// in [`crate::Report::fallback`].
+    Gpu,
+}
+
+impl Backend {
+    /// `auto`, `cpu` or `gpu`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Backend::Auto => "auto",
+            Backend::Cpu => "cpu",
+            Backend::Gpu => "gpu",
+        }
+    }
+}
+
+/// The algorithm that solves an island's LCP.
+#[derive(
+    Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
+)]
+#[serde(rename_all = "snake_case")]
+pub enum Method {
+    /// Enumeration of the complementary bases (exact; fewest active contacts
+    /// first, then the smallest mask), after the cheap paths of prediction
+    /// (separating, single contact, warm start, predicted basis). On the CPU
+    /// up to n = 20, on the GPU up to n = 16; scene islands above that go to
+    /// Lemke. The only method the GPU runs.
+    #[default]
+    Enumeration,
+    /// Lemke's complementary pivoting with a lexicographic ratio test (exact,
+    /// any n; CPU).
+    Lemke,
+    /// Projected Gauss–Seidel from z = 0 (iterative; CPU).
+    Pgs,
+}
+
+impl Method {
+    /// The name used on the command line and in output: `enum`, `lemke`, `pgs`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Enumeration => "enum",
+            Method::Lemke => "lemke",
+            Method::Pgs => "pgs",
+        }
+    }
+}
+
+/// Settings of the GPU backend. Defaults: the best adapter on any wgpu
+/// backend, f64 where the adapter has it, kernels chosen per island.
+#[derive(Clone, Debug, PartialEq)]
+pub struct GpuSettings {
+    /// A case-insensitive part of the adapter's name (default None: the best
+    /// adapter, hardware before software). Naming one makes `Backend::Auto`
+    /// use it even when it is a software adapter.
+    pub adapter: Option<String>,
+    /// The wgpu backend to look on (default [`BackendChoice::Auto`]: all,
+    /// Vulkan before GL).
+    pub api: BackendChoice,
+    /// Shader precision (default [`Precision::Auto`]: f64 where the adapter
+    /// has SHADER_F64, else f32). [`Precision::F64`] on an adapter without
+    /// it is device trouble: the CPU solves, never silently in f32.
+    pub precision: Precision,
+    /// The enumeration shader (default [`EnumerationKernel::Auto`]: chosen
+    /// per island size and class from measurements).
+    pub kernel: EnumerationKernel,
+    /// Largest island the tree kernel takes (default 12; 0 turns it off).
+    pub tree_max_n: usize,
+    /// Split batches above this many bytes per binding (default None: the
+    /// device's limit; a lower value is capped by it). For tests of the splitting.
+    pub max_binding_bytes: Option<u64>,
+    /// At most this many workgroups per dispatch (default None: the
+    /// device's limit). For tests of the splitting.
+    pub max_workgroups: Option<u32>,
+    /// Loop work per invocation and enumeration round (default None: 48,000
+    /// on software adapters, which end longer loops, 2²² on hardware).
+    pub round_budget: Option<u32>,
+}
+
+impl Default for GpuSettings {
+    fn default() -> Self {
+        GpuSettings {
+            adapter: None,
+            api: BackendChoice::Auto,
+            precision: Precision::Auto,
+            kernel: EnumerationKernel::Auto,
+            tree_max_n: GpuSolveSettings::default().tree_max_n,
+            max_binding_bytes: None,
+            max_workgroups: None,
+            round_budget: None,
+        }
+    }
+}
+
+impl GpuSettings {
+    /// Defaults overridden by the environment: `LCPBATCH_GPU_ADAPTER`,
+    /// `LCPBATCH_GPU_BACKEND` (auto, vulkan, gl, metal, dx12) and
+    /// `LCPBATCH_GPU_PRECISION` (auto, f32, f64). A bad value is an error
+    /// naming the variable.
+    pub fn from_env() -> Result<Self, Error> {
+        let o = GpuOptions::from_env()?;
+        Ok(GpuSettings {
+            adapter: o.adapter_name,
+            api: o.backend,
+            precision: o.precision,
+            ..GpuSettings::default()
+        })
+    }
+
+    pub(crate) fn options(&self) -> GpuOptions {
+        GpuOptions {
+            backend: self.api,
+            adapter_name: self.adapter.clone(),
+            precision: self.precision,
+            ..GpuOptions::default()
+        }
+    }
+}
+
+/// Every setting of a [`crate::Solver`]. `Settings::default()` is the exact
+/// path: enumeration after prediction, the GPU only where it is a hardware
+/// one, the CPU's tolerances in f64.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Settings {
+    /// Where to solve (default [`Backend::Auto`]).
+    pub backend: Backend,
+    /// The algorithm (default [`Method::Enumeration`]).
+    pub method: Method,
+    /// Enumeration only: visit every basis and report every solution and
+    /// whether the solution set is finite (default false). CPU only:
+    /// `Backend::Gpu` refuses it, `Auto` solves on the CPU.
+    pub all_solutions: bool,
+    /// Enumeration only: settle what needs no enumeration first (separating
+    /// islands, single contacts, a warm basis, the predicted basis when M is
+    /// positive definite), on both backends (default true). Same answers.
+    pub predict: bool,
+    /// Remember each island's basis by its contact ids and start the next
+    /// call from it (default false). Scenes key contacts by
+    /// [`crate::Contact::id`]; LCPs by the ids given to
+    /// [`crate::Solver::solve_lcps_keyed`]. Contacts without an id are not
+    /// remembered.
+    pub warm_start: bool,
+    /// CPU worker threads (default 0: every core the OS reports).
+    pub threads: usize,
+    /// Relative pivot tolerance below which a principal submatrix is
+    /// singular (default 1e-13); in [0, 1).
+    pub pivot_tol: f64,
+    /// Relative feasibility tolerance of a valid basis (default 1e-12); in [0, 1).
+    pub feasibility_tol: f64,
+    /// When no basis is feasible to `feasibility_tol`, the least infeasible
+    /// one is accepted if within this (default 1e-9); in
+    /// [`feasibility_tol`](Self::feasibility_tol), 1).
+    pub relaxed_feasibility_tol: f64,
+    /// Lemke's pivot cap (default 10,000; at least 1); reaching it gives
+    /// `not_converged`.
+    pub lemke_max_pivots: u64,
+    /// Lemke: an entering-column entry counts as positive above this times
+    /// the column's largest magnitude (default 1e-12); in [0, 1).
+    pub lemke_pivot_tol: f64,
+    /// PGS sweep cap (default 1000; at least 1).
+    pub pgs_max_sweeps: u64,
+    /// PGS stops when the error measure is at most this (default 1e-10);
+    /// finite and ≥ 0.
+    pub pgs_tolerance: f64,
+    /// The GPU backend's settings.
+    pub gpu: GpuSettings,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        let e = EnumerationSettings::default();
+        let l = LemkeSettings::default();
+        let p = PgsSettings::default();
+        Settings {
+            backend: Backend::Auto,
+            method: Method::Enumeration,
+            all_solutions: false,
+            predict: true,
+            warm_start: false,
+            threads: 0,
+            pivot_tol: PIVOT_TOL,
+            feasibility_tol: e.feasibility_tol,
+            relaxed_feasibility_tol: e.relaxed_feasibility_tol,
+            lemke_max_pivots: l.max_pivots,
+            lemke_pivot_tol: l.pivot_tol,
+            pgs_max_sweeps: p.max_iterations,
+            pgs_tolerance: p.tolerance,
+            gpu: GpuSettings::default(),
+        }
+    }
+}
+
+fn invalid(field: &str, reason: impl Into<String>) -> Error {
+    Error::invalid("settings", field, reason)
+}
+
+impl Settings {
+    /// Default settings on `backend` with `method`.
+    pub fn new(backend: Backend, method: Method) -> Self {
+        Settings {
+            backend,
+            method,
+            ..Settings::default()
+        }
+    }
+
+    /// Checks every field; the error names the first one out of range.
+    pub fn validate(&self) -> Result<(), Error> {
+        for (name, v) in [
+            ("pivot_tol", self.pivot_tol),
+            ("feasibility_tol", self.feasibility_tol),
+            ("relaxed_feasibility_tol", self.relaxed_feasibility_tol),
+            ("lemke_pivot_tol", self.lemke_pivot_tol),
+        ] {
+            if !(0.0..1.0).contains(&v) {
+                return Err(invalid(name, format!("{v} is not in [0, 1)")));
+            }
+        }
+        if self.relaxed_feasibility_tol < self.feasibility_tol {
+            return Err(invalid(
+                "relaxed_feasibility_tol",
+                "must be at least feasibility_tol",
+            ));
+        }
+        if self.lemke_max_pivots == 0 {
+            return Err(invalid("lemke_max_pivots", "must be at least 1"));
+        }
+        if self.pgs_max_sweeps == 0 {
+            return Err(invalid("pgs_max_sweeps", "must be at least 1"));
+        }
+        if !(self.pgs_tolerance.is_finite() && self.pgs_tolerance >= 0.0) {
+            return Err(invalid(
+                "pgs_tolerance",
+                format!("{} is not a finite number ≥ 0", self.pgs_tolerance),
+            ));
+        }
+        if self.all_solutions && self.method != Method::Enumeration {
+            return Err(invalid("all_solutions", "needs method Enumeration"));
+        }
+        if self.backend == Backend::Gpu && !self.gpu_capable() {
+            return Err(invalid(
+                "backend",
+                "the GPU backend solves by enumeration only (no Lemke, PGS or all_solutions)",
+            ));
+        }
+        if self.gpu.adapter.as_deref() == Some("") {
+            return Err(invalid(
+                "gpu.adapter",
+                "is empty (None means the best adapter)",
+            ));
+        }
+        if self.gpu.max_binding_bytes == Some(0) {
+            return Err(invalid("gpu.max_binding_bytes", "must be positive"));
+        }
+        if self.gpu.max_workgroups == Some(0) {
+            return Err(invalid("gpu.max_workgroups", "must be positive"));
+        }
+        if self.gpu.round_budget == Some(0) {
+            return Err(invalid("gpu.round_budget", "must be positive"));
+        }
+        Ok(())
+    }
+
+    /// Whether the GPU can serve these settings (enumeration of one solution).
+    pub(crate) fn gpu_capable(&self) -> bool {
+        self.method == Method::Enumeration && !self.all_solutions
+    }
+
+    pub(crate) fn enumeration(&self) -> EnumerationSettings {
+        EnumerationSettings {
+            all_solutions: self.all_solutions,
+            pivot_tol: self.pivot_tol,
+            feasibility_tol: self.feasibility_tol,
+            relaxed_feasibility_tol: self.relaxed_feasibility_tol,
+        }
+    }
+
+    pub(crate) fn lemke(&self) -> LemkeSettings {
+        LemkeSettings {
+            max_pivots: self.lemke_max_pivots,
+            pivot_tol: self.lemke_pivot_tol,
+        }
+    }
+
+    pub(crate) fn pgs(&self) -> PgsSettings {
+        PgsSettings {
+            max_iterations: self.pgs_max_sweeps,
+            tolerance: self.pgs_tolerance,
+        }
+    }
+
+    pub(crate) fn gpu_solve(&self) -> GpuSolveSettings {
+        GpuSolveSettings {
+            enumeration: self.enumeration(),
+            lemke: self.lemke(),
+            max_binding_bytes: self.gpu.max_binding_bytes,
+            max_workgroups: self.gpu.max_workgroups,
+            round_budget: self.gpu.round_budget,
+            predict: self.predict,
+            kernel: self.gpu.kernel,
+            tree_max_n: self.gpu.tree_max_n,
+            ..GpuSolveSettings::default()
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_are_valid_and_each_bad_value_names_its_field() {
+        Settings::default().validate().unwrap();
+        let cases: Vec<(&str, Settings)> = vec![
+            (
+                "pivot_tol",
+                Settings {
+                    pivot_tol: 1.0,
+                    ..Default::default()
+                },
+            ),
+            (
+                "feasibility_tol",
+                Settings {
+                    feasibility_tol: f64::NAN,
+                    ..Default::default()
+                },
+            ),
+            (
+                "relaxed_feasibility_tol",
+                Settings {
+                    relaxed_feasibility_tol: 1e-14,
+                    ..Default::default()
+                },
+            ),
+            (
+                "lemke_max_pivots",
+                Settings {
+                    lemke_max_pivots: 0,
+                    ..Default::default()
+                },
+            ),
+            (
+                "lemke_pivot_tol",
+                Settings {
+                    lemke_pivot_tol: -1.0,
+                    ..Default::default()
+                },
+            ),
+            (
+                "pgs_max_sweeps",
+                Settings {
+                    pgs_max_sweeps: 0,
+                    ..Default::default()
+                },
+            ),
+            (
+                "pgs_tolerance",
+                Settings {
+                    pgs_tolerance: f64::INFINITY,
+                    ..Default::default()
+                },
+            ),
+            (
+                "all_solutions",
+                Settings {
+                    all_solutions: true,
+                    method: Method::Lemke,
+                    ..Default::default()
+                },
+            ),
+            ("backend", Settings::new(Backend::Gpu, Method::Pgs)),
+        ];
+        for (field, s) in cases {
+            let e = s.validate().expect_err(field).to_string();
+            assert!(e.contains(field), "{field}: {e}");
+        }
+        let mut s = Settings::default();
+        s.gpu.max_workgroups = Some(0);
+        assert!(s
+            .validate()
+            .unwrap_err()
+            .to_string()
+            .contains("gpu.max_workgroups"));
+    }
+}

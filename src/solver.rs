@@ -1,0 +1,616 @@
+//! The one door: [`Solver::new`] once, then [`Solver::solve_lcps`] or
+//! [`Solver::solve_scenes`] as often as needed, each returning a [`Report`].
+//!
+//! The solver owns the device, its pipelines and buffers (opened once, in
+//! `new`), and the warm-start memory. Where it solves:
+//! - [`Backend::Cpu`]: the f64 path over every core;
+//! - [`Backend::Gpu`]: the GPU (software adapters too), every answer checked
+//!   on the CPU in f64;
+//! - [`Backend::Auto`]: the GPU when there is a hardware adapter or one was
+//!   named in [`crate::GpuSettings::adapter`], else the CPU (software
+//!   adapters are slower than the CPU path on every batch measured,
+//!   BENCHMARKS.md). [`Report::choice`] says why.
+//!
+//! # Device trouble
+//! No adapter, a named adapter that does not exist, f64 asked of an adapter
+//! without SHADER_F64, or a GPU error in the middle of a batch (lost device,
+//! validation error, out of memory, a panic inside wgpu): the solver warns
+//! once on stderr (`warning: GPU: …; solving on the CPU (f64, exact)`),
+//! records the reason in [`Report::fallback`], drops the device and solves
+//! this batch and every later one on the CPU, with the CPU's results. LCPs
+//! beyond the CPU enumeration's n ≤ 20 then go to Lemke, as on the GPU path.
+//! Errors that are the caller's (an invalid scene or LCP, settings out of
+//! range) stay errors.
+
+use std::sync::Arc;
+use std::time::Instant;
+
+use crate::cpu::assembly::{assemble_contacts, assemble_island};
+use crate::cpu::batch::parallel_map;
+use crate::cpu::enumeration::{enumerate, MAX_ENUMERATION_N};
+use crate::cpu::impulses::apply_impulses;
+use crate::gpu::{self, GpuContext, Precision, SolvedOn};
+use crate::islands::find_islands;
+use crate::lcp::{Lcp, LcpSolution};
+use crate::prediction::{self, prediction, WarmStart};
+use crate::report::{Device, DeviceKind, GpuFigures, IslandReport, Report, SceneReport, SolvePath};
+use crate::scene::Scene;
+use crate::settings::{Backend, Method, Settings};
+use crate::solvers::lemke::lemke;
+use crate::solvers::pgs::pgs;
+use crate::validation::BatchReport;
+use crate::Error;
+
+/// A contact solver built once from [`Settings`]; see the module docs.
+///
+/// ```
+/// use lcpbatch::{Backend, Lcp, Settings, Solver, Status};
+///
+/// // Two contacts of seed 000's example: M = [[2, 1], [1, 2]], q = (−5, −6).
+/// let lcp = Lcp::new(vec![2.0, 1.0, 1.0, 2.0], vec![-5.0, -6.0])?;
+/// let mut solver = Solver::new(Settings { backend: Backend::Cpu, ..Settings::default() })?;
+/// let report = solver.solve_lcps(&[lcp])?;
+/// let island = &report.islands[0];
+/// assert_eq!(island.status(), Status::Solved);
+/// assert!((island.solution.z[0] - 4.0 / 3.0).abs() < 1e-12 && island.error() < 1e-15);
+/// println!("{report}"); // device, islands per path, statuses, max error, time per phase
+/// # Ok::<(), lcpbatch::Error>(())
+/// ```
+#[derive(Debug)]
+pub struct Solver {
+    settings: Settings,
+    /// The device while the GPU is in use (None on the CPU path).
+    gpu: Option<Arc<GpuContext>>,
+    /// Why this device, in words (for the report).
+    choice: String,
+    /// Why the CPU took over, once it has.
+    fallback: Option<String>,
+    /// Bases of the last call by contact id (with `settings.warm_start`).
+    warm: WarmStart,
+    threads: usize,
+}
+
+impl Solver {
+    /// Checks the settings and opens the device they ask for. Device trouble
+    /// is not an error (see the module docs); a setting out of range is.
+    pub fn new(settings: Settings) -> Result<Self, Error> {
+        settings.validate()?;
+        let threads = match settings.threads {
+            0 => std::thread::available_parallelism().map_or(1, |n| n.get()),
+            t => t,
+        };
+        let mut solver = Solver {
+            settings,
+            gpu: None,
+            choice: String::new(),
+            fallback: None,
+            warm: WarmStart::default(),
+            threads,
+        };
+        solver.choose_device()?;
+        Ok(solver)
+    }
+
+    /// A GPU solver on a device the caller opened (tests pass their own
+    /// adapter through this seam). `settings.backend` is taken as Gpu.
+    pub fn with_device(mut settings: Settings, device: GpuContext) -> Result<Self, Error> {
+        settings.backend = Backend::Gpu;
+        settings.validate()?;
+        let mut solver = Solver::new(Settings {
+            backend: Backend::Cpu,
+            ..settings.clone()
+        })?;
+        solver.settings = settings;
+        solver.choice = "the device given to Solver::with_device".into();
+        solver.gpu = Some(Arc::new(device));
+        Ok(solver)
+    }
+
+    fn choose_device(&mut self) -> Result<(), Error> {
+        let s = &self.settings;
+        let gpu_wanted = match s.backend {
+            Backend::Cpu => {
+                self.choice = "backend cpu".into();
+                false
+            }
+            Backend::Gpu => {
+                self.choice = "backend gpu".into();
+                true
+            }
+            Backend::Auto if !s.gpu_capable() => {
+                self.choice = format!(
+                    "backend auto: {} runs on the CPU only",
+                    if s.all_solutions {
+                        "all_solutions"
+                    } else {
+                        s.method.name()
+                    }
+                );
+                false
+            }
+            Backend::Auto if s.gpu.adapter.is_some() => {
+                self.choice = "backend auto: adapter named".into();
+                true
+            }
+            Backend::Auto => {
+                let adapters = gpu::list_adapters(s.gpu.api);
+                let hardware = adapters.iter().find(|a| !a.software);
+                match (hardware, adapters.first()) {
+                    (Some(a), _) => {
+                        self.choice = format!("backend auto: hardware adapter {}", a.name);
+                        true
+                    }
+                    (None, Some(a)) => {
+                        self.choice = format!(
+                            "backend auto: the only adapters are software ({}), slower than the CPU path; name one or ask for backend gpu to use it",
+                            a.name
+                        );
+                        false
+                    }
+                    (None, None) => {
+                        self.choice = "backend auto: no GPU adapter".into();
+                        false
+                    }
+                }
+            }
+        };
+        if gpu_wanted {
+            match GpuContext::new(&s.gpu.options()) {
+                Ok(ctx) => self.gpu = Some(Arc::new(ctx)),
+                Err(Error::Gpu(why)) => self.fall_back(why),
+                Err(e) => return Err(e),
+            }
+        }
+        Ok(())
+    }
+
+    /// The settings it was built with.
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
+    /// Where the next batch will be solved.
+    pub fn device(&self) -> Device {
+        match self.gpu.as_deref() {
+            Some(ctx) => {
+                let a = ctx.adapter_info();
+                Device {
+                    kind: if a.software {
+                        DeviceKind::SoftwareGpu
+                    } else {
+                        DeviceKind::HardwareGpu
+                    },
+                    name: format!(
+                        "{} ({}, {}; {}; {})",
+                        a.name,
+                        a.backend,
+                        a.device_type,
+                        ctx.selection(),
+                        ctx.precision().name()
+                    ),
+                    precision: ctx.precision(),
+                }
+            }
+            None => Device {
+                kind: DeviceKind::Cpu,
+                name: format!("cpu ({} thread(s), f64)", self.threads),
+                precision: Precision::F64,
+            },
+        }
+    }
+
+    /// Why this device: the backend asked for and what was found.
+    pub fn choice(&self) -> &str {
+        &self.choice
+    }
+
+    /// Why the CPU took over from the GPU (None: no device trouble so far).
+    pub fn fallback(&self) -> Option<&str> {
+        self.fallback.as_deref()
+    }
+
+    /// Forgets the bases remembered for warm start.
+    pub fn clear_warm_start(&mut self) {
+        self.warm = WarmStart::default();
+    }
+
+    /// The device, shared, while the GPU is in use (for tests that lose it
+    /// from another thread in the middle of a batch).
+    #[doc(hidden)]
+    pub fn shared_device(&self) -> Option<Arc<GpuContext>> {
+        self.gpu.clone()
+    }
+
+    /// Device trouble: drop the device, remember why, warn once.
+    fn fall_back(&mut self, why: String) {
+        self.gpu = None;
+        if self.fallback.is_none() {
+            eprintln!("warning: GPU: {why}; solving on the CPU (f64, exact)");
+            self.fallback = Some(why);
+        }
+    }
+
+    /// Solves a batch of LCPs, in the caller's order. Every problem is
+    /// checked first (an error names the first bad one). Enumeration on the
+    /// CPU backend refuses n > 20 (an error naming the problem); after device
+    /// trouble or on the GPU such problems go to Lemke.
+    pub fn solve_lcps(&mut self, lcps: &[Lcp]) -> Result<Report, Error> {
+        self.solve_lcps_warm(lcps, None)
+    }
+
+    /// [`Solver::solve_lcps`] with the caller's contact ids, one per row of
+    /// each problem (`ids[i].len() == lcps[i].n()`), stable across calls: with
+    /// `settings.warm_start` each problem starts from the basis its contacts
+    /// had in the last call.
+    pub fn solve_lcps_keyed(&mut self, lcps: &[Lcp], ids: &[Vec<u64>]) -> Result<Report, Error> {
+        if ids.len() != lcps.len() {
+            return Err(Error::invalid(
+                "ids",
+                "len",
+                format!("{} id lists for {} problems", ids.len(), lcps.len()),
+            ));
+        }
+        for (i, (l, k)) in lcps.iter().zip(ids).enumerate() {
+            if k.len() != l.n() {
+                return Err(Error::invalid(
+                    format!("problem {i}"),
+                    "ids",
+                    format!("{} ids for n = {}", k.len(), l.n()),
+                ));
+            }
+        }
+        let keys: Vec<&[u64]> = ids.iter().map(Vec::as_slice).collect();
+        self.solve_lcps_warm(lcps, Some(&keys))
+    }
+
+    fn solve_lcps_warm(&mut self, lcps: &[Lcp], keys: Option<&[&[u64]]>) -> Result<Report, Error> {
+        let start = Instant::now();
+        for (i, lcp) in lcps.iter().enumerate() {
+            lcp.validate(&format!("problem {i}"))?;
+        }
+        let warm = self.warm_bases(keys);
+        let mut report = None;
+        if let Some(ctx) = self.gpu.clone() {
+            let gs = self.settings.gpu_solve();
+            match guarded(|| gpu::solve_lcp_batch_warm(&ctx, lcps, warm.as_deref(), &gs)) {
+                Ok(r) => {
+                    let islands = r
+                        .islands
+                        .into_iter()
+                        .enumerate()
+                        .map(|(i, o)| IslandReport {
+                            scene: None,
+                            contacts: (0..lcps[i].n()).collect(),
+                            method: if o.path == Some(prediction::SolvePath::Lemke) {
+                                Method::Lemke
+                            } else {
+                                Method::Enumeration
+                            },
+                            path: gpu_path(o.solved_on, o.path),
+                            solution: o.solution,
+                        })
+                        .collect();
+                    report = Some(self.gpu_report(islands, Vec::new(), &r.report, 0.0));
+                }
+                Err(Error::Gpu(why)) => self.fall_back(why),
+                Err(e) => return Err(e),
+            }
+        }
+        let mut report = match report {
+            Some(r) => r,
+            None => {
+                let big_to_lemke = self.settings.backend != Backend::Cpu;
+                if !big_to_lemke && self.settings.method == Method::Enumeration {
+                    if let Some((i, l)) = lcps
+                        .iter()
+                        .enumerate()
+                        .find(|(_, l)| l.n() > MAX_ENUMERATION_N)
+                    {
+                        return Err(Error::Unsupported(format!(
+                            "problem {i}: enumeration visits 2^n bases and is limited to n ≤ {MAX_ENUMERATION_N} (this problem has n = {}); use Lemke",
+                            l.n()
+                        )));
+                    }
+                }
+                let t = Instant::now();
+                let solved = parallel_map(lcps.len(), self.threads, |i| {
+                    let w = warm.as_ref().and_then(|w| w[i]);
+                    solve_on_cpu(&lcps[i], w, &self.settings)
+                });
+                let islands = solved
+                    .into_iter()
+                    .enumerate()
+                    .map(|(i, (method, path, solution))| IslandReport {
+                        scene: None,
+                        contacts: (0..lcps[i].n()).collect(),
+                        method,
+                        path,
+                        solution,
+                    })
+                    .collect();
+                let mut r = self.cpu_report(islands, Vec::new());
+                r.timings.solve = t.elapsed().as_secs_f64();
+                r
+            }
+        };
+        if let Some(keys) = keys {
+            self.remember(report.islands.iter().zip(keys).map(|(isl, k)| (*k, isl)));
+        }
+        report.timings.total = start.elapsed().as_secs_f64();
+        Ok(report)
+    }
+
+    /// Solves scenes: per scene the impulse of every contact, the bodies'
+    /// velocities after them, and one [`IslandReport`] per island. Every
+    /// scene is checked first (an error names the scene, the item and the
+    /// field). Islands above the enumeration's limit go to Lemke.
+    pub fn solve_scenes(&mut self, scenes: &[Scene]) -> Result<Report, Error> {
+        let start = Instant::now();
+        for (i, s) in scenes.iter().enumerate() {
+            s.validate(&format!("scene {i}"))?;
+        }
+        let with_ids = self.settings.warm_start;
+        // Per scene, per island: the caller's contact ids (warm start).
+        let keys: Vec<Vec<Vec<u64>>> = if with_ids {
+            scenes
+                .iter()
+                .map(|s| {
+                    find_islands(s)
+                        .iter()
+                        .map(|isl| contact_ids(s, &isl.contacts))
+                        .collect()
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
+        let mut report = None;
+        if let Some(ctx) = self.gpu.clone() {
+            let warm: Option<Vec<Vec<Option<u32>>>> = with_ids.then(|| {
+                keys.iter()
+                    .map(|k| k.iter().map(|ids| self.warm_basis(ids)).collect())
+                    .collect()
+            });
+            let gs = self.settings.gpu_solve();
+            match guarded(|| gpu::solve_scenes_warm(&ctx, scenes, warm.as_deref(), &gs)) {
+                Ok(r) => {
+                    let mut islands = Vec::new();
+                    let mut out = Vec::with_capacity(r.scenes.len());
+                    for (s, (sol, on)) in r.scenes.into_iter().zip(&r.solved_on).enumerate() {
+                        let first = islands.len();
+                        for (k, isl) in sol.islands.into_iter().enumerate() {
+                            islands.push(IslandReport {
+                                scene: Some(s),
+                                contacts: isl.contacts,
+                                method: match isl.solver {
+                                    crate::solvers::Solver::Lemke => Method::Lemke,
+                                    _ => Method::Enumeration,
+                                },
+                                path: gpu_path(on[k], Some(r.paths[s][k])),
+                                solution: isl.solution,
+                            });
+                        }
+                        out.push(SceneReport {
+                            impulses: sol.impulses,
+                            bodies: sol.bodies,
+                            islands: first..islands.len(),
+                        });
+                    }
+                    report =
+                        Some(self.gpu_report(islands, out, &r.report, r.max_velocity_deviation));
+                }
+                Err(Error::Gpu(why)) => self.fall_back(why),
+                Err(e) => return Err(e),
+            }
+        }
+        let mut report = match report {
+            Some(r) => r,
+            None => self.solve_scenes_on_cpu(scenes, &keys),
+        };
+        if with_ids {
+            let flat: Vec<&[u64]> = keys.iter().flatten().map(Vec::as_slice).collect();
+            self.remember(report.islands.iter().zip(flat).map(|(isl, k)| (k, isl)));
+        }
+        report.timings.total = start.elapsed().as_secs_f64();
+        Ok(report)
+    }
+
+    /// The CPU path for checked scenes, in phases: build (islands and
+    /// assembly), solve (every island of every scene over the cores),
+    /// impulses. `keys`: per scene, per island, contact ids (empty: no warm start).
+    fn solve_scenes_on_cpu(&self, scenes: &[Scene], keys: &[Vec<Vec<u64>>]) -> Report {
+        let t = Instant::now();
+        let built = parallel_map(scenes.len(), self.threads, |i| {
+            let s = &scenes[i];
+            let islands = find_islands(s);
+            let rows = assemble_contacts(s);
+            let lcps: Vec<Lcp> = islands
+                .iter()
+                .map(|isl| assemble_island(s, &rows, isl))
+                .collect();
+            (islands, rows, lcps)
+        });
+        let build = t.elapsed().as_secs_f64();
+        let t = Instant::now();
+        // Every island of every scene, flattened: (scene, island).
+        let index: Vec<(usize, usize)> = built
+            .iter()
+            .enumerate()
+            .flat_map(|(s, b)| (0..b.2.len()).map(move |k| (s, k)))
+            .collect();
+        let solved = parallel_map(index.len(), self.threads, |j| {
+            let (s, k) = index[j];
+            let w = keys.get(s).and_then(|k_ids| self.warm_basis(&k_ids[k]));
+            solve_on_cpu(&built[s].2[k], w, &self.settings)
+        });
+        let solve = t.elapsed().as_secs_f64();
+        let t = Instant::now();
+        let mut islands = Vec::with_capacity(index.len());
+        let mut out = Vec::with_capacity(scenes.len());
+        let mut solved = solved.into_iter();
+        for (s, (scene, (isl, rows, _))) in scenes.iter().zip(built).enumerate() {
+            let first = islands.len();
+            let mut impulses = vec![0.0; scene.contacts.len()];
+            for island in isl {
+                let (method, path, solution) = solved.next().expect("one result per island");
+                for (&c, &zi) in island.contacts.iter().zip(&solution.z) {
+                    impulses[c] = zi;
+                }
+                islands.push(IslandReport {
+                    scene: Some(s),
+                    contacts: island.contacts,
+                    method,
+                    path,
+                    solution,
+                });
+            }
+            let bodies = apply_impulses(scene, &rows, &impulses);
+            out.push(SceneReport {
+                impulses,
+                bodies,
+                islands: first..islands.len(),
+            });
+        }
+        let mut report = self.cpu_report(islands, out);
+        report.timings.build = build;
+        report.timings.solve = solve;
+        report.timings.impulses = t.elapsed().as_secs_f64();
+        report
+    }
+
+    fn cpu_report(&self, islands: Vec<IslandReport>, scenes: Vec<SceneReport>) -> Report {
+        let mut r = Report::new(islands, scenes, self.device(), self.choice.clone());
+        r.fallback = self.fallback.clone();
+        r
+    }
+
+    fn gpu_report(
+        &self,
+        islands: Vec<IslandReport>,
+        scenes: Vec<SceneReport>,
+        b: &BatchReport,
+        max_velocity_deviation: f64,
+    ) -> Report {
+        let mut r = Report::new(islands, scenes, self.device(), self.choice.clone());
+        r.counts.polished = b.polished;
+        r.counts.cpu_fallback = b.cpu_fallback;
+        r.timings.prediction = b.prediction_seconds;
+        r.timings.gpu = b.gpu_seconds;
+        r.timings.validation = b.validation_seconds;
+        r.gpu = Some(GpuFigures {
+            chunks: b.chunks,
+            dispatches: b.dispatches,
+            rounds: b.rounds,
+            tree_decided: b.tree_decided,
+            tree_undecided: b.tree_undecided,
+            max_gpu_error: b.max_gpu_error,
+            max_velocity_deviation,
+        });
+        r
+    }
+
+    /// Per problem, its warm basis from the memory (None without keys or
+    /// without `settings.warm_start`).
+    fn warm_bases(&self, keys: Option<&[&[u64]]>) -> Option<Vec<Option<u32>>> {
+        let keys = keys.filter(|_| self.settings.warm_start)?;
+        Some(keys.iter().map(|k| self.warm_basis(k)).collect())
+    }
+
+    fn warm_basis(&self, ids: &[u64]) -> Option<u32> {
+        if !self.settings.warm_start || ids.is_empty() {
+            return None;
+        }
+        self.warm.basis(ids)
+    }
+
+    /// Records each island's basis under its contact ids.
+    fn remember<'a>(&mut self, islands: impl Iterator<Item = (&'a [u64], &'a IslandReport)>) {
+        if !self.settings.warm_start {
+            return;
+        }
+        for (ids, isl) in islands {
+            if let (Some(basis), false) = (isl.solution.basis, ids.is_empty()) {
+                if isl.solution.status.is_solution() {
+                    self.warm.record(ids, basis);
+                }
+            }
+        }
+    }
+}
+
+/// The caller's ids of an island's contacts; empty when one has none (such
+/// an island is not warm-started).
+fn contact_ids(scene: &Scene, contacts: &[usize]) -> Vec<u64> {
+    contacts
+        .iter()
+        .map(|&c| scene.contacts[c].id)
+        .collect::<Option<Vec<u64>>>()
+        .unwrap_or_default()
+}
+
+/// One island on the CPU with the chosen method: (method that ran, path, solution).
+///
+/// Enumeration: prediction first (with `settings.predict`), then
+/// enumeration by size; islands above n = 20 go to Lemke (the LCP path
+/// refuses them on the CPU backend before it gets here).
+fn solve_on_cpu(lcp: &Lcp, warm: Option<u32>, s: &Settings) -> (Method, SolvePath, LcpSolution) {
+    let lemke_path = || (Method::Lemke, SolvePath::Lemke, lemke(lcp, &s.lemke()));
+    match s.method {
+        Method::Lemke => lemke_path(),
+        Method::Pgs => (Method::Pgs, SolvePath::Pgs, pgs(lcp, &s.pgs())),
+        Method::Enumeration if lcp.n() > MAX_ENUMERATION_N => lemke_path(),
+        Method::Enumeration => {
+            let e = s.enumeration();
+            if s.predict && !s.all_solutions {
+                if let Ok((path, solution)) = prediction(lcp, warm, &e) {
+                    return (Method::Enumeration, prediction_path(path), solution);
+                }
+            }
+            let solution =
+                enumerate(lcp, &e).expect("n ≤ 20 and settings validated in Solver::new");
+            (Method::Enumeration, SolvePath::EnumeratedCpu, solution)
+        }
+    }
+}
+
+fn prediction_path(p: prediction::SolvePath) -> SolvePath {
+    match p {
+        prediction::SolvePath::Separating => SolvePath::Separating,
+        prediction::SolvePath::SingleContact => SolvePath::SingleContact,
+        prediction::SolvePath::WarmStart => SolvePath::WarmStart,
+        prediction::SolvePath::PredictedBasis => SolvePath::PredictedBasis,
+        prediction::SolvePath::Enumerated => SolvePath::EnumeratedCpu,
+        prediction::SolvePath::Lemke => SolvePath::Lemke,
+    }
+}
+
+/// The path of an island the GPU backend returned.
+fn gpu_path(on: SolvedOn, path: Option<prediction::SolvePath>) -> SolvePath {
+    match (on, path) {
+        (SolvedOn::Gpu, _) => SolvePath::EnumeratedGpu,
+        (SolvedOn::Repaired, _) => SolvePath::Repaired,
+        (SolvedOn::CpuFallback, _) => SolvePath::Lemke,
+        (SolvedOn::Invalid, _) => SolvePath::Invalid,
+        (SolvedOn::Predicted, Some(p)) => prediction_path(p),
+        // The GPU backend names the prediction case of every island it
+        // settled that way; none is left without one.
+        (SolvedOn::Predicted, None) => SolvePath::PredictedBasis,
+    }
+}
+
+/// Runs a GPU call, turning a panic inside it into [`Error::Gpu`]: on a lost
+/// device wgpu itself panics in places (`create_buffer_init` cannot map the
+/// new buffer), and a lost device is device trouble like any other. The
+/// device is dropped afterwards, so nothing it left half-done is used again.
+fn guarded<T>(f: impl FnOnce() -> Result<T, Error>) -> Result<T, Error> {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)).unwrap_or_else(|p| {
+        let msg = p
+            .downcast_ref::<String>()
+            .map(String::as_str)
+            .or_else(|| p.downcast_ref::<&str>().copied())
+            .unwrap_or("no message");
+        Err(Error::Gpu(format!(
+            "the GPU path panicked (device lost?): {msg}"
+        )))
+    })
+}
