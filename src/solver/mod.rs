@@ -25,20 +25,16 @@
 use std::sync::Arc;
 use std::time::Instant;
 
-use crate::cpu::assembly::{assemble_contacts, assemble_island};
-use crate::cpu::batch::parallel_map;
-use crate::cpu::enumeration::{enumerate, MAX_ENUMERATION_N};
-use crate::cpu::impulses::apply_impulses;
-use crate::gpu::{self, GpuContext, Precision, SolvedOn};
+mod cpu_path;
+mod gpu_path;
+
+use crate::gpu::{self, GpuContext, Precision};
 use crate::islands::find_islands;
-use crate::lcp::{Lcp, LcpSolution};
-use crate::prediction::{self, prediction, WarmStart};
-use crate::report::{Device, DeviceKind, GpuFigures, IslandReport, Report, SceneReport, SolvePath};
+use crate::lcp::Lcp;
+use crate::prediction::WarmStart;
+use crate::report::{Device, DeviceKind, IslandReport, Report};
 use crate::scene::Scene;
-use crate::settings::{Backend, Method, Settings};
-use crate::solvers::lemke::lemke;
-use crate::solvers::pgs::pgs;
-use crate::validation::BatchReport;
+use crate::settings::{Backend, Settings};
 use crate::Error;
 
 /// A contact solver built once from [`Settings`]; see the module docs.
@@ -271,67 +267,15 @@ impl Solver {
         let warm = self.warm_bases(keys);
         let mut report = None;
         if let Some(ctx) = self.gpu.clone() {
-            let gs = self.settings.gpu_solve();
-            match guarded(|| gpu::solve_lcp_batch_warm(&ctx, lcps, warm.as_deref(), &gs)) {
-                Ok(r) => {
-                    let islands = r
-                        .islands
-                        .into_iter()
-                        .enumerate()
-                        .map(|(i, o)| IslandReport {
-                            scene: None,
-                            contacts: (0..lcps[i].n()).collect(),
-                            method: if o.path == Some(prediction::SolvePath::Lemke) {
-                                Method::Lemke
-                            } else {
-                                Method::Enumeration
-                            },
-                            path: gpu_path(o.solved_on, o.path),
-                            solution: o.solution,
-                        })
-                        .collect();
-                    report = Some(self.gpu_report(islands, Vec::new(), &r.report, 0.0));
-                }
+            match self.lcps_on_gpu(&ctx, lcps, warm.as_deref()) {
+                Ok(r) => report = Some(r),
                 Err(Error::Gpu(why)) => self.fall_back(why),
                 Err(e) => return Err(e),
             }
         }
         let mut report = match report {
             Some(r) => r,
-            None => {
-                let big_to_lemke = self.settings.backend != Backend::Cpu;
-                if !big_to_lemke && self.settings.method == Method::Enumeration {
-                    if let Some((i, l)) = lcps
-                        .iter()
-                        .enumerate()
-                        .find(|(_, l)| l.n() > MAX_ENUMERATION_N)
-                    {
-                        return Err(Error::Unsupported(format!(
-                            "problem {i}: enumeration visits 2^n bases and is limited to n ≤ {MAX_ENUMERATION_N} (this problem has n = {}); use Lemke",
-                            l.n()
-                        )));
-                    }
-                }
-                let t = Instant::now();
-                let solved = parallel_map(lcps.len(), self.threads, |i| {
-                    let w = warm.as_ref().and_then(|w| w[i]);
-                    solve_on_cpu(&lcps[i], w, &self.settings)
-                });
-                let islands = solved
-                    .into_iter()
-                    .enumerate()
-                    .map(|(i, (method, path, solution))| IslandReport {
-                        scene: None,
-                        contacts: (0..lcps[i].n()).collect(),
-                        method,
-                        path,
-                        solution,
-                    })
-                    .collect();
-                let mut r = self.cpu_report(islands, Vec::new());
-                r.timings.solve = t.elapsed().as_secs_f64();
-                r
-            }
+            None => self.lcps_on_cpu(lcps, warm.as_deref())?,
         };
         if let Some(keys) = keys {
             self.remember(report.islands.iter().zip(keys).map(|(isl, k)| (*k, isl)));
@@ -349,15 +293,14 @@ impl Solver {
         for (i, s) in scenes.iter().enumerate() {
             s.validate(&format!("scene {i}"))?;
         }
-        let with_ids = self.settings.warm_start;
-        // Per scene, per island: the caller's contact ids (warm start).
-        let keys: Vec<Vec<Vec<u64>>> = if with_ids {
+        // Per scene, per island: the warm basis of its contacts' ids.
+        let warm: Vec<Vec<Option<u32>>> = if self.settings.warm_start {
             scenes
                 .iter()
                 .map(|s| {
                     find_islands(s)
                         .iter()
-                        .map(|isl| contact_ids(s, &isl.contacts))
+                        .map(|isl| self.warm_basis(&contact_ids(s, &isl.contacts)))
                         .collect()
                 })
                 .collect()
@@ -366,147 +309,28 @@ impl Solver {
         };
         let mut report = None;
         if let Some(ctx) = self.gpu.clone() {
-            let warm: Option<Vec<Vec<Option<u32>>>> = with_ids.then(|| {
-                keys.iter()
-                    .map(|k| k.iter().map(|ids| self.warm_basis(ids)).collect())
-                    .collect()
-            });
-            let gs = self.settings.gpu_solve();
-            match guarded(|| gpu::solve_scenes_warm(&ctx, scenes, warm.as_deref(), &gs)) {
-                Ok(r) => {
-                    let mut islands = Vec::new();
-                    let mut out = Vec::with_capacity(r.scenes.len());
-                    for (s, (sol, on)) in r.scenes.into_iter().zip(&r.solved_on).enumerate() {
-                        let first = islands.len();
-                        for (k, isl) in sol.islands.into_iter().enumerate() {
-                            islands.push(IslandReport {
-                                scene: Some(s),
-                                contacts: isl.contacts,
-                                method: match isl.solver {
-                                    crate::solvers::Solver::Lemke => Method::Lemke,
-                                    _ => Method::Enumeration,
-                                },
-                                path: gpu_path(on[k], Some(r.paths[s][k])),
-                                solution: isl.solution,
-                            });
-                        }
-                        out.push(SceneReport {
-                            impulses: sol.impulses,
-                            bodies: sol.bodies,
-                            islands: first..islands.len(),
-                        });
-                    }
-                    report =
-                        Some(self.gpu_report(islands, out, &r.report, r.max_velocity_deviation));
-                }
+            match self.scenes_on_gpu(&ctx, scenes, &warm) {
+                Ok(r) => report = Some(r),
                 Err(Error::Gpu(why)) => self.fall_back(why),
                 Err(e) => return Err(e),
             }
         }
         let mut report = match report {
             Some(r) => r,
-            None => self.solve_scenes_on_cpu(scenes, &keys),
+            None => self.scenes_on_cpu(scenes, &warm),
         };
-        if with_ids {
-            let flat: Vec<&[u64]> = keys.iter().flatten().map(Vec::as_slice).collect();
-            self.remember(report.islands.iter().zip(flat).map(|(isl, k)| (k, isl)));
+        if self.settings.warm_start {
+            let ids: Vec<Vec<u64>> = report
+                .islands
+                .iter()
+                .map(|isl| contact_ids(&scenes[isl.scene.unwrap_or(0)], &isl.contacts))
+                .collect();
+            let keyed: Vec<(&[u64], &IslandReport)> =
+                ids.iter().map(Vec::as_slice).zip(&report.islands).collect();
+            self.remember(keyed.into_iter());
         }
         report.timings.total = start.elapsed().as_secs_f64();
         Ok(report)
-    }
-
-    /// The CPU path for checked scenes, in phases: build (islands and
-    /// assembly), solve (every island of every scene over the cores),
-    /// impulses. `keys`: per scene, per island, contact ids (empty: no warm start).
-    fn solve_scenes_on_cpu(&self, scenes: &[Scene], keys: &[Vec<Vec<u64>>]) -> Report {
-        let t = Instant::now();
-        let built = parallel_map(scenes.len(), self.threads, |i| {
-            let s = &scenes[i];
-            let islands = find_islands(s);
-            let rows = assemble_contacts(s);
-            let lcps: Vec<Lcp> = islands
-                .iter()
-                .map(|isl| assemble_island(s, &rows, isl))
-                .collect();
-            (islands, rows, lcps)
-        });
-        let build = t.elapsed().as_secs_f64();
-        let t = Instant::now();
-        // Every island of every scene, flattened: (scene, island).
-        let index: Vec<(usize, usize)> = built
-            .iter()
-            .enumerate()
-            .flat_map(|(s, b)| (0..b.2.len()).map(move |k| (s, k)))
-            .collect();
-        let solved = parallel_map(index.len(), self.threads, |j| {
-            let (s, k) = index[j];
-            let w = keys.get(s).and_then(|k_ids| self.warm_basis(&k_ids[k]));
-            solve_on_cpu(&built[s].2[k], w, &self.settings)
-        });
-        let solve = t.elapsed().as_secs_f64();
-        let t = Instant::now();
-        let mut islands = Vec::with_capacity(index.len());
-        let mut out = Vec::with_capacity(scenes.len());
-        let mut solved = solved.into_iter();
-        for (s, (scene, (isl, rows, _))) in scenes.iter().zip(built).enumerate() {
-            let first = islands.len();
-            let mut impulses = vec![0.0; scene.contacts.len()];
-            for island in isl {
-                let (method, path, solution) = solved.next().expect("one result per island");
-                for (&c, &zi) in island.contacts.iter().zip(&solution.z) {
-                    impulses[c] = zi;
-                }
-                islands.push(IslandReport {
-                    scene: Some(s),
-                    contacts: island.contacts,
-                    method,
-                    path,
-                    solution,
-                });
-            }
-            let bodies = apply_impulses(scene, &rows, &impulses);
-            out.push(SceneReport {
-                impulses,
-                bodies,
-                islands: first..islands.len(),
-            });
-        }
-        let mut report = self.cpu_report(islands, out);
-        report.timings.build = build;
-        report.timings.solve = solve;
-        report.timings.impulses = t.elapsed().as_secs_f64();
-        report
-    }
-
-    fn cpu_report(&self, islands: Vec<IslandReport>, scenes: Vec<SceneReport>) -> Report {
-        let mut r = Report::new(islands, scenes, self.device(), self.choice.clone());
-        r.fallback = self.fallback.clone();
-        r
-    }
-
-    fn gpu_report(
-        &self,
-        islands: Vec<IslandReport>,
-        scenes: Vec<SceneReport>,
-        b: &BatchReport,
-        max_velocity_deviation: f64,
-    ) -> Report {
-        let mut r = Report::new(islands, scenes, self.device(), self.choice.clone());
-        r.counts.polished = b.polished;
-        r.counts.cpu_fallback = b.cpu_fallback;
-        r.timings.prediction = b.prediction_seconds;
-        r.timings.gpu = b.gpu_seconds;
-        r.timings.validation = b.validation_seconds;
-        r.gpu = Some(GpuFigures {
-            chunks: b.chunks,
-            dispatches: b.dispatches,
-            rounds: b.rounds,
-            tree_decided: b.tree_decided,
-            tree_undecided: b.tree_undecided,
-            max_gpu_error: b.max_gpu_error,
-            max_velocity_deviation,
-        });
-        r
     }
 
     /// Per problem, its warm basis from the memory (None without keys or
@@ -546,71 +370,4 @@ fn contact_ids(scene: &Scene, contacts: &[usize]) -> Vec<u64> {
         .map(|&c| scene.contacts[c].id)
         .collect::<Option<Vec<u64>>>()
         .unwrap_or_default()
-}
-
-/// One island on the CPU with the chosen method: (method that ran, path, solution).
-///
-/// Enumeration: prediction first (with `settings.predict`), then
-/// enumeration by size; islands above n = 20 go to Lemke (the LCP path
-/// refuses them on the CPU backend before it gets here).
-fn solve_on_cpu(lcp: &Lcp, warm: Option<u32>, s: &Settings) -> (Method, SolvePath, LcpSolution) {
-    let lemke_path = || (Method::Lemke, SolvePath::Lemke, lemke(lcp, &s.lemke()));
-    match s.method {
-        Method::Lemke => lemke_path(),
-        Method::Pgs => (Method::Pgs, SolvePath::Pgs, pgs(lcp, &s.pgs())),
-        Method::Enumeration if lcp.n() > MAX_ENUMERATION_N => lemke_path(),
-        Method::Enumeration => {
-            let e = s.enumeration();
-            if s.predict && !s.all_solutions {
-                if let Ok((path, solution)) = prediction(lcp, warm, &e) {
-                    return (Method::Enumeration, prediction_path(path), solution);
-                }
-            }
-            let solution =
-                enumerate(lcp, &e).expect("n ≤ 20 and settings validated in Solver::new");
-            (Method::Enumeration, SolvePath::EnumeratedCpu, solution)
-        }
-    }
-}
-
-fn prediction_path(p: prediction::SolvePath) -> SolvePath {
-    match p {
-        prediction::SolvePath::Separating => SolvePath::Separating,
-        prediction::SolvePath::SingleContact => SolvePath::SingleContact,
-        prediction::SolvePath::WarmStart => SolvePath::WarmStart,
-        prediction::SolvePath::PredictedBasis => SolvePath::PredictedBasis,
-        prediction::SolvePath::Enumerated => SolvePath::EnumeratedCpu,
-        prediction::SolvePath::Lemke => SolvePath::Lemke,
-    }
-}
-
-/// The path of an island the GPU backend returned.
-fn gpu_path(on: SolvedOn, path: Option<prediction::SolvePath>) -> SolvePath {
-    match (on, path) {
-        (SolvedOn::Gpu, _) => SolvePath::EnumeratedGpu,
-        (SolvedOn::Repaired, _) => SolvePath::Repaired,
-        (SolvedOn::CpuFallback, _) => SolvePath::Lemke,
-        (SolvedOn::Invalid, _) => SolvePath::Invalid,
-        (SolvedOn::Predicted, Some(p)) => prediction_path(p),
-        // The GPU backend names the prediction case of every island it
-        // settled that way; none is left without one.
-        (SolvedOn::Predicted, None) => SolvePath::PredictedBasis,
-    }
-}
-
-/// Runs a GPU call, turning a panic inside it into [`Error::Gpu`]: on a lost
-/// device wgpu itself panics in places (`create_buffer_init` cannot map the
-/// new buffer), and a lost device is device trouble like any other. The
-/// device is dropped afterwards, so nothing it left half-done is used again.
-fn guarded<T>(f: impl FnOnce() -> Result<T, Error>) -> Result<T, Error> {
-    std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)).unwrap_or_else(|p| {
-        let msg = p
-            .downcast_ref::<String>()
-            .map(String::as_str)
-            .or_else(|| p.downcast_ref::<&str>().copied())
-            .unwrap_or("no message");
-        Err(Error::Gpu(format!(
-            "the GPU path panicked (device lost?): {msg}"
-        )))
-    })
 }

@@ -1,0 +1,167 @@
+//! The CPU path of the [`Solver`]: f64, every core.
+
+use std::time::Instant;
+
+use super::Solver;
+use crate::cpu::assembly::{assemble_contacts, assemble_island};
+use crate::cpu::batch::parallel_map;
+use crate::cpu::enumeration::{enumerate, MAX_ENUMERATION_N};
+use crate::cpu::impulses::apply_impulses;
+use crate::islands::find_islands;
+use crate::lcp::{Lcp, LcpSolution};
+use crate::prediction::{self, prediction};
+use crate::report::{IslandReport, Report, SceneReport, SolvePath};
+use crate::scene::Scene;
+use crate::settings::{Backend, Method, Settings};
+use crate::solvers::lemke::lemke;
+use crate::solvers::pgs::pgs;
+use crate::Error;
+
+impl Solver {
+    /// Checked LCPs on the CPU. `warm[i]`: problem i's warm basis, if any.
+    /// Enumeration on the CPU backend refuses n > 20; after device trouble
+    /// (or with Auto) such problems go to Lemke, as on the GPU path.
+    pub(super) fn lcps_on_cpu(
+        &self,
+        lcps: &[Lcp],
+        warm: Option<&[Option<u32>]>,
+    ) -> Result<Report, Error> {
+        let big_to_lemke = self.settings.backend != Backend::Cpu;
+        if !big_to_lemke && self.settings.method == Method::Enumeration {
+            if let Some((i, l)) = lcps
+                .iter()
+                .enumerate()
+                .find(|(_, l)| l.n() > MAX_ENUMERATION_N)
+            {
+                return Err(Error::Unsupported(format!(
+                    "problem {i}: enumeration visits 2^n bases and is limited to n ≤ {MAX_ENUMERATION_N} (this problem has n = {}); use Lemke",
+                    l.n()
+                )));
+            }
+        }
+        let t = Instant::now();
+        let solved = parallel_map(lcps.len(), self.threads, |i| {
+            let w = warm.and_then(|w| w[i]);
+            solve_on_cpu(&lcps[i], w, &self.settings)
+        });
+        let islands = solved
+            .into_iter()
+            .enumerate()
+            .map(|(i, (method, path, solution))| IslandReport {
+                scene: None,
+                contacts: (0..lcps[i].n()).collect(),
+                method,
+                path,
+                solution,
+            })
+            .collect();
+        let mut r = self.cpu_report(islands, Vec::new());
+        r.timings.solve = t.elapsed().as_secs_f64();
+        Ok(r)
+    }
+
+    /// The CPU path for checked scenes, in phases: build (islands and
+    /// assembly), solve (every island of every scene over the cores),
+    /// impulses. `warm`: per scene, per island, the warm basis (empty: none).
+    pub(super) fn scenes_on_cpu(&self, scenes: &[Scene], warm: &[Vec<Option<u32>>]) -> Report {
+        let t = Instant::now();
+        let built = parallel_map(scenes.len(), self.threads, |i| {
+            let s = &scenes[i];
+            let islands = find_islands(s);
+            let rows = assemble_contacts(s);
+            let lcps: Vec<Lcp> = islands
+                .iter()
+                .map(|isl| assemble_island(s, &rows, isl))
+                .collect();
+            (islands, rows, lcps)
+        });
+        let build = t.elapsed().as_secs_f64();
+        let t = Instant::now();
+        // Every island of every scene, flattened: (scene, island).
+        let index: Vec<(usize, usize)> = built
+            .iter()
+            .enumerate()
+            .flat_map(|(s, b)| (0..b.2.len()).map(move |k| (s, k)))
+            .collect();
+        let solved = parallel_map(index.len(), self.threads, |j| {
+            let (s, k) = index[j];
+            let w = warm.get(s).and_then(|w| w[k]);
+            solve_on_cpu(&built[s].2[k], w, &self.settings)
+        });
+        let solve = t.elapsed().as_secs_f64();
+        let t = Instant::now();
+        let mut islands = Vec::with_capacity(index.len());
+        let mut out = Vec::with_capacity(scenes.len());
+        let mut solved = solved.into_iter();
+        for (s, (scene, (isl, rows, _))) in scenes.iter().zip(built).enumerate() {
+            let first = islands.len();
+            let mut impulses = vec![0.0; scene.contacts.len()];
+            for island in isl {
+                let (method, path, solution) = solved.next().expect("one result per island");
+                for (&c, &zi) in island.contacts.iter().zip(&solution.z) {
+                    impulses[c] = zi;
+                }
+                islands.push(IslandReport {
+                    scene: Some(s),
+                    contacts: island.contacts,
+                    method,
+                    path,
+                    solution,
+                });
+            }
+            let bodies = apply_impulses(scene, &rows, &impulses);
+            out.push(SceneReport {
+                impulses,
+                bodies,
+                islands: first..islands.len(),
+            });
+        }
+        let mut report = self.cpu_report(islands, out);
+        report.timings.build = build;
+        report.timings.solve = solve;
+        report.timings.impulses = t.elapsed().as_secs_f64();
+        report
+    }
+
+    fn cpu_report(&self, islands: Vec<IslandReport>, scenes: Vec<SceneReport>) -> Report {
+        let mut r = Report::new(islands, scenes, self.device(), self.choice.clone());
+        r.fallback = self.fallback.clone();
+        r
+    }
+}
+
+/// One island on the CPU with the chosen method: (method that ran, path, solution).
+///
+/// Enumeration: prediction first (with `settings.predict`), then
+/// enumeration by size; islands above n = 20 go to Lemke (the LCP path
+/// refuses them on the CPU backend before it gets here).
+fn solve_on_cpu(lcp: &Lcp, warm: Option<u32>, s: &Settings) -> (Method, SolvePath, LcpSolution) {
+    let lemke_path = || (Method::Lemke, SolvePath::Lemke, lemke(lcp, &s.lemke()));
+    match s.method {
+        Method::Lemke => lemke_path(),
+        Method::Pgs => (Method::Pgs, SolvePath::Pgs, pgs(lcp, &s.pgs())),
+        Method::Enumeration if lcp.n() > MAX_ENUMERATION_N => lemke_path(),
+        Method::Enumeration => {
+            let e = s.enumeration();
+            if s.predict && !s.all_solutions {
+                if let Ok((path, solution)) = prediction(lcp, warm, &e) {
+                    return (Method::Enumeration, prediction_path(path), solution);
+                }
+            }
+            let solution =
+                enumerate(lcp, &e).expect("n ≤ 20 and settings validated in Solver::new");
+            (Method::Enumeration, SolvePath::EnumeratedCpu, solution)
+        }
+    }
+}
+
+pub(super) fn prediction_path(p: prediction::SolvePath) -> SolvePath {
+    match p {
+        prediction::SolvePath::Separating => SolvePath::Separating,
+        prediction::SolvePath::SingleContact => SolvePath::SingleContact,
+        prediction::SolvePath::WarmStart => SolvePath::WarmStart,
+        prediction::SolvePath::PredictedBasis => SolvePath::PredictedBasis,
+        prediction::SolvePath::Enumerated => SolvePath::EnumeratedCpu,
+        prediction::SolvePath::Lemke => SolvePath::Lemke,
+    }
+}
