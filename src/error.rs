@@ -9,25 +9,39 @@ pub enum Error {
     /// A value failed a check: `item` is e.g. "scene 0, contact 3", `field` e.g. "normal".
     #[error("{item}: field `{field}`: {reason}")]
     Invalid {
+        /// The item at fault, e.g. "scene 0, contact 3" or "problem 4".
         item: String,
+        /// The field at fault, e.g. "normal" or "M[0][1]".
         field: String,
+        /// What is wrong with it.
         reason: String,
     },
     /// The JSON text could not be parsed into the expected shape.
     #[error("{path}: malformed JSON at line {line}, column {column}: {message}")]
     Json {
+        /// The file.
         path: String,
+        /// 1-based line of the fault.
         line: usize,
+        /// 1-based column of the fault.
         column: usize,
+        /// The parser's message.
         message: String,
     },
     /// A Siconos .dat file could not be parsed.
     #[error("{path}: malformed .dat file: {message}")]
-    Dat { path: String, message: String },
+    Dat {
+        /// The file.
+        path: String,
+        /// What is wrong, with the line where it is known.
+        message: String,
+    },
     /// Reading or writing a file failed.
     #[error("{path}: {source}")]
     Io {
+        /// The file.
         path: PathBuf,
+        /// The operating system's error.
         #[source]
         source: std::io::Error,
     },

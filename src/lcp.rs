@@ -236,7 +236,10 @@ pub enum SolutionSet {
     /// No feasible complementary basis.
     Empty,
     /// Finitely many isolated solutions (1 means unique).
-    Isolated { count: usize },
+    Isolated {
+        /// How many distinct solutions.
+        count: usize,
+    },
     /// A segment (or polytope) of solutions, bounded.
     BoundedContinuum,
     /// A ray of solutions: z + t d solves the LCP for every t ≥ 0.
@@ -261,20 +264,25 @@ pub struct Counters {
 pub struct BasisSolution {
     /// Bit i set: z_i is basic (contact i carries impulse), w_i = 0.
     pub basis: u32,
+    /// The basic solution.
     pub z: Vec<f64>,
+    /// w = M z + q for it.
     pub w: Vec<f64>,
 }
 
 /// The result of one LCP solve.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct LcpSolution {
+    /// What the solve found.
     pub status: Status,
     /// The impulses (or the last iterate when the status is not a solution;
     /// zeros when nothing was found).
     pub z: Vec<f64>,
     /// w = M z + q for the z above.
     pub w: Vec<f64>,
+    /// The error measure and the sign and complementarity residuals of (z, w).
     pub residuals: Residuals,
+    /// The work the solver did.
     pub counters: Counters,
     /// The complementary basis that gave z (bit i: z_i basic), when the
     /// solver works with bases and found one.

@@ -41,6 +41,8 @@
 //! complementary bases (GPU kernels and their CPU twins), Lemke or PGS →
 //! validation in f64 → impulses. [`io`] reads and writes the file formats.
 
+#![warn(missing_docs)]
+
 pub(crate) mod cpu;
 pub mod error;
 pub mod generate;

@@ -122,16 +122,24 @@ pub struct SceneReport {
 /// Islands per path, and what validation did to the GPU's answers.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
 pub struct PathCounts {
+    /// q ≥ 0: no impulse.
     pub separating: usize,
+    /// One contact, closed form.
     pub single_contact: usize,
+    /// The basis remembered from the last call was valid.
     pub warm_start: usize,
+    /// The basis of the approaching contacts was valid, M positive definite.
     pub predicted_basis: usize,
     /// Enumerated on the GPU and confirmed in f64 (`polished` + GPU "no
     /// solution" confirmed on the CPU).
     pub enumerated_gpu: usize,
+    /// Enumerated on the CPU.
     pub enumerated_cpu: usize,
+    /// Lemke on the CPU (asked for, or too large to enumerate).
     pub lemke: usize,
+    /// Projected Gauss–Seidel.
     pub pgs: usize,
+    /// Failed their checks.
     pub invalid: usize,
     /// GPU answers whose basis was valid in f64 (z, w recomputed in f64).
     pub polished: usize,
@@ -217,6 +225,7 @@ pub enum DeviceKind {
 /// Where the batch was solved.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Device {
+    /// CPU, hardware GPU or software adapter.
     pub kind: DeviceKind,
     /// The adapter in words (name, backend, device type, how chosen,
     /// precision), or `cpu (N threads)`.
@@ -228,12 +237,15 @@ pub struct Device {
 /// GPU-only figures of a batch.
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
 pub struct GpuFigures {
+    /// Parts the batch was split into under the device's limits.
     pub chunks: usize,
+    /// Compute dispatches.
     pub dispatches: usize,
     /// Enumeration rounds (see `shaders/enumeration.wgsl`).
     pub rounds: usize,
     /// Islands the tree kernel decided, and those it left to elimination.
     pub tree_decided: usize,
+    /// Islands the tree kernel left to the elimination kernel.
     pub tree_undecided: usize,
     /// Largest error measure of the GPU's own z, before the f64 polish.
     pub max_gpu_error: f64,
@@ -250,13 +262,16 @@ pub struct Report {
     pub islands: Vec<IslandReport>,
     /// Scene batches only: one per scene (empty for LCP batches).
     pub scenes: Vec<SceneReport>,
+    /// Islands per path.
     pub counts: PathCounts,
     /// Islands per status, in the order of [`Status::ALL`].
     pub statuses: [usize; 6],
     /// Largest error measure over islands whose status is a solution, and
     /// the index of that island in `islands` (None when there is none).
     pub max_error: Option<(f64, usize)>,
+    /// Seconds per phase.
     pub timings: Timings,
+    /// Where the batch was solved.
     pub device: Device,
     /// Why this device: the backend asked for and what was found.
     pub choice: String,

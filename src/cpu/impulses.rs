@@ -15,7 +15,9 @@ use crate::scene::Scene;
 /// A body's velocities after the impact.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct BodyVelocity {
+    /// Linear velocity of the centre of mass.
     pub velocity: [f64; 3],
+    /// Angular velocity (world frame).
     pub angular_velocity: [f64; 3],
 }
 
