@@ -43,6 +43,9 @@ fn complement(var: usize, n: usize) -> usize {
 enum PathEnd {
     /// z0 left (Solved), a secondary ray, or the pivot cap.
     Done(Status),
+    /// A secondary ray with z0 at zero to rounding: the basis is a solution
+    /// if its re-solve checks out (see [`ARTIFICIAL_AT_ZERO_TOL`]).
+    ArtificialAtZero,
     /// A (basis, entering variable) pair came back: the path cycles. Exact
     /// lexicographic pivoting cannot cycle; floating point can, where
     /// rounding decides a tie (a right-hand side of 0 against 1e-17).
@@ -57,6 +60,130 @@ enum PathEnd {
 /// row, which breaks the ties rounding decided; the final basis is then
 /// re-solved with the true q, and the error reported is the true problem's.
 pub fn lemke(lcp: &Lcp, settings: &LemkeSettings) -> LcpSolution {
+    // Each run's error is measured on the problem as posed; the best one is
+    // kept (a solution first, then the smaller error). No run wins
+    // everywhere: scaling rescues block-scaled M (D A D with D over 1e±100)
+    // and loses the digits of small components when q is not scaled alike;
+    // the covering vector |q| keeps them (z0 starts at 1 instead of
+    // max|q_i|, so q_i of 1e-1 beside 1e140 is not absorbed).
+    let key = |s: &LcpSolution| (!s.status.is_solution(), s.residuals.error);
+    let good = |s: &LcpSolution| s.status == Status::Solved && s.residuals.error <= RETRY_ABOVE;
+    let mut best = lemke_as_posed(lcp, settings, Cover::Ones);
+    let scaling = diagonal_scaling(lcp);
+    if let Some(d) = &scaling {
+        let scaled = lemke_scaled(lcp, d, settings, Cover::Ones);
+        if key(&scaled) < key(&best) {
+            best = scaled;
+        }
+    }
+    if !good(&best) {
+        let mut tries = vec![lemke_as_posed(lcp, settings, Cover::MinusQ)];
+        if let Some(d) = &scaling {
+            tries.push(lemke_scaled(lcp, d, settings, Cover::MinusQ));
+        }
+        for t in tries {
+            if key(&t) < key(&best) {
+                best = t;
+            }
+        }
+    }
+    best
+}
+
+/// A first answer with a larger error (or no solution) makes Lemke try the
+/// covering vector |q| before giving its answer.
+const RETRY_ABOVE: f64 = 1e-12;
+
+/// The covering vector d of the artificial variable z0 (w − M z − d z0 = q).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Cover {
+    /// d = (1, …, 1): the textbook choice.
+    Ones,
+    /// d_i = |q_i| (the smallest non-zero |q_j| where q_i = 0): every
+    /// approaching row reaches zero at z0 = 1 together, whatever its scale.
+    MinusQ,
+}
+
+impl Cover {
+    fn vector(self, q: &[f64]) -> Vec<f64> {
+        match self {
+            Cover::Ones => vec![1.0; q.len()],
+            Cover::MinusQ => {
+                let floor = q
+                    .iter()
+                    .map(|v| v.abs())
+                    .filter(|&v| v > 0.0)
+                    .fold(f64::INFINITY, f64::min);
+                let floor = if floor.is_finite() { floor } else { 1.0 };
+                q.iter()
+                    .map(|&v| if v != 0.0 { v.abs() } else { floor })
+                    .collect()
+            }
+        }
+    }
+}
+
+/// [`lemke`] on LCP(D M D, D q), whose solution is z' = D⁻¹ z, w' = D w
+/// (D > 0 keeps every sign and every product z_i w_i = z'_i w'_i); z is
+/// mapped back and polished on the problem as posed.
+fn lemke_scaled(lcp: &Lcp, d: &[f64], settings: &LemkeSettings, cover: Cover) -> LcpSolution {
+    let n = lcp.n();
+    let scaled = Lcp {
+        m: (0..n * n).map(|k| d[k / n] * lcp.m[k] * d[k % n]).collect(),
+        q: lcp.q.iter().zip(d).map(|(q, d)| q * d).collect(),
+    };
+    let s = lemke_as_posed(&scaled, settings, cover);
+    let z: Vec<f64> = s.z.iter().zip(d).map(|(z, d)| z * d).collect();
+    let mut sol = LcpSolution::from_z(lcp, s.status, z, s.counters);
+    sol.basis = s.basis;
+    if let (Status::Solved, Some(mask)) = (s.status, s.basis) {
+        let support: Vec<usize> = (0..n).filter(|&i| mask >> i & 1 == 1).collect();
+        if let Some(polished) = polish(lcp, &support) {
+            let better = LcpSolution::from_z(lcp, s.status, polished, s.counters);
+            if polish_wins(lcp, &better, &sol) {
+                sol = LcpSolution {
+                    basis: s.basis,
+                    ..better
+                };
+            }
+        }
+    }
+    sol
+}
+
+/// Diagonal spread above which Lemke runs on the scaled problem.
+const SCALING_SPREAD: f64 = 1e6;
+
+/// D = diag(1/√M_ii) (1 where M_ii ≤ 0) when the positive diagonal entries
+/// of M spread over more than [`SCALING_SPREAD`]; None otherwise: a
+/// well-scaled problem keeps its own rounding. The scaled M has a unit
+/// diagonal, so the pivot and ratio tests compare like with like (on
+/// M = diag(1e300, 1e-300) the unscaled run stops on a ray).
+fn diagonal_scaling(lcp: &Lcp) -> Option<Vec<f64>> {
+    let n = lcp.n();
+    let diag = (0..n).map(|i| lcp.at(i, i)).filter(|&v| v > 0.0);
+    let (lo, hi) = diag.fold((f64::INFINITY, 0.0f64), |(lo, hi), v| {
+        (lo.min(v), hi.max(v))
+    });
+    if !(hi > SCALING_SPREAD * lo) {
+        return None;
+    }
+    Some(
+        (0..n)
+            .map(|i| {
+                let v = lcp.at(i, i);
+                if v > 0.0 {
+                    1.0 / v.sqrt()
+                } else {
+                    1.0
+                }
+            })
+            .collect(),
+    )
+}
+
+/// [`lemke`] on the problem as posed, without scaling.
+fn lemke_as_posed(lcp: &Lcp, settings: &LemkeSettings, cover: Cover) -> LcpSolution {
     let n = lcp.n();
     let mut counters = Counters::default();
     if lcp.q.iter().all(|&v| v >= 0.0) {
@@ -66,15 +193,21 @@ pub fn lemke(lcp: &Lcp, settings: &LemkeSettings) -> LcpSolution {
     }
     let qmax = lcp.q.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     let mut result = None;
+    let mut at_zero = false;
     for eta in [0.0, 1e-10, 1e-7] {
         // Weights in [1, 2), distinct for every row (golden-ratio sequence).
         let q: Vec<f64> = (0..n)
             .map(|i| lcp.q[i] + eta * qmax * (1.0 + (i as f64 * 0.618_033_988_749_895).fract()))
             .collect();
-        let (end, basic, t) = pivot_path(lcp, &q, settings, &mut counters);
+        let (end, basic, t) = pivot_path(lcp, &q, &cover.vector(&lcp.q), settings, &mut counters);
         match end {
             PathEnd::Done(status) => {
                 result = Some((status, basic, t));
+                break;
+            }
+            PathEnd::ArtificialAtZero => {
+                at_zero = true;
+                result = Some((Status::Solved, basic, t));
                 break;
             }
             PathEnd::Cycled => continue,
@@ -98,21 +231,30 @@ pub fn lemke(lcp: &Lcp, settings: &LemkeSettings) -> LcpSolution {
     if status == Status::Solved {
         if let Some(polished) = polish(lcp, &support) {
             let better = LcpSolution::from_z(lcp, status, polished, counters);
-            if better.residuals.error <= sol.residuals.error {
+            if polish_wins(lcp, &better, &sol) {
                 sol = better;
             }
         }
         if n <= 32 {
             sol.basis = Some(support.iter().fold(0u32, |m, &i| m | 1 << i));
         }
+        if at_zero && !(sol.residuals.error <= ARTIFICIAL_AT_ZERO_TOL) {
+            sol.status = Status::RayTermination;
+            sol.basis = None;
+        }
     }
     sol
 }
+
+/// A ray reached with z0 at zero to rounding ends with `Solved` only when
+/// the re-solved basis has at most this error; otherwise it is a ray.
+const ARTIFICIAL_AT_ZERO_TOL: f64 = 1e-9;
 
 /// One run of the complementary pivoting path on (M, q).
 fn pivot_path(
     lcp: &Lcp,
     q: &[f64],
+    cover: &[f64],
     settings: &LemkeSettings,
     counters: &mut Counters,
 ) -> (PathEnd, Vec<usize>, Vec<f64>) {
@@ -126,14 +268,14 @@ fn pivot_path(
         for j in 0..n {
             t[i * cols + n + j] = -lcp.at(i, j);
         }
-        t[i * cols + z0] = -1.0;
+        t[i * cols + z0] = -cover[i];
         t[i * cols + rhs] = q[i];
     }
     let mut basic: Vec<usize> = (0..n).collect();
+    let q_scale = q.iter().fold(0.0f64, |m, v| m.max(v.abs()));
 
-    // First pivot: z0 enters at the value that makes the most negative q_i zero.
-    // Lexicographic minimum of (q_i, row i of B⁻¹) over all rows.
-    let first = first_row(&t, cols, n);
+    // First pivot: z0 enters (see first_row).
+    let first = first_row(&t, cols, n, cover);
     pivot(&mut t, cols, n, first, z0);
     counters.pivots += 1;
     let mut entering = complement(basic[first], n);
@@ -151,12 +293,35 @@ fn pivot_path(
             break PathEnd::Cycled;
         }
         let colmax = (0..n).fold(0.0f64, |m, i| m.max(t[i * cols + entering].abs()));
-        let tol = settings.pivot_tol * colmax;
-        let candidates: Vec<usize> = (0..n).filter(|&i| t[i * cols + entering] > tol).collect();
+        // Entry i of the entering column is B⁻¹_i · a, with a the column in
+        // the original data: its rounding is about ε·Σ_j |B⁻¹_ij|·|a_j|. An
+        // entry below pivot_tol times that sum is rounding, not a pivot; an
+        // entry that is small only because the data are (a row scaled by
+        // 1e-200) stays a candidate.
+        let a = original_column(lcp, cover, entering);
+        let noise = |i: usize| {
+            let mut sum = 0.0;
+            for (j, aj) in a.iter().enumerate() {
+                sum += t[i * cols + j].abs() * aj.abs();
+            }
+            settings.pivot_tol * sum
+        };
+        let candidates: Vec<usize> = (0..n)
+            .filter(|&i| t[i * cols + entering] > noise(i))
+            .collect();
         // x_B = rhs − T[:, e] t for the entering variable at value t ≥ 0:
         // rows with a positive entry decrease; the first to reach zero leaves.
         if candidates.is_empty() || colmax == 0.0 {
-            break PathEnd::Done(Status::RayTermination);
+            // z0 at zero to rounding: the current basis is already a
+            // solution (a degenerate step let another variable leave in
+            // z0's place, by 1e-17); the caller re-solves and checks it.
+            let z0_row = basic.iter().position(|&v| v == z0);
+            let at_zero = z0_row.is_some_and(|r| t[r * cols + rhs] <= settings.pivot_tol * q_scale);
+            break if at_zero {
+                PathEnd::ArtificialAtZero
+            } else {
+                PathEnd::Done(Status::RayTermination)
+            };
         }
         let best = leaving_row(&t, cols, n, entering, &candidates, |i| basic[i] == z0);
         pivot(&mut t, cols, n, best, entering);
@@ -169,6 +334,50 @@ fn pivot_path(
         entering = complement(leaving, n);
     };
     (end, basic, t)
+}
+
+/// Column `var` of [I, −M, −d] (w, z, z0; d the covering vector), the
+/// entering column as the original data hold it.
+fn original_column(lcp: &Lcp, cover: &[f64], var: usize) -> Vec<f64> {
+    let n = lcp.n();
+    match var {
+        v if v < n => (0..n).map(|i| if i == v { 1.0 } else { 0.0 }).collect(),
+        v if v < 2 * n => (0..n).map(|i| -lcp.at(i, v - n)).collect(),
+        _ => cover.iter().map(|d| -d).collect(),
+    }
+}
+
+/// Whether the polished z (the basis re-solved from the data) is kept over
+/// the tableau's: by the row-relative residual ([`row_residual`]), not the
+/// error measure, which cannot see rounding in a small w_i beside a huge
+/// z_i (z_i − max(0, z_i − w_i) rounds to 0): the tableau's z can be wrong in
+/// its 8th digit with an error measure of 1e-127.
+fn polish_wins(lcp: &Lcp, polished: &LcpSolution, tableau: &LcpSolution) -> bool {
+    row_residual(lcp, polished) <= row_residual(lcp, tableau)
+}
+
+/// max_i of the violation of row i (|w_i| where z_i > 0, else max(0, −w_i))
+/// relative to the row's scale |q_i| + Σ_j |M_ij z_j|: the accuracy of a
+/// basic solution that every row sees at its own scale.
+fn row_residual(lcp: &Lcp, sol: &LcpSolution) -> f64 {
+    let n = lcp.n();
+    (0..n)
+        .map(|i| {
+            let w = sol.w[i];
+            let v = if sol.z[i] > 0.0 {
+                w.abs()
+            } else {
+                (-w).max(0.0)
+            };
+            let scale =
+                lcp.q[i].abs() + (0..n).map(|j| (lcp.at(i, j) * sol.z[j]).abs()).sum::<f64>();
+            if v == 0.0 {
+                0.0
+            } else {
+                v / scale
+            }
+        })
+        .fold(0.0, f64::max)
 }
 
 /// Re-solves the final basis from the original data, M_SS z_S = −q_S: the
@@ -235,18 +444,15 @@ fn leaving_row(
     tied[0]
 }
 
-/// The first leaving row: the lexicographic minimum of (q_i, row i of I), i.e.
-/// the most negative q_i, the largest index among exact ties (which keeps
-/// every row lexicographically positive after the pivot).
-fn first_row(t: &[f64], cols: usize, n: usize) -> usize {
+/// The first leaving row: z0 enters at the value that makes the most
+/// negative q_i / d_i zero (d the covering vector). Lexicographically that
+/// is the minimum of (q_i, row i of I) / d_i: among exact ties the largest
+/// index, which keeps every row lexicographically positive after the pivot.
+fn first_row(t: &[f64], cols: usize, n: usize, cover: &[f64]) -> usize {
     let rhs = cols - 1;
-    let min = (0..n)
-        .map(|i| t[i * cols + rhs])
-        .fold(f64::INFINITY, f64::min);
-    (0..n)
-        .rev()
-        .find(|&i| t[i * cols + rhs] == min)
-        .expect("n ≥ 1")
+    let ratio = |i: usize| t[i * cols + rhs] / cover[i];
+    let min = (0..n).map(ratio).fold(f64::INFINITY, f64::min);
+    (0..n).rev().find(|&i| ratio(i) == min).expect("n ≥ 1")
 }
 
 /// Gauss–Jordan pivot on (row r, column c).
@@ -294,5 +500,96 @@ mod tests {
         for (a, b) in sol.z.iter().zip([1.0, 0.0, 1.5]) {
             assert!((a - b).abs() < 1e-12, "{:?}", sol.z);
         }
+    }
+}
+
+#[cfg(test)]
+mod properties {
+    //! Lemke keeps its promise on copositive-plus M: no ray on a feasible
+    //! problem (issue "Fastest exact answer", part 2).
+    use super::*;
+    use proptest::prelude::*;
+
+    /// The LCP with M = B Bᵀ (B n×k, rank k < n possible) scaled by
+    /// D = diag(10^e_i), and q built around a known solution (z*, w*).
+    fn known_solution_lcp(n: usize, b: &[f64], k: usize, exps: &[f64], picks: &[f64]) -> Lcp {
+        let d: Vec<f64> = exps.iter().map(|e| 10f64.powf(*e)).collect();
+        let mut m = vec![0.0; n * n];
+        for i in 0..n {
+            for j in 0..n {
+                let v: f64 = (0..k).map(|t| b[i * k + t] * b[j * k + t]).sum();
+                m[i * n + j] = d[i] * v * d[j];
+            }
+        }
+        let z: Vec<f64> = (0..n)
+            .map(|i| if picks[i] > 0.0 { picks[i] / d[i] } else { 0.0 })
+            .collect();
+        let q = (0..n)
+            .map(|i| {
+                let w = if z[i] > 0.0 { 0.0 } else { -picks[i] * d[i] };
+                w - (0..n).map(|j| m[i * n + j] * z[j]).sum::<f64>()
+            })
+            .collect();
+        Lcp::new(m, q).unwrap()
+    }
+
+    fn case(max_exp: f64) -> impl Strategy<Value = Lcp> {
+        (2usize..=12).prop_flat_map(move |n| {
+            (1usize..=n).prop_flat_map(move |k| {
+                (
+                    prop::collection::vec(-1.0f64..1.0, n * k),
+                    prop::collection::vec(-max_exp..=max_exp, n),
+                    prop::collection::vec(-1.0f64..1.0, n),
+                )
+                    .prop_map(move |(b, e, p)| known_solution_lcp(n, &b, k, &e, &p))
+            })
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(2000))]
+
+        #[test]
+        fn no_ray_on_feasible_semidefinite_problems(lcp in case(0.0)) {
+            let s = lemke(&lcp, &LemkeSettings::default());
+            prop_assert_eq!(s.status, Status::Solved, "{:?}", lcp);
+            prop_assert!(s.residuals.error <= 1e-9, "error {:e}: {:?}", s.residuals.error, lcp);
+        }
+
+        #[test]
+        fn no_ray_on_badly_scaled_semidefinite_problems(lcp in case(100.0)) {
+            let s = lemke(&lcp, &LemkeSettings::default());
+            prop_assert_eq!(s.status, Status::Solved, "{:?}", lcp);
+            prop_assert!(s.residuals.error <= 1e-9, "error {:e}: {:?}", s.residuals.error, lcp);
+        }
+
+        #[test]
+        fn diagonal_problems_across_the_range_of_f64(
+            d in prop::collection::vec(-300.0f64..300.0, 1..8),
+            q in prop::collection::vec(-1.0f64..1.0, 8),
+        ) {
+            // z_i = max(0, −q_i / d_i), finite for |q_i| ≤ 1 and d_i ≥ 1e-300.
+            let n = d.len();
+            let mut m = vec![0.0; n * n];
+            for i in 0..n {
+                m[i * n + i] = 10f64.powf(d[i]);
+            }
+            let lcp = Lcp::new(m, q[..n].to_vec()).unwrap();
+            let s = lemke(&lcp, &LemkeSettings::default());
+            prop_assert_eq!(s.status, Status::Solved);
+            for i in 0..n {
+                let want = (-lcp.q[i] / lcp.at(i, i)).max(0.0);
+                prop_assert!((s.z[i] - want).abs() <= 1e-9 * want, "{:?} vs {}", s.z, want);
+            }
+        }
+    }
+
+    #[test]
+    fn extreme_diagonal_of_the_issue_is_solved() {
+        let lcp = Lcp::new(vec![1e300, 0.0, 0.0, 1e-300], vec![-1.0, -1.0]).unwrap();
+        let s = lemke(&lcp, &LemkeSettings::default());
+        assert_eq!(s.status, Status::Solved);
+        assert_eq!(s.z[0], 1e-300);
+        assert!((s.z[1] - 1e300).abs() <= 1e-15 * 1e300);
     }
 }
