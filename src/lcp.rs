@@ -192,6 +192,10 @@ pub enum Status {
     NotConverged,
     /// The problem could not be posed (a contact island or matrix failed a check).
     InvalidInput,
+    /// The solver's answer is not usable: z, w or the error measure is not
+    /// finite (z_i = 1e10 / 1e-300 overflows), or the error is above
+    /// [`crate::Settings::tolerance`]. z is what the solver found.
+    NumericalFailure,
 }
 
 impl Status {
@@ -201,13 +205,14 @@ impl Status {
     }
 
     /// Every status, in a fixed order (for tables and per-status counts).
-    pub const ALL: [Status; 6] = [
+    pub const ALL: [Status; 7] = [
         Status::Solved,
         Status::MultipleSolutions,
         Status::NoSolution,
         Status::RayTermination,
         Status::NotConverged,
         Status::InvalidInput,
+        Status::NumericalFailure,
     ];
 
     /// The snake_case name used in JSON output.
@@ -219,6 +224,7 @@ impl Status {
             Status::RayTermination => "ray_termination",
             Status::NotConverged => "not_converged",
             Status::InvalidInput => "invalid_input",
+            Status::NumericalFailure => "numerical_failure",
         }
     }
 }

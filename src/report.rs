@@ -265,7 +265,7 @@ pub struct Report {
     /// Islands per path.
     pub counts: PathCounts,
     /// Islands per status, in the order of [`Status::ALL`].
-    pub statuses: [usize; 6],
+    pub statuses: [usize; Status::ALL.len()],
     /// Largest error measure over islands whose status is a solution, and
     /// the index of that island in `islands` (None when there is none).
     pub max_error: Option<(f64, usize)>,
@@ -290,12 +290,14 @@ impl Report {
         choice: String,
     ) -> Self {
         let mut counts = PathCounts::default();
-        let mut statuses = [0usize; 6];
+        let mut statuses = [0usize; Status::ALL.len()];
         let mut max_error: Option<(f64, usize)> = None;
         for (i, isl) in islands.iter().enumerate() {
             counts.add(isl.path);
             let s = isl.solution.status;
-            statuses[Status::ALL.iter().position(|&x| x == s).unwrap_or(5)] += 1;
+            if let Some(k) = Status::ALL.iter().position(|&x| x == s) {
+                statuses[k] += 1;
+            }
             let e = isl.solution.residuals.error;
             // NaN compares false: a NaN error always replaces the maximum,
             // so that it is reported, never hidden.

@@ -189,6 +189,10 @@ pub struct Settings {
     /// PGS stops when the error measure is at most this (default 1e-10);
     /// finite and ≥ 0.
     pub pgs_tolerance: f64,
+    /// A solution is reported as `solved` (or `multiple_solutions`) only when
+    /// z, w and the error measure are finite and the error is at most this
+    /// (default 1e-8); otherwise its status is `numerical_failure`. In (0, 1).
+    pub tolerance: f64,
     /// The GPU backend's settings.
     pub gpu: GpuSettings,
 }
@@ -212,6 +216,7 @@ impl Default for Settings {
             lemke_pivot_tol: l.pivot_tol,
             pgs_max_sweeps: p.max_iterations,
             pgs_tolerance: p.tolerance,
+            tolerance: 1e-8,
             gpu: GpuSettings::default(),
         }
     }
@@ -247,6 +252,12 @@ impl Settings {
             return Err(invalid(
                 "relaxed_feasibility_tol",
                 "must be at least feasibility_tol",
+            ));
+        }
+        if !(self.tolerance > 0.0 && self.tolerance < 1.0) {
+            return Err(invalid(
+                "tolerance",
+                format!("{} is not in (0, 1)", self.tolerance),
             ));
         }
         if self.lemke_max_pivots == 0 {

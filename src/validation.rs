@@ -218,7 +218,7 @@ pub struct BatchReport {
     /// Largest error measure of the GPU's own z (before polish).
     pub max_gpu_error: f64,
     /// Islands per status, in the order of [`Status::ALL`].
-    pub statuses: [usize; 6],
+    pub statuses: [usize; Status::ALL.len()],
     /// Seconds of GPU work (upload + dispatch + readback).
     pub gpu_seconds: f64,
     /// Seconds of validation on the CPU.
@@ -251,7 +251,7 @@ impl BatchReport {
             paths: [0; 6],
             max_error: 0.0,
             max_gpu_error: 0.0,
-            statuses: [0; 6],
+            statuses: [0; Status::ALL.len()],
             gpu_seconds: 0.0,
             validation_seconds: 0.0,
             prediction_seconds: 0.0,

@@ -123,7 +123,8 @@ impl Solver {
         report
     }
 
-    fn cpu_report(&self, islands: Vec<IslandReport>, scenes: Vec<SceneReport>) -> Report {
+    fn cpu_report(&self, mut islands: Vec<IslandReport>, scenes: Vec<SceneReport>) -> Report {
+        self.check(&mut islands);
         let mut r = Report::new(islands, scenes, self.device(), self.choice.clone());
         r.fallback = self.fallback.clone();
         r

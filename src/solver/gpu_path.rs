@@ -80,11 +80,12 @@ impl Solver {
 
     fn gpu_report(
         &self,
-        islands: Vec<IslandReport>,
+        mut islands: Vec<IslandReport>,
         scenes: Vec<SceneReport>,
         b: &BatchReport,
         max_velocity_deviation: f64,
     ) -> Report {
+        self.check(&mut islands);
         let mut r = Report::new(islands, scenes, self.device(), self.choice.clone());
         r.counts.polished = b.polished;
         r.counts.cpu_fallback = b.cpu_fallback;
