@@ -48,12 +48,21 @@ impl Backend {
 )]
 #[serde(rename_all = "snake_case")]
 pub enum Method {
+    /// The fastest exact path (default). On the CPU: prediction (separating,
+    /// single contact, warm start, predicted basis), then Lemke, whose final
+    /// basis is re-solved in f64 and checked by the test every GPU answer
+    /// goes through; enumeration only where that check fails (a ray, the
+    /// pivot cap, or a basis invalid in f64), and above n = 20 Lemke's answer
+    /// as it is. On the GPU: enumeration. Where z is not unique the two may
+    /// report different solutions (Lemke's basis, enumeration's fewest
+    /// active contacts); where M is positive semidefinite, w is the same.
+    #[default]
+    Auto,
     /// Enumeration of the complementary bases (exact; fewest active contacts
     /// first, then the smallest mask), after the cheap paths of prediction
     /// (separating, single contact, warm start, predicted basis). On the CPU
     /// up to n = 20, on the GPU up to n = 16; scene islands above that go to
     /// Lemke. The only method the GPU runs.
-    #[default]
     Enumeration,
     /// Lemke's complementary pivoting with a lexicographic ratio test (exact,
     /// any n; CPU).
@@ -63,9 +72,11 @@ pub enum Method {
 }
 
 impl Method {
-    /// The name used on the command line and in output: `enum`, `lemke`, `pgs`.
+    /// The name used on the command line and in output: `auto`, `enum`,
+    /// `lemke`, `pgs`.
     pub fn name(self) -> &'static str {
         match self {
+            Method::Auto => "auto",
             Method::Enumeration => "enum",
             Method::Lemke => "lemke",
             Method::Pgs => "pgs",
@@ -144,17 +155,19 @@ impl GpuSettings {
     }
 }
 
-/// Every setting of a [`crate::Solver`]. `Settings::default()` is the exact
-/// path: enumeration after prediction, the GPU only where it is a hardware
-/// one, the CPU's tolerances in f64.
+/// Every setting of a [`crate::Solver`]. `Settings::default()` is the
+/// fastest exact path: on the CPU prediction, then Lemke checked in f64,
+/// then enumeration where the check fails; on a hardware GPU enumeration;
+/// every answer checked in f64.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Settings {
     /// Where to solve (default [`Backend::Auto`]).
     pub backend: Backend,
-    /// The algorithm (default [`Method::Enumeration`]).
+    /// The algorithm (default [`Method::Auto`]: the fastest exact path).
     pub method: Method,
-    /// Enumeration only: visit every basis and report every solution and
-    /// whether the solution set is finite (default false). CPU only:
+    /// Visit every basis and report every solution and whether the solution
+    /// set is finite (default false; method Auto or Enumeration, which then
+    /// enumerates). CPU only:
     /// `Backend::Gpu` refuses it, `Auto` solves on the CPU.
     pub all_solutions: bool,
     /// Enumeration only: settle what needs no enumeration first (separating
@@ -204,7 +217,7 @@ impl Default for Settings {
         let p = PgsSettings::default();
         Settings {
             backend: Backend::Auto,
-            method: Method::Enumeration,
+            method: Method::Auto,
             all_solutions: false,
             predict: true,
             warm_start: false,
@@ -272,8 +285,8 @@ impl Settings {
                 format!("{} is not a finite number ≥ 0", self.pgs_tolerance),
             ));
         }
-        if self.all_solutions && self.method != Method::Enumeration {
-            return Err(invalid("all_solutions", "needs method Enumeration"));
+        if self.all_solutions && !matches!(self.method, Method::Auto | Method::Enumeration) {
+            return Err(invalid("all_solutions", "needs method Auto or Enumeration"));
         }
         if self.backend == Backend::Gpu && !self.gpu_capable() {
             return Err(invalid(
@@ -301,7 +314,7 @@ impl Settings {
 
     /// Whether the GPU can serve these settings (enumeration of one solution).
     pub(crate) fn gpu_capable(&self) -> bool {
-        self.method == Method::Enumeration && !self.all_solutions
+        matches!(self.method, Method::Auto | Method::Enumeration) && !self.all_solutions
     }
 
     pub(crate) fn enumeration(&self) -> EnumerationSettings {

@@ -5,10 +5,10 @@ use std::time::Instant;
 use super::Solver;
 use crate::cpu::assembly::{assemble_contacts, assemble_island};
 use crate::cpu::batch::parallel_map;
-use crate::cpu::enumeration::{enumerate, MAX_ENUMERATION_N};
+use crate::cpu::enumeration::{enumerate, solve_basis, BasisOutcome, MAX_ENUMERATION_N};
 use crate::cpu::impulses::apply_impulses;
 use crate::islands::find_islands;
-use crate::lcp::{Lcp, LcpSolution};
+use crate::lcp::{Lcp, LcpSolution, Status};
 use crate::prediction::{self, prediction};
 use crate::report::{IslandReport, Report, SceneReport, SolvePath};
 use crate::scene::Scene;
@@ -133,26 +133,57 @@ impl Solver {
 
 /// One island on the CPU with the chosen method: (method that ran, path, solution).
 ///
-/// Enumeration: prediction first (with `settings.predict`), then
-/// enumeration by size; islands above n = 20 go to Lemke (the LCP path
-/// refuses them on the CPU backend before it gets here).
+/// Auto and Enumeration: prediction first (with `settings.predict`), then
+/// Auto's checked Lemke ([`lemke_checked`]), then enumeration by size;
+/// islands above n = 20 go to Lemke (the LCP path refuses them on the CPU
+/// backend with Enumeration before it gets here).
 fn solve_on_cpu(lcp: &Lcp, warm: Option<u32>, s: &Settings) -> (Method, SolvePath, LcpSolution) {
     let lemke_path = || (Method::Lemke, SolvePath::Lemke, lemke(lcp, &s.lemke()));
     match s.method {
         Method::Lemke => lemke_path(),
         Method::Pgs => (Method::Pgs, SolvePath::Pgs, pgs(lcp, &s.pgs())),
-        Method::Enumeration if lcp.n() > MAX_ENUMERATION_N => lemke_path(),
-        Method::Enumeration => {
+        Method::Auto | Method::Enumeration if lcp.n() > MAX_ENUMERATION_N => lemke_path(),
+        Method::Auto | Method::Enumeration => {
             let e = s.enumeration();
             if s.predict && !s.all_solutions {
                 if let Ok((path, solution)) = prediction(lcp, warm, &e) {
                     return (Method::Enumeration, prediction_path(path), solution);
                 }
             }
-            let solution =
+            let mut pivots = 0;
+            if s.method == Method::Auto && !s.all_solutions {
+                match lemke_checked(lcp, s) {
+                    Ok(solution) => return (Method::Lemke, SolvePath::Lemke, solution),
+                    Err(p) => pivots = p,
+                }
+            }
+            let mut solution =
                 enumerate(lcp, &e).expect("n ≤ 20 and settings validated in Solver::new");
+            solution.counters.pivots += pivots;
             (Method::Enumeration, SolvePath::EnumeratedCpu, solution)
         }
+    }
+}
+
+/// Lemke, its final basis re-solved in f64 and checked with enumeration's
+/// tolerances (the check every GPU answer goes through: feasible, M_SS not
+/// singular); the solution is the re-solve's. Err(pivots spent) when Lemke
+/// did not end on a solution or its basis fails the check.
+fn lemke_checked(lcp: &Lcp, s: &Settings) -> Result<LcpSolution, u64> {
+    let l = lemke(lcp, &s.lemke());
+    let pivots = l.counters.pivots;
+    let (Status::Solved, Some(mask)) = (l.status, l.basis) else {
+        return Err(pivots);
+    };
+    match solve_basis(lcp, mask, &s.enumeration()) {
+        BasisOutcome::Solved {
+            z, feasible: true, ..
+        } => {
+            let mut solution = LcpSolution::from_z(lcp, Status::Solved, z, l.counters);
+            solution.basis = Some(mask);
+            Ok(solution)
+        }
+        _ => Err(pivots),
     }
 }
 

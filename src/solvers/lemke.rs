@@ -44,7 +44,7 @@ enum PathEnd {
     /// z0 left (Solved), a secondary ray, or the pivot cap.
     Done(Status),
     /// A secondary ray with z0 at zero to rounding: the basis is a solution
-    /// if its re-solve checks out (see [`ARTIFICIAL_AT_ZERO_TOL`]).
+    /// if its re-solve checks out (see [`ACCEPT_TOL`]).
     ArtificialAtZero,
     /// A (basis, entering variable) pair came back: the path cycles. Exact
     /// lexicographic pivoting cannot cycle; floating point can, where
@@ -192,30 +192,47 @@ fn lemke_as_posed(lcp: &Lcp, settings: &LemkeSettings, cover: Cover) -> LcpSolut
         return sol;
     }
     let qmax = lcp.q.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    let mut result = None;
-    let mut at_zero = false;
+    let d = cover.vector(&lcp.q);
+    // The first run that did not end on a solution, reported if no later
+    // (perturbed) run finds one.
+    let mut failed: Option<LcpSolution> = None;
     for eta in [0.0, 1e-10, 1e-7] {
         // Weights in [1, 2), distinct for every row (golden-ratio sequence).
         let q: Vec<f64> = (0..n)
             .map(|i| lcp.q[i] + eta * qmax * (1.0 + (i as f64 * 0.618_033_988_749_895).fract()))
             .collect();
-        let (end, basic, t) = pivot_path(lcp, &q, &cover.vector(&lcp.q), settings, &mut counters);
-        match end {
-            PathEnd::Done(status) => {
-                result = Some((status, basic, t));
-                break;
-            }
-            PathEnd::ArtificialAtZero => {
-                at_zero = true;
-                result = Some((Status::Solved, basic, t));
-                break;
-            }
+        let (end, basic, t) = pivot_path(lcp, &q, &d, settings, &mut counters);
+        let (status, checked) = match end {
             PathEnd::Cycled => continue,
+            PathEnd::ArtificialAtZero => (Status::Solved, true),
+            // A solution of a perturbed q counts once its basis re-solved
+            // with the true q checks out.
+            PathEnd::Done(status) => (status, eta > 0.0),
+        };
+        let sol = basis_solution(lcp, status, &basic, &t, counters, checked);
+        if sol.status == Status::Solved {
+            return sol;
         }
+        // Degenerate ties (a resting stack: equal q_i, rank-deficient M)
+        // can send the unperturbed path onto a ray rounding made up; the
+        // perturbed runs break the ties.
+        failed.get_or_insert(sol);
     }
-    let Some((status, basic, t)) = result else {
-        return LcpSolution::from_z(lcp, Status::NotConverged, vec![0.0; n], counters);
-    };
+    failed.unwrap_or_else(|| LcpSolution::from_z(lcp, Status::NotConverged, vec![0.0; n], counters))
+}
+
+/// The solution of the final tableau: z from its basic values, then the
+/// basis re-solved with the true q ([`polish`]). With `checked`, `Solved`
+/// stands only if the error is at most [`ACCEPT_TOL`] (else `RayTermination`).
+fn basis_solution(
+    lcp: &Lcp,
+    status: Status,
+    basic: &[usize],
+    t: &[f64],
+    counters: Counters,
+    checked: bool,
+) -> LcpSolution {
+    let n = lcp.n();
     let cols = 2 * n + 2;
     let rhs = 2 * n + 1;
     let mut z = vec![0.0; n];
@@ -238,7 +255,7 @@ fn lemke_as_posed(lcp: &Lcp, settings: &LemkeSettings, cover: Cover) -> LcpSolut
         if n <= 32 {
             sol.basis = Some(support.iter().fold(0u32, |m, &i| m | 1 << i));
         }
-        if at_zero && !(sol.residuals.error <= ARTIFICIAL_AT_ZERO_TOL) {
+        if checked && !(sol.residuals.error <= ACCEPT_TOL) {
             sol.status = Status::RayTermination;
             sol.basis = None;
         }
@@ -246,9 +263,10 @@ fn lemke_as_posed(lcp: &Lcp, settings: &LemkeSettings, cover: Cover) -> LcpSolut
     sol
 }
 
-/// A ray reached with z0 at zero to rounding ends with `Solved` only when
-/// the re-solved basis has at most this error; otherwise it is a ray.
-const ARTIFICIAL_AT_ZERO_TOL: f64 = 1e-9;
+/// A ray reached with z0 at zero to rounding, or a solution of a perturbed
+/// q, ends with `Solved` only when the basis re-solved with the true q has
+/// at most this error; otherwise it is a ray.
+const ACCEPT_TOL: f64 = 1e-9;
 
 /// One run of the complementary pivoting path on (M, q).
 fn pivot_path(
