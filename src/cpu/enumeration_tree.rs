@@ -284,7 +284,7 @@ mod tests {
 
     #[test]
     fn decides_enumerations_basis_on_positive_definite_islands() {
-        let lcps = crate::bench::islands_of_size(6, 400, 11);
+        let lcps = crate::generate::families::islands_of_size(6, 400, 11);
         let s = TreeSettings::default();
         let (mut decided, mut pd) = (0, 0);
         for lcp in &lcps {

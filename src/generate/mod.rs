@@ -2,6 +2,7 @@
 //! Every island they make comes from real bodies and contacts, so its M is
 //! symmetric positive semidefinite (M = J M⁻¹ Jᵀ).
 
+pub mod families;
 pub mod stress;
 
 use glam::{DMat3, DQuat, DVec3};

@@ -72,14 +72,7 @@ pub struct StressCase {
     pub lcp: Lcp,
 }
 
-fn islands_of(scene: &Scene) -> Vec<Lcp> {
-    scene
-        .islands("stress scene")
-        .expect("generated scenes are valid")
-        .into_iter()
-        .map(|p| p.lcp)
-        .collect()
-}
+use super::families::island_lcps as islands_of;
 
 fn scaled_lengths(mut scene: Scene, s: f64) -> Scene {
     for b in &mut scene.bodies {
