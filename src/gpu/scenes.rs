@@ -11,15 +11,15 @@
 
 use std::time::Instant;
 
-use super::batch::{
-    limits_for, run_enumeration, solve_lcp_batch_warm, GpuSolveSettings, KernelPlan, SolvedOn,
-    TreeRoute,
-};
-use super::kernels::Pipelines;
+use super::batch::{solve_lcp_batch_warm, GpuSolveSettings, SolvedOn};
+use super::buffers::limits_for;
+use super::enumeration::EnumerationJob;
+use super::kernel::{KernelPlan, TreeRoute};
 use super::layout::{
     pack_body, pack_contact, scalars_from_bytes, scalars_to_bytes, unpack_row, BasisResult,
     BodyContacts, ContactBodies, ContactSide, PackedIsland, Slot, BODY, NO_BODY, ROW, VELOCITY,
 };
+use super::pipelines::{Pipelines, Tolerances};
 use super::{GpuContext, MAX_GPU_N};
 use crate::cpu::assembly::ContactRow;
 use crate::cpu::impulses::{apply_impulses, BodyVelocity};
@@ -186,27 +186,20 @@ struct StageOutput {
     tree: (usize, usize),
 }
 
-fn entry(binding: u32, b: &wgpu::Buffer) -> wgpu::BindGroupEntry<'_> {
-    wgpu::BindGroupEntry {
-        binding,
-        resource: b.as_entire_binding(),
-    }
-}
-
-/// Submission 1: assembly (contacts, islands) and enumeration.
+/// Submission 1: assembly (contacts, islands) and, given a plan and the
+/// tolerances uniform, enumeration.
 fn assemble_and_enumerate(
     ctx: &GpuContext,
     p: &Pipelines,
     c: &Chunk,
     max_groups: u32,
-    enumerate: Option<&KernelPlan>,
+    enumerate: Option<(&KernelPlan, &wgpu::Buffer)>,
 ) -> Result<StageOutput, Error> {
     let precision = ctx.precision();
     let sb = precision.bytes();
     ctx.scoped(
         "assembly and enumeration",
         || -> Result<StageOutput, Error> {
-            let d = &ctx.device;
             // bodies: packed bodies of every scene in the chunk (20 scalars each).
             let bodies = ctx.storage("bodies", &scalars_to_bytes(&c.bodies, precision));
             // contact_bodies: each contact's bodies, as chunk-wide body indices.
@@ -224,56 +217,22 @@ fn assemble_and_enumerate(
             // values: every island's M and q as assembled here, read by enumeration.
             let values_size = c.values_len as u64 * sb;
             let values = ctx.storage_zeroed("values", values_size);
-            let mut encoder = d.create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                label: Some("assembly and enumeration"),
-            });
-            let mut dispatches = 0;
+            let mut encoder = ctx.encoder("assembly and enumeration");
+            let n_contacts = c.ids.len() as u32;
+            let contact_buffers = [&bodies, &ids, &contacts, &rows];
             let st = &p.assemble_contacts;
-            ctx.dispatch_ranges(
-                &mut encoder,
-                st,
-                0,
-                c.ids.len() as u32,
-                max_groups,
-                &|params| {
-                    d.create_bind_group(&wgpu::BindGroupDescriptor {
-                        label: Some("assemble_contacts"),
-                        layout: &st.layout,
-                        entries: &[
-                            entry(0, params),
-                            entry(1, &bodies),
-                            entry(2, &ids),
-                            entry(3, &contacts),
-                            entry(4, &rows),
-                        ],
-                    })
-                },
-            );
-            dispatches += 1;
+            ctx.dispatch(&mut encoder, st, n_contacts, max_groups, &contact_buffers);
+            let island_buffers = [&ids, &rows, &islands, &slots, &values];
             let st = &p.assemble_islands;
-            ctx.dispatch_ranges(
+            ctx.dispatch(
                 &mut encoder,
                 st,
-                0,
                 c.slots.len() as u32,
                 max_groups,
-                &|params| {
-                    d.create_bind_group(&wgpu::BindGroupDescriptor {
-                        label: Some("assemble_islands"),
-                        layout: &st.layout,
-                        entries: &[
-                            entry(0, params),
-                            entry(2, &ids),
-                            entry(4, &rows),
-                            entry(5, &islands),
-                            entry(6, &slots),
-                            entry(7, &values),
-                        ],
-                    })
-                },
+                &island_buffers,
             );
-            dispatches += 1;
-            if let Some(plan) = enumerate {
+            let dispatches = 2;
+            if let Some((plan, tolerances)) = enumerate {
                 // Only the islands prediction left: a table of their own
                 // (offsets into the same values) when some were settled.
                 let enum_islands = if c.enum_table.len() == c.table.len() {
@@ -281,18 +240,18 @@ fn assemble_and_enumerate(
                 } else {
                     ctx.storage("enumeration islands", bytemuck::cast_slice(&c.enum_table))
                 };
-                let run = run_enumeration(
+                let job = EnumerationJob {
                     ctx,
-                    p,
-                    &enum_islands,
-                    &values,
-                    &c.enum_table,
-                    &c.enum_tree,
+                    pipelines: p,
+                    islands: &enum_islands,
+                    values: &values,
+                    tolerances,
+                    table: &c.enum_table,
+                    tree: &c.enum_tree,
                     max_groups,
                     plan,
-                    encoder,
-                    true,
-                )?;
+                };
+                let run = job.run(encoder, true)?;
                 return Ok(StageOutput {
                     results: run.results,
                     z: run.z,
@@ -361,7 +320,6 @@ fn apply_on_gpu(
         }
     }
     ctx.scoped("impulses", || -> Result<Vec<f64>, Error> {
-        let d = &ctx.device;
         // body_contacts: each body's range in contact_sides.
         let body_contacts = ctx.storage("body_contacts", bytemuck::cast_slice(&ranges));
         // contact_sides: (contact, side) pairs gathered per body.
@@ -371,25 +329,16 @@ fn apply_on_gpu(
         // velocities: the output, 8 scalars per body.
         let vel_size = (nb * VELOCITY) as u64 * precision.bytes();
         let velocities = ctx.storage_zeroed("velocities", vel_size);
-        let mut encoder = d.create_command_encoder(&wgpu::CommandEncoderDescriptor {
-            label: Some("impulses"),
-        });
-        let st = &p.impulses;
-        ctx.dispatch_ranges(&mut encoder, st, 0, nb as u32, max_groups, &|params| {
-            d.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some("impulses"),
-                layout: &st.layout,
-                entries: &[
-                    entry(0, params),
-                    entry(1, &resident.bodies),
-                    entry(2, &resident.rows),
-                    entry(3, &body_contacts),
-                    entry(4, &contact_sides),
-                    entry(5, &zb),
-                    entry(6, &velocities),
-                ],
-            })
-        });
+        let mut encoder = ctx.encoder("impulses");
+        let buffers = [
+            &resident.bodies,
+            &resident.rows,
+            &body_contacts,
+            &contact_sides,
+            &zb,
+            &velocities,
+        ];
+        ctx.dispatch(&mut encoder, &p.impulses, nb as u32, max_groups, &buffers);
         let got = ctx.submit_and_read(encoder, &[(&velocities, vel_size)])?;
         Ok(scalars_from_bytes(&got[0], precision))
     })?
@@ -436,7 +385,7 @@ pub fn assemble_on_gpu(
     settings: &GpuSolveSettings,
 ) -> Result<GpuAssembly, Error> {
     let prepared = prepare(scenes)?;
-    let pipelines = ctx.pipelines(settings.gpu_tolerances(ctx.precision()))?;
+    let pipelines = ctx.pipelines()?;
     let (max_bytes, max_groups) = limits_for(ctx, settings);
     let (chunks, alone) = plan(scenes, &prepared, max_bytes, ctx.precision().bytes());
     if !alone.is_empty() {
@@ -519,7 +468,10 @@ pub fn solve_scenes_warm(
         ));
     }
     let prepared = prepare(scenes)?;
-    let pipelines = ctx.pipelines(settings.gpu_tolerances(ctx.precision()))?;
+    let pipelines = ctx.pipelines()?;
+    let tolerances = ctx.scoped("tolerances", || {
+        Tolerances::new(ctx.precision(), settings).upload(ctx)
+    })?;
     let (max_bytes, max_groups) = limits_for(ctx, settings);
     let kernel_plan = KernelPlan::new(ctx, settings);
     let (chunks, alone) = plan(scenes, &prepared, max_bytes, ctx.precision().bytes());
@@ -571,7 +523,13 @@ pub fn solve_scenes_warm(
                 None => kernel_plan.tree_for(&prepared[s].lcps[k], definite[s][k]),
             },
         );
-        let out = assemble_and_enumerate(ctx, &pipelines, &c, max_groups, Some(&kernel_plan))?;
+        let out = assemble_and_enumerate(
+            ctx,
+            &pipelines,
+            &c,
+            max_groups,
+            Some((&kernel_plan, &tolerances)),
+        )?;
         report.gpu_seconds += t0.elapsed().as_secs_f64();
         report.chunks += 1;
         report.dispatches += out.dispatches;
