@@ -373,6 +373,38 @@ fn invalid_solution(lcp: &Lcp) -> LcpSolution {
     }
 }
 
+/// Problem i settled on the CPU: invalid, n > [`MAX_GPU_N`] (Lemke), or
+/// by prediction (with `settings.predict`); else what prediction learnt.
+fn settle_on_cpu(
+    i: usize,
+    lcp: &Lcp,
+    warm: Option<u32>,
+    settings: &GpuSolveSettings,
+) -> Result<IslandOutcome, Unsettled> {
+    let outcome = |solution, solved_on, path, solver| IslandOutcome {
+        solution,
+        solved_on,
+        path,
+        solver,
+        gpu: None,
+        gpu_z: Vec::new(),
+    };
+    if lcp.validate(&format!("problem {i}")).is_err() {
+        let s = invalid_solution(lcp);
+        return Ok(outcome(s, SolvedOn::Invalid, None, Solver::Enum));
+    }
+    if lcp.n() > MAX_GPU_N {
+        let s = lemke(lcp, &settings.lemke);
+        let path = Some(SolvePath::Lemke);
+        return Ok(outcome(s, SolvedOn::CpuFallback, path, Solver::Lemke));
+    }
+    if !settings.predict {
+        return Err(Unsettled { definite: None });
+    }
+    let (path, s) = prediction(lcp, warm, &settings.enumeration)?;
+    Ok(outcome(s, SolvedOn::Predicted, Some(path), Solver::Enum))
+}
+
 /// Solves a batch of LCPs: islands with n ≤ 16 by enumeration on the GPU,
 /// each answer validated in f64 on the CPU (polished, or repaired by the CPU
 /// enumeration), larger ones by Lemke on the CPU. Problems that fail their
@@ -410,44 +442,11 @@ pub fn solve_lcp_batch_warm(
     let warm_of = |i: usize| warm.and_then(|w| w.get(i).copied().flatten());
     let t_predict = Instant::now();
     for (i, lcp) in lcps.iter().enumerate() {
-        if lcp.validate(&format!("problem {i}")).is_err() {
-            slots[i] = Some(IslandOutcome {
-                solution: invalid_solution(lcp),
-                solved_on: SolvedOn::Invalid,
-                path: None,
-                solver: Solver::Enum,
-                gpu: None,
-                gpu_z: Vec::new(),
-            });
-        } else if lcp.n() > MAX_GPU_N {
-            slots[i] = Some(IslandOutcome {
-                solution: lemke(lcp, &settings.lemke),
-                solved_on: SolvedOn::CpuFallback,
-                path: Some(SolvePath::Lemke),
-                solver: Solver::Lemke,
-                gpu: None,
-                gpu_z: Vec::new(),
-            });
-        } else {
-            let predicted = match settings.predict {
-                true => prediction(lcp, warm_of(i), &settings.enumeration),
-                false => Err(Unsettled { definite: None }),
-            };
-            match predicted {
-                Ok((path, solution)) => {
-                    slots[i] = Some(IslandOutcome {
-                        solution,
-                        solved_on: SolvedOn::Predicted,
-                        path: Some(path),
-                        solver: Solver::Enum,
-                        gpu: None,
-                        gpu_z: Vec::new(),
-                    })
-                }
-                Err(unsettled) => {
-                    on_gpu.push(i);
-                    definite.push(unsettled.definite);
-                }
+        match settle_on_cpu(i, lcp, warm_of(i), settings) {
+            Ok(outcome) => slots[i] = Some(outcome),
+            Err(unsettled) => {
+                on_gpu.push(i);
+                definite.push(unsettled.definite);
             }
         }
     }

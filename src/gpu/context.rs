@@ -252,6 +252,91 @@ fn rank(info: &wgpu::AdapterInfo) -> (u8, u8) {
     (t, b)
 }
 
+/// The adapter `options` ask for among `all`, and how it was chosen: a
+/// forced name, else request_adapter (a hardware adapter on another backend
+/// preferred over a software one), else the software fallback, else the
+/// best ranked adapter.
+fn choose_adapter(
+    inst: &wgpu::Instance,
+    all: Vec<wgpu::Adapter>,
+    options: &GpuOptions,
+) -> Result<(wgpu::Adapter, String), Error> {
+    let backends = options.backend.backends();
+    let chosen = if let Some(want) = &options.adapter_name {
+        let w = want.to_lowercase();
+        let found = all
+            .into_iter()
+            .find(|a| a.get_info().name.to_lowercase().contains(&w));
+        match found {
+            Some(a) => (a, format!("forced by name `{want}`")),
+            None => {
+                let names: Vec<String> = list_adapters(options.backend)
+                    .into_iter()
+                    .map(|s| format!("{} ({})", s.name, s.backend))
+                    .collect();
+                return Err(Error::Gpu(format!(
+                    "no adapter whose name contains `{want}`; available: {}",
+                    if names.is_empty() {
+                        "none".to_string()
+                    } else {
+                        names.join(", ")
+                    }
+                )));
+            }
+        }
+    } else {
+        let requested = pollster::block_on(inst.request_adapter(&wgpu::RequestAdapterOptions {
+            power_preference: options.power,
+            force_fallback_adapter: false,
+            compatible_surface: None,
+            apply_limit_buckets: false,
+        }));
+        match requested {
+            Ok(a) => {
+                // request_adapter may hand back a software adapter while a
+                // hardware one exists on another backend: prefer hardware.
+                let best = all.into_iter().min_by_key(|x| rank(&x.get_info()));
+                match best {
+                    Some(b) if rank(&b.get_info()) < rank(&a.get_info()) => {
+                        (b, "hardware (best ranked)".to_string())
+                    }
+                    _ => {
+                        let sw = a.get_info().device_type == wgpu::DeviceType::Cpu;
+                        let how = if sw {
+                            "software fallback (no hardware adapter)"
+                        } else {
+                            "hardware (high performance)"
+                        };
+                        (a, how.to_string())
+                    }
+                }
+            }
+            Err(_) => {
+                let fallback =
+                    pollster::block_on(inst.request_adapter(&wgpu::RequestAdapterOptions {
+                        power_preference: options.power,
+                        force_fallback_adapter: true,
+                        compatible_surface: None,
+                        apply_limit_buckets: false,
+                    }));
+                match fallback {
+                    Ok(a) => (a, "software fallback (no hardware adapter)".to_string()),
+                    Err(_) => match all.into_iter().min_by_key(|x| rank(&x.get_info())) {
+                        Some(a) => (a, "only adapter found".to_string()),
+                        None => {
+                            return Err(Error::Gpu(format!(
+                                "no GPU adapter found on backends {:?}: {INSTALL_HINT}",
+                                backends
+                            )))
+                        }
+                    },
+                }
+            }
+        }
+    };
+    Ok(chosen)
+}
+
 /// wgpu errors that reached no error scope, collected instead of panicking.
 #[derive(Clone, Default)]
 pub(crate) struct ErrorSink(Arc<Mutex<Vec<String>>>);
@@ -298,79 +383,7 @@ impl GpuContext {
         let backends = options.backend.backends();
         let inst = instance(backends);
         let all = pollster::block_on(inst.enumerate_adapters(backends));
-        let (adapter, selection) = if let Some(want) = &options.adapter_name {
-            let w = want.to_lowercase();
-            let found = all
-                .into_iter()
-                .find(|a| a.get_info().name.to_lowercase().contains(&w));
-            match found {
-                Some(a) => (a, format!("forced by name `{want}`")),
-                None => {
-                    let names: Vec<String> = list_adapters(options.backend)
-                        .into_iter()
-                        .map(|s| format!("{} ({})", s.name, s.backend))
-                        .collect();
-                    return Err(Error::Gpu(format!(
-                        "no adapter whose name contains `{want}`; available: {}",
-                        if names.is_empty() {
-                            "none".to_string()
-                        } else {
-                            names.join(", ")
-                        }
-                    )));
-                }
-            }
-        } else {
-            let requested =
-                pollster::block_on(inst.request_adapter(&wgpu::RequestAdapterOptions {
-                    power_preference: options.power,
-                    force_fallback_adapter: false,
-                    compatible_surface: None,
-                    apply_limit_buckets: false,
-                }));
-            match requested {
-                Ok(a) => {
-                    // request_adapter may hand back a software adapter while a
-                    // hardware one exists on another backend: prefer hardware.
-                    let best = all.into_iter().min_by_key(|x| rank(&x.get_info()));
-                    match best {
-                        Some(b) if rank(&b.get_info()) < rank(&a.get_info()) => {
-                            (b, "hardware (best ranked)".to_string())
-                        }
-                        _ => {
-                            let sw = a.get_info().device_type == wgpu::DeviceType::Cpu;
-                            let how = if sw {
-                                "software fallback (no hardware adapter)"
-                            } else {
-                                "hardware (high performance)"
-                            };
-                            (a, how.to_string())
-                        }
-                    }
-                }
-                Err(_) => {
-                    let fallback =
-                        pollster::block_on(inst.request_adapter(&wgpu::RequestAdapterOptions {
-                            power_preference: options.power,
-                            force_fallback_adapter: true,
-                            compatible_surface: None,
-                            apply_limit_buckets: false,
-                        }));
-                    match fallback {
-                        Ok(a) => (a, "software fallback (no hardware adapter)".to_string()),
-                        Err(_) => match all.into_iter().min_by_key(|x| rank(&x.get_info())) {
-                            Some(a) => (a, "only adapter found".to_string()),
-                            None => {
-                                return Err(Error::Gpu(format!(
-                                    "no GPU adapter found on backends {:?}: {INSTALL_HINT}",
-                                    backends
-                                )))
-                            }
-                        },
-                    }
-                }
-            }
-        };
+        let (adapter, selection) = choose_adapter(&inst, all, options)?;
         let summary = AdapterSummary::of(&adapter);
         let precision = match options.precision {
             Precision::Auto if summary.f64 => Precision::F64,

@@ -113,6 +113,9 @@ fn pivot_tests(o: &mut String, d: usize, p: &str, live: &str, set: &str) {
 /// known at run time as `b{i}`), whether the subtree is live (`live`: not
 /// cut by a singular pivot), tableau entries and t named in `tab` and
 /// `rhs`.
+/// Eight parameters and about 90 lines on purpose: the recursion carries
+/// the whole naming state of the walk (depth, prefix, mask, liveness, the
+/// tableau and t names) down the tree; a struct would be rebuilt per node.
 #[allow(clippy::too_many_arguments)]
 fn tree_node(
     o: &mut String,
