@@ -2,7 +2,7 @@
 //! the GPU on and off, in islands per second (criterion; replaces the
 //! measurement tests that printed the tables in BENCHMARKS.md).
 //!
-//! - `gpu_kernel/<precision>/n=<n>`: the elimination, Gray-code,
+//! - `gpu_kernel/<precision>/n=<n>`: the elimination,
 //!   specialised (unrolled) and tree kernels, and Auto's choice, on the same
 //!   batch of islands of exactly n contacts, uploaded once, dispatch alone
 //!   (every enumeration round; Tree: every island through the tree kernel,
@@ -66,7 +66,6 @@ fn bench_kernels(c: &mut Criterion) {
             g.throughput(Throughput::Elements(lcps.len() as u64));
             for kernel in [
                 EnumerationKernel::Elimination,
-                EnumerationKernel::Gray,
                 EnumerationKernel::Unrolled,
                 EnumerationKernel::Tree,
                 EnumerationKernel::Auto,

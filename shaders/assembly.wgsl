@@ -10,7 +10,8 @@
 // (point, normal, restitution), row 36 scalars (K rows, jacobian, response,
 // v_rel, q), island data M row-major then q.
 //
-// The host replaces the line marked HOST (scalar type).
+// The generator (src/gpu/shaders/compose.rs) replaces the line marked HOST
+// (scalar type) and writes shaders/generated/<name>_f32.wgsl and _f64.wgsl.
 
 alias Scalar = f32; // HOST scalar
 

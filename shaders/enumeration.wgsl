@@ -7,11 +7,11 @@
 // the first valid one is chosen: the fewest contacts carrying impulse, ties to
 // the smallest mask. For each basis S: solve M_SS z_S = -q_S by Gaussian
 // elimination with partial pivoting (singular when a pivot is at most
-// PIVOT_TOL times its column's largest entry of M_SS), then its relative
+// tol.pivot times its column's largest entry of M_SS), then its relative
 // infeasibility is the worst of -z_i / max|z_S| and
 // -w_i / (|q_i| + sum_j |M_ij z_j|), w_i = q_i + sum_j M_ij z_j. Valid: at most
-// FEASIBILITY_TOL. When no basis is valid, the least infeasible basis within
-// RELAXED_TOL is chosen (the first on a tie), as on the CPU.
+// tol.feasibility. When no basis is valid, the least infeasible basis within
+// tol.relaxed is chosen (the first on a tie), as on the CPU.
 //
 // Rounds: an invocation visits bases until it has spent `params.budget` units
 // of loop work (an upper bound of the loop iterations of one basis, see
@@ -22,14 +22,14 @@
 // stays below that; on hardware it only bounds the time of one dispatch.
 //
 // Shared with the other enumeration kernels: shaders/enumeration_basis.wgsl
-// (scalar type, tolerances, MAX_N, Island, bindings 0-6, the elimination
+// (scalar type, tolerances, MAX_N, Island, bindings 0-7, the elimination
 // scratch a / x / colmax / idx, SINGULAR, solve_basis, write_z,
-// basis_cost), which the host prepends to this file before templating.
-// The host replaces the lines marked HOST (in the shared file: scalar type,
-// tolerances; here, for a specialised build: FIXED, FN, FNN).
+// basis_cost), which the generator prepends to this file.
+// The generator replaces the lines marked HOST (in the shared file: scalar
+// type; here, for a specialised build: FIXED, FN, FNN).
 
 // Specialised build for one island size (islands of exactly FN contacts):
-// the host sets FIXED, FN and FNN = FN * FN. solve_basis_fixed then works on
+// the generator sets FIXED, FN and FNN = FN * FN. solve_basis_fixed then works on
 // the n x n system with the nonbasic rows and columns replaced by the
 // identity, so that every loop has a constant trip count and every private
 // array index is constant once unrolled (llvmpipe indexes private arrays
@@ -47,8 +47,8 @@ const FNN: u32 = 1u; // HOST fixed_nn
 var<private> fx: array<Scalar, FN>;
 
 // solve_basis for islands of exactly FN contacts; z (0 off the basis) in
-// fx. Placeholder: the host replaces it with straight-line code for FN
-// (src/gpu/kernels.rs, `straight_line_solver`) in every specialised build,
+// fx. Placeholder: the generator replaces it with straight-line code for FN
+// (src/gpu/shaders/unrolled.rs, `straight_line_solver`) in every specialised build,
 // and the general build (FIXED false) never calls it.
 fn solve_basis_fixed(base: u32, mask: u32) -> Scalar {
     return SINGULAR;
@@ -99,7 +99,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         }
         if infeasibility == SINGULAR {
             state.singular++;
-        } else if infeasibility <= FEASIBILITY_TOL {
+        } else if infeasibility <= tol.feasibility {
             if FIXED {
                 write_z_fixed(island.z, s);
             } else {
@@ -107,7 +107,7 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
             }
             state.status = 1u;
             break;
-        } else if infeasibility <= RELAXED_TOL {
+        } else if infeasibility <= tol.relaxed {
             if state.has_least == 0u || infeasibility < least_infeasibility[island_index] {
                 state.least = s;
                 state.has_least = 1u;

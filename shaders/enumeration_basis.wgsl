@@ -1,22 +1,20 @@
-// Shared part of the four enumeration kernels (shaders/enumeration.wgsl,
-// shaders/enumeration_gray.wgsl, shaders/enumeration_workgroup.wgsl,
-// shaders/enumeration_tree.wgsl): the scalar type and tolerances, the
-// island table, Params and BasisResult, bindings 0-6, the elimination
-// scratch, and the elimination itself (solve_basis, write_z, basis_cost). WGSL has no include, so the host (src/gpu/kernels.rs,
-// `enumeration_source`) prepends this file to each kernel's source before it
-// replaces the lines marked HOST in the combined text. One copy keeps the
-// kernels' eliminations operation for operation the same, which the GPU
-// tests check bit for bit against each other and against the CPU twins
-// (src/cpu/enumeration.rs, src/cpu/enumeration_gray.rs).
+// Shared part of the three enumeration kernels (shaders/enumeration.wgsl,
+// shaders/enumeration_workgroup.wgsl, shaders/enumeration_tree.wgsl): the
+// scalar type, the tolerances uniform, the island table, Params and
+// BasisResult, bindings 0-7, the elimination scratch, and the elimination
+// itself (solve_basis, write_z, basis_cost). WGSL has no include, so the
+// generator (src/gpu/shaders/compose.rs, run by the tests) prepends this
+// file to each kernel's source, replaces the lines marked HOST in the
+// combined text, and commits the result to shaders/generated/, which is
+// what runs. One copy keeps the kernels' eliminations operation for
+// operation the same, which the GPU tests check bit for bit against each
+// other and against the CPU twin (src/cpu/enumeration.rs).
 //
 // Each kernel defines what differs between them: any further bindings,
 // constants and scratch, and its entry point. Not valid on its own: compile
 // it only with a kernel.
 
 alias Scalar = f32; // HOST scalar
-const PIVOT_TOL: Scalar = 1e-6; // HOST pivot_tol
-const FEASIBILITY_TOL: Scalar = 1e-4; // HOST feasibility_tol
-const RELAXED_TOL: Scalar = 1e-3; // HOST relaxed_tol
 
 const MAX_N: u32 = 16u;
 
@@ -31,9 +29,8 @@ struct Island {
 
 // One dispatch covers islands first .. first + count of the island table
 // (one dispatch per island size n, split to stay under 65,535 workgroups);
-// `budget`: loop work per invocation and round; `flags`: the Gray-code
-// kernel's refactorisation period (bits 0..15) and drift switch (bit 16),
-// 0 for the others.
+// `budget`: loop work per invocation and round; `flags`: the tree kernel's
+// semidefinite switch (bit 0), 0 for the others.
 struct Params {
     first: u32,
     count: u32,
@@ -44,12 +41,11 @@ struct Params {
 // Where the enumeration of one island stands. status 0: in progress, the
 // next basis to visit is `mask` (zero-initialised: start at the empty basis);
 // 1: `mask` is the chosen valid basis (z written); 2: no basis is valid or
-// within RELAXED_TOL; 3: none is valid, `mask` is the least infeasible basis
-// within RELAXED_TOL (z written). visited / singular count bases as the
+// within tol.relaxed; 3: none is valid, `mask` is the least infeasible basis
+// within tol.relaxed (z written). visited / singular count bases as the
 // CPU's Counters do. `least` (when `has_least` is 1) is the least infeasible
 // basis so far, its infeasibility in `least_infeasibility`. `_pad0` and
-// `_pad1` are each kernel's own (see its header): the Gray-code kernel's
-// best confirmed basis and whether it has one, the workgroup kernel's rank
+// `_pad1` are each kernel's own (see its header): the workgroup kernel's rank
 // of the next basis, the tree kernel's DECIDED / UNDECIDED; the elimination
 // kernel carries them through.
 struct BasisResult {
@@ -73,6 +69,23 @@ struct BasisResult {
 // Infeasibility of each island's least infeasible basis so far.
 @group(0) @binding(6) var<storage, read_write> least_infeasibility: array<Scalar>;
 
+// The tolerances, set at run time (src/gpu/pipelines.rs, `Tolerances`):
+// pivot, feasibility and relaxed are the elimination's (GpuSolveSettings'
+// gpu_tolerances); screen, tree_pivot and tree_singular the tree kernel's.
+// A uniform rather than constants, so that one committed shader serves
+// every setting (WGSL pipeline overrides cannot be f64).
+struct Tolerances {
+    pivot: Scalar,
+    feasibility: Scalar,
+    relaxed: Scalar,
+    screen: Scalar,
+    tree_pivot: Scalar,
+    tree_singular: Scalar,
+    _pad0: Scalar,
+    _pad1: Scalar,
+}
+@group(0) @binding(7) var<uniform> tol: Tolerances;
+
 // Private scratch of one invocation: the principal system and its solution.
 var<private> a: array<Scalar, 256>;
 var<private> x: array<Scalar, 16>;
@@ -84,7 +97,7 @@ const SINGULAR: Scalar = -1.0;
 
 // Solves basis `mask` of the island whose M starts at `base`; z_S in x[0..k].
 // Returns SINGULAR, or the basis' relative infeasibility (0: feasible; the
-// measure stops growing once it exceeds RELAXED_TOL, as on the CPU).
+// measure stops growing once it exceeds tol.relaxed, as on the CPU).
 fn solve_basis(base: u32, n: u32, mask: u32) -> Scalar {
     var k = 0u;
     for (var i = 0u; i < n; i++) {
@@ -119,7 +132,7 @@ fn solve_basis(base: u32, n: u32, mask: u32) -> Scalar {
                 p = r;
             }
         }
-        if !(best > PIVOT_TOL * colmax[c]) || best == Scalar(0.0) {
+        if !(best > tol.pivot * colmax[c]) || best == Scalar(0.0) {
             return SINGULAR;
         }
         if p != c {
@@ -162,7 +175,7 @@ fn solve_basis(base: u32, n: u32, mask: u32) -> Scalar {
             worst = max(worst, -x[r] / zmax);
         }
     }
-    if worst > RELAXED_TOL {
+    if worst > tol.relaxed {
         return worst;
     }
     // Infeasibility of w off S.
@@ -180,7 +193,7 @@ fn solve_basis(base: u32, n: u32, mask: u32) -> Scalar {
         }
         if w < Scalar(0.0) {
             worst = max(worst, -w / scale);
-            if worst > RELAXED_TOL {
+            if worst > tol.relaxed {
                 return worst;
             }
         }

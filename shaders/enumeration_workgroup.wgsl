@@ -2,7 +2,7 @@
 // Same choice as shaders/enumeration.wgsl and its CPU twin
 // (src/cpu/enumeration.rs): bases by increasing popcount k, each popcount by
 // increasing mask, the first valid one chosen; when none is valid, the least
-// infeasible within RELAXED_TOL (the first on a tie). solve_basis is
+// infeasible within tol.relaxed (the first on a tie). solve_basis is
 // enumeration.wgsl's (one copy, in shaders/enumeration_basis.wgsl), so in
 // f64 the answers (basis, z, and the visited / singular counters) are the
 // sequential kernel's.
@@ -30,10 +30,10 @@
 // (one workgroup per island, not per 64 islands).
 //
 // Shared with the other enumeration kernels: shaders/enumeration_basis.wgsl
-// (scalar type, tolerances, MAX_N, Island, bindings 0-6, the elimination
+// (scalar type, tolerances, MAX_N, Island, bindings 0-7, the elimination
 // scratch a / x / colmax / idx, SINGULAR, solve_basis, write_z,
-// basis_cost), which the host prepends to this file before templating;
-// the host replaces the lines marked HOST there (scalar type, tolerances).
+// basis_cost), which the generator prepends to this file;
+// the generator replaces the lines marked HOST there (scalar type).
 
 const WG: u32 = 64u;
 
@@ -50,7 +50,7 @@ var<workgroup> wg_least_inf: Scalar;
 var<workgroup> wg_go: u32;
 // Smallest lane with a valid basis in the wave (WG: none), by wave parity.
 var<workgroup> wg_valid: array<atomic<u32>, 2>;
-// 1 when some lane of the wave has a basis within RELAXED_TOL, by parity.
+// 1 when some lane of the wave has a basis within tol.relaxed, by parity.
 var<workgroup> wg_relaxed: array<atomic<u32>, 2>;
 // Each lane's infeasibility in the wave (SINGULAR: not a relaxed candidate).
 var<workgroup> wg_inf: array<Scalar, 64>;
@@ -140,9 +140,9 @@ fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) 
             var mine = SINGULAR;
             if inf == SINGULAR {
                 singular = true;
-            } else if inf <= FEASIBILITY_TOL {
+            } else if inf <= tol.feasibility {
                 atomicMin(&wg_valid[parity], lid);
-            } else if inf <= RELAXED_TOL {
+            } else if inf <= tol.relaxed {
                 mine = inf;
                 atomicStore(&wg_relaxed[parity], 1u);
             }

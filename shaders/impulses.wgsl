@@ -6,7 +6,8 @@
 // Contact c with impulse z_c changes body a by z_c * response[0..6] and body
 // b by z_c * response[6..12] (response = M^-1 J^T from assembly).
 //
-// The host replaces the line marked HOST (scalar type).
+// The generator (src/gpu/shaders/compose.rs) replaces the line marked HOST
+// (scalar type) and writes shaders/generated/<name>_f32.wgsl and _f64.wgsl.
 
 alias Scalar = f32; // HOST scalar
 

@@ -63,7 +63,7 @@ pub struct TreeSettings {
     /// Tolerances of the confirming elimination.
     pub enumeration: EnumerationSettings,
     /// Screen tolerance on t, relative (default 1e-6, the Gray-code screen's;
-    /// f32 kernels use [`crate::gpu::kernels::F32_SCREEN_TOL`]).
+    /// f32 kernels use `F32_SCREEN_TOL` in src/gpu/pipelines.rs).
     pub screen_tol: f64,
     /// A pivot T_dd at most this times M_dd leaves the island undecided
     /// (default 1e-8: in f64 a leaf's t then keeps about 8 digits, far more

@@ -1,25 +1,29 @@
-//! Batches of LCPs on the GPU: the enumeration stage for islands of any mix
-//! of sizes, then validation of every answer on the CPU in f64.
+//! Batches of LCPs on the GPU: prediction on the CPU, the enumeration stage
+//! for islands of any mix of sizes, then validation of every answer on the
+//! CPU in f64.
 //!
 //! Scheduling: islands are sorted by n and dispatched one size at a time, so
 //! that a workgroup never waits on a larger island than its own. A batch is
 //! split into chunks whose buffers stay under the device's storage-binding
-//! and buffer limits, and each dispatch into ranges of at most 65,535
-//! workgroups; the caller sees one result per island, in its order.
+//! and buffer limits ([`super::buffers`]), and each dispatch into ranges of
+//! at most 65,535 workgroups ([`super::dispatch`]); the caller sees one
+//! result per island, in its order.
 
 use std::time::Instant;
 
-use super::kernels::Pipelines;
-use super::layout::{
-    scalars_from_bytes, scalars_to_bytes, BasisResult, PackedIsland, TREE_DECIDED, TREE_UNDECIDED,
+use super::buffers::{limits_for, pack_chunks};
+use super::enumeration::EnumerationJob;
+pub use super::kernel::{
+    EnumerationKernel, KernelPlan, TreeRoute, AUTO_TREE, HARDWARE_ROUND_BUDGET,
+    SOFTWARE_ROUND_BUDGET, UNROLLED_UP_TO_N, WORKGROUP_FROM_N,
 };
+use super::layout::{BasisResult, PackedIsland};
+use super::pipelines::{Pipelines, Tolerances};
 use super::{GpuContext, Precision, MAX_GPU_N};
 use crate::cpu::enumeration::EnumerationSettings;
 use crate::cpu::enumeration_tree::TREE_MAX_N;
 use crate::lcp::{Counters, Lcp, LcpSolution, Residuals, Status};
-use crate::prediction::{
-    is_positive_definite, is_positive_semidefinite, prediction, SolvePath, Unsettled,
-};
+use crate::prediction::{prediction, SolvePath, Unsettled};
 use crate::solvers::lemke::{lemke, LemkeSettings};
 use crate::solvers::Solver;
 use crate::validation::{validate_island, BatchReport, GpuVerdict, Verdict};
@@ -64,112 +68,10 @@ pub struct GpuSolveSettings {
     pub predict: bool,
     /// Which enumeration shader runs (default [`EnumerationKernel::Auto`]).
     pub kernel: EnumerationKernel,
-    /// Gray-code kernel: rebuild the tableau every this many pivots (None:
-    /// [`DEFAULT_REFACTOR_PERIOD`]; 1…65,535).
-    pub refactor_period: Option<u32>,
-    /// Gray-code kernel: measure the tableau's drift at every scheduled
-    /// rebuild ([`EnumerationOutput::drift`]); for the period study.
-    pub measure_drift: bool,
     /// Largest island the tree kernel takes (default [`TREE_MAX_N`]; values
     /// above it act as it; 0 turns the tree off).
     pub tree_max_n: usize,
 }
-
-/// The enumeration shader.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum EnumerationKernel {
-    /// Per island size, whichever measured faster ([`EnumerationKernel::for_n`]):
-    /// Unrolled up to [`UNROLLED_UP_TO_N`], Workgroup from
-    /// [`WORKGROUP_FROM_N`], Elimination between.
-    #[default]
-    Auto,
-    /// `shaders/enumeration.wgsl`: bases by size, one elimination each, stop
-    /// at the first valid one.
-    Elimination,
-    /// `shaders/enumeration_gray.wgsl`: every basis in Gray-code order, one
-    /// principal pivot each, candidates confirmed by elimination.
-    Gray,
-    /// `shaders/enumeration.wgsl` specialised per island size (constant
-    /// loop bounds and private-array indices) for n ≤
-    /// [`super::kernels::FIXED_MAX_N`]; the elimination kernel above.
-    /// Same answers as Elimination, bit for bit.
-    Unrolled,
-    /// `shaders/enumeration_tree.wgsl` first, on every island of n ≤
-    /// [`GpuSolveSettings::tree_max_n`]: all bases screened by principal pivots down the tree
-    /// of bases, the screened ones confirmed by elimination; the islands it
-    /// leaves undecided, and the larger ones, go to Auto's kernel. Auto
-    /// sends only positive definite islands to it ([`AUTO_TREE`]).
-    Tree,
-    /// `shaders/enumeration_workgroup.wgsl`: one workgroup per island, its
-    /// 64 invocations solving the bases of one popcount in waves of 64
-    /// consecutive masks, stopping at the first wave with a valid basis
-    /// (the elimination kernel's order and choice: in f64 the same basis,
-    /// z and counters). Parallelism inside an island, for few large ones.
-    Workgroup,
-}
-
-/// Gray-code refactorisation period of the GPU kernel (see BENCHMARKS.md).
-pub const DEFAULT_REFACTOR_PERIOD: u32 = 32;
-
-impl EnumerationKernel {
-    /// The kernel that runs islands of n contacts.
-    /// For [`EnumerationKernel::Tree`]: the kernel after the tree (the tree
-    /// itself is chosen per island, [`KernelPlan::tree_for`]).
-    pub fn for_n(self, n: usize) -> EnumerationKernel {
-        match self {
-            EnumerationKernel::Auto | EnumerationKernel::Tree => {
-                if GRAY_FROM_N.is_some_and(|g| n >= g) {
-                    EnumerationKernel::Gray
-                } else if WORKGROUP_FROM_N.is_some_and(|w| n >= w) {
-                    EnumerationKernel::Workgroup
-                } else if n <= UNROLLED_UP_TO_N {
-                    EnumerationKernel::Unrolled
-                } else {
-                    EnumerationKernel::Elimination
-                }
-            }
-            EnumerationKernel::Unrolled if n > super::kernels::FIXED_MAX_N => {
-                EnumerationKernel::Elimination
-            }
-            k => k,
-        }
-    }
-
-    pub fn name(self) -> &'static str {
-        match self {
-            EnumerationKernel::Auto => "auto",
-            EnumerationKernel::Elimination => "elimination",
-            EnumerationKernel::Gray => "gray",
-            EnumerationKernel::Unrolled => "unrolled",
-            EnumerationKernel::Tree => "tree",
-            EnumerationKernel::Workgroup => "workgroup",
-        }
-    }
-}
-
-/// Auto: the Gray-code kernel from this island size on. None (never): on lavapipe
-/// it measured 0.27–0.8× the elimination kernel's islands/s at every n from
-/// 1 to 12 (BENCHMARKS.md).
-pub const GRAY_FROM_N: Option<usize> = None;
-/// Auto: the specialised straight-line elimination kernel up to this island
-/// size (on lavapipe 1.14–1.97× the looped kernel's islands/s at n = 1…7,
-/// 1.07–1.15× at n = 8: not clearly faster there; BENCHMARKS.md).
-pub const UNROLLED_UP_TO_N: usize = 7;
-/// Auto: the workgroup kernel (one workgroup per island) from this island
-/// size on. On lavapipe (2 cores, 128 islands of one size per batch) it
-/// measured 0.70–0.75× the per-island elimination kernel's islands/s at
-/// n = 8, 0.94× (f64) and 1.39× (f32) at n = 9, and was faster in every
-/// run from n = 10 on: 1.02–1.10× at 10, 1.2–1.7× at 11…16 (BENCHMARKS.md).
-/// Its 64 lanes solve bases of one size side by side, where the per-island
-/// kernel's lanes diverge (each island stops at a different basis).
-pub const WORKGROUP_FROM_N: Option<usize> = Some(10);
-/// Auto: positive definite and semidefinite islands of n ≤
-/// [`GpuSolveSettings::tree_max_n`] go to the tree kernel first (on lavapipe
-/// 2–25× the islands/s of Auto's other kernels at n = 6…12 on definite
-/// islands, 17–33× end to end on resting stacks; BENCHMARKS.md). Its first dispatch per size
-/// compiles for 1.5 s (n = 6) to 9 s (n = 12) on lavapipe without Mesa's
-/// shader cache, once per process.
-pub const AUTO_TREE: bool = true;
 
 impl Default for GpuSolveSettings {
     fn default() -> Self {
@@ -184,8 +86,6 @@ impl Default for GpuSolveSettings {
             round_budget: None,
             predict: true,
             kernel: EnumerationKernel::Auto,
-            refactor_period: None,
-            measure_drift: false,
             tree_max_n: TREE_MAX_N,
         }
     }
@@ -278,10 +178,6 @@ pub struct EnumerationOutput {
     pub result: BasisResult,
     /// z of the chosen basis in the shader's precision (zeros when none).
     pub z: Vec<f64>,
-    /// Gray-code kernel with `measure_drift`: the largest difference between
-    /// the pivoted and the rebuilt tableau's t at a scheduled rebuild,
-    /// relative to the screen's scale of each entry; else 0.
-    pub drift: f64,
 }
 
 /// What one GPU run did (for the report and the benches).
@@ -296,347 +192,6 @@ pub struct RunStats {
     /// Islands the tree kernel decided, and those it left to elimination.
     pub tree_decided: usize,
     pub tree_undecided: usize,
-}
-
-/// Largest bytes per binding and workgroups per dispatch for this batch.
-pub(crate) fn limits_for(ctx: &GpuContext, settings: &GpuSolveSettings) -> (u64, u32) {
-    let l = ctx.limits();
-    let bind = l.max_storage_buffer_binding_size.min(l.max_buffer_size);
-    let bind = settings.max_binding_bytes.map_or(bind, |b| b.min(bind));
-    let groups = l.max_compute_workgroups_per_dimension;
-    let groups = settings.max_workgroups.map_or(groups, |g| g.min(groups));
-    (bind.max(1024), groups.max(1))
-}
-
-/// Loop work per invocation and round on software adapters: llvmpipe ends
-/// every loop of an invocation after about 65,535 iterations in all.
-pub const SOFTWARE_ROUND_BUDGET: u32 = 48_000;
-/// Loop work per invocation and round on hardware (bounds one dispatch's time).
-pub const HARDWARE_ROUND_BUDGET: u32 = 1 << 22;
-
-/// The Gray-code kernel's loop work per round for a round budget: its cost
-/// model undercounts what llvmpipe counts (measured on lavapipe: at 48,000
-/// units some n = 12 islands lost bases at period 32, at 20,000 none did at
-/// periods 1 and 32), so it gets 5/12 of the budget.
-pub fn gray_budget(budget: u32) -> u32 {
-    (budget as u64 * 5 / 12).max(1) as u32
-}
-
-/// Which enumeration shader runs per size, and its per-round parameters.
-#[derive(Clone, Copy, Debug)]
-pub struct KernelPlan {
-    /// Loop work per invocation and round.
-    pub budget: u32,
-    pub kernel: EnumerationKernel,
-    /// Gray-code refactorisation period.
-    pub period: u32,
-    pub measure: bool,
-    /// Largest island for the tree kernel (≤ [`TREE_MAX_N`]).
-    pub tree_max_n: usize,
-}
-
-impl KernelPlan {
-    pub(crate) fn new(ctx: &GpuContext, settings: &GpuSolveSettings) -> Self {
-        KernelPlan {
-            budget: round_budget(ctx, settings),
-            kernel: settings.kernel,
-            period: settings.refactor_period.unwrap_or(DEFAULT_REFACTOR_PERIOD),
-            measure: settings.measure_drift,
-            tree_max_n: settings.tree_max_n.min(TREE_MAX_N),
-        }
-    }
-
-    /// Does this island go to the tree kernel first, and how? Only when n ≤
-    /// `tree_max_n`. Positive definite M (every pivot of the tree exists):
-    /// [`TreeRoute::Definite`]; symmetric positive semidefinite M (resting
-    /// contacts): [`TreeRoute::Semidefinite`]; both tested on the CPU in
-    /// O(n³). Auto ([`AUTO_TREE`]) routes only these;
-    /// [`EnumerationKernel::Tree`] sends the others too, as Definite.
-    /// `definite`: whether M is positive definite, when the caller knows
-    /// (prediction tests it; else it is tested here).
-    pub fn tree_for(&self, lcp: &Lcp, definite: Option<bool>) -> TreeRoute {
-        if lcp.n() > self.tree_max_n
-            || !matches!(
-                self.kernel,
-                EnumerationKernel::Tree | EnumerationKernel::Auto
-            )
-            || (self.kernel == EnumerationKernel::Auto && !AUTO_TREE)
-        {
-            return TreeRoute::Off;
-        }
-        if definite.unwrap_or_else(|| is_positive_definite(lcp)) {
-            TreeRoute::Definite
-        } else if is_positive_semidefinite(lcp) {
-            TreeRoute::Semidefinite
-        } else if self.kernel == EnumerationKernel::Tree {
-            TreeRoute::Definite
-        } else {
-            TreeRoute::Off
-        }
-    }
-}
-
-/// How an island goes through the tree kernel (`shaders/enumeration_tree.wgsl`).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub enum TreeRoute {
-    /// Not at all: Auto's kernel for its size.
-    #[default]
-    Off,
-    /// A pivot at most the tree pivot tolerance leaves the island undecided.
-    Definite,
-    /// M is symmetric positive semidefinite: a pivot singular to working
-    /// precision cuts its subtree (no basis below it is nonsingular).
-    Semidefinite,
-}
-
-/// What the enumeration stage gave for a table of islands.
-pub(crate) struct EnumerationRun {
-    pub results: Vec<BasisResult>,
-    /// z of every island at its table offset, in the shader's precision.
-    pub z: Vec<f64>,
-    /// Per island (table order), the Gray kernel's measured drift (empty
-    /// unless measured).
-    pub drift: Vec<f64>,
-    pub dispatches: usize,
-    pub rounds: usize,
-    /// Islands the tree kernel decided, and those it left to elimination.
-    pub tree_decided: usize,
-    pub tree_undecided: usize,
-}
-
-/// Runs the enumeration stage over `table` (sorted by n, then by `tree`; M
-/// and q in `values`), in rounds until every island is done. `tree[i]`
-/// (empty: none): entry i runs the tree kernel in the first round, and the
-/// size's kernel after it only if left undecided. `encoder` may hold
-/// earlier work (assembly); it is submitted with the first round.
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn run_enumeration(
-    ctx: &GpuContext,
-    pipelines: &Pipelines,
-    islands: &wgpu::Buffer,
-    values: &wgpu::Buffer,
-    table: &[PackedIsland],
-    tree: &[TreeRoute],
-    max_groups: u32,
-    plan: &KernelPlan,
-    mut encoder: wgpu::CommandEncoder,
-    read_back: bool,
-) -> Result<EnumerationRun, Error> {
-    let route = |i: usize| tree.get(i).copied().unwrap_or_default();
-    let in_tree = |i: usize| route(i) != TreeRoute::Off;
-    let precision = ctx.precision();
-    let sb = precision.bytes();
-    if table.is_empty() {
-        // Nothing to enumerate (prediction settled every island): run what
-        // the encoder holds (assembly) and wait.
-        ctx.submit_and_read(encoder, &[])?;
-        return Ok(EnumerationRun {
-            results: Vec::new(),
-            z: Vec::new(),
-            drift: Vec::new(),
-            dispatches: 0,
-            rounds: 0,
-            tree_decided: 0,
-            tree_undecided: 0,
-        });
-    }
-    // results: where each island's enumeration stands (zeroed: not started).
-    let results_size = (table.len() * std::mem::size_of::<BasisResult>()) as u64;
-    let results = ctx.storage_zeroed("results", results_size);
-    // z: each island's z of the chosen basis (zeroed: 0 off the basis).
-    let z_len = table.iter().map(|r| (r.z + r.n) as u64).max().unwrap_or(0);
-    let z_size = z_len * sb;
-    let z = ctx.storage_zeroed("z", z_size);
-    // unfinished: islands per size n still in progress after a round.
-    let unfinished = ctx.storage_zeroed("unfinished", 17 * 4);
-    // least: infeasibility of each island's least infeasible basis so far.
-    let least = ctx.storage_zeroed("least_infeasibility", table.len() as u64 * sb);
-    // drift: the Gray kernel's measured tableau drift per island.
-    let drift_size = table.len() as u64 * sb;
-    let drift = ctx.storage_zeroed("drift", drift_size);
-    let stage_of = |n: u32| match plan.kernel.for_n(n as usize) {
-        EnumerationKernel::Gray => &pipelines.enumeration_gray,
-        EnumerationKernel::Unrolled => pipelines.fixed(ctx, n as usize),
-        EnumerationKernel::Workgroup => &pipelines.enumeration_workgroup,
-        _ => &pipelines.enumeration,
-    };
-    let bind = |params: &wgpu::Buffer, stage: &super::kernels::Stage, gray: bool| {
-        let mut entries = vec![
-            wgpu::BindGroupEntry {
-                binding: 0,
-                resource: params.as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 1,
-                resource: islands.as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 2,
-                resource: values.as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 3,
-                resource: results.as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 4,
-                resource: z.as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 5,
-                resource: unfinished.as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 6,
-                resource: least.as_entire_binding(),
-            },
-        ];
-        if gray {
-            entries.push(wgpu::BindGroupEntry {
-                binding: 7,
-                resource: drift.as_entire_binding(),
-            });
-        }
-        ctx.device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("enumeration"),
-            layout: &stage.layout,
-            entries: &entries,
-        })
-    };
-    // One bucket per island size: a workgroup never waits on a larger island.
-    // (One dispatch over all sizes per round was tried: 12x fewer dispatches
-    // but 35% slower at 10k islands on lavapipe, whose threads then got the
-    // small and the large islands in unequal halves.)
-    let flags = plan.period.clamp(1, 0xffff) | (plan.measure as u32) << 16;
-    // Per bucket: n, the tree kernel's ranges (tree buckets) and the size
-    // kernel's ranges.
-    type Ranges = Vec<(wgpu::BindGroup, u32)>;
-    let mut buckets: Vec<(u32, Option<Ranges>, Ranges)> = Vec::new();
-    let mut first = 0usize;
-    while first < table.len() {
-        let n = table[first].n;
-        let t = route(first);
-        let mut last = first;
-        while last < table.len() && table[last].n == n && route(last) == t {
-            last += 1;
-        }
-        // params.flags bit 0: semidefinite (singular pivots cut subtrees).
-        let tree_ranges = (t != TreeRoute::Off).then(|| {
-            ctx.ranges_per_group(
-                first as u32,
-                (last - first) as u32,
-                super::kernels::WORKGROUP,
-                max_groups,
-                plan.budget,
-                (t == TreeRoute::Semidefinite) as u32,
-                &|p| bind(p, pipelines.tree(ctx, n as usize), false),
-            )
-        });
-        let kernel = plan.kernel.for_n(n as usize);
-        let gray = kernel == EnumerationKernel::Gray;
-        let per_group = if kernel == EnumerationKernel::Workgroup {
-            1
-        } else {
-            super::kernels::WORKGROUP
-        };
-        let r = ctx.ranges_per_group(
-            first as u32,
-            (last - first) as u32,
-            per_group,
-            max_groups,
-            if gray {
-                gray_budget(plan.budget)
-            } else {
-                plan.budget
-            },
-            if gray { flags } else { 0 },
-            &|p| bind(p, stage_of(n), gray),
-        );
-        buckets.push((n, tree_ranges, r));
-        first = last;
-    }
-    let mut active: Vec<usize> = (0..buckets.len()).collect();
-    let (mut rounds, mut dispatches, mut per_submit) = (0usize, 0usize, 1usize);
-    while !active.is_empty() {
-        for r in 0..per_submit {
-            if r + 1 == per_submit {
-                // Count only what the last round of this submission leaves.
-                encoder.clear_buffer(&unfinished, 0, None);
-            }
-            for &b in &active {
-                let (n, tree_ranges, ranges) = &buckets[b];
-                match tree_ranges {
-                    Some(t) if rounds + r == 0 => {
-                        ctx.record(&mut encoder, pipelines.tree(ctx, *n as usize), t);
-                        dispatches += t.len();
-                    }
-                    _ => {
-                        ctx.record(&mut encoder, stage_of(*n), ranges);
-                        dispatches += ranges.len();
-                    }
-                }
-            }
-        }
-        rounds += per_submit;
-        let counts = ctx.submit_and_read(encoder, &[(&unfinished, 17 * 4)])?;
-        let counts: &[u32] = bytemuck::try_cast_slice(&counts[0])
-            .map_err(|e| Error::Gpu(format!("unfinished counts: {e}")))?;
-        active.retain(|&b| counts.get(buckets[b].0 as usize).copied().unwrap_or(0) > 0);
-        // Every round visits at least one basis of every unfinished island.
-        if rounds > (1 << MAX_GPU_N) + 1 {
-            return Err(Error::Gpu(
-                "enumeration made no progress (rounds exceed 2^16)".into(),
-            ));
-        }
-        encoder = ctx
-            .device
-            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                label: Some("enumeration readback"),
-            });
-        per_submit = (per_submit * 2).min(256);
-    }
-    if !read_back {
-        return Ok(EnumerationRun {
-            results: Vec::new(),
-            z: Vec::new(),
-            drift: Vec::new(),
-            dispatches,
-            rounds,
-            tree_decided: 0,
-            tree_undecided: 0,
-        });
-    }
-    let mut reads = vec![(&results, results_size), (&z, z_size)];
-    if plan.measure {
-        reads.push((&drift, drift_size));
-    }
-    let mut read = ctx.submit_and_read(encoder, &reads)?;
-    let drift = if plan.measure {
-        scalars_from_bytes(&read.pop().unwrap_or_default(), precision)
-    } else {
-        Vec::new()
-    };
-    let z_bytes = read.pop().unwrap_or_default();
-    let r_bytes = read.pop().unwrap_or_default();
-    let results: Vec<BasisResult> = bytemuck::try_cast_slice(&r_bytes)
-        .map_err(|e| Error::Gpu(format!("results: {e}")))?
-        .to_vec();
-    let tree_count = |v: u32| {
-        results
-            .iter()
-            .enumerate()
-            .filter(|&(i, r)| in_tree(i) && r._pad1 == v)
-            .count()
-    };
-    Ok(EnumerationRun {
-        tree_decided: tree_count(TREE_DECIDED),
-        tree_undecided: tree_count(TREE_UNDECIDED),
-        results,
-        z: scalars_from_bytes(&z_bytes, precision),
-        drift,
-        dispatches,
-        rounds,
-    })
 }
 
 /// Runs the enumeration stage alone on every problem (each must be valid
@@ -662,7 +217,8 @@ fn enumerate_known(
     let mut stats = RunStats::default();
     check_gpu_sizes(lcps)?;
     let precision = ctx.precision();
-    let pipelines = ctx.pipelines(settings.gpu_tolerances(precision))?;
+    let pipelines = ctx.pipelines()?;
+    let tolerances = Tolerances::new(precision, settings).upload(ctx);
     let (max_bytes, max_groups) = limits_for(ctx, settings);
     let plan = KernelPlan::new(ctx, settings);
 
@@ -670,7 +226,6 @@ fn enumerate_known(
         EnumerationOutput {
             result: BasisResult::default(),
             z: Vec::new(),
-            drift: 0.0,
         };
         lcps.len()
     ];
@@ -680,37 +235,25 @@ fn enumerate_known(
         .map(|(i, l)| plan.tree_for(l, definite.get(i).copied().flatten()))
         .collect();
     for chunk in pack_chunks(lcps, &tree, max_bytes, precision.bytes()) {
-        let run = ctx.scoped("enumeration", || -> Result<EnumerationRun, Error> {
-            let (islands_buf, values_buf) = chunk.upload(ctx, precision);
-            let encoder = ctx
-                .device
-                .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                    label: Some("enumeration"),
-                });
-            run_enumeration(
+        let run = ctx.scoped("enumeration", || {
+            let (islands, values) = chunk.upload(ctx, precision);
+            let job = EnumerationJob {
                 ctx,
-                &pipelines,
-                &islands_buf,
-                &values_buf,
-                &chunk.table,
-                &chunk.tree,
+                pipelines: &pipelines,
+                islands: &islands,
+                values: &values,
+                tolerances: &tolerances,
+                table: &chunk.table,
+                tree: &chunk.tree,
                 max_groups,
-                &plan,
-                encoder,
-                true,
-            )
+                plan: &plan,
+            };
+            job.run(ctx.encoder("enumeration"), true)
         })??;
-        for (t, ((&i, rec), res)) in chunk
-            .order
-            .iter()
-            .zip(&chunk.table)
-            .zip(&run.results)
-            .enumerate()
-        {
+        for ((&i, rec), res) in chunk.order.iter().zip(&chunk.table).zip(&run.results) {
             let (z0, n) = (rec.z as usize, rec.n as usize);
             out[i] = EnumerationOutput {
                 result: *res,
-                drift: run.drift.get(t).copied().unwrap_or(0.0),
                 z: run
                     .z
                     .get(z0..z0 + n)
@@ -728,88 +271,13 @@ fn enumerate_known(
     Ok((out, stats))
 }
 
-/// A chunk of an LCP batch, packed for the enumeration stage.
-struct PackedChunk {
-    /// The caller's indices of the chunk's islands, sorted by n, then by
-    /// `tree`.
-    order: Vec<usize>,
-    table: Vec<PackedIsland>,
-    /// Per table entry: how it goes through the tree kernel.
-    tree: Vec<TreeRoute>,
-    /// M (row-major) then q of every island, in f64.
-    data: Vec<f64>,
-}
-
-impl PackedChunk {
-    /// (islands, values) storage buffers.
-    fn upload(&self, ctx: &GpuContext, precision: Precision) -> (wgpu::Buffer, wgpu::Buffer) {
-        // islands: the chunk's island table, sorted by n.
-        let islands = ctx.storage("islands", bytemuck::cast_slice(&self.table));
-        // values: every island's M (row-major) and q, in the shader's precision.
-        let values = ctx.storage("values", &scalars_to_bytes(&self.data, precision));
-        (islands, values)
-    }
-}
-
-/// Sorts the islands by n (one dispatch per size: no island waits on a
-/// larger one), then by `tree` (the tree kernel's islands together), and
-/// packs them into chunks whose buffers stay under `max_bytes`.
-fn pack_chunks(lcps: &[&Lcp], tree: &[TreeRoute], max_bytes: u64, sb: u64) -> Vec<PackedChunk> {
-    let route = |i: usize| tree.get(i).copied().unwrap_or_default();
-    let mut order: Vec<usize> = (0..lcps.len()).collect();
-    order.sort_by_key(|&i| (lcps[i].n(), route(i)));
-    let mut chunks = Vec::new();
-    let mut at = 0;
-    while at < order.len() {
-        let mut end = at;
-        let (mut values, mut zs) = (0u64, 0u64);
-        while end < order.len() {
-            let n = lcps[order[end]].n() as u64;
-            let nv = values + n * n + n;
-            let nz = zs + n;
-            let count = (end - at + 1) as u64;
-            let too_big = nv * sb > max_bytes
-                || nz * sb > max_bytes
-                || count * std::mem::size_of::<BasisResult>() as u64 > max_bytes;
-            if too_big && end > at {
-                break;
-            }
-            values = nv;
-            zs = nz;
-            end += 1;
-        }
-        let mut table = Vec::with_capacity(end - at);
-        let mut data = Vec::with_capacity(values as usize);
-        let mut zoff = 0u32;
-        for &i in &order[at..end] {
-            let l = lcps[i];
-            table.push(PackedIsland {
-                n: l.n() as u32,
-                data: data.len() as u32,
-                z: zoff,
-                contacts: 0,
-            });
-            data.extend_from_slice(&l.m);
-            data.extend_from_slice(&l.q);
-            zoff += l.n() as u32;
-        }
-        chunks.push(PackedChunk {
-            order: order[at..end].to_vec(),
-            tree: order[at..end].iter().map(|&i| route(i)).collect(),
-            table,
-            data,
-        });
-        at = end;
-    }
-    chunks
-}
-
 /// A batch uploaded once, for timing the enumeration dispatches alone (the
 /// benches): [`UploadedBatch::dispatch`] runs every round of every chunk and
 /// waits, with neither upload nor readback of results.
 pub struct UploadedBatch<'a> {
     ctx: &'a GpuContext,
     pipelines: std::sync::Arc<Pipelines>,
+    tolerances: wgpu::Buffer,
     /// Per chunk: table, tree flags, islands and values buffers.
     chunks: Vec<(
         Vec<PackedIsland>,
@@ -830,22 +298,24 @@ impl<'a> UploadedBatch<'a> {
     ) -> Result<Self, Error> {
         check_gpu_sizes(lcps)?;
         let precision = ctx.precision();
-        let pipelines = ctx.pipelines(settings.gpu_tolerances(precision))?;
+        let pipelines = ctx.pipelines()?;
         let (max_bytes, max_groups) = limits_for(ctx, settings);
         let plan = KernelPlan::new(ctx, settings);
         let tree: Vec<TreeRoute> = lcps.iter().map(|l| plan.tree_for(l, None)).collect();
-        let chunks = ctx.scoped("upload", || {
-            pack_chunks(lcps, &tree, max_bytes, precision.bytes())
+        let (tolerances, chunks) = ctx.scoped("upload", || {
+            let chunks = pack_chunks(lcps, &tree, max_bytes, precision.bytes())
                 .into_iter()
                 .map(|c| {
                     let (i, v) = c.upload(ctx, precision);
                     (c.table, c.tree, i, v)
                 })
-                .collect()
+                .collect();
+            (Tolerances::new(precision, settings).upload(ctx), chunks)
         })?;
         Ok(UploadedBatch {
             ctx,
             pipelines,
+            tolerances,
             chunks,
             max_groups,
             plan,
@@ -857,24 +327,18 @@ impl<'a> UploadedBatch<'a> {
         let mut rounds = 0;
         for (table, tree, islands, values) in &self.chunks {
             let run = self.ctx.scoped("enumeration", || {
-                let encoder =
-                    self.ctx
-                        .device
-                        .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                            label: Some("enumeration"),
-                        });
-                run_enumeration(
-                    self.ctx,
-                    &self.pipelines,
+                let job = EnumerationJob {
+                    ctx: self.ctx,
+                    pipelines: &self.pipelines,
                     islands,
                     values,
+                    tolerances: &self.tolerances,
                     table,
                     tree,
-                    self.max_groups,
-                    &self.plan,
-                    encoder,
-                    false,
-                )
+                    max_groups: self.max_groups,
+                    plan: &self.plan,
+                };
+                job.run(self.ctx.encoder("enumeration"), false)
             })??;
             rounds += run.rounds;
         }
@@ -894,16 +358,6 @@ fn check_gpu_sizes(lcps: &[&Lcp]) -> Result<(), Error> {
     Ok(())
 }
 
-/// Loop work per invocation and round for this adapter and these settings.
-pub(crate) fn round_budget(ctx: &GpuContext, settings: &GpuSolveSettings) -> u32 {
-    let default = if ctx.adapter_info().software {
-        SOFTWARE_ROUND_BUDGET
-    } else {
-        HARDWARE_ROUND_BUDGET
-    };
-    settings.round_budget.unwrap_or(default).max(1)
-}
-
 /// A result for a problem that failed its checks.
 fn invalid_solution(lcp: &Lcp) -> LcpSolution {
     let n = lcp.q.len();
@@ -917,6 +371,38 @@ fn invalid_solution(lcp: &Lcp) -> LcpSolution {
         all_bases: Vec::new(),
         solution_set: None,
     }
+}
+
+/// Problem i settled on the CPU: invalid, n > [`MAX_GPU_N`] (Lemke), or
+/// by prediction (with `settings.predict`); else what prediction learnt.
+fn settle_on_cpu(
+    i: usize,
+    lcp: &Lcp,
+    warm: Option<u32>,
+    settings: &GpuSolveSettings,
+) -> Result<IslandOutcome, Unsettled> {
+    let outcome = |solution, solved_on, path, solver| IslandOutcome {
+        solution,
+        solved_on,
+        path,
+        solver,
+        gpu: None,
+        gpu_z: Vec::new(),
+    };
+    if lcp.validate(&format!("problem {i}")).is_err() {
+        let s = invalid_solution(lcp);
+        return Ok(outcome(s, SolvedOn::Invalid, None, Solver::Enum));
+    }
+    if lcp.n() > MAX_GPU_N {
+        let s = lemke(lcp, &settings.lemke);
+        let path = Some(SolvePath::Lemke);
+        return Ok(outcome(s, SolvedOn::CpuFallback, path, Solver::Lemke));
+    }
+    if !settings.predict {
+        return Err(Unsettled { definite: None });
+    }
+    let (path, s) = prediction(lcp, warm, &settings.enumeration)?;
+    Ok(outcome(s, SolvedOn::Predicted, Some(path), Solver::Enum))
 }
 
 /// Solves a batch of LCPs: islands with n ≤ 16 by enumeration on the GPU,
@@ -956,44 +442,11 @@ pub fn solve_lcp_batch_warm(
     let warm_of = |i: usize| warm.and_then(|w| w.get(i).copied().flatten());
     let t_predict = Instant::now();
     for (i, lcp) in lcps.iter().enumerate() {
-        if lcp.validate(&format!("problem {i}")).is_err() {
-            slots[i] = Some(IslandOutcome {
-                solution: invalid_solution(lcp),
-                solved_on: SolvedOn::Invalid,
-                path: None,
-                solver: Solver::Enum,
-                gpu: None,
-                gpu_z: Vec::new(),
-            });
-        } else if lcp.n() > MAX_GPU_N {
-            slots[i] = Some(IslandOutcome {
-                solution: lemke(lcp, &settings.lemke),
-                solved_on: SolvedOn::CpuFallback,
-                path: Some(SolvePath::Lemke),
-                solver: Solver::Lemke,
-                gpu: None,
-                gpu_z: Vec::new(),
-            });
-        } else {
-            let predicted = match settings.predict {
-                true => prediction(lcp, warm_of(i), &settings.enumeration),
-                false => Err(Unsettled { definite: None }),
-            };
-            match predicted {
-                Ok((path, solution)) => {
-                    slots[i] = Some(IslandOutcome {
-                        solution,
-                        solved_on: SolvedOn::Predicted,
-                        path: Some(path),
-                        solver: Solver::Enum,
-                        gpu: None,
-                        gpu_z: Vec::new(),
-                    })
-                }
-                Err(unsettled) => {
-                    on_gpu.push(i);
-                    definite.push(unsettled.definite);
-                }
+        match settle_on_cpu(i, lcp, warm_of(i), settings) {
+            Ok(outcome) => slots[i] = Some(outcome),
+            Err(unsettled) => {
+                on_gpu.push(i);
+                definite.push(unsettled.definite);
             }
         }
     }

@@ -15,7 +15,7 @@
 //! | body velocity ([`VELOCITY`]) | 8 | velocity 0..3, angular_velocity 4..7                                 |
 
 use bytemuck::{Pod, Zeroable};
-use glam::{DMat3, DVec3};
+use glam::DMat3;
 
 use crate::cpu::assembly::{assemble_contact, ContactRow};
 use crate::scene::{Body, Contact};
@@ -92,11 +92,9 @@ pub struct BasisResult {
     /// The least infeasible basis so far (when `has_least` is 1).
     pub least: u32,
     pub has_least: u32,
-    /// Gray-code kernel: the best confirmed basis so far and whether there is
-    /// one (it visits every basis; `mask` is then its next Gray index while
-    /// in progress). Zero in the elimination kernel. Tree kernel: `_pad1` is
-    /// [`TREE_DECIDED`] or [`TREE_UNDECIDED`] (then carried through the
-    /// elimination that follows).
+    /// Each kernel's own: the workgroup kernel's rank of the next basis
+    /// (`_pad0`); after the tree kernel `_pad1` is [`TREE_DECIDED`] or
+    /// [`TREE_UNDECIDED`] (then carried through the elimination that follows).
     pub _pad0: u32,
     pub _pad1: u32,
 }
@@ -124,9 +122,9 @@ pub struct Params {
     pub first: u32,
     pub count: u32,
     pub budget: u32,
-    /// Gray-code kernel: refactorisation period (bits 0..15) and "measure
-    /// the drift" (bit 16); unused by the other stages.
-    pub _pad: u32,
+    /// The tree kernel: bit 0 set for semidefinite islands; unused by the
+    /// other stages.
+    pub flags: u32,
 }
 
 /// WGSL `ContactBodies`: the two bodies of a contact (b = [`NO_BODY`] for the
@@ -318,9 +316,4 @@ pub fn scalars_from_bytes(bytes: &[u8], precision: Precision) -> Vec<f64> {
             .map(|c| f32::from_le_bytes(c.try_into().expect("4 bytes")) as f64)
             .collect(),
     }
-}
-
-/// A DVec3 from three packed scalars.
-pub fn vec3_at(v: &[f64], at: usize) -> DVec3 {
-    DVec3::new(v[at], v[at + 1], v[at + 2])
 }

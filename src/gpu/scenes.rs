@@ -11,15 +11,15 @@
 
 use std::time::Instant;
 
-use super::batch::{
-    limits_for, run_enumeration, solve_lcp_batch_warm, GpuSolveSettings, KernelPlan, SolvedOn,
-    TreeRoute,
-};
-use super::kernels::Pipelines;
+use super::batch::{solve_lcp_batch_warm, GpuSolveSettings, SolvedOn};
+use super::buffers::limits_for;
+use super::enumeration::EnumerationJob;
+use super::kernel::{KernelPlan, TreeRoute};
 use super::layout::{
     pack_body, pack_contact, scalars_from_bytes, scalars_to_bytes, unpack_row, BasisResult,
     BodyContacts, ContactBodies, ContactSide, PackedIsland, Slot, BODY, NO_BODY, ROW, VELOCITY,
 };
+use super::pipelines::{Pipelines, Tolerances};
 use super::{GpuContext, MAX_GPU_N};
 use crate::cpu::assembly::ContactRow;
 use crate::cpu::impulses::{apply_impulses, BodyVelocity};
@@ -189,27 +189,22 @@ struct StageOutput {
     tree: (usize, usize),
 }
 
-fn entry(binding: u32, b: &wgpu::Buffer) -> wgpu::BindGroupEntry<'_> {
-    wgpu::BindGroupEntry {
-        binding,
-        resource: b.as_entire_binding(),
-    }
-}
-
-/// Submission 1: assembly (contacts, islands) and enumeration.
+/// Submission 1: assembly (contacts, islands) and, given a plan and the
+/// tolerances uniform, enumeration.
+// About 90 lines: the buffers of one submission are created and bound in
+// one place, in binding order, so that they can be read against the shaders.
 fn assemble_and_enumerate(
     ctx: &GpuContext,
     p: &Pipelines,
     c: &Chunk,
     max_groups: u32,
-    enumerate: Option<&KernelPlan>,
+    enumerate: Option<(&KernelPlan, &wgpu::Buffer)>,
 ) -> Result<StageOutput, Error> {
     let precision = ctx.precision();
     let sb = precision.bytes();
     ctx.scoped(
         "assembly and enumeration",
         || -> Result<StageOutput, Error> {
-            let d = &ctx.device;
             // bodies: packed bodies of every scene in the chunk (20 scalars each).
             let bodies = ctx.storage("bodies", &scalars_to_bytes(&c.bodies, precision));
             // contact_bodies: each contact's bodies, as chunk-wide body indices.
@@ -227,56 +222,22 @@ fn assemble_and_enumerate(
             // values: every island's M and q as assembled here, read by enumeration.
             let values_size = c.values_len as u64 * sb;
             let values = ctx.storage_zeroed("values", values_size);
-            let mut encoder = d.create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                label: Some("assembly and enumeration"),
-            });
-            let mut dispatches = 0;
+            let mut encoder = ctx.encoder("assembly and enumeration");
+            let n_contacts = c.ids.len() as u32;
+            let contact_buffers = [&bodies, &ids, &contacts, &rows];
             let st = &p.assemble_contacts;
-            ctx.dispatch_ranges(
-                &mut encoder,
-                st,
-                0,
-                c.ids.len() as u32,
-                max_groups,
-                &|params| {
-                    d.create_bind_group(&wgpu::BindGroupDescriptor {
-                        label: Some("assemble_contacts"),
-                        layout: &st.layout,
-                        entries: &[
-                            entry(0, params),
-                            entry(1, &bodies),
-                            entry(2, &ids),
-                            entry(3, &contacts),
-                            entry(4, &rows),
-                        ],
-                    })
-                },
-            );
-            dispatches += 1;
+            ctx.dispatch(&mut encoder, st, n_contacts, max_groups, &contact_buffers);
+            let island_buffers = [&ids, &rows, &islands, &slots, &values];
             let st = &p.assemble_islands;
-            ctx.dispatch_ranges(
+            ctx.dispatch(
                 &mut encoder,
                 st,
-                0,
                 c.slots.len() as u32,
                 max_groups,
-                &|params| {
-                    d.create_bind_group(&wgpu::BindGroupDescriptor {
-                        label: Some("assemble_islands"),
-                        layout: &st.layout,
-                        entries: &[
-                            entry(0, params),
-                            entry(2, &ids),
-                            entry(4, &rows),
-                            entry(5, &islands),
-                            entry(6, &slots),
-                            entry(7, &values),
-                        ],
-                    })
-                },
+                &island_buffers,
             );
-            dispatches += 1;
-            if let Some(plan) = enumerate {
+            let dispatches = 2;
+            if let Some((plan, tolerances)) = enumerate {
                 // Only the islands prediction left: a table of their own
                 // (offsets into the same values) when some were settled.
                 let enum_islands = if c.enum_table.len() == c.table.len() {
@@ -284,18 +245,18 @@ fn assemble_and_enumerate(
                 } else {
                     ctx.storage("enumeration islands", bytemuck::cast_slice(&c.enum_table))
                 };
-                let run = run_enumeration(
+                let job = EnumerationJob {
                     ctx,
-                    p,
-                    &enum_islands,
-                    &values,
-                    &c.enum_table,
-                    &c.enum_tree,
+                    pipelines: p,
+                    islands: &enum_islands,
+                    values: &values,
+                    tolerances,
+                    table: &c.enum_table,
+                    tree: &c.enum_tree,
                     max_groups,
                     plan,
-                    encoder,
-                    true,
-                )?;
+                };
+                let run = job.run(encoder, true)?;
                 return Ok(StageOutput {
                     results: run.results,
                     z: run.z,
@@ -364,7 +325,6 @@ fn apply_on_gpu(
         }
     }
     ctx.scoped("impulses", || -> Result<Vec<f64>, Error> {
-        let d = &ctx.device;
         // body_contacts: each body's range in contact_sides.
         let body_contacts = ctx.storage("body_contacts", bytemuck::cast_slice(&ranges));
         // contact_sides: (contact, side) pairs gathered per body.
@@ -374,25 +334,16 @@ fn apply_on_gpu(
         // velocities: the output, 8 scalars per body.
         let vel_size = (nb * VELOCITY) as u64 * precision.bytes();
         let velocities = ctx.storage_zeroed("velocities", vel_size);
-        let mut encoder = d.create_command_encoder(&wgpu::CommandEncoderDescriptor {
-            label: Some("impulses"),
-        });
-        let st = &p.impulses;
-        ctx.dispatch_ranges(&mut encoder, st, 0, nb as u32, max_groups, &|params| {
-            d.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some("impulses"),
-                layout: &st.layout,
-                entries: &[
-                    entry(0, params),
-                    entry(1, &resident.bodies),
-                    entry(2, &resident.rows),
-                    entry(3, &body_contacts),
-                    entry(4, &contact_sides),
-                    entry(5, &zb),
-                    entry(6, &velocities),
-                ],
-            })
-        });
+        let mut encoder = ctx.encoder("impulses");
+        let buffers = [
+            &resident.bodies,
+            &resident.rows,
+            &body_contacts,
+            &contact_sides,
+            &zb,
+            &velocities,
+        ];
+        ctx.dispatch(&mut encoder, &p.impulses, nb as u32, max_groups, &buffers);
         let got = ctx.submit_and_read(encoder, &[(&velocities, vel_size)])?;
         Ok(scalars_from_bytes(&got[0], precision))
     })?
@@ -439,7 +390,7 @@ pub fn assemble_on_gpu(
     settings: &GpuSolveSettings,
 ) -> Result<GpuAssembly, Error> {
     let prepared = prepare(scenes)?;
-    let pipelines = ctx.pipelines(settings.gpu_tolerances(ctx.precision()))?;
+    let pipelines = ctx.pipelines()?;
     let (max_bytes, max_groups) = limits_for(ctx, settings);
     let (chunks, alone) = plan(scenes, &prepared, max_bytes, ctx.precision().bytes());
     if !alone.is_empty() {
@@ -522,59 +473,121 @@ pub fn solve_scenes_warm(
         ));
     }
     let prepared = prepare(scenes)?;
-    let pipelines = ctx.pipelines(settings.gpu_tolerances(ctx.precision()))?;
     let (max_bytes, max_groups) = limits_for(ctx, settings);
-    let kernel_plan = KernelPlan::new(ctx, settings);
     let (chunks, alone) = plan(scenes, &prepared, max_bytes, ctx.precision().bytes());
-    let mut report = BatchReport::new(ctx.adapter_info().name.clone(), ctx.precision());
-    let mut max_velocity_deviation = 0.0f64;
-    // Per scene, per island: the solution, its solver and where it came from.
-    let mut solved: Vec<Vec<Option<(LcpSolution, Solver, SolvedOn, SolvePath)>>> = prepared
-        .iter()
-        .map(|p| vec![None; p.islands.len()])
-        .collect();
-    let mut gpu_velocities: Vec<Option<Vec<f64>>> = vec![None; scenes.len()];
-    // Prediction, on the f64 assembly, for every island the GPU would enumerate.
-    let t_predict = Instant::now();
-    // Per scene, per island: the settled solution, or whether M is positive
-    // definite where prediction found out (for the tree kernel's route).
-    let (mut predicted, definite): (Vec<Vec<_>>, Vec<Vec<_>>) = prepared
-        .iter()
-        .enumerate()
-        .map(|(s, p)| {
-            p.lcps
-                .iter()
-                .enumerate()
-                .map(|(k, lcp)| {
-                    if !settings.predict || lcp.n() > MAX_GPU_N || alone.contains(&s) {
-                        return (None, None);
-                    }
-                    let w = warm
-                        .and_then(|w| w.get(s))
-                        .and_then(|v| v.get(k).copied().flatten());
-                    match prediction(lcp, w, &settings.enumeration) {
-                        Ok(settled) => (Some(settled), None),
-                        Err(unsettled) => (None, unsettled.definite),
-                    }
-                })
-                .unzip()
-        })
-        .unzip();
-    report.prediction_seconds += t_predict.elapsed().as_secs_f64();
-
+    let mut run = SceneRun {
+        ctx,
+        scenes,
+        settings,
+        pipelines: ctx.pipelines()?,
+        tolerances: ctx.scoped("tolerances", || {
+            Tolerances::new(ctx.precision(), settings).upload(ctx)
+        })?,
+        max_groups,
+        kernel_plan: KernelPlan::new(ctx, settings),
+        report: BatchReport::new(ctx.adapter_info().name.clone(), ctx.precision()),
+        solved: prepared
+            .iter()
+            .map(|p| vec![None; p.islands.len()])
+            .collect(),
+        gpu_velocities: vec![None; scenes.len()],
+        predicted: Vec::new(),
+        definite: Vec::new(),
+        prepared,
+    };
+    run.predict(warm, &alone);
     for members in chunks {
+        run.chunk(&members)?;
+    }
+    // Scenes too large for one buffer: their islands as an LCP batch.
+    for &s in &alone {
+        let w = warm.and_then(|w| w.get(s)).map(Vec::as_slice);
+        let r = solve_lcp_batch_warm(ctx, &run.prepared[s].lcps, w, settings)?;
+        run.report.merge(&r.report);
+        for (k, o) in r.islands.into_iter().enumerate() {
+            let path = o.path.unwrap_or(SolvePath::Enumerated);
+            run.solved[s][k] = Some((o.solution, o.solver, o.solved_on, path));
+        }
+    }
+    run.finish()
+}
+
+/// Per scene, per island: the solution, its solver and where it came from.
+type Solved = Vec<Vec<Option<(LcpSolution, Solver, SolvedOn, SolvePath)>>>;
+
+/// What [`solve_scenes_warm`]'s steps share.
+struct SceneRun<'a> {
+    ctx: &'a GpuContext,
+    scenes: &'a [Scene],
+    settings: &'a GpuSolveSettings,
+    pipelines: std::sync::Arc<Pipelines>,
+    tolerances: wgpu::Buffer,
+    max_groups: u32,
+    kernel_plan: KernelPlan,
+    report: BatchReport,
+    prepared: Vec<Prepared>,
+    solved: Solved,
+    /// Per scene: the impulse stage's velocities (8 scalars per body).
+    gpu_velocities: Vec<Option<Vec<f64>>>,
+    /// Per scene, per island: the solution prediction settled, or whether
+    /// M is positive definite where prediction found out (for the tree
+    /// kernel's route).
+    predicted: Vec<Vec<Option<(SolvePath, LcpSolution)>>>,
+    definite: Vec<Vec<Option<bool>>>,
+}
+
+impl SceneRun<'_> {
+    /// Prediction, on the f64 assembly, for every island the GPU would enumerate.
+    fn predict(&mut self, warm: Option<&[Vec<Option<u32>>]>, alone: &[usize]) {
+        let t_predict = Instant::now();
+        let settings = self.settings;
+        (self.predicted, self.definite) = self
+            .prepared
+            .iter()
+            .enumerate()
+            .map(|(s, p)| {
+                p.lcps
+                    .iter()
+                    .enumerate()
+                    .map(|(k, lcp)| {
+                        if !settings.predict || lcp.n() > MAX_GPU_N || alone.contains(&s) {
+                            return (None, None);
+                        }
+                        let w = warm
+                            .and_then(|w| w.get(s))
+                            .and_then(|v| v.get(k).copied().flatten());
+                        match prediction(lcp, w, &settings.enumeration) {
+                            Ok(settled) => (Some(settled), None),
+                            Err(unsettled) => (None, unsettled.definite),
+                        }
+                    })
+                    .unzip()
+            })
+            .unzip();
+        self.report.prediction_seconds += t_predict.elapsed().as_secs_f64();
+    }
+
+    /// One chunk of scenes: assembly and enumeration on the GPU, validation
+    /// on the CPU, impulses on the GPU.
+    fn chunk(&mut self, members: &[usize]) -> Result<(), Error> {
         let t0 = Instant::now();
+        let (prepared, predicted, definite) = (&self.prepared, &self.predicted, &self.definite);
         let c = pack_chunk(
-            scenes,
-            &prepared,
-            &members,
+            self.scenes,
+            prepared,
+            members,
             &|s, k| predicted[s][k].is_some(),
             &|s, k| match predicted[s][k] {
                 Some(_) => TreeRoute::Off,
-                None => kernel_plan.tree_for(&prepared[s].lcps[k], definite[s][k]),
+                None => self
+                    .kernel_plan
+                    .tree_for(&prepared[s].lcps[k], definite[s][k]),
             },
         );
-        let out = assemble_and_enumerate(ctx, &pipelines, &c, max_groups, Some(&kernel_plan))?;
+        let enumerate = Some((&self.kernel_plan, &self.tolerances));
+        let out =
+            assemble_and_enumerate(self.ctx, &self.pipelines, &c, self.max_groups, enumerate)?;
+        let report = &mut self.report;
         report.gpu_seconds += t0.elapsed().as_secs_f64();
         report.chunks += 1;
         report.dispatches += out.dispatches;
@@ -582,124 +595,142 @@ pub fn solve_scenes_warm(
         report.tree_decided += out.tree.0;
         report.tree_undecided += out.tree.1;
         let t1 = Instant::now();
-        for &(s, k) in &c.keys {
-            if let Some((path, sol)) = predicted[s][k].take() {
-                report.record_predicted(path, &sol);
-                solved[s][k] = Some((sol, Solver::Enum, SolvedOn::Predicted, path));
-            }
-        }
-        for ((rec, &(s, k)), res) in c.enum_table.iter().zip(&c.enum_keys).zip(&out.results) {
-            let (z0, n) = (rec.z as usize, rec.n as usize);
-            let verdict = GpuVerdict::of(res, out.z.get(z0..z0 + n).unwrap_or(&[]));
-            let checked = validate_island(
-                &prepared[s].lcps[k],
-                &verdict,
-                &settings.enumeration,
-                settings.exact_twin(ctx.precision()),
-            )?;
-            report.record_gpu(&checked);
-            let on = if checked.verdict == Verdict::Repaired {
-                SolvedOn::Repaired
-            } else {
-                SolvedOn::Gpu
-            };
-            solved[s][k] = Some((checked.solution, Solver::Enum, on, SolvePath::Enumerated));
-        }
-        for &s in &c.scenes {
-            for (k, isl) in prepared[s].islands.iter().enumerate() {
-                if isl.len() > MAX_GPU_N {
-                    let sol = lemke(&prepared[s].lcps[k], &settings.lemke);
-                    report.record_cpu_fallback(&sol);
-                    solved[s][k] =
-                        Some((sol, Solver::Lemke, SolvedOn::CpuFallback, SolvePath::Lemke));
-                }
-            }
-        }
-        report.validation_seconds += t1.elapsed().as_secs_f64();
+        self.settle(&c, &out)?;
+        self.report.validation_seconds += t1.elapsed().as_secs_f64();
         // Impulses of the chunk's contacts, validated, to the impulse stage.
         let t2 = Instant::now();
         let mut z = vec![0.0; c.ids.len()];
         for (pos, &s) in c.scenes.iter().enumerate() {
             let fc = c.first_contact[pos] as usize;
-            for (k, isl) in prepared[s].islands.iter().enumerate() {
-                if let Some((sol, _, _, _)) = &solved[s][k] {
+            for (k, isl) in self.prepared[s].islands.iter().enumerate() {
+                if let Some((sol, _, _, _)) = &self.solved[s][k] {
                     for (&ct, &zi) in isl.contacts.iter().zip(&sol.z) {
                         z[fc + ct] = zi;
                     }
                 }
             }
         }
-        let vel = apply_on_gpu(ctx, &pipelines, &c, &out.resident, &z, max_groups)?;
-        report.gpu_seconds += t2.elapsed().as_secs_f64();
+        let vel = apply_on_gpu(
+            self.ctx,
+            &self.pipelines,
+            &c,
+            &out.resident,
+            &z,
+            self.max_groups,
+        )?;
+        self.report.gpu_seconds += t2.elapsed().as_secs_f64();
         for (pos, &s) in c.scenes.iter().enumerate() {
             let fb = c.first_body[pos] as usize;
-            let nb = scenes[s].bodies.len();
-            gpu_velocities[s] = Some(vel[fb * VELOCITY..(fb + nb) * VELOCITY].to_vec());
+            let nb = self.scenes[s].bodies.len();
+            self.gpu_velocities[s] = Some(vel[fb * VELOCITY..(fb + nb) * VELOCITY].to_vec());
         }
+        Ok(())
     }
 
-    // Scenes too large for one buffer: their islands as an LCP batch.
-    for &s in &alone {
-        let w = warm.and_then(|w| w.get(s)).map(Vec::as_slice);
-        let r = solve_lcp_batch_warm(ctx, &prepared[s].lcps, w, settings)?;
-        report.merge(&r.report);
-        for (k, o) in r.islands.into_iter().enumerate() {
-            let path = o.path.unwrap_or(SolvePath::Enumerated);
-            solved[s][k] = Some((o.solution, o.solver, o.solved_on, path));
-        }
-    }
-
-    let mut out_scenes = Vec::with_capacity(scenes.len());
-    let mut solved_on = Vec::with_capacity(scenes.len());
-    let mut paths = Vec::with_capacity(scenes.len());
-    for (s, (scene, p)) in scenes.iter().zip(prepared).enumerate() {
-        let mut impulses = vec![0.0; scene.contacts.len()];
-        let mut results = Vec::with_capacity(p.islands.len());
-        let mut on = Vec::with_capacity(p.islands.len());
-        let mut path_of = Vec::with_capacity(p.islands.len());
-        for ((island, lcp), slot) in p.islands.into_iter().zip(p.lcps).zip(&mut solved[s]) {
-            let (solution, solver, where_, path) = slot
-                .take()
-                .ok_or_else(|| Error::Gpu(format!("scene {s}: an island got no result")))?;
-            for (&c, &zi) in island.contacts.iter().zip(&solution.z) {
-                impulses[c] = zi;
+    /// The chunk's islands: predicted, validated GPU answers, Lemke above
+    /// [`MAX_GPU_N`].
+    fn settle(&mut self, c: &Chunk, out: &StageOutput) -> Result<(), Error> {
+        let settings = self.settings;
+        for &(s, k) in &c.keys {
+            if let Some((path, sol)) = self.predicted[s][k].take() {
+                self.report.record_predicted(path, &sol);
+                self.solved[s][k] = Some((sol, Solver::Enum, SolvedOn::Predicted, path));
             }
-            on.push(where_);
-            path_of.push(path);
-            results.push(IslandResult {
-                contacts: island.contacts,
-                solver,
-                lcp,
-                solution,
-            });
         }
-        // The f64 twin's velocities are kept; the GPU's are checked against them.
-        let bodies: Vec<BodyVelocity> = apply_impulses(scene, &p.rows, &impulses);
-        if let Some(v) = &gpu_velocities[s] {
-            for (b, ref_v) in bodies.iter().enumerate() {
-                let g = &v[b * VELOCITY..(b + 1) * VELOCITY];
-                for i in 0..3 {
-                    let dv = (g[i] - ref_v.velocity[i]).abs() / (1.0 + ref_v.velocity[i].abs());
-                    let dw = (g[4 + i] - ref_v.angular_velocity[i]).abs()
-                        / (1.0 + ref_v.angular_velocity[i].abs());
-                    max_velocity_deviation = max_velocity_deviation.max(dv).max(dw);
+        for ((rec, &(s, k)), res) in c.enum_table.iter().zip(&c.enum_keys).zip(&out.results) {
+            let (z0, n) = (rec.z as usize, rec.n as usize);
+            let verdict = GpuVerdict::of(res, out.z.get(z0..z0 + n).unwrap_or(&[]));
+            let checked = validate_island(
+                &self.prepared[s].lcps[k],
+                &verdict,
+                &settings.enumeration,
+                settings.exact_twin(self.ctx.precision()),
+            )?;
+            self.report.record_gpu(&checked);
+            let on = if checked.verdict == Verdict::Repaired {
+                SolvedOn::Repaired
+            } else {
+                SolvedOn::Gpu
+            };
+            self.solved[s][k] = Some((checked.solution, Solver::Enum, on, SolvePath::Enumerated));
+        }
+        for &s in &c.scenes {
+            for (k, isl) in self.prepared[s].islands.iter().enumerate() {
+                if isl.len() > MAX_GPU_N {
+                    let sol = lemke(&self.prepared[s].lcps[k], &settings.lemke);
+                    self.report.record_cpu_fallback(&sol);
+                    self.solved[s][k] =
+                        Some((sol, Solver::Lemke, SolvedOn::CpuFallback, SolvePath::Lemke));
                 }
             }
         }
-        out_scenes.push(SceneSolution {
-            impulses,
-            bodies,
-            islands: results,
-            rows: p.rows,
-        });
-        solved_on.push(on);
-        paths.push(path_of);
+        Ok(())
     }
-    Ok(GpuSceneResult {
-        scenes: out_scenes,
-        solved_on,
-        paths,
-        report,
-        max_velocity_deviation,
-    })
+
+    /// Every scene's solution in the CPU path's shape; the f64 twin's
+    /// velocities are kept, the GPU's checked against them.
+    fn finish(self) -> Result<GpuSceneResult, Error> {
+        let mut solved = self.solved;
+        let mut max_velocity_deviation = 0.0f64;
+        let mut out_scenes = Vec::with_capacity(self.scenes.len());
+        let mut solved_on = Vec::with_capacity(self.scenes.len());
+        let mut paths = Vec::with_capacity(self.scenes.len());
+        for (s, (scene, p)) in self.scenes.iter().zip(self.prepared).enumerate() {
+            let mut impulses = vec![0.0; scene.contacts.len()];
+            let mut results = Vec::with_capacity(p.islands.len());
+            let mut on = Vec::with_capacity(p.islands.len());
+            let mut path_of = Vec::with_capacity(p.islands.len());
+            for ((island, lcp), slot) in p.islands.into_iter().zip(p.lcps).zip(&mut solved[s]) {
+                let (solution, solver, where_, path) = slot
+                    .take()
+                    .ok_or_else(|| Error::Gpu(format!("scene {s}: an island got no result")))?;
+                for (&c, &zi) in island.contacts.iter().zip(&solution.z) {
+                    impulses[c] = zi;
+                }
+                on.push(where_);
+                path_of.push(path);
+                results.push(IslandResult {
+                    contacts: island.contacts,
+                    solver,
+                    lcp,
+                    solution,
+                });
+            }
+            let bodies: Vec<BodyVelocity> = apply_impulses(scene, &p.rows, &impulses);
+            if let Some(v) = &self.gpu_velocities[s] {
+                let dev = velocity_deviation(&bodies, v);
+                max_velocity_deviation = max_velocity_deviation.max(dev);
+            }
+            out_scenes.push(SceneSolution {
+                impulses,
+                bodies,
+                islands: results,
+                rows: p.rows,
+            });
+            solved_on.push(on);
+            paths.push(path_of);
+        }
+        Ok(GpuSceneResult {
+            scenes: out_scenes,
+            solved_on,
+            paths,
+            report: self.report,
+            max_velocity_deviation,
+        })
+    }
+}
+
+/// Largest |GPU velocity − f64 velocity| / (1 + |f64 velocity|) over `bodies`.
+fn velocity_deviation(bodies: &[BodyVelocity], gpu: &[f64]) -> f64 {
+    let mut max = 0.0f64;
+    for (b, ref_v) in bodies.iter().enumerate() {
+        let g = &gpu[b * VELOCITY..(b + 1) * VELOCITY];
+        for i in 0..3 {
+            let dv = (g[i] - ref_v.velocity[i]).abs() / (1.0 + ref_v.velocity[i].abs());
+            let dw = (g[4 + i] - ref_v.angular_velocity[i]).abs()
+                / (1.0 + ref_v.angular_velocity[i].abs());
+            max = max.max(dv).max(dw);
+        }
+    }
+    max
 }

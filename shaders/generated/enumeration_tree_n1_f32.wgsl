@@ -1,0 +1,372 @@
+// GENERATED from shaders/enumeration_basis.wgsl + shaders/enumeration_tree.wgsl by src/gpu/shaders/compose.rs: do not edit.
+// Regenerate: LCPBATCH_BLESS_SHADERS=1 cargo test --release generated_shaders_are_committed
+
+// Shared part of the three enumeration kernels (shaders/enumeration.wgsl,
+// shaders/enumeration_workgroup.wgsl, shaders/enumeration_tree.wgsl): the
+// scalar type, the tolerances uniform, the island table, Params and
+// BasisResult, bindings 0-7, the elimination scratch, and the elimination
+// itself (solve_basis, write_z, basis_cost). WGSL has no include, so the
+// generator (src/gpu/shaders/compose.rs, run by the tests) prepends this
+// file to each kernel's source, replaces the lines marked HOST in the
+// combined text, and commits the result to shaders/generated/, which is
+// what runs. One copy keeps the kernels' eliminations operation for
+// operation the same, which the GPU tests check bit for bit against each
+// other and against the CPU twin (src/cpu/enumeration.rs).
+//
+// Each kernel defines what differs between them: any further bindings,
+// constants and scratch, and its entry point. Not valid on its own: compile
+// it only with a kernel.
+
+alias Scalar = f32; // HOST scalar
+
+const MAX_N: u32 = 16u;
+
+// One island: n contacts; M (n*n, row-major) then q (n) start at `data` in
+// `values`; z is written at `z` in `z_out`.
+struct Island {
+    n: u32,
+    data: u32,
+    z: u32,
+    _pad: u32,
+}
+
+// One dispatch covers islands first .. first + count of the island table
+// (one dispatch per island size n, split to stay under 65,535 workgroups);
+// `budget`: loop work per invocation and round; `flags`: the tree kernel's
+// semidefinite switch (bit 0), 0 for the others.
+struct Params {
+    first: u32,
+    count: u32,
+    budget: u32,
+    flags: u32,
+}
+
+// Where the enumeration of one island stands. status 0: in progress, the
+// next basis to visit is `mask` (zero-initialised: start at the empty basis);
+// 1: `mask` is the chosen valid basis (z written); 2: no basis is valid or
+// within tol.relaxed; 3: none is valid, `mask` is the least infeasible basis
+// within tol.relaxed (z written). visited / singular count bases as the
+// CPU's Counters do. `least` (when `has_least` is 1) is the least infeasible
+// basis so far, its infeasibility in `least_infeasibility`. `_pad0` and
+// `_pad1` are each kernel's own (see its header): the workgroup kernel's rank
+// of the next basis, the tree kernel's DECIDED / UNDECIDED; the elimination
+// kernel carries them through.
+struct BasisResult {
+    mask: u32,
+    status: u32,
+    visited: u32,
+    singular: u32,
+    least: u32,
+    has_least: u32,
+    _pad0: u32,
+    _pad1: u32,
+}
+
+@group(0) @binding(0) var<uniform> params: Params;
+@group(0) @binding(1) var<storage, read> islands: array<Island>;
+@group(0) @binding(2) var<storage, read> values: array<Scalar>;
+@group(0) @binding(3) var<storage, read_write> results: array<BasisResult>;
+@group(0) @binding(4) var<storage, read_write> z_out: array<Scalar>;
+// Islands of each size n still in progress after this round.
+@group(0) @binding(5) var<storage, read_write> unfinished: array<atomic<u32>, 17>;
+// Infeasibility of each island's least infeasible basis so far.
+@group(0) @binding(6) var<storage, read_write> least_infeasibility: array<Scalar>;
+
+// The tolerances, set at run time (src/gpu/pipelines.rs, `Tolerances`):
+// pivot, feasibility and relaxed are the elimination's (GpuSolveSettings'
+// gpu_tolerances); screen, tree_pivot and tree_singular the tree kernel's.
+// A uniform rather than constants, so that one committed shader serves
+// every setting (WGSL pipeline overrides cannot be f64).
+struct Tolerances {
+    pivot: Scalar,
+    feasibility: Scalar,
+    relaxed: Scalar,
+    screen: Scalar,
+    tree_pivot: Scalar,
+    tree_singular: Scalar,
+    _pad0: Scalar,
+    _pad1: Scalar,
+}
+@group(0) @binding(7) var<uniform> tol: Tolerances;
+
+// Private scratch of one invocation: the principal system and its solution.
+var<private> a: array<Scalar, 256>;
+var<private> x: array<Scalar, 16>;
+var<private> colmax: array<Scalar, 16>;
+var<private> idx: array<u32, 16>;
+
+// solve_basis' answer for a singular M_SS (infeasibilities are >= 0).
+const SINGULAR: Scalar = -1.0;
+
+// Solves basis `mask` of the island whose M starts at `base`; z_S in x[0..k].
+// Returns SINGULAR, or the basis' relative infeasibility (0: feasible; the
+// measure stops growing once it exceeds tol.relaxed, as on the CPU).
+fn solve_basis(base: u32, n: u32, mask: u32) -> Scalar {
+    var k = 0u;
+    for (var i = 0u; i < n; i++) {
+        if ((mask >> i) & 1u) == 1u {
+            idx[k] = i;
+            k++;
+        }
+    }
+    let qbase = base + n * n;
+    for (var r = 0u; r < k; r++) {
+        let row = base + idx[r] * n;
+        for (var c = 0u; c < k; c++) {
+            a[r * k + c] = values[row + idx[c]];
+        }
+        x[r] = -values[qbase + idx[r]];
+    }
+    // Column maxima of M_SS before elimination (the pivot scale).
+    for (var c = 0u; c < k; c++) {
+        var m = Scalar(0.0);
+        for (var r = 0u; r < k; r++) {
+            m = max(m, abs(a[r * k + c]));
+        }
+        colmax[c] = m;
+    }
+    for (var c = 0u; c < k; c++) {
+        var p = c;
+        var best = abs(a[c * k + c]);
+        for (var r = c + 1u; r < k; r++) {
+            let v = abs(a[r * k + c]);
+            if v > best {
+                best = v;
+                p = r;
+            }
+        }
+        if !(best > tol.pivot * colmax[c]) || best == Scalar(0.0) {
+            return SINGULAR;
+        }
+        if p != c {
+            for (var j = 0u; j < k; j++) {
+                let t = a[c * k + j];
+                a[c * k + j] = a[p * k + j];
+                a[p * k + j] = t;
+            }
+            let t = x[c];
+            x[c] = x[p];
+            x[p] = t;
+        }
+        let inv = Scalar(1.0) / a[c * k + c];
+        for (var r = c + 1u; r < k; r++) {
+            let f = a[r * k + c] * inv;
+            if f != Scalar(0.0) {
+                for (var j = c + 1u; j < k; j++) {
+                    a[r * k + j] -= f * a[c * k + j];
+                }
+                x[r] -= f * x[c];
+            }
+        }
+    }
+    for (var cc = 0u; cc < k; cc++) {
+        let c = k - 1u - cc;
+        var s = x[c];
+        for (var j = c + 1u; j < k; j++) {
+            s -= a[c * k + j] * x[j];
+        }
+        x[c] = s / a[c * k + c];
+    }
+    // Infeasibility of z_S.
+    var zmax = Scalar(0.0);
+    for (var r = 0u; r < k; r++) {
+        zmax = max(zmax, abs(x[r]));
+    }
+    var worst = Scalar(0.0);
+    for (var r = 0u; r < k; r++) {
+        if x[r] < Scalar(0.0) {
+            worst = max(worst, -x[r] / zmax);
+        }
+    }
+    if worst > tol.relaxed {
+        return worst;
+    }
+    // Infeasibility of w off S.
+    for (var i = 0u; i < n; i++) {
+        if ((mask >> i) & 1u) == 1u {
+            continue;
+        }
+        let row = base + i * n;
+        var w = values[qbase + i];
+        var scale = abs(w);
+        for (var r = 0u; r < k; r++) {
+            let t = values[row + idx[r]] * x[r];
+            w += t;
+            scale += abs(t);
+        }
+        if w < Scalar(0.0) {
+            worst = max(worst, -w / scale);
+            if worst > tol.relaxed {
+                return worst;
+            }
+        }
+    }
+    return worst;
+}
+
+// Writes z of the basis whose z_S is in x (clamped at 0 like the CPU's
+// solve_basis), zeros off the basis.
+fn write_z(at: u32, n: u32, k: u32) {
+    for (var i = 0u; i < n; i++) {
+        z_out[at + i] = Scalar(0.0);
+    }
+    for (var r = 0u; r < k; r++) {
+        z_out[at + idx[r]] = max(x[r], Scalar(0.0));
+    }
+}
+
+// Upper bound of the loop iterations `solve_basis` spends on a basis with k
+// basic variables out of n, plus one for the caller's loop.
+fn basis_cost(n: u32, k: u32) -> u32 {
+    return 9u + 4u * n + 8u * k + 5u * k * k + (k * k * k) / 3u + n * k;
+}
+
+// Enumeration down the tree of bases, for islands of exactly FN contacts
+// whose M is positive definite or, with params.flags bit 0, symmetric
+// positive semidefinite (resting contacts; a singular pivot then cuts its
+// subtree, whose bases are all singular): one invocation per island screens all 2^FN
+// bases by principal pivots taken depth first, then confirms the screened
+// ones by elimination in enumeration's order. CPU twin:
+// src/cpu/enumeration_tree.rs (same pivots in the same order, same screen,
+// same confirmation); the module docs there derive it.
+//
+// The screen pass, `tree_pass`, is generated by the host for each FN
+// (src/gpu/shaders/tree.rs, `tree_pass_source`): straight-line code in which
+// every tableau entry is a named value and every index a constant (above
+// FN = 8, a loop over the bases of the first FN - 8 indices runs the
+// straight-line tree of the last 8 under each). That matters on llvmpipe,
+// which runs both sides of every branch under a lane mask and turns
+// run-time indices into private arrays into memory traffic: here there are
+// neither, and the 2^FN - 1 pivots touch only the columns still to be
+// pivoted. The function below is its placeholder (no basis passes), so that
+// this file is valid on its own.
+//
+// Output, in the BasisResult: status 1 with the basis, its z, visited =
+// 2^FN, the singular count among the confirmed bases and _pad1 = DECIDED;
+// or, when a pivot (outside a cut subtree) was at most tol.tree_pivot * M_dd
+// (and, if semidefinite, above tol.tree_singular * M_dd) or no screened basis
+// among the first MAX_CONFIRMATIONS is feasible, a record left at the start
+// of an elimination (status 0, mask 0) with _pad1 = UNDECIDED, counted in
+// `unfinished`: the host's next round runs the elimination kernel of the
+// same size on the island (its kernels carry _pad1 through).
+//
+// Shared with the other enumeration kernels: shaders/enumeration_basis.wgsl
+// (prepended by the generator: Scalar, the tolerances uniform `tol`,
+// Island, bindings 0-7, solve_basis, write_z). The generator
+// (src/gpu/shaders/compose.rs) replaces the lines marked HOST and writes
+// one file per precision and FN to shaders/generated/.
+//
+// tol.tree_pivot: a pivot at most this times M_dd leaves the island
+// undecided; tol.tree_singular (semidefinite islands, params.flags bit 0):
+// a pivot at most this times M_dd is singular and cuts its subtree
+// (src/cpu/enumeration_tree.rs); tol.screen: the screen's tolerance.
+const MAX_CONFIRMATIONS: u32 = 8u; // HOST max_confirmations
+const FN: u32 = 1u; // HOST fixed_n
+// Words of the candidate bitmap: ceil(2^FN / 32).
+const WORDS: u32 = 1u; // HOST words
+
+// Params and BasisResult: shaders/enumeration_basis.wgsl.
+
+// BasisResult._pad1: what the tree did with the island.
+const DECIDED: u32 = 1u;
+const UNDECIDED: u32 = 2u;
+
+// Bit `mask` of the candidate bitmap: basis `mask` passed the screen.
+// Written by tree_pass.
+var<private> cand: array<u32, WORDS>;
+
+// Placeholder of the generated screen pass: fills `cand`, returns false
+// when a pivot was too small (`semi`: M is symmetric positive
+// semidefinite, singular pivots cut their subtree instead).
+fn tree_pass(base: u32, semi: bool) -> bool {
+let m0_0 = values[base + 0u];
+let rm0 = max(Scalar(0.0), abs(m0_0));
+let q0 = values[base + 1u];
+let qa0 = abs(q0);
+var ok = true;
+var c0 = 0u;
+let pre = 0u;
+{
+let zm = Scalar(0.0);
+let zs = Scalar(0.0);
+c0 = c0 | select(0u, 1u << (pre | 0u), true & (q0 >= -tol.screen * (qa0 + rm0 * zs)));
+}
+{
+let dead0 = semi & !(m0_0 > tol.tree_singular * m0_0);
+ok = ok & !(true & !dead0 & !(m0_0 > tol.tree_pivot * m0_0));
+let l0 = true & !dead0;
+let i0 = Scalar(1.0) / m0_0;
+let n0 = -i0;
+let t0_0 = -q0 * i0;
+{
+let zm = max(Scalar(0.0), abs(t0_0));
+let zs = (Scalar(0.0) + abs(t0_0));
+c0 = c0 | select(0u, 1u << (pre | 1u), l0 & (t0_0 >= -tol.screen * zm));
+}
+}
+cand[0] = c0;
+return ok;
+}
+
+@compute @workgroup_size(64)
+fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
+    if gid.x >= params.count {
+        return;
+    }
+    let island_index = params.first + gid.x;
+    var state = results[island_index];
+    if state.status != 0u {
+        return;
+    }
+    let island = islands[island_index];
+    var ok = island.n == FN;
+    if ok {
+        ok = tree_pass(island.data, (params.flags & 1u) == 1u);
+    }
+    var singular = 0u;
+    var chosen = 0u;
+    var found = false;
+    if ok {
+        // The screened bases in enumeration's order (popcount, then mask),
+        // until one is feasible.
+        for (var c = 0u; c < MAX_CONFIRMATIONS; c++) {
+            var best_key = 0xffffffffu;
+            for (var w = 0u; w < WORDS; w++) {
+                var bits = cand[w];
+                loop {
+                    if bits == 0u {
+                        break;
+                    }
+                    let m = w * 32u + countTrailingZeros(bits);
+                    bits &= bits - 1u;
+                    best_key = min(best_key, (countOneBits(m) << 16u) | m);
+                }
+            }
+            if best_key == 0xffffffffu {
+                break;
+            }
+            let mask = best_key & 0xffffu;
+            cand[mask / 32u] &= ~(1u << (mask % 32u));
+            let inf = solve_basis(island.data, FN, mask);
+            if inf == SINGULAR {
+                singular++;
+            } else if inf <= tol.feasibility {
+                write_z(island.z, FN, countOneBits(mask));
+                chosen = mask;
+                found = true;
+                break;
+            }
+        }
+    }
+    if found {
+        state.mask = chosen;
+        state.status = 1u;
+        state.visited = 1u << FN;
+        state.singular = singular;
+        state._pad1 = DECIDED;
+    } else {
+        state._pad1 = UNDECIDED;
+        atomicAdd(&unfinished[island.n], 1u);
+    }
+    results[island_index] = state;
+}

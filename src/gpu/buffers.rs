@@ -1,0 +1,187 @@
+//! Device buffers: storage buffers, readback, and the splitting of a batch
+//! into chunks whose buffers stay under the device's limits.
+
+use wgpu::util::DeviceExt;
+
+use super::batch::GpuSolveSettings;
+use super::kernel::TreeRoute;
+use super::layout::{scalars_to_bytes, BasisResult, PackedIsland};
+use super::{GpuContext, Precision};
+use crate::lcp::Lcp;
+use crate::Error;
+
+impl GpuContext {
+    /// A storage buffer holding `bytes` (at least 16 bytes: empty bindings
+    /// are invalid), readable by the shaders and copyable to a readback buffer.
+    pub(crate) fn storage(&self, label: &str, bytes: &[u8]) -> wgpu::Buffer {
+        let usage = wgpu::BufferUsages::STORAGE
+            | wgpu::BufferUsages::COPY_SRC
+            | wgpu::BufferUsages::COPY_DST;
+        if bytes.len() < 16 {
+            let mut padded = bytes.to_vec();
+            padded.resize(16, 0);
+            return self
+                .device
+                .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                    label: Some(label),
+                    contents: &padded,
+                    usage,
+                });
+        }
+        self.device
+            .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some(label),
+                contents: bytes,
+                usage,
+            })
+    }
+
+    /// An uninitialised storage buffer of `size` bytes (rounded up to 16).
+    pub(crate) fn storage_zeroed(&self, label: &str, size: u64) -> wgpu::Buffer {
+        self.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some(label),
+            size: size.max(16).next_multiple_of(4),
+            usage: wgpu::BufferUsages::STORAGE
+                | wgpu::BufferUsages::COPY_SRC
+                | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        })
+    }
+
+    /// Copies each (buffer, bytes) to a mappable buffer, submits `encoder`,
+    /// waits, and returns the bytes.
+    pub(crate) fn submit_and_read(
+        &self,
+        mut encoder: wgpu::CommandEncoder,
+        reads: &[(&wgpu::Buffer, u64)],
+    ) -> Result<Vec<Vec<u8>>, Error> {
+        let staging: Vec<(wgpu::Buffer, u64)> = reads
+            .iter()
+            .map(|&(src, size)| {
+                let size4 = size.max(4).next_multiple_of(4);
+                // Readback: MAP_READ buffers cannot be storage, so copy here.
+                let dst = self.device.create_buffer(&wgpu::BufferDescriptor {
+                    label: Some("readback"),
+                    size: size4,
+                    usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+                    mapped_at_creation: false,
+                });
+                encoder.copy_buffer_to_buffer(src, 0, &dst, 0, size4);
+                (dst, size)
+            })
+            .collect();
+        self.queue.submit([encoder.finish()]);
+        for (dst, _) in &staging {
+            dst.slice(..).map_async(wgpu::MapMode::Read, |_| {});
+        }
+        self.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| Error::Gpu(format!("waiting for the GPU: {e}")))?;
+        let mut out = Vec::with_capacity(staging.len());
+        for (dst, size) in &staging {
+            let view = dst
+                .slice(..)
+                .get_mapped_range()
+                .map_err(|e| Error::Gpu(format!("reading back: {e}")))?;
+            out.push(view[..*size as usize].to_vec());
+            drop(view);
+            dst.unmap();
+        }
+        Ok(out)
+    }
+}
+
+/// Largest bytes per binding and workgroups per dispatch for this batch.
+pub(crate) fn limits_for(ctx: &GpuContext, settings: &GpuSolveSettings) -> (u64, u32) {
+    let l = ctx.limits();
+    let bind = l.max_storage_buffer_binding_size.min(l.max_buffer_size);
+    let bind = settings.max_binding_bytes.map_or(bind, |b| b.min(bind));
+    let groups = l.max_compute_workgroups_per_dimension;
+    let groups = settings.max_workgroups.map_or(groups, |g| g.min(groups));
+    (bind.max(1024), groups.max(1))
+}
+
+/// A chunk of an LCP batch, packed for the enumeration stage.
+pub(crate) struct PackedChunk {
+    /// The caller's indices of the chunk's islands, sorted by n, then by
+    /// `tree`.
+    pub(crate) order: Vec<usize>,
+    pub(crate) table: Vec<PackedIsland>,
+    /// Per table entry: how it goes through the tree kernel.
+    pub(crate) tree: Vec<TreeRoute>,
+    /// M (row-major) then q of every island, in f64.
+    data: Vec<f64>,
+}
+
+impl PackedChunk {
+    /// (islands, values) storage buffers.
+    pub(crate) fn upload(
+        &self,
+        ctx: &GpuContext,
+        precision: Precision,
+    ) -> (wgpu::Buffer, wgpu::Buffer) {
+        // islands: the chunk's island table, sorted by n.
+        let islands = ctx.storage("islands", bytemuck::cast_slice(&self.table));
+        // values: every island's M (row-major) and q, in the shader's precision.
+        let values = ctx.storage("values", &scalars_to_bytes(&self.data, precision));
+        (islands, values)
+    }
+}
+
+/// Sorts the islands by n (one dispatch per size: no island waits on a
+/// larger one), then by `tree` (the tree kernel's islands together), and
+/// packs them into chunks whose buffers stay under `max_bytes`.
+pub(crate) fn pack_chunks(
+    lcps: &[&Lcp],
+    tree: &[TreeRoute],
+    max_bytes: u64,
+    sb: u64,
+) -> Vec<PackedChunk> {
+    let route = |i: usize| tree.get(i).copied().unwrap_or_default();
+    let mut order: Vec<usize> = (0..lcps.len()).collect();
+    order.sort_by_key(|&i| (lcps[i].n(), route(i)));
+    let mut chunks = Vec::new();
+    let mut at = 0;
+    while at < order.len() {
+        let mut end = at;
+        let (mut values, mut zs) = (0u64, 0u64);
+        while end < order.len() {
+            let n = lcps[order[end]].n() as u64;
+            let nv = values + n * n + n;
+            let nz = zs + n;
+            let count = (end - at + 1) as u64;
+            let too_big = nv * sb > max_bytes
+                || nz * sb > max_bytes
+                || count * std::mem::size_of::<BasisResult>() as u64 > max_bytes;
+            if too_big && end > at {
+                break;
+            }
+            values = nv;
+            zs = nz;
+            end += 1;
+        }
+        let mut table = Vec::with_capacity(end - at);
+        let mut data = Vec::with_capacity(values as usize);
+        let mut zoff = 0u32;
+        for &i in &order[at..end] {
+            let l = lcps[i];
+            table.push(PackedIsland {
+                n: l.n() as u32,
+                data: data.len() as u32,
+                z: zoff,
+                contacts: 0,
+            });
+            data.extend_from_slice(&l.m);
+            data.extend_from_slice(&l.q);
+            zoff += l.n() as u32;
+        }
+        chunks.push(PackedChunk {
+            order: order[at..end].to_vec(),
+            tree: order[at..end].iter().map(|&i| route(i)).collect(),
+            table,
+            data,
+        });
+        at = end;
+    }
+    chunks
+}

@@ -1,0 +1,296 @@
+//! Bind group layouts (declared once, here), compute pipelines built from
+//! the committed shaders ([`super::shaders`]), their cache in the
+//! [`GpuContext`], and the enumeration kernels' run-time tolerances.
+
+use std::sync::{Arc, OnceLock};
+
+use wgpu::util::DeviceExt;
+
+use super::batch::GpuSolveSettings;
+use super::layout::scalars_to_bytes;
+use super::shaders::{Shader, FIXED_MAX_N};
+use super::{GpuContext, Precision};
+use crate::cpu::enumeration_tree::{TreeSettings, TREE_MAX_N};
+use crate::Error;
+
+/// How a shader sees one binding.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Access {
+    Uniform,
+    Read,
+    ReadWrite,
+}
+use Access::{Read, ReadWrite, Uniform};
+
+/// The bindings of one entry point (group 0): (binding, access), in the
+/// order [`Stage::bind`] takes its buffers.
+pub(crate) type Bindings = &'static [(u32, Access)];
+
+/// Every enumeration kernel (shaders/enumeration_basis.wgsl): params,
+/// islands, values, results, z, unfinished, least_infeasibility, tolerances.
+pub(crate) const ENUMERATION_BINDINGS: Bindings = &[
+    (0, Uniform),
+    (1, Read),
+    (2, Read),
+    (3, ReadWrite),
+    (4, ReadWrite),
+    (5, ReadWrite),
+    (6, ReadWrite),
+    (7, Uniform),
+];
+/// `assemble_contacts` (shaders/assembly.wgsl): params, bodies,
+/// contact_bodies, contacts, rows.
+pub(crate) const ASSEMBLE_CONTACTS_BINDINGS: Bindings = &[
+    (0, Uniform),
+    (1, Read),
+    (2, Read),
+    (3, Read),
+    (4, ReadWrite),
+];
+/// `assemble_islands` (shaders/assembly.wgsl): params, contact_bodies, rows,
+/// islands, slots, values.
+pub(crate) const ASSEMBLE_ISLANDS_BINDINGS: Bindings = &[
+    (0, Uniform),
+    (2, Read),
+    (4, ReadWrite),
+    (5, Read),
+    (6, Read),
+    (7, ReadWrite),
+];
+/// shaders/impulses.wgsl: params, bodies, rows, body_contacts,
+/// contact_sides, z, velocities.
+pub(crate) const IMPULSES_BINDINGS: Bindings = &[
+    (0, Uniform),
+    (1, Read),
+    (2, Read),
+    (3, Read),
+    (4, Read),
+    (5, Read),
+    (6, ReadWrite),
+];
+
+/// Workgroup size of every entry point (`@workgroup_size(64)`).
+pub const WORKGROUP: u32 = 64;
+
+/// One entry point: its bind group layout and its pipeline.
+pub(crate) struct Stage {
+    layout: wgpu::BindGroupLayout,
+    pub(crate) pipeline: wgpu::ComputePipeline,
+    bindings: Bindings,
+}
+
+impl Stage {
+    fn new(
+        ctx: &GpuContext,
+        shader: Shader,
+        entry: &str,
+        bindings: Bindings,
+    ) -> Result<Self, Error> {
+        let d = &ctx.device;
+        let source = shader.source(ctx.precision())?;
+        let module = d.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some(&shader.name()),
+            source: wgpu::ShaderSource::Wgsl(source.into()),
+        });
+        let entries: Vec<wgpu::BindGroupLayoutEntry> = bindings
+            .iter()
+            .map(|&(binding, access)| wgpu::BindGroupLayoutEntry {
+                binding,
+                visibility: wgpu::ShaderStages::COMPUTE,
+                ty: wgpu::BindingType::Buffer {
+                    ty: match access {
+                        Uniform => wgpu::BufferBindingType::Uniform,
+                        Read => wgpu::BufferBindingType::Storage { read_only: true },
+                        ReadWrite => wgpu::BufferBindingType::Storage { read_only: false },
+                    },
+                    has_dynamic_offset: false,
+                    min_binding_size: None,
+                },
+                count: None,
+            })
+            .collect();
+        let layout = d.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some(entry),
+            entries: &entries,
+        });
+        let pl = d.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some(entry),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: 0,
+        });
+        let pipeline = d.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some(entry),
+            layout: Some(&pl),
+            module: &module,
+            entry_point: Some(entry),
+            compilation_options: Default::default(),
+            cache: None,
+        });
+        Ok(Stage {
+            layout,
+            pipeline,
+            bindings,
+        })
+    }
+
+    /// A bind group with `buffers` bound, in the order of the stage's
+    /// bindings (a count that does not match is a wgpu validation error).
+    pub(crate) fn bind(&self, ctx: &GpuContext, buffers: &[&wgpu::Buffer]) -> wgpu::BindGroup {
+        let entries: Vec<wgpu::BindGroupEntry> = self
+            .bindings
+            .iter()
+            .zip(buffers)
+            .map(|(&(binding, _), b)| wgpu::BindGroupEntry {
+                binding,
+                resource: b.as_entire_binding(),
+            })
+            .collect();
+        ctx.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("bind group"),
+            layout: &self.layout,
+            entries: &entries,
+        })
+    }
+}
+
+/// Every stage's pipeline for the context's precision. The specialised
+/// kernels are built on first use (each is one more shader compilation).
+pub(crate) struct Pipelines {
+    /// `shaders/enumeration.wgsl`, any island size.
+    pub(crate) enumeration: Stage,
+    /// `shaders/enumeration_workgroup.wgsl`: one workgroup per island, the
+    /// bases of each popcount in waves of [`WORKGROUP`] lanes.
+    pub(crate) enumeration_workgroup: Stage,
+    /// [`Shader::Unrolled`] n at index n − 1 (n = 1…[`FIXED_MAX_N`]).
+    unrolled: Vec<OnceLock<Stage>>,
+    /// [`Shader::Tree`] n at index n − 1 (n = 1…[`TREE_MAX_N`]).
+    tree: Vec<OnceLock<Stage>>,
+    pub(crate) assemble_contacts: Stage,
+    pub(crate) assemble_islands: Stage,
+    pub(crate) impulses: Stage,
+}
+
+/// The stage in `cache` (index n − 1), built on first use.
+fn lazy<'a>(
+    cache: &'a [OnceLock<Stage>],
+    ctx: &GpuContext,
+    n: usize,
+    shader: Shader,
+) -> Result<&'a Stage, Error> {
+    let slot = n
+        .checked_sub(1)
+        .and_then(|i| cache.get(i))
+        .ok_or_else(|| Error::Gpu(format!("no {shader:?} kernel for n = {n}")))?;
+    if let Some(s) = slot.get() {
+        return Ok(s);
+    }
+    let stage = Stage::new(ctx, shader, "main", ENUMERATION_BINDINGS)?;
+    Ok(slot.get_or_init(|| stage))
+}
+
+impl Pipelines {
+    fn build(ctx: &GpuContext) -> Result<Self, Error> {
+        ctx.scoped("building the pipelines", || -> Result<Self, Error> {
+            let enumeration = |s| Stage::new(ctx, s, "main", ENUMERATION_BINDINGS);
+            Ok(Pipelines {
+                enumeration: enumeration(Shader::Enumeration)?,
+                enumeration_workgroup: enumeration(Shader::Workgroup)?,
+                unrolled: (0..FIXED_MAX_N).map(|_| OnceLock::new()).collect(),
+                tree: (0..TREE_MAX_N).map(|_| OnceLock::new()).collect(),
+                assemble_contacts: Stage::new(
+                    ctx,
+                    Shader::Assembly,
+                    "assemble_contacts",
+                    ASSEMBLE_CONTACTS_BINDINGS,
+                )?,
+                assemble_islands: Stage::new(
+                    ctx,
+                    Shader::Assembly,
+                    "assemble_islands",
+                    ASSEMBLE_ISLANDS_BINDINGS,
+                )?,
+                impulses: Stage::new(ctx, Shader::Impulses, "main", IMPULSES_BINDINGS)?,
+            })
+        })?
+    }
+
+    /// The specialised elimination stage for islands of n contacts
+    /// (1 ≤ n ≤ [`FIXED_MAX_N`]), built on first use.
+    pub(crate) fn unrolled(&self, ctx: &GpuContext, n: usize) -> Result<&Stage, Error> {
+        lazy(&self.unrolled, ctx, n, Shader::Unrolled(n))
+    }
+
+    /// The tree stage for islands of n contacts (1 ≤ n ≤ [`TREE_MAX_N`]),
+    /// built on first use.
+    pub(crate) fn tree(&self, ctx: &GpuContext, n: usize) -> Result<&Stage, Error> {
+        lazy(&self.tree, ctx, n, Shader::Tree(n))
+    }
+}
+
+impl GpuContext {
+    /// The pipelines for the context's precision, built on first use.
+    pub(crate) fn pipelines(&self) -> Result<Arc<Pipelines>, Error> {
+        let mut cache = self
+            .pipelines
+            .lock()
+            .map_err(|_| Error::Gpu("pipeline cache poisoned".into()))?;
+        if let Some(p) = cache.as_ref() {
+            return Ok(p.clone());
+        }
+        let p = Arc::new(Pipelines::build(self)?);
+        *cache = Some(p.clone());
+        Ok(p)
+    }
+}
+
+/// Tree kernel in f32: the screen's tolerance (f64 uses
+/// [`TreeSettings`]'), looser than the f32 feasibility tolerance (1e-4).
+pub const F32_SCREEN_TOL: f64 = 1e-3;
+/// Tree kernel in f32: a pivot T_dd at most this times M_dd leaves the
+/// island to elimination (f64 uses [`TreeSettings`]'). With f32's 6e-8
+/// rounding it bounds a leaf's error near 1e-4, under the screen's 1e-3.
+pub const F32_TREE_PIVOT_TOL: f64 = 1e-3;
+/// Tree kernel in f32, semidefinite islands: a pivot at most this times
+/// M_dd is singular (f32 rounds a singular Schur complement to about 1e-7
+/// of M_dd) and cuts its subtree.
+pub const F32_TREE_SINGULAR_TOL: f64 = 1e-5;
+
+/// The enumeration kernels' tolerances (WGSL `Tolerances`, binding 7):
+/// pivot, feasibility, relaxed, screen, tree pivot, tree singular, and two
+/// pads, in the shader's precision. Passed at run time so that the
+/// committed shaders serve every setting; the f64 values are the CPU twins'
+/// exactly, so the f64 arithmetic stays the twins' bit for bit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Tolerances(pub [f64; 8]);
+
+impl Tolerances {
+    pub(crate) fn new(precision: Precision, settings: &GpuSolveSettings) -> Self {
+        let (pivot, feasibility, relaxed) = settings.gpu_tolerances(precision);
+        let tree = TreeSettings::default();
+        let (screen, tree_pivot, singular) = if precision == Precision::F64 {
+            (tree.screen_tol, tree.pivot_tol, tree.singular_tol)
+        } else {
+            (F32_SCREEN_TOL, F32_TREE_PIVOT_TOL, F32_TREE_SINGULAR_TOL)
+        };
+        Tolerances([
+            pivot,
+            feasibility,
+            relaxed,
+            screen,
+            tree_pivot,
+            singular,
+            0.0,
+            0.0,
+        ])
+    }
+
+    /// A uniform buffer holding the tolerances in `ctx`'s precision.
+    pub(crate) fn upload(&self, ctx: &GpuContext) -> wgpu::Buffer {
+        ctx.device
+            .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("tolerances"),
+                contents: &scalars_to_bytes(&self.0, ctx.precision()),
+                usage: wgpu::BufferUsages::UNIFORM,
+            })
+    }
+}

@@ -1,0 +1,220 @@
+//! The one composition of the WGSL that runs (test builds only): from the
+//! sources in `shaders/` to the committed files in `shaders/generated/`.
+//!
+//! Per [`Shader`] and precision: the enumeration kernels get
+//! `shaders/enumeration_basis.wgsl` prepended (WGSL has no include); the
+//! lines marked `// HOST <what>` are replaced (scalar type; for the
+//! specialised kernels the island size, and the tree kernel's confirmation
+//! count); the placeholder functions of the specialised kernels are replaced
+//! by generated straight-line code ([`super::unrolled`], [`super::tree`]).
+//! Every step that cannot find what it replaces is an [`Error::Gpu`].
+
+use super::tree::tree_pass_source;
+use super::unrolled::straight_line_solver;
+use super::{Shader, FIXED_MAX_N};
+use crate::cpu::enumeration_tree::{TreeSettings, TREE_MAX_N};
+use crate::gpu::Precision;
+use crate::Error;
+
+const ENUMERATION_BASIS_WGSL: &str = include_str!("../../../shaders/enumeration_basis.wgsl");
+const ENUMERATION_WGSL: &str = include_str!("../../../shaders/enumeration.wgsl");
+const ENUMERATION_WORKGROUP_WGSL: &str =
+    include_str!("../../../shaders/enumeration_workgroup.wgsl");
+const ENUMERATION_TREE_WGSL: &str = include_str!("../../../shaders/enumeration_tree.wgsl");
+const ASSEMBLY_WGSL: &str = include_str!("../../../shaders/assembly.wgsl");
+const IMPULSES_WGSL: &str = include_str!("../../../shaders/impulses.wgsl");
+
+/// Environment variable that makes `generated_shaders_are_committed`
+/// rewrite the committed files instead of failing.
+const BLESS: &str = "LCPBATCH_BLESS_SHADERS";
+
+/// The complete text of `shader` in `precision` (F32 or F64), as committed
+/// in `shaders/generated/`.
+pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Error> {
+    let (file, body) = match shader {
+        Shader::Enumeration | Shader::Unrolled(_) => ("enumeration", ENUMERATION_WGSL),
+        Shader::Workgroup => ("enumeration_workgroup", ENUMERATION_WORKGROUP_WGSL),
+        Shader::Tree(_) => ("enumeration_tree", ENUMERATION_TREE_WGSL),
+        Shader::Assembly => ("assembly", ASSEMBLY_WGSL),
+        Shader::Impulses => ("impulses", IMPULSES_WGSL),
+    };
+    let src = match shader {
+        Shader::Assembly | Shader::Impulses => body.to_string(),
+        _ => format!("{ENUMERATION_BASIS_WGSL}\n{body}"),
+    };
+    let ty = match precision {
+        Precision::F32 => "f32",
+        Precision::F64 => "f64",
+        Precision::Auto => return Err(Error::Gpu("compose: precision not resolved".into())),
+    };
+    let s = replace_host_line(&src, "scalar", &format!("alias Scalar = {ty};"))?;
+    let s = match shader {
+        Shader::Unrolled(n) if (1..=FIXED_MAX_N).contains(&n) => fixed_source(&s, n)?,
+        Shader::Tree(n) if (1..=TREE_MAX_N).contains(&n) => tree_source(&s, n)?,
+        Shader::Unrolled(n) | Shader::Tree(n) => {
+            return Err(Error::Gpu(format!(
+                "{}: no kernel for n = {n}",
+                shader.name()
+            )))
+        }
+        _ => s,
+    };
+    let from = match shader {
+        Shader::Assembly | Shader::Impulses => format!("shaders/{file}.wgsl"),
+        _ => format!("shaders/enumeration_basis.wgsl + shaders/{file}.wgsl"),
+    };
+    Ok(format!(
+        "// GENERATED from {from} by src/gpu/shaders/compose.rs: do not edit.\n\
+         // Regenerate: {BLESS}=1 cargo test --release generated_shaders_are_committed\n\n{s}\n"
+    ))
+}
+
+/// Replaces the `// HOST <what>` line of `src` with `line`.
+fn replace_host_line(src: &str, what: &str, line: &str) -> Result<String, Error> {
+    let marker = format!("// HOST {what}");
+    let mut found = false;
+    let out: Vec<String> = src
+        .lines()
+        .map(|l| {
+            if l.trim_end().ends_with(&marker) {
+                found = true;
+                format!("{line} {marker}")
+            } else {
+                l.to_string()
+            }
+        })
+        .collect();
+    if !found {
+        return Err(Error::Gpu(format!("shader has no `{marker}` line")));
+    }
+    Ok(out.join("\n"))
+}
+
+/// Replaces the WGSL function `name` of `src` (from `fn name(` to the first
+/// line that is a lone `}`) with `function`.
+fn replace_function(src: &str, name: &str, function: &str) -> Result<String, Error> {
+    let start = src
+        .find(&format!("fn {name}("))
+        .ok_or_else(|| Error::Gpu(format!("shader has no function {name}")))?;
+    let end = src[start..]
+        .find("\n}\n")
+        .map(|e| start + e + 3)
+        .ok_or_else(|| Error::Gpu(format!("function {name} has no end")))?;
+    Ok(format!("{}{function}{}", &src[..start], &src[end..]))
+}
+
+/// `shaders/enumeration.wgsl` specialised to islands of exactly n contacts:
+/// FIXED, FN, FNN set, and `solve_basis_fixed` replaced by
+/// [`straight_line_solver`] (no loops, every array index constant).
+fn fixed_source(enumeration_src: &str, n: usize) -> Result<String, Error> {
+    let s = replace_host_line(enumeration_src, "fixed", "const FIXED: bool = true;")?;
+    let s = replace_host_line(&s, "fixed_n", &format!("const FN: u32 = {n}u;"))?;
+    let s = replace_host_line(&s, "fixed_nn", &format!("const FNN: u32 = {}u;", n * n))?;
+    replace_function(&s, "solve_basis_fixed", &straight_line_solver(n))
+}
+
+/// `shaders/enumeration_tree.wgsl` for islands of exactly n contacts: FN,
+/// WORDS and MAX_CONFIRMATIONS ([`TreeSettings`]' default) set, and the
+/// placeholder `tree_pass` replaced by [`tree_pass_source`].
+fn tree_source(tree_src: &str, n: usize) -> Result<String, Error> {
+    let confirmations = TreeSettings::default().max_confirmations;
+    let s = replace_host_line(
+        tree_src,
+        "max_confirmations",
+        &format!("const MAX_CONFIRMATIONS: u32 = {confirmations}u;"),
+    )?;
+    let s = replace_host_line(&s, "fixed_n", &format!("const FN: u32 = {n}u;"))?;
+    let s = replace_host_line(
+        &s,
+        "words",
+        &format!("const WORDS: u32 = {}u;", (1usize << n).div_ceil(32)),
+    )?;
+    replace_function(&s, "tree_pass", &tree_pass_source(n))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::path::Path;
+
+    const PRECISIONS: [Precision; 2] = [Precision::F32, Precision::F64];
+
+    /// The committed files are exactly what the generator makes, the table
+    /// compiled into the binary holds every one of them and nothing else.
+    #[test]
+    fn generated_shaders_are_committed() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+        let bless = std::env::var(BLESS).is_ok_and(|v| v == "1");
+        let mut stale = Vec::new();
+        let mut expected = Vec::new();
+        for shader in Shader::all() {
+            for p in PRECISIONS {
+                let text = compose(shader, p).unwrap_or_else(|e| panic!("{shader:?}: {e}"));
+                let path = shader.path(p);
+                expected.push(path.clone());
+                let file = root.join(&path);
+                if std::fs::read_to_string(&file).ok().as_deref() != Some(text.as_str()) {
+                    if bless {
+                        std::fs::write(&file, &text).unwrap();
+                    } else {
+                        stale.push(path);
+                    }
+                } else if shader.source(p).ok() != Some(text.as_str()) {
+                    stale.push(format!("{path} (rebuild: the binary holds an older copy)"));
+                }
+            }
+        }
+        let mut extra: Vec<String> = std::fs::read_dir(root.join("shaders/generated"))
+            .unwrap()
+            .map(|e| {
+                format!(
+                    "shaders/generated/{}",
+                    e.unwrap().file_name().to_string_lossy()
+                )
+            })
+            .filter(|p| !expected.contains(p))
+            .collect();
+        extra.sort();
+        assert!(
+            stale.is_empty() && extra.is_empty(),
+            "generated shaders out of date: {stale:?}; not generated: {extra:?}. \
+             Regenerate with `{BLESS}=1 cargo test --release generated_shaders_are_committed` \
+             (and delete the files not generated)"
+        );
+        let names: Vec<String> = Shader::all().iter().map(|s| s.name()).collect();
+        let table: Vec<String> = super::super::GENERATED
+            .iter()
+            .map(|(n, _, _)| n.to_string())
+            .collect();
+        assert_eq!(names, table, "shaders::GENERATED lists every Shader::all()");
+    }
+
+    /// Every generated shader parses and validates with naga (f64 allowed).
+    #[test]
+    fn generated_shaders_validate_with_naga() {
+        use naga::valid::{Capabilities, ValidationFlags, Validator};
+        for shader in Shader::all() {
+            for p in PRECISIONS {
+                let src = shader.source(p).unwrap();
+                let module = naga::front::wgsl::parse_str(src)
+                    .unwrap_or_else(|e| panic!("{}: {}", shader.path(p), e.emit_to_string(src)));
+                Validator::new(ValidationFlags::all(), Capabilities::FLOAT64)
+                    .validate(&module)
+                    .unwrap_or_else(|e| panic!("{}: {e:?}", shader.path(p)));
+            }
+        }
+    }
+
+    #[test]
+    fn composition_errors_are_errors() {
+        assert!(replace_host_line("fn main() {}", "scalar", "x").is_err());
+        assert!(replace_function("fn main() {}", "tree_pass", "x").is_err());
+        assert!(compose(Shader::Unrolled(FIXED_MAX_N + 1), Precision::F32).is_err());
+        assert!(compose(Shader::Tree(0), Precision::F64).is_err());
+        assert!(compose(Shader::Enumeration, Precision::Auto).is_err());
+        let s = compose(Shader::Unrolled(3), Precision::F64).unwrap();
+        assert!(s.contains("alias Scalar = f64; // HOST scalar"));
+        assert!(s.contains("const FN: u32 = 3u; // HOST fixed_n"));
+        assert!(!s.contains("_TOL"), "tolerances come from the uniform");
+    }
+}

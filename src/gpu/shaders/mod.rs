@@ -1,0 +1,138 @@
+//! The WGSL that runs: one committed file per shader, precision and
+//! specialised island size in `shaders/generated/`, compiled into the
+//! binary through the one table [`GENERATED`].
+//!
+//! The files are composed from the sources in `shaders/` by [`compose`]
+//! (test builds only): the shared `shaders/enumeration_basis.wgsl` is
+//! prepended to each enumeration kernel, the lines marked `// HOST` (scalar
+//! type, island size, tree confirmations) are replaced, and the specialised
+//! kernels get their generated straight-line functions ([`unrolled`],
+//! [`tree`]). Nothing that depends on run-time settings is baked in: the
+//! tolerances reach the enumeration kernels through a uniform
+//! ([`super::pipelines::Tolerances`]). The test
+//! `generated_shaders_are_committed` fails when a committed file differs
+//! from what the generator makes; `LCPBATCH_BLESS_SHADERS=1 cargo test
+//! --release generated_shaders_are_committed` rewrites them.
+
+#[cfg(test)]
+mod compose;
+#[cfg(test)]
+mod tree;
+#[cfg(test)]
+mod unrolled;
+
+use super::Precision;
+#[cfg(test)]
+use crate::cpu::enumeration_tree::TREE_MAX_N;
+use crate::Error;
+
+/// Largest island size with a specialised (constant-size) elimination kernel.
+pub const FIXED_MAX_N: usize = 8;
+
+/// One shader that can run (in either precision).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) enum Shader {
+    /// `shaders/enumeration.wgsl`, any island size.
+    Enumeration,
+    /// `shaders/enumeration.wgsl` specialised to islands of exactly n
+    /// contacts (1 ≤ n ≤ [`FIXED_MAX_N`]).
+    Unrolled(usize),
+    /// `shaders/enumeration_workgroup.wgsl`.
+    Workgroup,
+    /// `shaders/enumeration_tree.wgsl` for islands of exactly n contacts
+    /// (1 ≤ n ≤ [`crate::cpu::enumeration_tree::TREE_MAX_N`]).
+    Tree(usize),
+    /// `shaders/assembly.wgsl` (entry points assemble_contacts, assemble_islands).
+    Assembly,
+    /// `shaders/impulses.wgsl`.
+    Impulses,
+}
+
+impl Shader {
+    /// Every shader that can run.
+    #[cfg(test)]
+    pub(crate) fn all() -> Vec<Shader> {
+        let mut v = vec![Shader::Enumeration, Shader::Workgroup];
+        v.extend((1..=FIXED_MAX_N).map(Shader::Unrolled));
+        v.extend((1..=TREE_MAX_N).map(Shader::Tree));
+        v.extend([Shader::Assembly, Shader::Impulses]);
+        v
+    }
+
+    /// The generated file's name without precision and extension.
+    pub(crate) fn name(self) -> String {
+        match self {
+            Shader::Enumeration => "enumeration".into(),
+            Shader::Unrolled(n) => format!("enumeration_n{n}"),
+            Shader::Workgroup => "enumeration_workgroup".into(),
+            Shader::Tree(n) => format!("enumeration_tree_n{n}"),
+            Shader::Assembly => "assembly".into(),
+            Shader::Impulses => "impulses".into(),
+        }
+    }
+
+    /// The generated file, relative to the crate root.
+    #[cfg(test)]
+    pub(crate) fn path(self, precision: Precision) -> String {
+        format!(
+            "shaders/generated/{}_{}.wgsl",
+            self.name(),
+            precision.name()
+        )
+    }
+
+    /// The committed source of this shader in `precision` (F32 or F64).
+    pub(crate) fn source(self, precision: Precision) -> Result<&'static str, Error> {
+        let name = self.name();
+        let (_, f32_src, f64_src) = GENERATED
+            .iter()
+            .find(|(n, _, _)| *n == name)
+            .ok_or_else(|| Error::Gpu(format!("no generated shader `{name}`")))?;
+        match precision {
+            Precision::F32 => Ok(f32_src),
+            Precision::F64 => Ok(f64_src),
+            Precision::Auto => Err(Error::Gpu(format!(
+                "shader `{name}`: precision not resolved"
+            ))),
+        }
+    }
+}
+
+/// (name, f32 source, f64 source) of every generated shader.
+macro_rules! generated {
+    ($($name:literal),* $(,)?) => {
+        &[$((
+            $name,
+            include_str!(concat!("../../../shaders/generated/", $name, "_f32.wgsl")),
+            include_str!(concat!("../../../shaders/generated/", $name, "_f64.wgsl")),
+        )),*]
+    };
+}
+
+/// Every committed shader: the only WGSL the GPU path runs.
+pub(crate) static GENERATED: &[(&str, &str, &str)] = generated!(
+    "enumeration",
+    "enumeration_workgroup",
+    "enumeration_n1",
+    "enumeration_n2",
+    "enumeration_n3",
+    "enumeration_n4",
+    "enumeration_n5",
+    "enumeration_n6",
+    "enumeration_n7",
+    "enumeration_n8",
+    "enumeration_tree_n1",
+    "enumeration_tree_n2",
+    "enumeration_tree_n3",
+    "enumeration_tree_n4",
+    "enumeration_tree_n5",
+    "enumeration_tree_n6",
+    "enumeration_tree_n7",
+    "enumeration_tree_n8",
+    "enumeration_tree_n9",
+    "enumeration_tree_n10",
+    "enumeration_tree_n11",
+    "enumeration_tree_n12",
+    "assembly",
+    "impulses",
+);
