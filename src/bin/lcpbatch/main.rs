@@ -2,6 +2,8 @@
 //! (`Solver`, `Settings`, `Report`, the formats in `lcpbatch::io`).
 
 mod bench;
+mod devices;
+mod plots;
 mod stress;
 
 use std::path::PathBuf;

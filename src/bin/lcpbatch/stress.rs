@@ -1,9 +1,18 @@
 //! `lcpbatch stress`: the stress families of `lcpbatch::generate::stress`
-//! through every solver and precision.
+//! through every method and precision, against the f64 enumeration: error
+//! distributions, status agreement, repaired counts, error against the
+//! condition number. Every solve goes through the library's one door.
+
+use std::path::PathBuf;
 
 use lcpbatch::generate::stress::{basis_condition, generate, siconos_scaled, Family, StressCase};
+use lcpbatch::io::write_atomically;
+use lcpbatch::{Backend, Error, GpuSettings, Lcp, Method, Report, Settings, Solver};
 
-/// One solver's result on one stress case, next to the f64 reference.
+use crate::devices::{gpu_solvers, machine_description};
+use crate::plots;
+
+/// One method's result on one stress case, next to the f64 reference.
 #[derive(Clone, Debug, serde::Serialize)]
 pub struct StressPoint {
     pub family: String,
@@ -18,7 +27,7 @@ pub struct StressPoint {
     pub finite: bool,
 }
 
-/// Summary of one family and one solver.
+/// Summary of one family and one method.
 #[derive(Clone, Debug, serde::Serialize)]
 pub struct StressRow {
     pub family: String,
@@ -35,7 +44,22 @@ pub struct StressRow {
     pub repaired: Option<usize>,
 }
 
-/// Summarises points per (family, solver), in first-seen order.
+/// What `lcpbatch stress` runs.
+#[derive(Clone, Debug)]
+pub struct StressOptions {
+    /// Cases per family.
+    pub cases: usize,
+    pub seed: u64,
+    /// The Siconos folder for the scaled family; None: skip it.
+    pub siconos: Option<PathBuf>,
+    pub out_dir: PathBuf,
+    /// None: CPU only.
+    pub gpu: Option<GpuSettings>,
+    /// M + αI on every problem (0: the problem as posed).
+    pub regularization: f64,
+}
+
+/// Summarises points per (family, method), in first-seen order.
 pub fn summarise(points: &[StressPoint]) -> Vec<StressRow> {
     let mut keys: Vec<(String, String)> = Vec::new();
     for p in points {
@@ -73,65 +97,8 @@ pub fn summarise(points: &[StressPoint]) -> Vec<StressRow> {
         .collect()
 }
 
-/// Runs the f64 reference (exhaustive enumeration) and the CPU solvers on
-/// `cases`: Gray-code enumeration, Lemke, PGS (100 sweeps) and the CPU batch
-/// path. Returns one point per case and solver, the reference included.
-pub fn run_cpu(label: &str, cases: &[StressCase], regularization: f64) -> Vec<StressPoint> {
-    use crate::cpu::enumeration::{enumerate, EnumerationSettings};
-    use crate::cpu::enumeration_gray::{enumerate_gray, GraySettings};
-    use crate::solvers::lemke::{lemke, LemkeSettings};
-    use crate::solvers::pgs::{pgs, PgsSettings};
-    let es = EnumerationSettings::default();
-    let mut points = Vec::new();
-    for c in cases {
-        let lcp = if regularization > 0.0 {
-            regularized(&c.lcp, regularization)
-        } else {
-            c.lcp.clone()
-        };
-        let reference = enumerate(&lcp, &es).expect("stress cases have n ≤ 20");
-        let condition = reference
-            .basis
-            .map_or(f64::NAN, |b| basis_condition(&lcp, b));
-        let mut push = |solver: &str, sol: &crate::LcpSolution| {
-            // Errors are measured on the problem as posed, before regularisation.
-            let res = c.lcp.residuals(&sol.z);
-            points.push(StressPoint {
-                family: label.to_string(),
-                solver: solver.to_string(),
-                parameter: c.parameter,
-                condition,
-                error: res.error,
-                status: sol.status.name().to_string(),
-                status_matches_reference: sol.status == reference.status,
-                finite: sol.z.iter().chain(&sol.w).all(|v| v.is_finite()) && res.error.is_finite(),
-            });
-        };
-        push("enum f64 (reference)", &reference);
-        push(
-            "enum gray f64",
-            &enumerate_gray(&lcp, &GraySettings::default()).expect("n ≤ 20"),
-        );
-        push("lemke f64", &lemke(&lcp, &LemkeSettings::default()));
-        push(
-            "pgs 100",
-            &pgs(
-                &lcp,
-                &PgsSettings {
-                    max_iterations: 100,
-                    tolerance: 1e-12,
-                },
-            ),
-        );
-        let batch = crate::cpu::batch::solve_island(&lcp, None, &Default::default());
-        push("cpu batch f64", &batch.solution);
-    }
-    points
-}
-
 /// M + αI: makes a positive semidefinite M definite (one solution), at the
-/// price of an error of order α‖z‖ on the original problem. α = 0 (the
-/// default everywhere) leaves the problem untouched.
+/// price of an error of order α‖z‖ on the original problem.
 pub fn regularized(lcp: &Lcp, alpha: f64) -> Lcp {
     let n = lcp.n();
     let mut m = lcp.m.clone();
@@ -144,164 +111,129 @@ pub fn regularized(lcp: &Lcp, alpha: f64) -> Lcp {
     }
 }
 
-/// Draws error against condition number (log–log), one colour per solver.
-pub fn plot_error_vs_condition(
-    points: &[StressPoint],
-    path: &std::path::Path,
-) -> Result<(), crate::Error> {
-    use plotters::prelude::*;
-    let plot_err = |e: String| crate::Error::Io {
-        path: path.to_path_buf(),
-        source: std::io::Error::other(e),
-    };
-    let floor = 1e-18;
-    let pts: Vec<&StressPoint> = points.iter().filter(|p| p.condition.is_finite()).collect();
-    let xmax = pts.iter().map(|p| p.condition).fold(10.0f64, f64::max) * 2.0;
-    let ymax = pts.iter().map(|p| p.error).fold(1e-10f64, f64::max) * 2.0;
-    let root = SVGBackend::new(path, (1000, 700)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| plot_err(e.to_string()))?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(
-            "error against the condition number of the chosen basis",
-            ("sans-serif", 20),
-        )
-        .margin(15)
-        .x_label_area_size(45)
-        .y_label_area_size(70)
-        .build_cartesian_2d((0.5f64..xmax).log_scale(), (floor..ymax).log_scale())
-        .map_err(|e| plot_err(e.to_string()))?;
-    chart
-        .configure_mesh()
-        .x_desc("condition number (1-norm) of M_SS")
-        .y_desc("error (Siconos measure; 0 drawn at 1e-18)")
-        .x_label_formatter(&|v| format!("{v:.0e}"))
-        .y_label_formatter(&|v| format!("{v:.0e}"))
-        .draw()
-        .map_err(|e| plot_err(e.to_string()))?;
-    let mut solvers: Vec<&str> = Vec::new();
-    for p in &pts {
-        if !solvers.contains(&p.solver.as_str()) {
-            solvers.push(&p.solver);
-        }
-    }
-    let colors = [
-        BLACK,
-        RED,
-        BLUE,
-        GREEN,
-        MAGENTA,
-        CYAN,
-        RGBColor(255, 140, 0),
-        RGBColor(128, 0, 128),
-    ];
-    for (i, s) in solvers.iter().enumerate() {
-        let c = colors[i % colors.len()];
-        chart
-            .draw_series(
-                pts.iter().filter(|p| p.solver == *s).map(|p| {
-                    Circle::new((p.condition.max(1.0), p.error.max(floor)), 2, c.filled())
-                }),
-            )
-            .map_err(|e| plot_err(e.to_string()))?
-            .label(s.to_string())
-            .legend(move |(x, y)| Circle::new((x + 8, y), 4, c.filled()));
-    }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .draw()
-        .map_err(|e| plot_err(e.to_string()))?;
-    root.present().map_err(|e| plot_err(e.to_string()))
-}
-
-/// The GPU on `cases`: its own answer (z in the shader's precision) and the
-/// validated one. Returns the points and the repaired count.
-pub fn run_gpu(
-    ctx: &crate::gpu::GpuContext,
+/// The points of one method's report on `cases`, against the reference.
+fn points_of(
     label: &str,
+    solver: &str,
     cases: &[StressCase],
-) -> Result<(Vec<StressPoint>, usize), crate::Error> {
-    use crate::cpu::enumeration::{enumerate, EnumerationSettings};
-    let lcps: Vec<Lcp> = cases.iter().map(|c| c.lcp.clone()).collect();
-    let res = crate::gpu::solve_lcp_batch(ctx, &lcps, &Default::default())?;
-    let p = ctx.precision().name();
-    let mut points = Vec::new();
-    for (c, o) in cases.iter().zip(&res.islands) {
-        let reference = enumerate(&c.lcp, &EnumerationSettings::default()).expect("n ≤ 20");
-        let condition = reference
-            .basis
-            .map_or(f64::NAN, |b| basis_condition(&c.lcp, b));
-        let raw_z = if o.gpu_z.len() == c.lcp.n() {
-            o.gpu_z.clone()
-        } else {
-            o.solution.z.clone()
-        };
-        for (solver, z, status) in [
-            (
-                format!("gpu {p} (no polish)"),
-                raw_z,
-                crate::bench::gpu_own_status(o),
-            ),
-            (
-                format!("gpu {p} + polish"),
-                o.solution.z.clone(),
-                o.solution.status,
-            ),
-        ] {
-            let res = c.lcp.residuals(&z);
-            let w = c.lcp.w(&z);
-            points.push(StressPoint {
-                family: label.to_string(),
-                solver,
+    reference: &Report,
+    conditions: &[f64],
+    report: &Report,
+) -> Vec<StressPoint> {
+    cases
+        .iter()
+        .zip(&report.islands)
+        .zip(reference.islands.iter().zip(conditions))
+        .map(|((c, isl), (r, &condition))| {
+            // Errors are measured on the problem as posed, before regularisation.
+            let res = c.lcp.residuals(&isl.solution.z);
+            let s = &isl.solution;
+            StressPoint {
+                family: label.into(),
+                solver: solver.into(),
                 parameter: c.parameter,
                 condition,
                 error: res.error,
-                status: status.name().to_string(),
-                status_matches_reference: status == reference.status,
-                finite: z.iter().chain(&w).all(|v| v.is_finite()) && res.error.is_finite(),
-            });
+                status: isl.status().name().into(),
+                status_matches_reference: isl.status() == r.status(),
+                finite: s.z.iter().chain(&s.w).all(|v| v.is_finite()) && res.error.is_finite(),
+            }
+        })
+        .collect()
+}
+
+fn cpu(method: Method, f: impl FnOnce(&mut Settings)) -> Result<Solver, Error> {
+    let mut s = Settings {
+        threads: 1,
+        ..Settings::new(Backend::Cpu, method)
+    };
+    f(&mut s);
+    Solver::new(s)
+}
+
+/// One family through the f64 reference (bare enumeration) and every
+/// method; the GPU solvers too when the problem is not regularised.
+/// Returns the points and the repaired count per GPU method.
+fn run_family(
+    label: &str,
+    cases: &[StressCase],
+    regularization: f64,
+    gpus: &mut [Solver],
+) -> Result<(Vec<StressPoint>, Vec<(String, usize)>), Error> {
+    let lcps: Vec<Lcp> = cases
+        .iter()
+        .map(|c| match regularization > 0.0 {
+            true => regularized(&c.lcp, regularization),
+            false => c.lcp.clone(),
+        })
+        .collect();
+    let reference = cpu(Method::Enumeration, |s| s.predict = false)?.solve_lcps(&lcps)?;
+    let conditions: Vec<f64> = lcps
+        .iter()
+        .zip(&reference.islands)
+        .map(|(l, r)| r.solution.basis.map_or(f64::NAN, |b| basis_condition(l, b)))
+        .collect();
+    let mut points = points_of(
+        label,
+        "enum f64 (reference)",
+        cases,
+        &reference,
+        &conditions,
+        &reference,
+    );
+    let methods: [(&str, Method, fn(&mut Settings)); 3] = [
+        ("auto f64", Method::Auto, |_| {}),
+        ("lemke f64", Method::Lemke, |_| {}),
+        ("pgs 100", Method::Pgs, |s| {
+            s.pgs_max_sweeps = 100;
+            s.pgs_tolerance = 1e-12;
+        }),
+    ];
+    for (name, method, f) in methods {
+        let r = cpu(method, f)?.solve_lcps(&lcps)?;
+        points.extend(points_of(label, name, cases, &reference, &conditions, &r));
+    }
+    let mut repaired = Vec::new();
+    if regularization == 0.0 {
+        for g in gpus.iter_mut() {
+            let r = g.solve_lcps(&lcps)?;
+            let name = format!("gpu {} + polish", g.device().precision.name());
+            repaired.push((name.clone(), r.counts.repaired));
+            points.extend(points_of(label, &name, cases, &reference, &conditions, &r));
         }
     }
-    Ok((points, res.report.repaired))
+    Ok((points, repaired))
 }
 
-/// What `lcpbatch stress` runs.
-#[derive(Clone, Debug)]
-pub struct StressOptions {
-    /// Cases per family (default 500).
-    pub cases: usize,
-    pub seed: u64,
-    /// The Siconos folder for the scaled family; None: skip it.
-    pub siconos: Option<std::path::PathBuf>,
-    pub out_dir: std::path::PathBuf,
-    pub gpu: Option<crate::gpu::GpuOptions>,
-    /// M + αI on every problem (default 0).
-    pub regularization: f64,
-}
-
-impl Default for StressOptions {
-    fn default() -> Self {
-        StressOptions {
-            cases: 500,
-            seed: 2026,
-            siconos: None,
-            out_dir: "stress-out".into(),
-            gpu: Some(crate::gpu::GpuOptions::default()),
-            regularization: 0.0,
-        }
+fn print_rows(rows: &[StressRow]) {
+    println!(
+        "{:<22} {:<26} {:>6} {:>9} {:>9} {:>9} {:>8} {:>9} {:>9}",
+        "family", "solver", "cases", "median", "p99", "max", "status=", "non-fin.", "repaired"
+    );
+    for r in rows {
+        println!(
+            "{:<22} {:<26} {:>6} {:>9.1e} {:>9.1e} {:>9.1e} {:>7.1}% {:>9} {:>9}",
+            r.family,
+            r.solver,
+            r.cases,
+            r.median_error,
+            r.p99_error,
+            r.max_error,
+            100.0 * r.status_match,
+            r.non_finite,
+            r.repaired.map_or("-".into(), |v| v.to_string())
+        );
     }
 }
 
-/// Runs every family through the CPU solvers and the GPU (f32 and, where
-/// the adapter has it, f64), prints the table, writes `stress.json` and
-/// `error_vs_condition.svg`.
-pub fn run(opts: &StressOptions) -> Result<Vec<StressRow>, crate::Error> {
-    std::fs::create_dir_all(&opts.out_dir).map_err(|source| crate::Error::Io {
+/// Runs every family, prints the table, writes `stress.json` and
+/// `error_vs_condition.svg` into `opts.out_dir`.
+pub fn run(opts: &StressOptions) -> Result<Vec<StressRow>, Error> {
+    std::fs::create_dir_all(&opts.out_dir).map_err(|source| Error::Io {
         path: opts.out_dir.clone(),
         source,
     })?;
-    let contexts = crate::bench::gpu_contexts(&opts.gpu);
+    let mut gpus = gpu_solvers(&opts.gpu, &Settings::default());
     let mut sets: Vec<(String, Vec<StressCase>)> = Family::ALL
         .iter()
         .map(|&f| (f.name().to_string(), generate(f, opts.seed, opts.cases)))
@@ -317,19 +249,10 @@ pub fn run(opts: &StressOptions) -> Result<Vec<StressRow>, crate::Error> {
     let mut repaired = std::collections::HashMap::new();
     for (label, cases) in &sets {
         bar.set_message(label.clone());
-        points.extend(run_cpu(label, cases, opts.regularization));
-        if opts.regularization == 0.0 {
-            for ctx in &contexts {
-                let (pts, rep) = run_gpu(ctx, label, cases)?;
-                repaired.insert(
-                    (
-                        label.clone(),
-                        format!("gpu {} + polish", ctx.precision().name()),
-                    ),
-                    rep,
-                );
-                points.extend(pts);
-            }
+        let (pts, rep) = run_family(label, cases, opts.regularization, &mut gpus)?;
+        points.extend(pts);
+        for (solver, n) in rep {
+            repaired.insert((label.clone(), solver), n);
         }
         bar.inc(1);
     }
@@ -338,24 +261,7 @@ pub fn run(opts: &StressOptions) -> Result<Vec<StressRow>, crate::Error> {
     for r in &mut rows {
         r.repaired = repaired.get(&(r.family.clone(), r.solver.clone())).copied();
     }
-    println!(
-        "{:<22} {:<26} {:>6} {:>9} {:>9} {:>9} {:>8} {:>9} {:>9}",
-        "family", "solver", "cases", "median", "p99", "max", "status=", "non-fin.", "repaired"
-    );
-    for r in &rows {
-        println!(
-            "{:<22} {:<26} {:>6} {:>9.1e} {:>9.1e} {:>9.1e} {:>7.1}% {:>9} {:>9}",
-            r.family,
-            r.solver,
-            r.cases,
-            r.median_error,
-            r.p99_error,
-            r.max_error,
-            100.0 * r.status_match,
-            r.non_finite,
-            r.repaired.map_or("-".into(), |v| v.to_string())
-        );
-    }
+    print_rows(&rows);
     #[derive(serde::Serialize)]
     struct File<'a> {
         machine: String,
@@ -364,19 +270,62 @@ pub fn run(opts: &StressOptions) -> Result<Vec<StressRow>, crate::Error> {
         points: &'a [StressPoint],
     }
     let file = File {
-        machine: crate::bench::machine_description(&contexts),
+        machine: machine_description(&gpus),
         regularization: opts.regularization,
         rows: &rows,
         points: &points,
     };
-    crate::io::write_atomically(
+    write_atomically(
         &opts.out_dir.join("stress.json"),
         &serde_json::to_string(&file).expect("serialisable"),
     )?;
-    plot_error_vs_condition(&points, &opts.out_dir.join("error_vs_condition.svg"))?;
+    let scatter: Vec<(f64, f64, String)> = points
+        .iter()
+        .filter(|p| p.condition.is_finite())
+        .map(|p| (p.condition.max(1.0), p.error.max(1e-18), p.solver.clone()))
+        .collect();
+    plots::scatter(
+        &scatter,
+        &opts.out_dir.join("error_vs_condition.svg"),
+        "error against the condition number of the chosen basis",
+        (
+            "condition number (1-norm) of M_SS",
+            "error (Siconos measure; 0 drawn at 1e-18)",
+        ),
+        false,
+    )?;
     println!(
         "wrote {}/{{stress.json, error_vs_condition.svg}}",
         opts.out_dir.display()
     );
     Ok(rows)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_family_agrees_with_the_reference_on_the_cpu() {
+        for f in Family::ALL {
+            let cases = generate(f, 3, 25);
+            let (points, _) = run_family(f.name(), &cases, 0.0, &mut []).unwrap();
+            let rows = summarise(&points);
+            for r in &rows {
+                assert_eq!(r.non_finite, 0, "{} {}", r.family, r.solver);
+                if r.solver.starts_with("auto") || r.solver.starts_with("enum") {
+                    assert_eq!(r.status_match, 1.0, "{} {}", r.family, r.solver);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn regularization_makes_resting_stacks_definite() {
+        let cases = generate(Family::RestingStacks, 5, 20);
+        let (points, _) = run_family("resting", &cases, 1e-6, &mut []).unwrap();
+        let auto: Vec<&StressPoint> = points.iter().filter(|p| p.solver == "auto f64").collect();
+        assert!(!auto.is_empty());
+        assert!(auto.iter().all(|p| p.error < 1e-3 && p.finite));
+    }
 }
