@@ -1,52 +1,39 @@
-//! The GPU enumeration kernels against each other, and prediction before
-//! the GPU on and off, in islands per second (criterion; replaces the
-//! measurement tests that printed the tables in BENCHMARKS.md).
-//!
-//! - `gpu_kernel/<precision>/n=<n>`: the elimination,
-//!   specialised (unrolled) and tree kernels, and Auto's choice, on the same
-//!   batch of islands of exactly n contacts, uploaded once, dispatch alone
-//!   (every enumeration round; Tree: every island through the tree kernel,
-//!   the undecided ones then by elimination; Auto: the positive definite
-//!   ones through the tree);
-//! - `gpu_prediction/<precision>`: `solve_lcp_batch_warm` on demo-world
-//!   islands with prediction off, on, and on with last frame's bases (warm).
-//!
-//! Device and pipelines are made once, and every batch is dispatched once
-//! before timing (lavapipe compiles a shader at its first dispatch). The
-//! adapter follows LCPBATCH_GPU_ADAPTER / _BACKEND; both precisions run where
-//! the adapter has f64. LCPBATCH_BENCH_ISLANDS sets islands per batch (512).
+//! The GPU enumeration kernels against each other, through the library's
+//! `Solver` (`GpuSettings::kernel`): 512 random physical islands of n = 4,
+//! 8, 10 and 12 contacts per batch, f32 and f64, prediction off so that every
+//! island is enumerated; then prediction off, on and warm-started on the
+//! mixed family. Each solver compiles its kernels in an untimed first call.
+//! Without an adapter nothing runs.
 
 use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use lcpbatch::bench::{family_batch, islands_of_size, BenchFamily};
-use lcpbatch::cpu::enumeration_tree::TREE_MAX_N;
-use lcpbatch::gpu::batch::{solve_lcp_batch_warm, EnumerationKernel, UploadedBatch};
-use lcpbatch::gpu::{GpuContext, GpuOptions, GpuSolveSettings, Precision};
-use lcpbatch::Lcp;
+use lcpbatch::generate::families::{family_batch, islands_of_size, BenchFamily};
+use lcpbatch::{Backend, EnumerationKernel, GpuSettings, Method, Precision, Settings, Solver};
 
-fn contexts() -> Vec<GpuContext> {
-    let base = GpuOptions::from_env().expect("GPU environment variables");
-    let mut out = Vec::new();
-    for precision in [Precision::F32, Precision::F64] {
-        match GpuContext::new(&GpuOptions {
-            precision,
-            ..base.clone()
-        }) {
-            Ok(c) => out.push(c),
-            Err(e) if precision == Precision::F64 => eprintln!("f64 skipped: {e}"),
-            Err(e) => panic!("no GPU adapter: {e}"),
-        }
-    }
-    out
-}
+const ISLANDS: usize = 512;
 
-fn islands_per_batch() -> usize {
-    std::env::var("LCPBATCH_BENCH_ISLANDS")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(512)
+/// A GPU solver at `precision` with `kernel`, or None (no adapter, no f64).
+fn gpu(
+    precision: Precision,
+    kernel: EnumerationKernel,
+    predict: bool,
+    warm: bool,
+) -> Option<Solver> {
+    let gpu = GpuSettings {
+        precision,
+        kernel,
+        ..GpuSettings::from_env().expect("GPU environment variables")
+    };
+    let s = Solver::new(Settings {
+        gpu,
+        predict,
+        warm_start: warm,
+        ..Settings::new(Backend::Gpu, Method::Enumeration)
+    })
+    .expect("valid settings");
+    s.fallback().is_none().then_some(s)
 }
 
 fn configure(g: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>) {
@@ -56,37 +43,26 @@ fn configure(g: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallT
 }
 
 fn bench_kernels(c: &mut Criterion) {
-    for ctx in contexts() {
-        let p = ctx.precision().name();
-        for n in [8usize, 10, 12] {
-            let lcps = islands_of_size(n, islands_per_batch(), 2026);
-            let refs: Vec<&Lcp> = lcps.iter().collect();
-            let mut g = c.benchmark_group(format!("gpu_kernel/{p}/n={n}"));
+    for precision in [Precision::F32, Precision::F64] {
+        for n in [4usize, 8, 10, 12] {
+            let lcps = islands_of_size(n, ISLANDS, 0x6E7);
+            let mut g = c.benchmark_group(format!("gpu_kernel/{}/n={n}", precision.name()));
             configure(&mut g);
             g.throughput(Throughput::Elements(lcps.len() as u64));
             for kernel in [
                 EnumerationKernel::Elimination,
                 EnumerationKernel::Unrolled,
                 EnumerationKernel::Tree,
+                EnumerationKernel::Workgroup,
                 EnumerationKernel::Auto,
             ] {
-                if kernel == EnumerationKernel::Unrolled && n > 8 {
-                    continue; // specialised kernels exist for n ≤ 8
-                }
-                if kernel == EnumerationKernel::Tree && n > TREE_MAX_N {
+                let Some(mut s) = gpu(precision, kernel, false, false) else {
                     continue;
-                }
-                let s = GpuSolveSettings {
-                    kernel,
-                    predict: false,
-                    ..Default::default()
                 };
-                let b = UploadedBatch::new(&ctx, &refs, &s).expect("upload");
-                b.dispatch().expect("warm-up dispatch");
-                g.bench_function(
-                    BenchmarkId::from_parameter(format!("{kernel:?}")),
-                    |bench| bench.iter(|| black_box(b.dispatch().expect("dispatch"))),
-                );
+                s.solve_lcps(&lcps).expect("compile, untimed");
+                g.bench_function(BenchmarkId::from_parameter(kernel.name()), |b| {
+                    b.iter(|| black_box(s.solve_lcps(black_box(&lcps)).expect("solvable")))
+                });
             }
             g.finish();
         }
@@ -94,28 +70,39 @@ fn bench_kernels(c: &mut Criterion) {
 }
 
 fn bench_prediction(c: &mut Criterion) {
-    for ctx in contexts() {
-        let p = ctx.precision().name();
-        let lcps = family_batch(BenchFamily::MixedN, 7, 8 * islands_per_batch());
-        let on = GpuSolveSettings::default();
-        let off = GpuSolveSettings {
-            predict: false,
-            ..Default::default()
-        };
-        let cold = solve_lcp_batch_warm(&ctx, &lcps, None, &on).expect("warm-up");
-        let warm: Vec<Option<u32>> = cold.islands.iter().map(|o| o.solution.basis).collect();
-        let mut g = c.benchmark_group(format!("gpu_prediction/{p}"));
+    let lcps = family_batch(BenchFamily::MixedN, 7, 4000);
+    let ids: Vec<Vec<u64>> = {
+        let mut next = 0u64;
+        lcps.iter()
+            .map(|l| {
+                next += l.n() as u64;
+                (next - l.n() as u64..next).collect()
+            })
+            .collect()
+    };
+    for precision in [Precision::F32, Precision::F64] {
+        let mut g = c.benchmark_group(format!("gpu_prediction/{}", precision.name()));
         configure(&mut g);
         g.throughput(Throughput::Elements(lcps.len() as u64));
-        g.bench_function("off", |b| {
-            b.iter(|| black_box(solve_lcp_batch_warm(&ctx, &lcps, None, &off).unwrap()))
-        });
-        g.bench_function("on", |b| {
-            b.iter(|| black_box(solve_lcp_batch_warm(&ctx, &lcps, None, &on).unwrap()))
-        });
-        g.bench_function("warm", |b| {
-            b.iter(|| black_box(solve_lcp_batch_warm(&ctx, &lcps, Some(&warm), &on).unwrap()))
-        });
+        for (name, predict, warm) in [
+            ("off", false, false),
+            ("on", true, false),
+            ("warm", true, true),
+        ] {
+            let Some(mut s) = gpu(precision, EnumerationKernel::Auto, predict, warm) else {
+                continue;
+            };
+            s.solve_lcps_keyed(&lcps, &ids)
+                .expect("compile and remember, untimed");
+            g.bench_function(name, |b| {
+                b.iter(|| {
+                    black_box(
+                        s.solve_lcps_keyed(black_box(&lcps), &ids)
+                            .expect("solvable"),
+                    )
+                })
+            });
+        }
         g.finish();
     }
 }

@@ -80,3 +80,6 @@ pub fn list_adapters(api: BackendChoice) -> Vec<AdapterSummary> {
 
 /// How to install a software GPU adapter, for messages.
 pub const INSTALL_HINT: &str = gpu::INSTALL_HINT;
+
+#[cfg(test)]
+mod tests;

@@ -2,6 +2,10 @@
 //! assembly), solve (one LCP per island), write back (impulses applied to the
 //! bodies).
 
+// `solve_scene` (one scene, one island at a time) is the reference the
+// tests compare batched and GPU solves with.
+#![cfg_attr(not(test), allow(dead_code))]
+
 use crate::cpu::assembly::{assemble_contacts, assemble_island, ContactRow};
 use crate::cpu::enumeration::MAX_ENUMERATION_N;
 use crate::cpu::impulses::{apply_impulses, BodyVelocity};

@@ -20,6 +20,9 @@
 //! when the solution is not unique (w is the same whenever M is positive
 //! semidefinite).
 
+// `predict` and `WarmStart`'s counters serve the tests.
+#![cfg_attr(not(test), allow(dead_code))]
+
 use serde::Serialize;
 
 use crate::cpu::enumeration::{solve_basis, BasisOutcome, EnumerationSettings, MAX_ENUMERATION_N};

@@ -263,7 +263,8 @@ impl BatchReport {
         }
     }
 
-    /// Islands with this status.
+    /// Islands with this status (for the tests).
+    #[cfg(test)]
     pub fn count(&self, s: Status) -> usize {
         Status::ALL
             .iter()
@@ -284,6 +285,7 @@ impl BatchReport {
     }
 
     /// Islands settled by this path.
+    #[cfg(test)]
     pub fn path_count(&self, p: SolvePath) -> usize {
         SolvePath::ALL
             .iter()

@@ -10,7 +10,7 @@
 //! Decide index 0, then 1, …, then n − 1: a node at depth d is a set S of
 //! indices below d, and its children are S (index d nonbasic: nothing to do)
 //! and S ∪ {d} (index d basic: one principal pivot on T_dd, the notation of
-//! [`crate::cpu::enumeration_gray`]: `[z_S; w_N] = T [w_S; z_N] + t`). The
+//! the Gray-code enumeration this crate had: `[z_S; w_N] = T [w_S; z_N] + t`). The
 //! 2ⁿ leaves are the bases; the pivots, one per "basic" edge, number
 //! 2ⁿ − 1, as in Gray-code order, but the tableau of each leaf comes from M
 //! by at most n pivots in a fixed order (ascending index), so rounding does
@@ -45,6 +45,10 @@
 //! every basis enumeration would accept passes the looser screen. When none
 //! of them is, the island is undecided (enumeration's answer may then be a
 //! least infeasible basis, which the screen does not rank).
+
+// The CPU twin of `shaders/enumeration_tree.wgsl`: the stage tests compare
+// the kernel with it; the CPU path itself does not screen by the tree.
+#![cfg_attr(not(test), allow(dead_code))]
 
 use crate::cpu::enumeration::{solve_basis, BasisOutcome, EnumerationSettings};
 use crate::lcp::{Counters, Lcp, LcpSolution, Status};

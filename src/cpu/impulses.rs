@@ -7,6 +7,9 @@
 //! impact is v_rel + (M z)_i = w_i − ε min(v_rel, 0): −ε v_rel when it was
 //! approaching, 0 when it was separating.
 
+// `relative_normal_velocities` serves the physics tests (Newton's law).
+#![cfg_attr(not(test), allow(dead_code))]
+
 use glam::DVec3;
 
 use crate::cpu::assembly::ContactRow;

@@ -9,14 +9,16 @@
 //! at most 65,535 workgroups ([`super::dispatch`]); the caller sees one
 //! result per island, in its order.
 
+// Stage entry points (`enumerate_on_gpu`, `UploadedBatch`, the GPU's raw
+// verdicts in `IslandOutcome`) serve the stage tests and the benches of
+// single kernels; the Solver calls `solve_lcp_batch_warm`.
+#![cfg_attr(not(test), allow(dead_code))]
+
 use std::time::Instant;
 
 use super::buffers::{limits_for, pack_chunks};
 use super::enumeration::EnumerationJob;
-pub use super::kernel::{
-    EnumerationKernel, KernelPlan, TreeRoute, AUTO_TREE, HARDWARE_ROUND_BUDGET,
-    SOFTWARE_ROUND_BUDGET, UNROLLED_UP_TO_N, WORKGROUP_FROM_N,
-};
+pub use super::kernel::{EnumerationKernel, KernelPlan, TreeRoute};
 use super::layout::{BasisResult, PackedIsland};
 use super::pipelines::{Pipelines, Tolerances};
 use super::{GpuContext, Precision, MAX_GPU_N};

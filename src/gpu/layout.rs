@@ -14,6 +14,10 @@
 //! | island data             | n²+n   | M row-major 0..n², q n²..n²+n                                        |
 //! | body velocity ([`VELOCITY`]) | 8 | velocity 0..3, angular_velocity 4..7                                 |
 
+// The packed layouts' CPU twins (pack, unpack, assembly on the packed
+// layout) are used by the stage tests that compare each shader with them.
+#![cfg_attr(not(test), allow(dead_code))]
+
 use bytemuck::{Pod, Zeroable};
 use glam::DMat3;
 

@@ -63,15 +63,16 @@ pub(crate) mod pipelines;
 pub mod scenes;
 pub(crate) mod shaders;
 
-pub use batch::{
-    solve_lcp_batch, solve_lcp_batch_warm, EnumerationKernel, GpuBatchResult, GpuSolveSettings,
-    IslandOutcome, SolvedOn,
-};
+pub use batch::{solve_lcp_batch_warm, EnumerationKernel, GpuSolveSettings, SolvedOn};
 pub use context::{
-    list_adapters, AdapterSummary, BackendChoice, GpuContext, GpuOptions, Precision, ENV_ADAPTER,
-    ENV_BACKEND, ENV_PRECISION, INSTALL_HINT,
+    list_adapters, AdapterSummary, BackendChoice, GpuContext, GpuOptions, Precision, INSTALL_HINT,
 };
-pub use scenes::{solve_scenes, solve_scenes_warm, GpuSceneResult};
+pub use scenes::solve_scenes_warm;
+// The one-shot forms and raw results, for the stage tests.
+#[cfg(test)]
+pub use batch::{solve_lcp_batch, GpuBatchResult};
+#[cfg(test)]
+pub use scenes::solve_scenes;
 
 /// Largest island the GPU enumerates (2¹⁶ bases per island). Larger islands
 /// go to the CPU (Lemke) and are reported as `cpu_fallback`.

@@ -19,15 +19,17 @@ use crate::Error;
 
 impl Solver {
     /// Checked LCPs on the CPU. `warm[i]`: problem i's warm basis, if any.
-    /// Enumeration on the CPU backend refuses n > 20; after device trouble
-    /// (or with Auto) such problems go to Lemke, as on the GPU path.
+    /// Enumeration (and all_solutions) on the CPU backend refuses n > 20;
+    /// after device trouble (or with backend Auto) such problems go to
+    /// Lemke, as on the GPU path.
     pub(super) fn lcps_on_cpu(
         &self,
         lcps: &[Lcp],
         warm: Option<&[Option<u32>]>,
     ) -> Result<Report, Error> {
         let big_to_lemke = self.settings.backend != Backend::Cpu;
-        if !big_to_lemke && self.settings.method == Method::Enumeration {
+        let enumerates = self.settings.method == Method::Enumeration || self.settings.all_solutions;
+        if !big_to_lemke && enumerates {
             if let Some((i, l)) = lcps
                 .iter()
                 .enumerate()

@@ -60,34 +60,47 @@ enum PathEnd {
 /// row, which breaks the ties rounding decided; the final basis is then
 /// re-solved with the true q, and the error reported is the true problem's.
 pub fn lemke(lcp: &Lcp, settings: &LemkeSettings) -> LcpSolution {
-    // Each run's error is measured on the problem as posed; the best one is
-    // kept (a solution first, then the smaller error). No run wins
-    // everywhere: scaling rescues block-scaled M (D A D with D over 1e±100)
-    // and loses the digits of small components when q is not scaled alike;
-    // the covering vector |q| keeps them (z0 starts at 1 instead of
-    // max|q_i|, so q_i of 1e-1 beside 1e140 is not absorbed).
-    let key = |s: &LcpSolution| (!s.status.is_solution(), s.residuals.error);
+    // The textbook run first (covering vector e, the pivot tolerance
+    // relative to the entering column). Where it does not end on a checked
+    // solution, the other runs are tried, and one of their answers is taken
+    // only if it is a solution within ACCEPT_TOL on the problem as posed:
+    // - D M D (when M's diagonal spreads over 1e6) rescues block-scaled M;
+    // - the covering vector |q| keeps small components beside huge ones
+    //   (z0 starts at 1 instead of max|q_i|);
+    // both with the pivot-noise test that follows the data.
+    let first = lemke_as_posed(lcp, settings, Cover::Ones, Noise::Column);
     let good = |s: &LcpSolution| s.status == Status::Solved && s.residuals.error <= RETRY_ABOVE;
-    let mut best = lemke_as_posed(lcp, settings, Cover::Ones);
+    if good(&first) {
+        return first;
+    }
     let scaling = diagonal_scaling(lcp);
+    let mut retries = Vec::new();
     if let Some(d) = &scaling {
-        let scaled = lemke_scaled(lcp, d, settings, Cover::Ones);
-        if key(&scaled) < key(&best) {
-            best = scaled;
-        }
+        retries.push(lemke_scaled(lcp, d, settings, Cover::Ones));
     }
-    if !good(&best) {
-        let mut tries = vec![lemke_as_posed(lcp, settings, Cover::MinusQ)];
-        if let Some(d) = &scaling {
-            tries.push(lemke_scaled(lcp, d, settings, Cover::MinusQ));
-        }
-        for t in tries {
-            if key(&t) < key(&best) {
-                best = t;
-            }
-        }
+    retries.push(lemke_as_posed(lcp, settings, Cover::MinusQ, Noise::Data));
+    if let Some(d) = &scaling {
+        retries.push(lemke_scaled(lcp, d, settings, Cover::MinusQ));
     }
-    best
+    let accepted = |s: &LcpSolution| s.status == Status::Solved && s.residuals.error <= ACCEPT_TOL;
+    retries
+        .into_iter()
+        .filter(accepted)
+        .min_by(|a, b| a.residuals.error.total_cmp(&b.residuals.error))
+        .filter(|r| !accepted(&first) || r.residuals.error < first.residuals.error)
+        .unwrap_or(first)
+}
+
+/// Which entries of the entering column count as pivots.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Noise {
+    /// Above `pivot_tol` times the column's largest magnitude (the textbook
+    /// run).
+    Column,
+    /// Above `pivot_tol` times the rounding the entry can carry,
+    /// ε·Σ_j |B⁻¹_ij|·|a_j| with a the column in the original data: an entry
+    /// small only because the data are (a row scaled by 1e-200) stays a pivot.
+    Data,
 }
 
 /// A first answer with a larger error (or no solution) makes Lemke try the
@@ -132,7 +145,7 @@ fn lemke_scaled(lcp: &Lcp, d: &[f64], settings: &LemkeSettings, cover: Cover) ->
         m: (0..n * n).map(|k| d[k / n] * lcp.m[k] * d[k % n]).collect(),
         q: lcp.q.iter().zip(d).map(|(q, d)| q * d).collect(),
     };
-    let s = lemke_as_posed(&scaled, settings, cover);
+    let s = lemke_as_posed(&scaled, settings, cover, Noise::Data);
     let z: Vec<f64> = s.z.iter().zip(d).map(|(z, d)| z * d).collect();
     let mut sol = LcpSolution::from_z(lcp, s.status, z, s.counters);
     sol.basis = s.basis;
@@ -183,7 +196,7 @@ fn diagonal_scaling(lcp: &Lcp) -> Option<Vec<f64>> {
 }
 
 /// [`lemke`] on the problem as posed, without scaling.
-fn lemke_as_posed(lcp: &Lcp, settings: &LemkeSettings, cover: Cover) -> LcpSolution {
+fn lemke_as_posed(lcp: &Lcp, settings: &LemkeSettings, cover: Cover, noise: Noise) -> LcpSolution {
     let n = lcp.n();
     let mut counters = Counters::default();
     if lcp.q.iter().all(|&v| v >= 0.0) {
@@ -201,7 +214,7 @@ fn lemke_as_posed(lcp: &Lcp, settings: &LemkeSettings, cover: Cover) -> LcpSolut
         let q: Vec<f64> = (0..n)
             .map(|i| lcp.q[i] + eta * qmax * (1.0 + (i as f64 * 0.618_033_988_749_895).fract()))
             .collect();
-        let (end, basic, t) = pivot_path(lcp, &q, &d, settings, &mut counters);
+        let (end, basic, t) = pivot_path(lcp, &q, &d, noise, settings, &mut counters);
         let (status, checked) = match end {
             PathEnd::Cycled => continue,
             PathEnd::ArtificialAtZero => (Status::Solved, true),
@@ -273,6 +286,7 @@ fn pivot_path(
     lcp: &Lcp,
     q: &[f64],
     cover: &[f64],
+    noise_rule: Noise,
     settings: &LemkeSettings,
     counters: &mut Counters,
 ) -> (PathEnd, Vec<usize>, Vec<f64>) {
@@ -311,18 +325,16 @@ fn pivot_path(
             break PathEnd::Cycled;
         }
         let colmax = (0..n).fold(0.0f64, |m, i| m.max(t[i * cols + entering].abs()));
-        // Entry i of the entering column is B⁻¹_i · a, with a the column in
-        // the original data: its rounding is about ε·Σ_j |B⁻¹_ij|·|a_j|. An
-        // entry below pivot_tol times that sum is rounding, not a pivot; an
-        // entry that is small only because the data are (a row scaled by
-        // 1e-200) stays a candidate.
-        let a = original_column(lcp, cover, entering);
-        let noise = |i: usize| {
-            let mut sum = 0.0;
-            for (j, aj) in a.iter().enumerate() {
-                sum += t[i * cols + j].abs() * aj.abs();
+        let a = (noise_rule == Noise::Data).then(|| original_column(lcp, cover, entering));
+        let noise = |i: usize| match &a {
+            None => settings.pivot_tol * colmax,
+            Some(a) => {
+                let mut sum = 0.0;
+                for (j, aj) in a.iter().enumerate() {
+                    sum += t[i * cols + j].abs() * aj.abs();
+                }
+                settings.pivot_tol * sum
             }
-            settings.pivot_tol * sum
         };
         let candidates: Vec<usize> = (0..n)
             .filter(|&i| t[i * cols + entering] > noise(i))

@@ -62,7 +62,8 @@ impl Default for SolverSettings {
 }
 
 impl SolverSettings {
-    /// Default settings for `solver`.
+    /// Default settings for `solver` (the tests' shorthand).
+    #[cfg(test)]
     pub fn with_solver(solver: Solver) -> Self {
         SolverSettings {
             solver,

@@ -1,11 +1,11 @@
-//! Helpers shared by the integration tests: where the conformance data lies,
-//! solver shorthands, and the scale-aware comparisons the tests report with.
+//! Helpers shared by the command-line tests: where the conformance data
+//! lies, temporary folders, running the binary, and whether a GPU adapter is
+//! there (the library's own tests have theirs in src/tests/common.rs).
 #![allow(dead_code)]
 
 use std::path::PathBuf;
 
-use lcpbatch::cpu::enumeration::EnumerationSettings;
-use lcpbatch::{solve, Lcp, LcpSolution, Solver, SolverSettings};
+use lcpbatch::{Backend, GpuSettings, Method, Precision, Settings, Solver};
 
 /// The conformance folder: `$LCPBATCH_CONFORMANCE`, else `../shared/conformance`
 /// beside the crate. `None` (with a line on stderr) when it is absent, so
@@ -41,109 +41,6 @@ pub fn siconos_dir() -> Option<PathBuf> {
     }
 }
 
-/// Default settings of `solver`.
-pub fn settings(solver: Solver) -> SolverSettings {
-    SolverSettings::with_solver(solver)
-}
-
-/// Enumeration visiting every basis.
-pub fn all_solutions_settings() -> SolverSettings {
-    SolverSettings {
-        solver: Solver::Enum,
-        enumeration: EnumerationSettings {
-            all_solutions: true,
-            ..Default::default()
-        },
-        ..Default::default()
-    }
-}
-
-/// Solves with `solver`'s default settings; panics on an `Error` (the tests
-/// only hand solvers problems they accept).
-pub fn run(lcp: &Lcp, solver: Solver) -> LcpSolution {
-    solve(lcp, &settings(solver)).unwrap_or_else(|e| panic!("{}: {e}", solver.name()))
-}
-
-pub const SOLVERS: [Solver; 3] = [Solver::Enum, Solver::Lemke, Solver::Pgs];
-
-/// ‖v‖∞.
-pub fn inf_norm(v: &[f64]) -> f64 {
-    v.iter().fold(0.0f64, |m, x| m.max(x.abs()))
-}
-
-/// max_i |a_i − b_i|.
-pub fn max_diff(a: &[f64], b: &[f64]) -> f64 {
-    assert_eq!(a.len(), b.len());
-    a.iter()
-        .zip(b)
-        .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()))
-}
-
-/// ‖M‖∞: the largest absolute row sum.
-pub fn matrix_inf_norm(lcp: &Lcp) -> f64 {
-    let n = lcp.n();
-    (0..n)
-        .map(|i| (0..n).map(|j| lcp.at(i, j).abs()).sum::<f64>())
-        .fold(0.0, f64::max)
-}
-
-/// The scale of w for solutions of size up to `zmax`: ‖q‖∞ + ‖M‖∞·zmax, the
-/// size of the terms whose sum is w. Differences in w are measured against it.
-pub fn w_scale(lcp: &Lcp, zmax: f64) -> f64 {
-    (inf_norm(&lcp.q) + matrix_inf_norm(lcp) * zmax).max(f64::MIN_POSITIVE)
-}
-
-/// Relative difference of two w vectors of `lcp` whose z are `za`, `zb`:
-/// max|wa − wb| / (‖q‖∞ + ‖M‖∞ · max(‖za‖∞, ‖zb‖∞)).
-pub fn w_rel_diff(lcp: &Lcp, za: &[f64], wa: &[f64], zb: &[f64], wb: &[f64]) -> f64 {
-    max_diff(wa, wb) / w_scale(lcp, inf_norm(za).max(inf_norm(zb)))
-}
-
-/// Relative difference of two z vectors: max|za − zb| / max(‖za‖∞, ‖zb‖∞)
-/// (0 when both are zero).
-pub fn z_rel_diff(za: &[f64], zb: &[f64]) -> f64 {
-    let s = inf_norm(za).max(inf_norm(zb));
-    if s == 0.0 {
-        0.0
-    } else {
-        max_diff(za, zb) / s
-    }
-}
-
-/// Is the symmetric part of M positive definite, with the smallest Cholesky
-/// pivot at least `rel_tol` times the largest diagonal entry? Then the LCP's
-/// solution is unique. (For the symmetric matrices of contact islands this is
-/// M itself.)
-pub fn is_positive_definite(lcp: &Lcp, rel_tol: f64) -> bool {
-    let n = lcp.n();
-    let mut a: Vec<f64> = (0..n * n)
-        .map(|k| 0.5 * (lcp.m[k] + lcp.at(k % n, k / n)))
-        .collect();
-    let dmax = (0..n).map(|i| a[i * n + i]).fold(0.0f64, f64::max);
-    if dmax.is_nan() || dmax <= 0.0 {
-        return false;
-    }
-    for j in 0..n {
-        let mut d = a[j * n + j];
-        for k in 0..j {
-            d -= a[j * n + k] * a[j * n + k];
-        }
-        if d.is_nan() || d <= rel_tol * dmax {
-            return false;
-        }
-        let l = d.sqrt();
-        a[j * n + j] = l;
-        for i in j + 1..n {
-            let mut s = a[i * n + j];
-            for k in 0..j {
-                s -= a[i * n + k] * a[j * n + k];
-            }
-            a[i * n + j] = s / l;
-        }
-    }
-    true
-}
-
 /// A directory under the system temp dir, unique to this process and `tag`,
 /// created empty.
 pub fn temp_dir(tag: &str) -> PathBuf {
@@ -162,64 +59,35 @@ pub fn temp_dir(tag: &str) -> PathBuf {
     dir
 }
 
-/// A GPU context at `precision` for the GPU tests: None (with a line on
-/// stderr) only when f64 is asked of an adapter without SHADER_F64; with no
-/// adapter at all the test fails, saying how to install one (GPU tests must
-/// never be skipped where an adapter can be installed).
-pub fn gpu_context(precision: lcpbatch::gpu::Precision) -> Option<lcpbatch::gpu::GpuContext> {
-    use lcpbatch::gpu::{GpuContext, GpuOptions, Precision, INSTALL_HINT};
-    let mut o = GpuOptions::from_env().expect("GPU environment variables");
-    o.precision = precision;
-    match GpuContext::new(&o) {
-        Ok(c) => Some(c),
-        Err(e) if precision == Precision::F64 && e.to_string().contains("SHADER_F64") => {
-            eprintln!("skipping the f64 run: {e}");
-            None
+/// Set (to anything) in CI: a GPU test that finds no adapter fails
+/// instead of skipping (`.ci/run` installs lavapipe and sets it).
+pub const REQUIRE_GPU: &str = "LCPBATCH_REQUIRE_GPU";
+
+/// Whether the environment's adapter (`LCPBATCH_GPU_*`) opens at
+/// `precision`. Without any adapter: false with a line on stderr saying the
+/// test skips, or a failure where [`REQUIRE_GPU`] is set. f64 on an
+/// adapter without it: false.
+pub fn gpu_available(precision: Precision) -> bool {
+    let gpu = GpuSettings {
+        precision,
+        ..GpuSettings::from_env().expect("GPU environment variables")
+    };
+    let s = Solver::new(Settings {
+        gpu,
+        ..Settings::new(Backend::Gpu, Method::Enumeration)
+    })
+    .expect("valid settings");
+    match s.fallback() {
+        None => true,
+        Some(why) if precision == Precision::F64 && why.contains("SHADER_F64") => false,
+        Some(why) => {
+            if std::env::var_os(REQUIRE_GPU).is_some() {
+                panic!("no GPU adapter ({why}); {REQUIRE_GPU} is set: GPU tests must run here");
+            }
+            eprintln!("skipping a GPU test: {why}; {}", lcpbatch::INSTALL_HINT);
+            false
         }
-        Err(e) => panic!("no GPU adapter ({e}): {INSTALL_HINT}"),
     }
-}
-
-/// Seed 002's non-symmetric M (zero diagonal: no principal pivot order from
-/// the empty basis) with q = (−3, 6, −1), (−3, 6, 1) and (1, 1, 1).
-pub fn seed_002_problems() -> Vec<Lcp> {
-    [[-3.0, 6.0, -1.0], [-3.0, 6.0, 1.0], [1.0, 1.0, 1.0]]
-        .iter()
-        .map(|q| {
-            Lcp::new(
-                vec![0.0, -1.0, 2.0, 2.0, 0.0, -2.0, -1.0, 1.0, 0.0],
-                q.to_vec(),
-            )
-            .unwrap()
-        })
-        .collect()
-}
-
-/// Fixed-seed physical islands of at most `max_n` contacts: `count` random
-/// islands of 1…max_n contacts (mass ratios 1, 1e2, 1e4 in turn), a box
-/// resting on 4 coplanar contacts, the seed chain and 10 demo worlds; then
-/// [`seed_002_problems`].
-pub fn physical_islands(seed: u64, count: usize, max_n: usize) -> Vec<Lcp> {
-    use lcpbatch::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};
-    let mut rng = Rng::new(seed);
-    let mut scenes = vec![box_on_ground(1.0, 0.5), seed_chain(0.3)];
-    for k in 0..count {
-        scenes.push(random_island(
-            &mut rng,
-            1 + k % max_n,
-            [1.0, 1e2, 1e4][k % 3],
-        ));
-    }
-    for _ in 0..10 {
-        scenes.push(demo_world(&mut rng));
-    }
-    let mut lcps: Vec<Lcp> = scenes
-        .iter()
-        .flat_map(|s| lcpbatch::pipeline::build(s, "scene").unwrap().2)
-        .filter(|l| l.n() <= max_n)
-        .collect();
-    lcps.extend(seed_002_problems());
-    lcps
 }
 
 /// Runs the `lcpbatch` binary with `args` (lavapipe quietened by

@@ -31,6 +31,9 @@ struct Cli {
 
 #[derive(Clone, Copy, ValueEnum)]
 enum SolverArg {
+    /// The fastest exact path: prediction, Lemke checked in f64, enumeration
+    /// where the check fails (the GPU enumerates).
+    Auto,
     Enum,
     Lemke,
     Pgs,
@@ -95,8 +98,8 @@ enum Command {
     Solve {
         /// Input file (.json or .dat).
         file: PathBuf,
-        /// Solver for every problem or island.
-        #[arg(long, value_enum, default_value = "enum")]
+        /// Method for every problem or island.
+        #[arg(long, value_enum, default_value = "auto")]
         solver: SolverArg,
         /// Enumeration only: visit every basis and report every solution.
         #[arg(long)]
@@ -383,17 +386,19 @@ fn run(cli: Cli) -> Result<(), Error> {
             gpu,
         } => {
             let method = match solver {
+                SolverArg::Auto => Method::Auto,
                 SolverArg::Enum => Method::Enumeration,
                 SolverArg::Lemke => Method::Lemke,
                 SolverArg::Pgs => Method::Pgs,
             };
-            if all_solutions && method != Method::Enumeration {
+            if all_solutions && !matches!(method, Method::Auto | Method::Enumeration) {
                 return Err(Error::Unsupported(
-                    "--all-solutions needs --solver enum".into(),
+                    "--all-solutions needs --solver auto or enum".into(),
                 ));
             }
             // The GPU enumerates; Lemke, PGS and --all-solutions run on the CPU.
-            let gpu_capable = method == Method::Enumeration && !all_solutions;
+            let gpu_capable =
+                matches!(method, Method::Auto | Method::Enumeration) && !all_solutions;
             if backend == BackendArg::Gpu && !gpu_capable {
                 return Err(Error::Unsupported(
                     "--backend gpu solves by enumeration only (no --solver lemke/pgs, no --all-solutions)"

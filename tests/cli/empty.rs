@@ -3,10 +3,7 @@
 
 use std::path::PathBuf;
 
-use lcpbatch::gpu::{GpuContext, GpuOptions};
-
-mod common;
-use common::lcpbatch;
+use super::common::lcpbatch;
 
 fn temp(name: &str, text: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("lcpbatch-empty-{}", std::process::id()));
@@ -28,7 +25,7 @@ fn solve(file: &PathBuf, backend: &str) -> (serde_json::Value, String) {
 fn an_empty_scene_gives_an_empty_result_on_every_backend() {
     let f = temp("empty.json", r#"{"bodies":[],"contacts":[]}"#);
     let expected = serde_json::json!({"scenes": [{"contacts": [], "bodies": [], "islands": []}]});
-    let gpu_ok = GpuContext::new(&GpuOptions::from_env().unwrap()).is_ok();
+    let gpu_ok = super::common::gpu_available(lcpbatch::Precision::Auto);
     for backend in ["cpu", "gpu", "auto"] {
         let (v, err) = solve(&f, backend);
         assert_eq!(v, expected, "--backend {backend}");

@@ -5,16 +5,16 @@
 //! the elimination kernel's answers. Its speed is measured by
 //! `cargo bench --bench gpu_kernels`.
 
-use lcpbatch::cpu::enumeration::enumerate;
-use lcpbatch::cpu::enumeration_tree::{enumerate_tree, TreeOutcome, TreeSettings, TREE_MAX_N};
-use lcpbatch::gpu::batch::{enumerate_on_gpu, EnumerationKernel};
-use lcpbatch::gpu::layout::{FOUND, TREE_DECIDED, TREE_UNDECIDED};
-use lcpbatch::gpu::{solve_lcp_batch, GpuSolveSettings, Precision};
-use lcpbatch::prediction::{is_positive_definite, is_positive_semidefinite};
-use lcpbatch::Lcp;
+use crate::cpu::enumeration::enumerate;
+use crate::cpu::enumeration_tree::{enumerate_tree, TreeOutcome, TreeSettings, TREE_MAX_N};
+use crate::gpu::batch::{enumerate_on_gpu, EnumerationKernel};
+use crate::gpu::layout::{FOUND, TREE_DECIDED, TREE_UNDECIDED};
+use crate::gpu::{solve_lcp_batch, GpuSolveSettings, Precision};
+use crate::prediction::{is_positive_definite, is_positive_semidefinite};
+use crate::Lcp;
 
-mod common;
-use common::gpu_context as context;
+use super::common;
+use super::common::gpu_context as context;
 
 /// Physical islands n = 1…8 (most positive definite; resting boxes are
 /// semidefinite: small pivots), seed 002's non-symmetric problems (zero
@@ -106,7 +106,7 @@ fn tree_kernel_with_a_prefix_loop_equals_its_cpu_twin_in_f64() {
         ..tree_only()
     };
     for n in 9..=TREE_MAX_N {
-        let lcps = lcpbatch::bench::islands_of_size(n, 48, 7 + n as u64);
+        let lcps = crate::generate::families::islands_of_size(n, 48, 7 + n as u64);
         let refs: Vec<&Lcp> = lcps.iter().collect();
         let (out, stats) = enumerate_on_gpu(&ctx, &refs, &settings).unwrap();
         println!(
@@ -171,7 +171,7 @@ fn tree_decisions_are_enumerations_on_positive_definite_islands() {
 /// does (basis and z), and the kernel in f64 as the twin.
 #[test]
 fn semidefinite_islands_decide_as_enumeration() {
-    use lcpbatch::stress::{generate, Family};
+    use crate::generate::stress::{generate, Family};
     let mut lcps: Vec<Lcp> = Vec::new();
     for family in [Family::RestingStacks, Family::Chains] {
         lcps.extend(
@@ -182,9 +182,13 @@ fn semidefinite_islands_decide_as_enumeration() {
         );
     }
     lcps.extend(
-        lcpbatch::bench::family_batch(lcpbatch::bench::BenchFamily::RestingStacks, 9, 400)
-            .into_iter()
-            .filter(|l| l.n() <= TREE_MAX_N && semidefinite(l)),
+        crate::generate::families::family_batch(
+            crate::generate::families::BenchFamily::RestingStacks,
+            9,
+            400,
+        )
+        .into_iter()
+        .filter(|l| l.n() <= TREE_MAX_N && semidefinite(l)),
     );
     let (mut decided, mut left) = (0, 0);
     for (i, l) in lcps.iter().enumerate() {

@@ -9,11 +9,10 @@
 //! - seed 001's exercises: the QP, the 1-D interval QP, the coupled 2×2 NCP,
 //!   the friction-disc projections and the one-step DVI.
 
-mod common;
-
-use common::{all_solutions_settings, run, SOLVERS};
-use lcpbatch::cpu::enumeration::{solve_basis, BasisOutcome, EnumerationSettings};
-use lcpbatch::{solve, Lcp, LcpSolution, SolutionSet, Solver, Status};
+use super::common::{all_solutions_settings, run, SOLVERS};
+use crate::cpu::enumeration::{solve_basis, BasisOutcome, EnumerationSettings};
+use crate::solvers::{solve, Solver};
+use crate::{Lcp, LcpSolution, SolutionSet, Status};
 
 /// Asserts that `sol` is a solution with the expected z (and w when given) to
 /// `tol` absolute (the examples are of order 1).

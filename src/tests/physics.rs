@@ -1,21 +1,22 @@
 //! Physics of the impact: what the solved impulses do to the bodies.
 //!
-//! Scenes come from `lcpbatch::generate`; the pipeline solves them and
+//! Scenes come from `crate::generate`; the pipeline solves them and
 //! `cpu::impulses` applies the impulses. Conventions (seed 000): n points from
 //! b to a, the impulse is +z n on a and −z n on b, q = v_rel + ε min(v_rel, 0).
 
-mod common;
+use super::common;
 
-use common::{inf_norm, w_scale, SOLVERS};
-use glam::{DMat3, DVec3};
-use lcpbatch::cpu::assembly::{assemble_contacts, assemble_island};
-use lcpbatch::cpu::impulses::{apply_impulses, relative_normal_velocities, BodyVelocity};
-use lcpbatch::generate::{
+use super::common::{inf_norm, w_scale, SOLVERS};
+use crate::cpu::assembly::{assemble_contacts, assemble_island};
+use crate::cpu::impulses::{apply_impulses, relative_normal_velocities, BodyVelocity};
+use crate::generate::{
     ball_body, box_body, box_on_ground, random_island, random_scene, seed_chain, Rng,
 };
-use lcpbatch::islands::{find_islands, Island};
-use lcpbatch::pipeline::solve_scene;
-use lcpbatch::{solve, Contact, Scene, Solver, SolverSettings, Status};
+use crate::islands::{find_islands, Island};
+use crate::pipeline::solve_scene;
+use crate::solvers::{solve, Solver, SolverSettings};
+use crate::{Contact, Scene, Status};
+use glam::{DMat3, DVec3};
 
 fn settings(s: Solver) -> SolverSettings {
     SolverSettings::with_solver(s)
@@ -543,7 +544,7 @@ fn swapping_a_contacts_bodies_and_flipping_its_normal_changes_nothing() {
         let scene = random_island(&mut rng, 1 + k % 8, 100.0);
         let mut flipped = scene.clone();
         let world = flipped.bodies.len();
-        flipped.bodies.push(lcpbatch::Body::fixed([0.0, -3.0, 0.0]));
+        flipped.bodies.push(crate::Body::fixed([0.0, -3.0, 0.0]));
         for c in &mut flipped.contacts {
             let b = c.b.unwrap_or(world);
             c.b = Some(c.a);

@@ -5,19 +5,19 @@
 use std::path::PathBuf;
 use std::time::Instant;
 
-use lcpbatch::cpu::enumeration::{enumerate, EnumerationSettings};
-use lcpbatch::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};
-use lcpbatch::gpu::{
+use crate::cpu::enumeration::{enumerate, EnumerationSettings};
+use crate::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};
+use crate::gpu::{
     solve_lcp_batch, solve_scenes, GpuContext, GpuOptions, GpuSolveSettings, Precision, SolvedOn,
 };
-use lcpbatch::io::{read_input, Input};
-use lcpbatch::pipeline::solve_scene;
-use lcpbatch::{Lcp, Scene, SolverSettings, Status};
+use crate::io::{read_input, Input};
+use crate::pipeline::solve_scene;
+use crate::solvers::SolverSettings;
+use crate::{Lcp, Scene, Status};
 
 /// A fresh context at `precision`. No adapter fails the test with the
 /// install hint: GPU tests never skip.
-mod common;
-use common::gpu_context as context;
+use super::common::gpu_context as context;
 
 /// Appends `s` to `world` as independent bodies and contacts.
 fn append(world: &mut Scene, s: Scene) {
@@ -52,7 +52,7 @@ pub fn physical_scenes(min_islands: usize) -> (Vec<Scene>, usize) {
             }
             k += 1;
         }
-        islands += lcpbatch::islands::find_islands(&world).len();
+        islands += crate::islands::find_islands(&world).len();
         scenes.push(world);
     }
     (scenes, islands)
@@ -275,8 +275,8 @@ fn siconos_batch_matches_the_cpu() {
     }
 }
 
-fn lclemke(lcp: &Lcp) -> lcpbatch::LcpSolution {
-    lcpbatch::solvers::lemke::lemke(lcp, &Default::default())
+fn lclemke(lcp: &Lcp) -> crate::LcpSolution {
+    crate::solvers::lemke::lemke(lcp, &Default::default())
 }
 
 /// Mixed sizes 1…16 as an LCP batch: a batch split into many chunks and
@@ -295,7 +295,7 @@ fn split_batches_give_the_same_answers() {
             continue;
         }
         let s = random_island(&mut rng, n, 1e3);
-        lcps.extend(lcpbatch::pipeline::build(&s, "scene").unwrap().2);
+        lcps.extend(crate::pipeline::build(&s, "scene").unwrap().2);
     }
     lcps.push(Lcp {
         m: vec![1.0, f64::NAN, 0.0, 1.0],

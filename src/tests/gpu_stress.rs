@@ -3,10 +3,10 @@
 //! basis is feasible to the strict tolerance and the least infeasible one
 //! within the relaxed tolerance is chosen.
 
-use lcpbatch::cpu::enumeration::{enumerate, EnumerationSettings};
-use lcpbatch::gpu::{solve_lcp_batch, GpuContext, GpuOptions, GpuSolveSettings, Precision};
-use lcpbatch::stress::{generate, Family};
-use lcpbatch::Lcp;
+use crate::cpu::enumeration::{enumerate, EnumerationSettings};
+use crate::generate::stress::{generate, Family};
+use crate::gpu::{solve_lcp_batch, GpuContext, GpuOptions, GpuSolveSettings, Precision};
+use crate::Lcp;
 
 #[test]
 fn stress_families_match_the_cpu_in_f64() {
@@ -44,7 +44,7 @@ fn stress_families_match_the_cpu_in_f64() {
         assert_eq!(o.solution.status, cpu.status, "{name} case {i}: status");
         assert_eq!(o.solution.basis, cpu.basis, "{name} case {i}: basis");
         if o.gpu
-            .is_some_and(|g| g.status == lcpbatch::gpu::layout::RELAXED)
+            .is_some_and(|g| g.status == crate::gpu::layout::RELAXED)
         {
             relaxed += 1;
         }
@@ -89,11 +89,11 @@ fn the_relaxed_rule_matches_the_cpu() {
         assert_eq!(isl.solution.z, cpu.z, "{precision:?}");
         let g = isl.gpu.expect("ran on the GPU");
         if precision == Precision::F64 {
-            assert_eq!(g.status, lcpbatch::gpu::layout::RELAXED);
+            assert_eq!(g.status, crate::gpu::layout::RELAXED);
             assert_eq!(g.visited, 4);
             assert_eq!(r.report.polished, 1);
         } else {
-            assert_eq!(g.status, lcpbatch::gpu::layout::FOUND);
+            assert_eq!(g.status, crate::gpu::layout::FOUND);
             assert_eq!(r.report.repaired, 1);
         }
     }

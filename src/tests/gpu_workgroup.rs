@@ -5,16 +5,16 @@
 //! validated answers in f32. Speeds: `cargo bench --bench gpu_path --
 //! gpu_workgroup` (BENCHMARKS.md).
 
-use lcpbatch::bench::islands_of_size;
-use lcpbatch::cpu::enumeration::{enumerate, EnumerationSettings};
-use lcpbatch::gpu::batch::{enumerate_on_gpu, EnumerationKernel};
-use lcpbatch::gpu::layout::{FOUND, NONE, RELAXED};
-use lcpbatch::gpu::{solve_lcp_batch, GpuContext, GpuSolveSettings, Precision};
-use lcpbatch::stress::{generate, Family};
-use lcpbatch::{Lcp, Status};
+use crate::cpu::enumeration::{enumerate, EnumerationSettings};
+use crate::generate::families::islands_of_size;
+use crate::generate::stress::{generate, Family};
+use crate::gpu::batch::{enumerate_on_gpu, EnumerationKernel};
+use crate::gpu::layout::{FOUND, NONE, RELAXED};
+use crate::gpu::{solve_lcp_batch, GpuContext, GpuSolveSettings, Precision};
+use crate::{Lcp, Status};
 
-mod common;
-use common::gpu_context as context;
+use super::common;
+use super::common::gpu_context as context;
 
 /// Random physical islands of exactly n = 8…16 contacts (`per_n` each),
 /// resting stacks and chains (n ≤ 16), and small hand-made problems with

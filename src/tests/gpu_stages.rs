@@ -3,21 +3,20 @@
 //! island), enumeration (chosen basis and counters), impulses (through the
 //! scene pipeline's check).
 
-use lcpbatch::cpu::assembly::ContactRow;
-use lcpbatch::cpu::enumeration::{enumerate, EnumerationSettings};
-use lcpbatch::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};
-use lcpbatch::gpu::batch::{enumerate_on_gpu, EnumerationKernel};
-use lcpbatch::gpu::layout::{
+use crate::cpu::assembly::ContactRow;
+use crate::cpu::enumeration::{enumerate, EnumerationSettings};
+use crate::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};
+use crate::gpu::batch::{enumerate_on_gpu, EnumerationKernel};
+use crate::gpu::layout::{
     assemble_contacts_packed, pack_body, pack_contact, unpack_row, DYNAMIC_A, DYNAMIC_B,
 };
-use lcpbatch::gpu::scenes::assemble_on_gpu;
-use lcpbatch::gpu::{GpuSolveSettings, Precision};
-use lcpbatch::islands::find_islands;
-use lcpbatch::pipeline::build;
-use lcpbatch::{Body, Contact, Lcp, Scene};
+use crate::gpu::scenes::assemble_on_gpu;
+use crate::gpu::{GpuSolveSettings, Precision};
+use crate::islands::find_islands;
+use crate::pipeline::build;
+use crate::{Body, Contact, Lcp, Scene};
 
-mod common;
-use common::gpu_context as context;
+use super::common::gpu_context as context;
 
 fn scenes() -> Vec<Scene> {
     let mut rng = Rng::new(7);

@@ -1,12 +1,11 @@
 //! The seeds' worked examples through the GPU, in f64 and in f32.
 
-use lcpbatch::gpu::{solve_lcp_batch, GpuSolveSettings, Precision, SolvedOn};
-use lcpbatch::{Lcp, Status};
+use crate::gpu::{solve_lcp_batch, GpuSolveSettings, Precision, SolvedOn};
+use crate::{Lcp, Status};
 
 /// A fresh context at `precision`; a missing adapter fails the test with the
 /// install hint (GPU tests never skip).
-mod common;
-use common::gpu_context as context;
+use super::common::gpu_context as context;
 
 fn seeds() -> Vec<(Lcp, Vec<f64>, Vec<f64>)> {
     vec![

@@ -5,11 +5,10 @@
 use std::path::PathBuf;
 
 use lcpbatch::generate::{demo_world, seed_chain, Rng};
-use lcpbatch::gpu::{GpuContext, GpuOptions, Precision};
+use lcpbatch::Precision;
 use lcpbatch::Scene;
 
-mod common;
-use common::lcpbatch;
+use super::common::lcpbatch;
 
 fn ok(args: &[&str]) -> String {
     let out = lcpbatch(args);
@@ -17,7 +16,7 @@ fn ok(args: &[&str]) -> String {
     assert!(
         out.status.success(),
         "lcpbatch {args:?} failed: {err}\n(no GPU adapter? {})",
-        lcpbatch::gpu::INSTALL_HINT
+        lcpbatch::INSTALL_HINT
     );
     String::from_utf8(out.stdout).expect("utf-8")
 }
@@ -47,17 +46,26 @@ fn gpu_and_cpu_backends_write_the_same_output() {
             {"M":[[1,0],[0,1]],"q":[1,2]}]}"#,
     );
     // The adapter the CLI will pick (same environment): does it have f64?
-    let f64_adapter = GpuContext::new(&GpuOptions {
-        precision: Precision::F64,
-        ..GpuOptions::from_env().unwrap()
-    })
-    .is_ok();
+    if !super::common::gpu_available(Precision::Auto) {
+        return;
+    }
+    let f64_adapter = super::common::gpu_available(Precision::F64);
     for file in [&scenes_file, &batch_file] {
         let f = file.to_str().unwrap();
-        let cpu = ok(&["solve", f, "--backend", "cpu"]);
+        let cpu = ok(&["solve", f, "--backend", "cpu", "--solver", "enum"]);
         if f64_adapter {
             let gpu = ok(&["solve", f, "--backend", "gpu", "--precision", "f64"]);
-            let auto = ok(&["solve", f, "--backend", "auto", "--precision", "f64"]);
+            // The GPU enumerates (the default method is enumeration there).
+            let auto = ok(&[
+                "solve",
+                f,
+                "--backend",
+                "auto",
+                "--solver",
+                "enum",
+                "--precision",
+                "f64",
+            ]);
             // Both paths settle the same islands by prediction and
             // enumerate the rest in the same order: byte for byte.
             assert_eq!(gpu, cpu, "{f}: GPU output differs from the CPU's");
@@ -108,11 +116,15 @@ fn gpu_and_cpu_backends_write_the_same_output() {
 
 #[test]
 fn info_lists_adapters_and_features() {
+    if !super::common::gpu_available(Precision::Auto) {
+        return;
+    }
     let text = ok(&["info"]);
     assert!(text.contains("adapters:"), "{text}");
     assert!(text.contains("features: f64"), "{text}");
     assert!(text.contains("limits: storage binding"), "{text}");
-    assert!(text.contains("chosen: "), "{text}");
+    assert!(text.contains("backend auto: "), "{text}");
+    assert!(text.contains("backend gpu: "), "{text}");
     let f = temp(
         "one.json",
         r#"{"problems":[{"M":[[2,1],[1,2]],"q":[-5,-6]}]}"#,
@@ -126,7 +138,7 @@ fn info_lists_adapters_and_features() {
         "no such adapter 7",
     ];
     // Device trouble: gpu, like auto, warns and solves on the CPU
-    // (tests/device_trouble.rs checks the output is the CPU's).
+    // (tests/cli/trouble.rs checks the output is the CPU's).
     let out = lcpbatch(&args);
     assert!(out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);
@@ -148,16 +160,31 @@ fn info_lists_adapters_and_features() {
 }
 
 #[test]
-fn demo_prints_its_summary() {
+fn demo_prints_its_summary_and_the_other_path() {
+    // Auto: the CPU unless there is a hardware GPU; the other path compared.
     let text = ok(&["demo", "--worlds", "200"]);
     for needle in [
-        "adapter: ",
+        "device: ",
         "islands: ",
         "statuses: solved",
-        "repaired 0",
-        "max error after polish",
+        "max error: ",
         "islands/s",
     ] {
         assert!(text.contains(needle), "`{needle}` missing in:\n{text}");
     }
+    if !super::common::gpu_available(Precision::Auto) {
+        return;
+    }
+    assert!(text.contains("for comparison, "), "{text}");
+    // On the GPU by name: its path counts and figures.
+    let text = ok(&["demo", "--worlds", "200", "--backend", "gpu"]);
+    for needle in [
+        "enumerated_gpu ",
+        "polished ",
+        "gpu: ",
+        "for comparison, CPU path",
+    ] {
+        assert!(text.contains(needle), "`{needle}` missing in:\n{text}");
+    }
+    assert!(!text.contains("repaired"), "{text}");
 }

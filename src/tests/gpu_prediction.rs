@@ -5,17 +5,16 @@
 //! where M ≻ 0 makes z the same), path counts add up to the islands, and a
 //! warm start from the cold bases settles every island that has a basis.
 
-use lcpbatch::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};
-use lcpbatch::gpu::batch::solve_lcp_batch_warm;
-use lcpbatch::gpu::scenes::solve_scenes_warm;
-use lcpbatch::gpu::{
+use crate::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};
+use crate::gpu::batch::solve_lcp_batch_warm;
+use crate::gpu::scenes::solve_scenes_warm;
+use crate::gpu::{
     solve_lcp_batch, solve_scenes, GpuBatchResult, GpuSolveSettings, Precision, SolvedOn,
 };
-use lcpbatch::prediction::SolvePath;
-use lcpbatch::{Lcp, Scene};
+use crate::prediction::SolvePath;
+use crate::{Lcp, Scene};
 
-mod common;
-use common::gpu_context as context;
+use super::common::gpu_context as context;
 
 fn scenes(count: usize) -> Vec<Scene> {
     let mut rng = Rng::new(0x9e3d_2026);
@@ -32,7 +31,7 @@ fn scenes(count: usize) -> Vec<Scene> {
 fn lcps(count: usize) -> Vec<Lcp> {
     let mut out: Vec<Lcp> = scenes(count)
         .iter()
-        .flat_map(|s| lcpbatch::pipeline::build(s, "scene").unwrap().2)
+        .flat_map(|s| crate::pipeline::build(s, "scene").unwrap().2)
         .collect();
     // One separating island, one single contact, one invalid problem.
     out.push(Lcp::new(vec![2.0, 1.0, 1.0, 2.0], vec![1.0, 0.5]).unwrap());
@@ -195,33 +194,4 @@ fn scene_prediction_on_and_off_agree() {
             }
         }
     }
-}
-
-/// `lcpbatch bench`'s GPU rows on the warm family: a warm row re-solves the
-/// batch from the cold bases, settles islands by warm start and gives the
-/// cold answers.
-#[test]
-fn bench_warm_gpu_row_is_identical_to_cold() {
-    use lcpbatch::bench::{family_batch, gpu_rows, BenchFamily};
-    let Some(ctx) = context(Precision::Auto) else {
-        return;
-    };
-    let lcps = family_batch(BenchFamily::WarmResting, 3, 300);
-    let rows = gpu_rows(&ctx, BenchFamily::WarmResting, &lcps).unwrap();
-    for r in &rows {
-        println!("{}: {}", r.solver, r.note);
-    }
-    let warm = rows
-        .iter()
-        .find(|r| r.solver.ends_with(", warm"))
-        .expect("a warm row");
-    assert!(warm.note.contains("identical to cold"), "{}", warm.note);
-    assert!(warm.note.contains("warm_start="), "{}", warm.note);
-    assert!(!warm.note.contains("enumerated="), "{}", warm.note);
-    let cold = gpu_rows(
-        &ctx,
-        BenchFamily::MixedN,
-        &family_batch(BenchFamily::MixedN, 3, 50),
-    );
-    assert!(cold.unwrap().iter().all(|r| !r.solver.ends_with(", warm")));
 }

@@ -13,14 +13,15 @@
 //! factorisation whose every pivot exceeds 1e-8 of the largest diagonal
 //! entry), and the Siconos error of both ≤ 1e-12.
 
-mod common;
+use super::common;
 
-use common::{is_positive_definite, run, w_rel_diff, z_rel_diff};
-use lcpbatch::generate::{random_island, Rng};
-use lcpbatch::io::parse_json;
-use lcpbatch::io::siconos::parse_dat;
-use lcpbatch::pipeline::build;
-use lcpbatch::{Lcp, Solver, Status};
+use super::common::{is_positive_definite, run, w_rel_diff, z_rel_diff};
+use crate::generate::{random_island, Rng};
+use crate::io::parse_json;
+use crate::io::siconos::parse_dat;
+use crate::pipeline::build;
+use crate::solvers::Solver;
+use crate::{Lcp, Status};
 use proptest::prelude::*;
 
 const ISLANDS: usize = 10_000;
@@ -99,12 +100,12 @@ fn enumeration_and_lemke_agree_on_random_islands() {
 /// Jᵀ(z₁ − z₂) = 0). Enumeration and Lemke must agree on both.
 #[test]
 fn enumeration_and_lemke_agree_on_demo_world_islands() {
-    use lcpbatch::pipeline::solve_scene;
-    use lcpbatch::SolverSettings;
+    use crate::pipeline::solve_scene;
+    use crate::solvers::SolverSettings;
     let mut rng = Rng::new(0xDE30);
     let (mut islands, mut singular, mut max_dw, mut max_dv) = (0, 0, 0.0f64, 0.0f64);
     for k in 0..300 {
-        let scene = lcpbatch::generate::demo_world(&mut rng);
+        let scene = crate::generate::demo_world(&mut rng);
         let e = solve_scene(&scene, &SolverSettings::with_solver(Solver::Enum), "demo").unwrap();
         let l = solve_scene(&scene, &SolverSettings::with_solver(Solver::Lemke), "demo").unwrap();
         for (ie, il) in e.islands.iter().zip(&l.islands) {
@@ -134,7 +135,7 @@ fn enumeration_and_lemke_agree_on_demo_world_islands() {
             max_dw = max_dw.max(dw);
             assert!(dw <= TOL, "world {k} island {:?}: dw {dw:.2e}", ie.contacts);
         }
-        let flat = |v: &[lcpbatch::cpu::impulses::BodyVelocity]| -> Vec<f64> {
+        let flat = |v: &[crate::cpu::impulses::BodyVelocity]| -> Vec<f64> {
             v.iter()
                 .flat_map(|b| b.velocity.into_iter().chain(b.angular_velocity))
                 .collect()
@@ -185,15 +186,15 @@ fn random_lcp(rng: &mut Rng, n: usize, integer: bool, psd: bool) -> Lcp {
 /// counted here and asserted absent in `lemke_terminates_on_degenerate_lcps`.
 #[test]
 fn lemke_agrees_with_enumeration_on_small_random_lcps() {
-    use lcpbatch::cpu::enumeration::distinct_solutions;
-    use lcpbatch::SolutionSet;
+    use crate::cpu::enumeration::distinct_solutions;
+    use crate::SolutionSet;
     let mut rng = Rng::new(0x1E3E);
     let (mut solved, mut rays, mut capped) = (0, 0, 0);
     for k in 0..20_000 {
         let n = 1 + k % 7;
         let (integer, psd) = (k % 2 == 0, k % 3 == 0);
         let lcp = random_lcp(&mut rng, n, integer, psd);
-        let e = lcpbatch::solve(&lcp, &common::all_solutions_settings()).unwrap();
+        let e = crate::solvers::solve(&lcp, &common::all_solutions_settings()).unwrap();
         let l = run(&lcp, Solver::Lemke);
         let set = e.solution_set.clone().unwrap();
         let what = format!("LCP {k}: M = {:?}, q = {:?}, enum {set:?}", lcp.m, lcp.q);
@@ -297,7 +298,7 @@ fn enumeration_verdicts_do_not_depend_on_scale() {
         lcps.extend(build(&scene, "island").unwrap().2);
     }
     for _ in 0..100 {
-        let scene = lcpbatch::generate::demo_world(&mut rng);
+        let scene = crate::generate::demo_world(&mut rng);
         lcps.extend(build(&scene, "demo").unwrap().2);
     }
     for (sm, sq) in [
@@ -323,73 +324,6 @@ fn enumeration_verdicts_do_not_depend_on_scale() {
                 z_rel_diff(&a.z, &back) <= 1e-12,
                 "problem {k}, M × {sm:e}, q × {sq:e}"
             );
-        }
-    }
-}
-
-/// The CPU batch path (prediction, then Gray-code enumeration, Lemke above
-/// n = 20, over two threads) against the reference enumeration by
-/// elimination on the same fixed-seed islands: Gray-code enumeration chooses
-/// the same basis and z; the batch path (cold and warm-started from the
-/// reference basis) gives a solution with error ≤ 1e-12 whose w agrees to
-/// 1e-9 (and z where M is positive definite).
-#[test]
-fn batch_path_and_gray_code_enumeration_agree_with_the_reference() {
-    use lcpbatch::cpu::batch::{solve_batch, CpuBatchSettings};
-    use lcpbatch::cpu::enumeration_gray::{enumerate_gray, GraySettings};
-    let mut rng = Rng::new(0xB47C);
-    let mut lcps = Vec::new();
-    for k in 0..5000 {
-        let scene = random_island(&mut rng, 1 + k % 12, MASS_RATIO);
-        lcps.extend(build(&scene, "island").unwrap().2);
-    }
-    for _ in 0..200 {
-        let scene = lcpbatch::generate::demo_world(&mut rng);
-        lcps.extend(build(&scene, "demo").unwrap().2);
-    }
-    let reference: Vec<_> = lcps.iter().map(|l| run(l, Solver::Enum)).collect();
-    let gray = GraySettings::default();
-    for (k, (lcp, r)) in lcps.iter().zip(&reference).enumerate() {
-        let g = enumerate_gray(lcp, &gray).unwrap();
-        assert_eq!(
-            (g.status, g.basis),
-            (r.status, r.basis),
-            "problem {k}: gray vs elimination\n  M = {:?}\n  q = {:?}",
-            lcp.m,
-            lcp.q
-        );
-        assert!(z_rel_diff(&g.z, &r.z) <= 1e-12, "problem {k}");
-    }
-    let settings = CpuBatchSettings {
-        threads: 2,
-        ..Default::default()
-    };
-    let warm: Vec<Option<u32>> = reference.iter().map(|r| r.basis).collect();
-    for (what, warm) in [("cold", None), ("warm", Some(&warm[..]))] {
-        let out = solve_batch(&lcps, warm, &settings).unwrap();
-        assert_eq!(out.len(), lcps.len());
-        for (k, ((lcp, r), b)) in lcps.iter().zip(&reference).zip(&out).enumerate() {
-            let b = &b.solution;
-            let where_ = format!(
-                "{what} problem {k} ({:?})\n  M = {:?}\n  q = {:?}",
-                out[k].path, lcp.m, lcp.q
-            );
-            assert!(b.status.is_solution(), "{where_}: {}", b.status);
-            assert!(
-                b.residuals.error <= ERROR_TOL,
-                "{where_}: error {:e}",
-                b.residuals.error
-            );
-            let dw = w_rel_diff(lcp, &r.z, &r.w, &b.z, &b.w);
-            assert!(dw <= TOL, "{where_}: dw {dw:e}");
-            if is_positive_definite(lcp, PD_TOL) {
-                assert!(
-                    z_rel_diff(&r.z, &b.z) <= TOL,
-                    "{where_}: z {:?} vs {:?}",
-                    b.z,
-                    r.z
-                );
-            }
         }
     }
 }

@@ -2,15 +2,25 @@
 //! bad input refused with a non-zero exit, a message naming the item and
 //! field, and no output file.
 
+#[path = "../common/mod.rs"]
 mod common;
+
+mod empty;
+mod golden;
+mod gpu;
+mod trouble;
 
 use std::path::{Path, PathBuf};
 
 use common::{lcpbatch, temp_dir};
 use lcpbatch::generate::{box_on_ground, random_island, seed_chain, Rng};
-use lcpbatch::pipeline::solve_scene;
-use lcpbatch::{solve, Lcp, Scene, Solver, SolverSettings};
+use lcpbatch::{Backend, Lcp, Method, Scene, Settings, Solver};
 use serde_json::{json, Value};
+
+/// The library's own answer, on the CPU with `method`.
+fn cpu(method: Method) -> Solver {
+    Solver::new(Settings::new(Backend::Cpu, method)).unwrap()
+}
 
 fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
     let p = dir.join(name);
@@ -53,8 +63,11 @@ fn close(a: &[f64], b: &[f64], tol: f64) -> bool {
 }
 
 /// Checks one scene's output against the library's own solve.
-fn check_scene_output(out: &Value, scene: &Scene, solver: Solver) {
-    let lib = solve_scene(scene, &SolverSettings::with_solver(solver), "scene").unwrap();
+fn check_scene_output(out: &Value, scene: &Scene, method: Method) {
+    let r = cpu(method)
+        .solve_scenes(std::slice::from_ref(scene))
+        .unwrap();
+    let lib = &r.scenes[0];
     let contacts = out["contacts"].as_array().expect("contacts");
     assert_eq!(contacts.len(), scene.contacts.len());
     for (c, z) in contacts.iter().zip(&lib.impulses) {
@@ -71,7 +84,7 @@ fn check_scene_output(out: &Value, scene: &Scene, solver: Solver) {
     }
     let islands = out["islands"].as_array().expect("islands");
     assert_eq!(islands.len(), lib.islands.len());
-    for (i, r) in islands.iter().zip(&lib.islands) {
+    for (i, r) in islands.iter().zip(&r.islands[lib.islands.clone()]) {
         let contacts: Vec<usize> = i["contacts"]
             .as_array()
             .unwrap()
@@ -89,7 +102,7 @@ fn solves_a_scene_file() {
     let dir = temp_dir("scene");
     let scene = seed_chain(0.5);
     let file = write(&dir, "chain.json", &serde_json::to_string(&scene).unwrap());
-    for (solver, name) in [(Solver::Enum, "enum"), (Solver::Lemke, "lemke")] {
+    for (solver, name) in [(Method::Enumeration, "enum"), (Method::Lemke, "lemke")] {
         let out = solve_ok(&file, &["--solver", name]);
         let scenes = out["scenes"].as_array().expect("scenes");
         assert_eq!(scenes.len(), 1);
@@ -125,7 +138,7 @@ fn solves_a_multi_scene_file_to_an_output_file() {
     let got = v["scenes"].as_array().unwrap();
     assert_eq!(got.len(), 3);
     for (o, s) in got.iter().zip(&scenes) {
-        check_scene_output(o, s, Solver::Enum);
+        check_scene_output(o, s, Method::Enumeration);
     }
     // No temporary file is left beside the output.
     let names: Vec<_> = std::fs::read_dir(&dir)
@@ -208,7 +221,10 @@ fn solves_a_dat_file() {
             let path = sic.join(name);
             let text = std::fs::read_to_string(&path).unwrap();
             let lcp: Lcp = lcpbatch::io::siconos::parse_dat(name, &text).unwrap();
-            let lib = solve(&lcp, &SolverSettings::with_solver(Solver::Lemke)).unwrap();
+            let r = cpu(Method::Lemke)
+                .solve_lcps(std::slice::from_ref(&lcp))
+                .unwrap();
+            let lib = &r.islands[0].solution;
             let out = solve_ok(&path, &["--solver", "lemke"]);
             let p = &out["problems"][0];
             assert_eq!(p["status"], lib.status.name(), "{name}");

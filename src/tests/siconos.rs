@@ -5,17 +5,18 @@
 //! Comparisons (see tests/common): w relative to ‖q‖∞ + ‖M‖∞·‖z‖∞, z relative
 //! to ‖z‖∞, both to 1e-9; accuracy is the Siconos error measure.
 
-mod common;
+use super::common;
 
 use std::collections::BTreeMap;
 use std::path::Path;
 
-use common::{all_solutions_settings, run, siconos_dir, w_rel_diff, z_rel_diff};
-use lcpbatch::cpu::enumeration::distinct_solutions;
-use lcpbatch::io::siconos::parse_dat;
-use lcpbatch::io::{read_input, Input};
-use lcpbatch::solvers::pgs::PgsSettings;
-use lcpbatch::{solve, Lcp, SolutionSet, Solver, SolverSettings, Status};
+use super::common::{all_solutions_settings, run, siconos_dir, w_rel_diff, z_rel_diff};
+use crate::cpu::enumeration::distinct_solutions;
+use crate::io::siconos::parse_dat;
+use crate::io::{read_input, Input};
+use crate::solvers::pgs::PgsSettings;
+use crate::solvers::{solve, Solver, SolverSettings};
+use crate::{Lcp, SolutionSet, Status};
 use serde_json::Value;
 
 const TOL: f64 = 1e-9;
@@ -190,7 +191,7 @@ fn enumeration_finds_the_documented_solution_sets() {
     for p in load(&dir) {
         if p.lcp.n() > ENUM_ALL_MAX_N {
             // Beyond the enumeration limit the solver says so.
-            if p.lcp.n() > lcpbatch::cpu::enumeration::MAX_ENUMERATION_N {
+            if p.lcp.n() > crate::cpu::enumeration::MAX_ENUMERATION_N {
                 assert!(
                     solve(&p.lcp, &all_solutions_settings()).is_err(),
                     "{}",

@@ -1,12 +1,12 @@
 //! The specialised (unrolled) elimination kernels against the looped
 //! elimination kernel: the same raw output bit for bit.
 
-use lcpbatch::gpu::batch::{enumerate_on_gpu, EnumerationKernel};
-use lcpbatch::gpu::{GpuSolveSettings, Precision};
-use lcpbatch::Lcp;
+use crate::gpu::batch::{enumerate_on_gpu, EnumerationKernel};
+use crate::gpu::{GpuSolveSettings, Precision};
+use crate::Lcp;
 
-mod common;
-use common::gpu_context as context;
+use super::common;
+use super::common::gpu_context as context;
 
 /// Fixed-seed physical islands n = 1…12 (mass ratios 1…1e4), resting boxes
 /// (singular bases), the seed chain, demo worlds, and non-symmetric seeds

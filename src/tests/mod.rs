@@ -1,0 +1,23 @@
+//! The crate's tests that reach past the public face: each GPU stage against
+//! its CPU twin, the CPU solvers against the seeds' worked examples and the
+//! Siconos problems, physics identities, stress families, device trouble.
+//! Shared helpers live in [`common`]. (The tests of the command-line tool
+//! and of the recorded output are in `tests/`.)
+
+mod common;
+
+mod device_trouble;
+mod gpu_conformance;
+mod gpu_prediction;
+mod gpu_seeds;
+mod gpu_stages;
+mod gpu_stress;
+mod gpu_tree;
+mod gpu_unrolled;
+mod gpu_workgroup;
+mod physics;
+mod random_crosscheck;
+mod seeds;
+mod siconos;
+mod stress;
+mod stress_gpu_f32;
