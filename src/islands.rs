@@ -5,9 +5,6 @@
 //! gives the solution of the whole scene's LCP, whose M is block-diagonal
 //! under this partition.
 
-// `Island::is_empty` pairs with `len` (clippy's len_without_is_empty).
-#![cfg_attr(not(test), allow(dead_code))]
-
 use crate::scene::Scene;
 
 /// The contacts of one island, in increasing index order.
@@ -20,9 +17,6 @@ impl Island {
     /// Number of contacts (the LCP dimension n).
     pub fn len(&self) -> usize {
         self.contacts.len()
-    }
-    pub fn is_empty(&self) -> bool {
-        self.contacts.is_empty()
     }
 }
 

@@ -317,10 +317,6 @@ pub struct WarmStart {
 }
 
 impl WarmStart {
-    pub fn new() -> Self {
-        Self::default()
-    }
-
     /// Records an island's basis: `contact_ids[i]` was active iff bit i of `basis`.
     pub fn record(&mut self, contact_ids: &[u64], basis: u32) {
         for (i, &id) in contact_ids.iter().enumerate() {
@@ -342,21 +338,4 @@ impl WarmStart {
         }
         seen.then_some(mask)
     }
-
-    /// Number of contacts remembered.
-    pub fn len(&self) -> usize {
-        self.active.len()
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.active.is_empty()
-    }
-}
-
-/// Count of islands per path, in [`SolvePath::ALL`] order.
-pub fn count_paths(paths: &[SolvePath]) -> Vec<(SolvePath, usize)> {
-    SolvePath::ALL
-        .iter()
-        .map(|&p| (p, paths.iter().filter(|&&x| x == p).count()))
-        .collect()
 }

@@ -263,15 +263,6 @@ impl BatchReport {
         }
     }
 
-    /// Islands with this status (for the tests).
-    #[cfg(test)]
-    pub fn count(&self, s: Status) -> usize {
-        Status::ALL
-            .iter()
-            .position(|&x| x == s)
-            .map_or(0, |i| self.statuses[i])
-    }
-
     fn status(&mut self, sol: &LcpSolution) {
         self.islands += 1;
         if let Some(i) = Status::ALL.iter().position(|&x| x == sol.status) {

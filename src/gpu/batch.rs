@@ -9,7 +9,7 @@
 //! at most 65,535 workgroups ([`super::dispatch`]); the caller sees one
 //! result per island, in its order.
 
-// Stage entry points (`enumerate_on_gpu`, `UploadedBatch`, the GPU's raw
+// Stage entry points (`enumerate_on_gpu`, the GPU's raw
 // verdicts in `IslandOutcome`) serve the stage tests and the benches of
 // single kernels; the Solver calls `solve_lcp_batch_warm`.
 #![cfg_attr(not(test), allow(dead_code))]
@@ -19,8 +19,8 @@ use std::time::Instant;
 use super::buffers::{limits_for, pack_chunks};
 use super::enumeration::EnumerationJob;
 pub use super::kernel::{EnumerationKernel, KernelPlan, TreeRoute};
-use super::layout::{BasisResult, PackedIsland};
-use super::pipelines::{Pipelines, Tolerances};
+use super::layout::BasisResult;
+use super::pipelines::Tolerances;
 use super::{GpuContext, Precision, MAX_GPU_N};
 use crate::cpu::enumeration::EnumerationSettings;
 use crate::cpu::enumeration_tree::TREE_MAX_N;
@@ -271,81 +271,6 @@ fn enumerate_known(
     }
     stats.seconds = start.elapsed().as_secs_f64();
     Ok((out, stats))
-}
-
-/// A batch uploaded once, for timing the enumeration dispatches alone (the
-/// benches): [`UploadedBatch::dispatch`] runs every round of every chunk and
-/// waits, with neither upload nor readback of results.
-pub struct UploadedBatch<'a> {
-    ctx: &'a GpuContext,
-    pipelines: std::sync::Arc<Pipelines>,
-    tolerances: wgpu::Buffer,
-    /// Per chunk: table, tree flags, islands and values buffers.
-    chunks: Vec<(
-        Vec<PackedIsland>,
-        Vec<TreeRoute>,
-        wgpu::Buffer,
-        wgpu::Buffer,
-    )>,
-    max_groups: u32,
-    plan: KernelPlan,
-}
-
-impl<'a> UploadedBatch<'a> {
-    /// Uploads `lcps` (each valid, 1 ≤ n ≤ 16).
-    pub fn new(
-        ctx: &'a GpuContext,
-        lcps: &[&Lcp],
-        settings: &GpuSolveSettings,
-    ) -> Result<Self, Error> {
-        check_gpu_sizes(lcps)?;
-        let precision = ctx.precision();
-        let pipelines = ctx.pipelines()?;
-        let (max_bytes, max_groups) = limits_for(ctx, settings);
-        let plan = KernelPlan::new(ctx, settings);
-        let tree: Vec<TreeRoute> = lcps.iter().map(|l| plan.tree_for(l, None)).collect();
-        let (tolerances, chunks) = ctx.scoped("upload", || {
-            let chunks = pack_chunks(lcps, &tree, max_bytes, precision.bytes())
-                .into_iter()
-                .map(|c| {
-                    let (i, v) = c.upload(ctx, precision);
-                    (c.table, c.tree, i, v)
-                })
-                .collect();
-            (Tolerances::new(precision, settings).upload(ctx), chunks)
-        })?;
-        Ok(UploadedBatch {
-            ctx,
-            pipelines,
-            tolerances,
-            chunks,
-            max_groups,
-            plan,
-        })
-    }
-
-    /// Runs the enumeration of every island and waits; returns the rounds.
-    pub fn dispatch(&self) -> Result<usize, Error> {
-        let mut rounds = 0;
-        for (table, tree, islands, values) in &self.chunks {
-            let run = self.ctx.scoped("enumeration", || {
-                let job = EnumerationJob {
-                    ctx: self.ctx,
-                    pipelines: &self.pipelines,
-                    islands,
-                    values,
-                    tolerances: &self.tolerances,
-                    table,
-                    tree,
-                    max_groups: self.max_groups,
-                    plan: &self.plan,
-                };
-                job.run(self.ctx.encoder("enumeration"), false)
-            })??;
-            rounds += run.rounds;
-        }
-        Ok(rounds)
-    }
 }
 
 fn check_gpu_sizes(lcps: &[&Lcp]) -> Result<(), Error> {

@@ -6,7 +6,6 @@ use super::common;
 
 use crate::cpu::enumeration::{enumerate, EnumerationSettings};
 use crate::generate::stress::{generate, scaled, siconos_scaled, Family, StressCase};
-use crate::prediction::is_positive_definite;
 
 const CASES: usize = 300;
 
