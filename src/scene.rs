@@ -13,6 +13,7 @@ use crate::Error;
 
 /// A rigid body at the instant of the impact.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Body {
     /// 1/m; 0 for a body that cannot translate.
     pub inv_mass: f64,
@@ -26,6 +27,7 @@ pub struct Body {
 
 /// A contact point between body `a` and body `b` (or the static world).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Contact {
     pub a: usize,
     pub b: Option<usize>,
@@ -43,6 +45,7 @@ pub struct Contact {
 
 /// One simulation instance at one instant.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Scene {
     pub bodies: Vec<Body>,
     pub contacts: Vec<Contact>,

@@ -3,6 +3,7 @@
 //! them (see the README).
 
 pub mod siconos;
+mod strict;
 
 use std::path::Path;
 
@@ -48,6 +49,13 @@ pub fn parse_json(path: &str, text: &str) -> Result<Input, Error> {
     // shape is then named by item and field (see [`shape_error`]), as the
     // checks on values name theirs.
     let value: serde_json::Value = serde_json::from_str(text).map_err(|e| Error::json(path, e))?;
+    if let Some((at, key)) = strict::duplicate_key(text) {
+        return Err(Error::invalid(
+            strict::item_of(path, &at),
+            key,
+            "appears twice in one object (each field once)",
+        ));
+    }
     let Some(obj) = value.as_object() else {
         return Err(Error::invalid(
             path,
@@ -278,7 +286,7 @@ fn contact_fields() -> [(
     &'static str,
     bool,
     fn(&serde_json::Value, &str) -> Result<(), FieldError>,
-); 5] {
+); 6] {
     [
         ("a", true, index),
         (
@@ -289,6 +297,16 @@ fn contact_fields() -> [(
         ("point", true, vec3),
         ("normal", true, vec3),
         ("restitution", true, number),
+        ("id", false, |v, f| {
+            if v.is_null() || v.is_u64() {
+                Ok(())
+            } else {
+                Err((
+                    f.into(),
+                    format!("expected an integer id ≥ 0, found {}", kind(v)),
+                ))
+            }
+        }),
     ]
 }
 
@@ -307,23 +325,34 @@ fn list<'a>(
 }
 
 fn check_scene(item: &str, v: &serde_json::Value) -> Option<Error> {
-    if !v.is_object() {
+    let Some(obj) = v.as_object() else {
         return Some(Error::invalid(
             item,
             "(item)",
             format!("expected an object, found {}", kind(v)),
         ));
+    };
+    if let Some(k) = obj
+        .keys()
+        .find(|k| !["bodies", "contacts"].contains(&k.as_str()))
+    {
+        return Some(Error::invalid(
+            item,
+            k.as_str(),
+            "unknown field (expected `bodies`, `contacts`)",
+        ));
     }
+    let (bodies, contacts) = (body_fields(), contact_fields());
     for (key, what, fields) in [
-        ("bodies", "body", body_fields()),
-        ("contacts", "contact", contact_fields()),
+        ("bodies", "body", &bodies[..]),
+        ("contacts", "contact", &contacts[..]),
     ] {
         let items = match list(item, v, key) {
             Ok(items) => items,
             Err(e) => return Some(e),
         };
         for (j, x) in items.iter().enumerate() {
-            if let Err((field, reason)) = object(x, &fields, false) {
+            if let Err((field, reason)) = object(x, fields, true) {
                 return Some(Error::invalid(format!("{item}, {what} {j}"), field, reason));
             }
         }
@@ -332,6 +361,16 @@ fn check_scene(item: &str, v: &serde_json::Value) -> Option<Error> {
 }
 
 fn check_scenes(path: &str, v: &serde_json::Value) -> Option<Error> {
+    if let Some(k) = v
+        .as_object()
+        .and_then(|o| o.keys().find(|k| k.as_str() != "scenes"))
+    {
+        return Some(Error::invalid(
+            path,
+            k.as_str(),
+            "unknown field (expected `scenes`)",
+        ));
+    }
     let scenes = match list(path, v, "scenes") {
         Ok(s) => s,
         Err(e) => return Some(e),
@@ -381,6 +420,7 @@ struct BatchFile {
 }
 
 #[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
 struct ScenesFile {
     scenes: Vec<Scene>,
 }
