@@ -127,3 +127,32 @@ fn solve_output_is_byte_identical_to_the_record() {
         differ.join("\n")
     );
 }
+
+/// The golden inputs are `lcpbatch generate`'s output, byte for byte:
+/// `--kind demo-worlds --count 40 --seed 11`, `--kind random-scenes --count
+/// 12 --seed 12`, `--kind stress-lcps --count 12 --seed 13`.
+#[test]
+fn the_golden_inputs_are_what_generate_writes() {
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/golden");
+    for (file, args) in [
+        ("demo_worlds.json", ["demo-worlds", "40", "11"]),
+        ("random_scenes.json", ["random-scenes", "12", "12"]),
+        ("stress_lcps.json", ["stress-lcps", "12", "13"]),
+    ] {
+        let out = common::lcpbatch(&[
+            "generate", "--kind", args[0], "--count", args[1], "--seed", args[2],
+        ]);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let want = std::fs::read(data.join(file)).expect("golden input");
+        // stdout ends with the newline println adds.
+        assert_eq!(out.stdout[..out.stdout.len() - 1], want[..], "{file}");
+    }
+    // Bad input: a count of 0 is refused, naming the flag.
+    let out = common::lcpbatch(&["generate", "--kind", "demo-worlds", "--count", "0"]);
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--count"));
+}

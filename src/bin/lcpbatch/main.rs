@@ -3,6 +3,7 @@
 
 mod bench;
 mod devices;
+mod generate;
 mod plots;
 mod stress;
 
@@ -128,6 +129,22 @@ enum Command {
         backend: BackendArg,
         #[command(flatten)]
         gpu: GpuArgs,
+    },
+    /// Write fixed-seed scenes or LCP batches as JSON (what `solve` reads).
+    Generate {
+        #[arg(long, value_enum)]
+        kind: generate::Kind,
+        /// Scenes, or LCPs (per family for stress-lcps).
+        #[arg(long, default_value_t = 100)]
+        count: usize,
+        #[arg(long, default_value_t = 2026)]
+        seed: u64,
+        /// The benchmark family of family-lcps.
+        #[arg(long, value_enum, default_value = "mixed-n")]
+        family: generate::FamilyArg,
+        /// Write here (atomically) instead of to stdout.
+        #[arg(short = 'o', long = "output")]
+        output: Option<PathBuf>,
     },
     /// List GPU adapters, backends, features (f64, subgroups, timestamps) and
     /// limits, and say which adapter `solve --backend auto` would pick.
@@ -305,6 +322,25 @@ fn run(cli: Cli) -> Result<(), Error> {
             gpu,
         } => demo(worlds, seed, backend, &gpu),
         Command::Info { gpu } => info(&gpu),
+        Command::Generate {
+            kind,
+            count,
+            seed,
+            family,
+            output,
+        } => {
+            if count == 0 {
+                return Err(Error::invalid("generate", "--count", "must be positive"));
+            }
+            let text = generate::text(kind, count, seed, family);
+            match output {
+                Some(path) => write_atomically(&path, &text),
+                None => {
+                    println!("{text}");
+                    Ok(())
+                }
+            }
+        }
         Command::Bench {
             islands,
             per_n,
