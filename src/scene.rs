@@ -93,6 +93,8 @@ impl Body {
     }
 
     /// Checks the body's fields; `item` names it in errors.
+    // Long (about 90 lines) on purpose: one check per field, in the order of
+    // the format, each naming the field.
     pub fn validate(&self, item: &str) -> Result<(), Error> {
         if !self.inv_mass.is_finite() {
             return Err(Error::invalid(item, "inv_mass", "not a finite number"));

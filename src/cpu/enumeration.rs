@@ -361,6 +361,8 @@ fn is_solution(lcp: &Lcp, z: &[f64], tol: f64) -> bool {
 ///   z* + t d; if d (or −d) keeps z ≥ 0 and w ≥ 0 for small t > 0 there is a
 ///   continuum, unbounded when nothing ever stops it (d ≥ 0 and (M d)_i ≥ 0
 ///   off S).
+// Long (about 90 lines) on purpose: the four cases of the solution set
+// (empty, isolated, bounded or unbounded continuum) read top to bottom.
 fn classify_solution_set(lcp: &Lcp, all: &[BasisSolution], s: &EnumerationSettings) -> SolutionSet {
     let n = lcp.n();
     let distinct = distinct_solutions(all);

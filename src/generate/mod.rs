@@ -244,6 +244,8 @@ pub fn seed_chain(restitution: f64) -> Scene {
 /// A demo world: one simulation instance with a static ground (body 0) and a
 /// mix of falling balls, boxes resting on the ground and stacks of boxes.
 /// Islands have 1 to about 12 contacts.
+// Long (about 100 lines) on purpose: the world's recipe (ground, balls,
+// boxes, stacks) reads top to bottom, one object after another.
 pub fn demo_world(rng: &mut Rng) -> Scene {
     let mut scene = Scene {
         bodies: vec![Body::fixed([0.0, -0.5, 0.0])],

@@ -324,21 +324,7 @@ fn pivot_path(
         if !seen.insert(key) {
             break PathEnd::Cycled;
         }
-        let colmax = (0..n).fold(0.0f64, |m, i| m.max(t[i * cols + entering].abs()));
-        let a = (noise_rule == Noise::Data).then(|| original_column(lcp, cover, entering));
-        let noise = |i: usize| match &a {
-            None => settings.pivot_tol * colmax,
-            Some(a) => {
-                let mut sum = 0.0;
-                for (j, aj) in a.iter().enumerate() {
-                    sum += t[i * cols + j].abs() * aj.abs();
-                }
-                settings.pivot_tol * sum
-            }
-        };
-        let candidates: Vec<usize> = (0..n)
-            .filter(|&i| t[i * cols + entering] > noise(i))
-            .collect();
+        let (colmax, candidates) = pivot_candidates(lcp, &t, cover, entering, noise_rule, settings);
         // x_B = rhs − T[:, e] t for the entering variable at value t ≥ 0:
         // rows with a positive entry decrease; the first to reach zero leaves.
         if candidates.is_empty() || colmax == 0.0 {
@@ -364,6 +350,36 @@ fn pivot_path(
         entering = complement(leaving, n);
     };
     (end, basic, t)
+}
+
+/// The rows whose entry in the entering column counts as a pivot (see
+/// [`Noise`]), and the column's largest magnitude.
+fn pivot_candidates(
+    lcp: &Lcp,
+    t: &[f64],
+    cover: &[f64],
+    entering: usize,
+    noise_rule: Noise,
+    settings: &LemkeSettings,
+) -> (f64, Vec<usize>) {
+    let n = lcp.n();
+    let cols = 2 * n + 2;
+    let colmax = (0..n).fold(0.0f64, |m, i| m.max(t[i * cols + entering].abs()));
+    let a = (noise_rule == Noise::Data).then(|| original_column(lcp, cover, entering));
+    let noise = |i: usize| match &a {
+        None => settings.pivot_tol * colmax,
+        Some(a) => {
+            let mut sum = 0.0;
+            for (j, aj) in a.iter().enumerate() {
+                sum += t[i * cols + j].abs() * aj.abs();
+            }
+            settings.pivot_tol * sum
+        }
+    };
+    let candidates = (0..n)
+        .filter(|&i| t[i * cols + entering] > noise(i))
+        .collect();
+    (colmax, candidates)
 }
 
 /// Column `var` of [I, −M, −d] (w, z, z0; d the covering vector), the

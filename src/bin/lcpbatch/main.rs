@@ -96,24 +96,7 @@ impl GpuArgs {
 #[derive(Subcommand)]
 enum Command {
     /// Solve a scene file, a many-scene file, an LCP batch (JSON) or a Siconos .dat file.
-    Solve {
-        /// Input file (.json or .dat).
-        file: PathBuf,
-        /// Method for every problem or island.
-        #[arg(long, value_enum, default_value = "auto")]
-        solver: SolverArg,
-        /// Enumeration only: visit every basis and report every solution.
-        #[arg(long)]
-        all_solutions: bool,
-        /// Write the result here (atomically) instead of to stdout.
-        #[arg(short = 'o', long = "output")]
-        output: Option<PathBuf>,
-        /// Where to solve: auto (the GPU whenever an adapter exists), gpu, cpu.
-        #[arg(long, value_enum, default_value = "cpu")]
-        backend: BackendArg,
-        #[command(flatten)]
-        gpu: GpuArgs,
-    },
+    Solve(SolveArgs),
     /// Generate thousands of islands from many simulation instances (balls
     /// and boxes on the ground and on each other), solve them on the best
     /// adapter, validate every answer on the CPU in f64, print a summary.
@@ -131,21 +114,7 @@ enum Command {
         gpu: GpuArgs,
     },
     /// Write fixed-seed scenes or LCP batches as JSON (what `solve` reads).
-    Generate {
-        #[arg(long, value_enum)]
-        kind: generate::Kind,
-        /// Scenes, or LCPs (per family for stress-lcps).
-        #[arg(long, default_value_t = 100)]
-        count: usize,
-        #[arg(long, default_value_t = 2026)]
-        seed: u64,
-        /// The benchmark family of family-lcps.
-        #[arg(long, value_enum, default_value = "mixed-n")]
-        family: generate::FamilyArg,
-        /// Write here (atomically) instead of to stdout.
-        #[arg(short = 'o', long = "output")]
-        output: Option<PathBuf>,
-    },
+    Generate(GenerateArgs),
     /// List GPU adapters, backends, features (f64, subgroups, timestamps) and
     /// limits, and say which adapter `solve --backend auto` would pick.
     Info {
@@ -156,55 +125,14 @@ enum Command {
     /// ratio 1e4, resting stacks, mixed n, warm-started resting): a table of
     /// islands/s against error, bench.json and SVG plots of time against
     /// error, against n and against batch size.
-    Bench {
-        /// Islands per family.
-        #[arg(long, default_value_t = 20_000)]
-        islands: usize,
-        /// Islands per n for the time-against-n curves.
-        #[arg(long, default_value_t = 500)]
-        per_n: usize,
-        /// Batch sizes for the time-against-batch-size curves.
-        #[arg(long, value_delimiter = ',', default_value = "1000,10000,100000")]
-        batch_sizes: Vec<usize>,
-        #[arg(long, default_value_t = 2026)]
-        seed: u64,
-        /// Folder for bench.json and the plots.
-        #[arg(long, default_value = "bench-out")]
-        out: PathBuf,
-        /// CPU only, even where an adapter exists.
-        #[arg(long)]
-        cpu_only: bool,
-        #[command(flatten)]
-        gpu: GpuArgs,
-    },
+    Bench(BenchArgs),
     /// Stress families (mass ratios to 1e8, length and velocity scales to
     /// 1e±3, near-parallel normals, resting stacks, chains to n = 16,
     /// non-P-matrix and infeasible LCPs, the Siconos problems scaled by 1e±6)
     /// through every solver and precision: error distribution, status agreement
     /// with f64 enumeration, repaired counts, stress.json and a plot of error
     /// against condition number.
-    Stress {
-        /// Cases per family.
-        #[arg(long, default_value_t = 500)]
-        cases: usize,
-        #[arg(long, default_value_t = 2026)]
-        seed: u64,
-        /// Folder of Siconos .dat files for the scaled family (default
-        /// $LCPBATCH_CONFORMANCE/siconos or ../shared/conformance/siconos, if present).
-        #[arg(long)]
-        siconos: Option<PathBuf>,
-        /// Solve M + αI instead of M (default 0: the problem as posed).
-        #[arg(long, default_value_t = 0.0)]
-        regularization: f64,
-        /// Folder for stress.json and the plot.
-        #[arg(long, default_value = "stress-out")]
-        out: PathBuf,
-        /// CPU only, even where an adapter exists.
-        #[arg(long)]
-        cpu_only: bool,
-        #[command(flatten)]
-        gpu: GpuArgs,
-    },
+    Stress(StressArgs),
 }
 
 impl BackendArg {
@@ -215,6 +143,90 @@ impl BackendArg {
             BackendArg::Cpu => Backend::Cpu,
         }
     }
+}
+
+#[derive(clap::Args)]
+struct SolveArgs {
+    /// Input file (.json or .dat).
+    file: PathBuf,
+    /// Method for every problem or island.
+    #[arg(long, value_enum, default_value = "auto")]
+    solver: SolverArg,
+    /// Enumeration only: visit every basis and report every solution.
+    #[arg(long)]
+    all_solutions: bool,
+    /// Write the result here (atomically) instead of to stdout.
+    #[arg(short = 'o', long = "output")]
+    output: Option<PathBuf>,
+    /// Where to solve: auto (the GPU whenever an adapter exists), gpu, cpu.
+    #[arg(long, value_enum, default_value = "cpu")]
+    backend: BackendArg,
+    #[command(flatten)]
+    gpu: GpuArgs,
+}
+
+#[derive(clap::Args)]
+struct GenerateArgs {
+    #[arg(long, value_enum)]
+    kind: generate::Kind,
+    /// Scenes, or LCPs (per family for stress-lcps).
+    #[arg(long, default_value_t = 100)]
+    count: usize,
+    #[arg(long, default_value_t = 2026)]
+    seed: u64,
+    /// The benchmark family of family-lcps.
+    #[arg(long, value_enum, default_value = "mixed-n")]
+    family: generate::FamilyArg,
+    /// Write here (atomically) instead of to stdout.
+    #[arg(short = 'o', long = "output")]
+    output: Option<PathBuf>,
+}
+
+#[derive(clap::Args)]
+struct BenchArgs {
+    /// Islands per family.
+    #[arg(long, default_value_t = 20_000)]
+    islands: usize,
+    /// Islands per n for the time-against-n curves.
+    #[arg(long, default_value_t = 500)]
+    per_n: usize,
+    /// Batch sizes for the time-against-batch-size curves.
+    #[arg(long, value_delimiter = ',', default_value = "1000,10000,100000")]
+    batch_sizes: Vec<usize>,
+    #[arg(long, default_value_t = 2026)]
+    seed: u64,
+    /// Folder for bench.json and the plots.
+    #[arg(long, default_value = "bench-out")]
+    out: PathBuf,
+    /// CPU only, even where an adapter exists.
+    #[arg(long)]
+    cpu_only: bool,
+    #[command(flatten)]
+    gpu: GpuArgs,
+}
+
+#[derive(clap::Args)]
+struct StressArgs {
+    /// Cases per family.
+    #[arg(long, default_value_t = 500)]
+    cases: usize,
+    #[arg(long, default_value_t = 2026)]
+    seed: u64,
+    /// Folder of Siconos .dat files for the scaled family (default
+    /// $LCPBATCH_CONFORMANCE/siconos or ../shared/conformance/siconos, if present).
+    #[arg(long)]
+    siconos: Option<PathBuf>,
+    /// Solve M + αI instead of M (default 0: the problem as posed).
+    #[arg(long, default_value_t = 0.0)]
+    regularization: f64,
+    /// Folder for stress.json and the plot.
+    #[arg(long, default_value = "stress-out")]
+    out: PathBuf,
+    /// CPU only, even where an adapter exists.
+    #[arg(long)]
+    cpu_only: bool,
+    #[command(flatten)]
+    gpu: GpuArgs,
 }
 
 /// A solver on `backend` with the GPU flags; on device trouble (no
@@ -313,6 +325,166 @@ fn info(gpu: &GpuArgs) -> Result<(), Error> {
     Ok(())
 }
 
+fn generate_command(args: GenerateArgs) -> Result<(), Error> {
+    let GenerateArgs {
+        kind,
+        count,
+        seed,
+        family,
+        output,
+    } = args;
+
+    if count == 0 {
+        return Err(Error::invalid("generate", "--count", "must be positive"));
+    }
+    let text = generate::text(kind, count, seed, family);
+    match output {
+        Some(path) => write_atomically(&path, &text),
+        None => {
+            println!("{text}");
+            Ok(())
+        }
+    }
+}
+
+fn bench_command(args: BenchArgs) -> Result<(), Error> {
+    let BenchArgs {
+        islands,
+        per_n,
+        batch_sizes,
+        seed,
+        out,
+        cpu_only,
+        gpu,
+    } = args;
+
+    if islands == 0 || per_n == 0 || batch_sizes.contains(&0) {
+        return Err(Error::invalid(
+            "bench",
+            "--islands/--per-n/--batch-sizes",
+            "must be positive",
+        ));
+    }
+    let opts = bench::BenchOptions {
+        islands,
+        seed,
+        out_dir: out,
+        gpu: if cpu_only {
+            None
+        } else {
+            Some(gpu.settings()?)
+        },
+        per_n,
+        batch_sizes,
+    };
+    bench::run(&opts).map(|_| ())
+}
+
+fn stress_command(args: StressArgs) -> Result<(), Error> {
+    let StressArgs {
+        cases,
+        seed,
+        siconos,
+        regularization,
+        out,
+        cpu_only,
+        gpu,
+    } = args;
+
+    if cases == 0 {
+        return Err(Error::invalid("stress", "--cases", "must be positive"));
+    }
+    if !(regularization.is_finite() && regularization >= 0.0) {
+        return Err(Error::invalid(
+            "stress",
+            "--regularization",
+            "must be a finite number ≥ 0",
+        ));
+    }
+    let siconos = siconos.or_else(|| {
+        let base = std::env::var_os("LCPBATCH_CONFORMANCE")
+            .map(PathBuf::from)
+            .unwrap_or_else(|| PathBuf::from("../shared/conformance"));
+        Some(base.join("siconos")).filter(|d| d.is_dir())
+    });
+    if siconos.is_none() {
+        eprintln!("Siconos problems not found; the siconos_scaled family is skipped");
+    }
+    let opts = stress::StressOptions {
+        cases,
+        seed,
+        siconos,
+        out_dir: out,
+        gpu: if cpu_only {
+            None
+        } else {
+            Some(gpu.settings()?)
+        },
+        regularization,
+    };
+    stress::run(&opts).map(|_| ())
+}
+
+fn solve_command(args: SolveArgs) -> Result<(), Error> {
+    let SolveArgs {
+        file,
+        solver,
+        all_solutions,
+        output,
+        backend,
+        gpu,
+    } = args;
+
+    let method = match solver {
+        SolverArg::Auto => Method::Auto,
+        SolverArg::Enum => Method::Enumeration,
+        SolverArg::Lemke => Method::Lemke,
+        SolverArg::Pgs => Method::Pgs,
+    };
+    if all_solutions && !matches!(method, Method::Auto | Method::Enumeration) {
+        return Err(Error::Unsupported(
+            "--all-solutions needs --solver auto or enum".into(),
+        ));
+    }
+    // The GPU enumerates; Lemke, PGS and --all-solutions run on the CPU.
+    let gpu_capable = matches!(method, Method::Auto | Method::Enumeration) && !all_solutions;
+    if backend == BackendArg::Gpu && !gpu_capable {
+        return Err(Error::Unsupported(
+            "--backend gpu solves by enumeration only (no --solver lemke/pgs, no --all-solutions)"
+                .into(),
+        ));
+    }
+    let input = read_input(&file)?;
+    let settings = Settings {
+        method,
+        all_solutions,
+        ..Settings::default()
+    };
+    let backend = if gpu_capable {
+        backend.backend()
+    } else {
+        Backend::Cpu
+    };
+    let mut solver = solver_for(backend, &gpu, settings)?;
+    let report = match &input {
+        Input::Lcps(lcps) => solver.solve_lcps(lcps)?,
+        Input::Scenes(scenes) => solver.solve_scenes(scenes)?,
+    };
+    if report.on_gpu() {
+        eprintln!("{report}");
+    }
+    let text = match input {
+        Input::Lcps(_) => serde_json::to_string_pretty(&LcpBatchOutput::of(&report)),
+        Input::Scenes(_) => serde_json::to_string_pretty(&ScenesOutput::of(&report)),
+    }
+    .expect("serialisable");
+    match output {
+        Some(path) => write_atomically(&path, &text)?,
+        None => println!("{text}"),
+    }
+    Ok(())
+}
+
 fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
         Command::Demo {
@@ -322,155 +494,10 @@ fn run(cli: Cli) -> Result<(), Error> {
             gpu,
         } => demo(worlds, seed, backend, &gpu),
         Command::Info { gpu } => info(&gpu),
-        Command::Generate {
-            kind,
-            count,
-            seed,
-            family,
-            output,
-        } => {
-            if count == 0 {
-                return Err(Error::invalid("generate", "--count", "must be positive"));
-            }
-            let text = generate::text(kind, count, seed, family);
-            match output {
-                Some(path) => write_atomically(&path, &text),
-                None => {
-                    println!("{text}");
-                    Ok(())
-                }
-            }
-        }
-        Command::Bench {
-            islands,
-            per_n,
-            batch_sizes,
-            seed,
-            out,
-            cpu_only,
-            gpu,
-        } => {
-            if islands == 0 || per_n == 0 || batch_sizes.contains(&0) {
-                return Err(Error::invalid(
-                    "bench",
-                    "--islands/--per-n/--batch-sizes",
-                    "must be positive",
-                ));
-            }
-            let opts = bench::BenchOptions {
-                islands,
-                seed,
-                out_dir: out,
-                gpu: if cpu_only {
-                    None
-                } else {
-                    Some(gpu.settings()?)
-                },
-                per_n,
-                batch_sizes,
-            };
-            bench::run(&opts).map(|_| ())
-        }
-        Command::Stress {
-            cases,
-            seed,
-            siconos,
-            regularization,
-            out,
-            cpu_only,
-            gpu,
-        } => {
-            if cases == 0 {
-                return Err(Error::invalid("stress", "--cases", "must be positive"));
-            }
-            if !(regularization.is_finite() && regularization >= 0.0) {
-                return Err(Error::invalid(
-                    "stress",
-                    "--regularization",
-                    "must be a finite number ≥ 0",
-                ));
-            }
-            let siconos = siconos.or_else(|| {
-                let base = std::env::var_os("LCPBATCH_CONFORMANCE")
-                    .map(PathBuf::from)
-                    .unwrap_or_else(|| PathBuf::from("../shared/conformance"));
-                Some(base.join("siconos")).filter(|d| d.is_dir())
-            });
-            if siconos.is_none() {
-                eprintln!("Siconos problems not found; the siconos_scaled family is skipped");
-            }
-            let opts = stress::StressOptions {
-                cases,
-                seed,
-                siconos,
-                out_dir: out,
-                gpu: if cpu_only {
-                    None
-                } else {
-                    Some(gpu.settings()?)
-                },
-                regularization,
-            };
-            stress::run(&opts).map(|_| ())
-        }
-        Command::Solve {
-            file,
-            solver,
-            all_solutions,
-            output,
-            backend,
-            gpu,
-        } => {
-            let method = match solver {
-                SolverArg::Auto => Method::Auto,
-                SolverArg::Enum => Method::Enumeration,
-                SolverArg::Lemke => Method::Lemke,
-                SolverArg::Pgs => Method::Pgs,
-            };
-            if all_solutions && !matches!(method, Method::Auto | Method::Enumeration) {
-                return Err(Error::Unsupported(
-                    "--all-solutions needs --solver auto or enum".into(),
-                ));
-            }
-            // The GPU enumerates; Lemke, PGS and --all-solutions run on the CPU.
-            let gpu_capable =
-                matches!(method, Method::Auto | Method::Enumeration) && !all_solutions;
-            if backend == BackendArg::Gpu && !gpu_capable {
-                return Err(Error::Unsupported(
-                    "--backend gpu solves by enumeration only (no --solver lemke/pgs, no --all-solutions)"
-                        .into(),
-                ));
-            }
-            let input = read_input(&file)?;
-            let settings = Settings {
-                method,
-                all_solutions,
-                ..Settings::default()
-            };
-            let backend = if gpu_capable {
-                backend.backend()
-            } else {
-                Backend::Cpu
-            };
-            let mut solver = solver_for(backend, &gpu, settings)?;
-            let report = match &input {
-                Input::Lcps(lcps) => solver.solve_lcps(lcps)?,
-                Input::Scenes(scenes) => solver.solve_scenes(scenes)?,
-            };
-            if report.on_gpu() {
-                eprintln!("{report}");
-            }
-            let text = match input {
-                Input::Lcps(_) => serde_json::to_string_pretty(&LcpBatchOutput::of(&report)),
-                Input::Scenes(_) => serde_json::to_string_pretty(&ScenesOutput::of(&report)),
-            }
-            .expect("serialisable");
-            match output {
-                Some(path) => write_atomically(&path, &text)?,
-                None => println!("{text}"),
-            }
-            Ok(())
-        }
+        Command::Generate(args) => generate_command(args),
+        Command::Bench(args) => bench_command(args),
+        Command::Stress(args) => stress_command(args),
+        Command::Solve(args) => solve_command(args),
     }
 }
 
