@@ -60,6 +60,7 @@ pub(crate) mod enumeration;
 pub mod kernel;
 pub mod layout;
 pub(crate) mod pipelines;
+pub(crate) mod scene_chunks;
 pub mod scenes;
 pub(crate) mod shaders;
 
