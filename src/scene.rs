@@ -21,7 +21,9 @@ pub struct Body {
     pub inv_inertia: [[f64; 3]; 3],
     /// Centre of mass.
     pub position: [f64; 3],
+    /// Linear velocity of the centre of mass before the impact.
     pub velocity: [f64; 3],
+    /// Angular velocity (world frame) before the impact.
     pub angular_velocity: [f64; 3],
 }
 
@@ -29,8 +31,11 @@ pub struct Body {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Contact {
+    /// Body a (the normal points towards it).
     pub a: usize,
+    /// Body b, or None for the static world.
     pub b: Option<usize>,
+    /// The contact point (world frame).
     pub point: [f64; 3],
     /// Unit normal, pointing from b to a.
     pub normal: [f64; 3],
@@ -47,7 +52,9 @@ pub struct Contact {
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Scene {
+    /// The bodies, indexed by the contacts' `a` and `b`.
     pub bodies: Vec<Body>,
+    /// The contacts.
     pub contacts: Vec<Contact>,
 }
 
@@ -77,12 +84,15 @@ impl Body {
         DMat3::from_cols_array_2d(&self.inv_inertia).transpose()
     }
 
+    /// The centre of mass as a vector.
     pub fn position(&self) -> DVec3 {
         DVec3::from_array(self.position)
     }
+    /// The linear velocity as a vector.
     pub fn velocity(&self) -> DVec3 {
         DVec3::from_array(self.velocity)
     }
+    /// The angular velocity as a vector.
     pub fn angular_velocity(&self) -> DVec3 {
         DVec3::from_array(self.angular_velocity)
     }
@@ -206,9 +216,11 @@ impl Contact {
         }
     }
 
+    /// The contact point as a vector.
     pub fn point(&self) -> DVec3 {
         DVec3::from_array(self.point)
     }
+    /// The normal as a vector.
     pub fn normal(&self) -> DVec3 {
         DVec3::from_array(self.normal)
     }

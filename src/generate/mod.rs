@@ -14,9 +14,11 @@ use crate::scene::{Body, Contact, Scene};
 pub struct Rng(u64);
 
 impl Rng {
+    /// A generator seeded with `seed` (the same sequence on every platform).
     pub fn new(seed: u64) -> Self {
         Rng(seed)
     }
+    /// The next 64 random bits.
     pub fn next_u64(&mut self) -> u64 {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.0;
@@ -61,6 +63,7 @@ impl Rng {
             self.range(0.0, std::f64::consts::TAU),
         ))
     }
+    /// A vector with components uniform in [−scale, scale].
     pub fn vector(&mut self, scale: f64) -> DVec3 {
         DVec3::new(
             self.range(-scale, scale),

@@ -37,6 +37,7 @@ pub enum Family {
 }
 
 impl Family {
+    /// Every generated family (the Siconos one comes from files).
     pub const ALL: [Family; 8] = [
         Family::MassRatio,
         Family::LengthScale,
@@ -48,6 +49,7 @@ impl Family {
         Family::Infeasible,
     ];
 
+    /// The snake_case name used in tables and JSON.
     pub fn name(self) -> &'static str {
         match self {
             Family::MassRatio => "mass_ratio",
@@ -66,9 +68,11 @@ impl Family {
 /// One stress problem.
 #[derive(Clone, Debug)]
 pub struct StressCase {
+    /// The family it belongs to.
     pub family: Family,
     /// What makes it hard: the mass ratio, the scale, the angle, n.
     pub parameter: f64,
+    /// The problem.
     pub lcp: Lcp,
 }
 

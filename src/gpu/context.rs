@@ -19,11 +19,14 @@ pub enum Precision {
     /// f64 where the adapter has SHADER_F64, else f32.
     #[default]
     Auto,
+    /// 32-bit floats (every adapter).
     F32,
+    /// 64-bit floats (adapters with SHADER_F64).
     F64,
 }
 
 impl Precision {
+    /// `auto`, `f32` or `f64`.
     pub fn name(self) -> &'static str {
         match self {
             Precision::Auto => "auto",
@@ -61,13 +64,18 @@ pub enum BackendChoice {
     /// Every backend wgpu was built with (Vulkan is preferred over GL).
     #[default]
     Auto,
+    /// Vulkan (lavapipe among the software adapters).
     Vulkan,
+    /// OpenGL (llvmpipe through EGL among the software adapters; no f64).
     Gl,
+    /// Metal.
     Metal,
+    /// Direct3D 12.
     Dx12,
 }
 
 impl BackendChoice {
+    /// Parses `auto`, `vulkan`, `gl`, `metal` or `dx12` (and common spellings).
     pub fn parse(s: &str) -> Result<Self, Error> {
         match s.to_ascii_lowercase().as_str() {
             "auto" | "all" | "" => Ok(BackendChoice::Auto),
@@ -83,6 +91,7 @@ impl BackendChoice {
         }
     }
 
+    /// The wgpu backends to look on.
     pub fn backends(self) -> wgpu::Backends {
         match self {
             BackendChoice::Auto => wgpu::Backends::all(),
@@ -146,19 +155,31 @@ impl GpuOptions {
 /// What `lcpbatch info` prints about one adapter.
 #[derive(Clone, Debug, PartialEq)]
 pub struct AdapterSummary {
+    /// The adapter's name.
     pub name: String,
+    /// The wgpu backend (Vulkan, Gl, …).
     pub backend: String,
+    /// Discrete, integrated, virtual, CPU (software) or other.
     pub device_type: String,
+    /// Driver name and version, where reported.
     pub driver: String,
     /// True for software adapters (lavapipe, llvmpipe, WARP).
     pub software: bool,
+    /// Whether it has SHADER_F64.
     pub f64: bool,
+    /// Whether it has subgroup operations.
     pub subgroups: bool,
+    /// Whether it has timestamp queries.
     pub timestamps: bool,
+    /// Largest storage-buffer binding, bytes.
     pub max_storage_buffer_binding_size: u64,
+    /// Largest buffer, bytes.
     pub max_buffer_size: u64,
+    /// Largest workgroup count per dispatch dimension.
     pub max_compute_workgroups_per_dimension: u32,
+    /// Largest invocations per workgroup.
     pub max_compute_invocations_per_workgroup: u32,
+    /// Largest workgroup storage, bytes.
     pub max_compute_workgroup_storage_size: u32,
 }
 

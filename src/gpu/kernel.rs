@@ -57,6 +57,7 @@ impl EnumerationKernel {
         }
     }
 
+    /// The name used in settings and benches.
     pub fn name(self) -> &'static str {
         match self {
             EnumerationKernel::Auto => "auto",

@@ -11,7 +11,6 @@ use serde::{Deserialize, Serialize};
 
 use crate::cpu::impulses::BodyVelocity;
 use crate::lcp::{Lcp, LcpSolution, SolutionSet};
-use crate::pipeline::SceneSolution;
 use crate::scene::Scene;
 use crate::Error;
 
@@ -29,7 +28,9 @@ pub enum Input {
 #[serde(deny_unknown_fields)]
 pub struct LcpRecord {
     #[serde(rename = "M")]
+    /// M, row by row.
     pub m: Vec<Vec<f64>>,
+    /// q.
     pub q: Vec<f64>,
 }
 
@@ -445,24 +446,36 @@ pub fn read_input(path: &Path) -> Result<Input, Error> {
 /// One LCP result in the output file.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct LcpOutput {
+    /// The status's snake_case name.
     pub status: String,
+    /// The impulses.
     pub z: Vec<f64>,
+    /// w = M z + q.
     pub w: Vec<f64>,
+    /// The Siconos error measure ‖z − max(0, z − w)‖ / ‖q‖.
     pub error: f64,
+    /// The smallest z_i.
     pub min_z: f64,
+    /// The smallest w_i.
     pub min_w: f64,
+    /// max |z_i w_i|.
     pub max_complementarity: f64,
     /// Indices i with z_i basic, when the solver works with bases.
     #[serde(skip_serializing_if = "Option::is_none", default)]
     pub basis: Option<Vec<usize>>,
+    /// The method whose answer this is: `enum`, `lemke` or `pgs`.
     pub solver: String,
+    /// Bases whose principal system was formed (enumeration).
     pub bases_visited: u64,
+    /// Pivots (Lemke).
     pub pivots: u64,
+    /// Sweeps (PGS).
     pub iterations: u64,
     /// With --all-solutions: the whole solution set and every distinct solution.
     #[serde(skip_serializing_if = "Option::is_none", default)]
     pub solution_set: Option<SolutionSet>,
     #[serde(skip_serializing_if = "Vec::is_empty", default)]
+    /// With --all-solutions: every distinct solution.
     pub solutions: Vec<Vec<f64>>,
 }
 
@@ -472,6 +485,7 @@ pub fn basis_indices(mask: u32, n: usize) -> Vec<usize> {
 }
 
 impl LcpOutput {
+    /// One problem's output from its solution and the method's name.
     pub fn new(solver: &str, sol: &LcpSolution) -> Self {
         let n = sol.z.len();
         LcpOutput {
@@ -499,58 +513,45 @@ impl LcpOutput {
 /// `{"problems": [...]}`.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct LcpBatchOutput {
+    /// One entry per problem, in the input's order.
     pub problems: Vec<LcpOutput>,
 }
 
 /// One contact's result.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct ContactOutput {
+    /// The normal impulse z ≥ 0.
     pub impulse: f64,
 }
 
 /// One island's result.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct IslandOutput {
+    /// The scene's contact indices, in the order of the island's LCP rows.
     pub contacts: Vec<usize>,
+    /// The status's snake_case name.
     pub status: String,
+    /// The Siconos error measure of the island's LCP.
     pub error: f64,
+    /// The method whose answer this is.
     pub solver: String,
 }
 
 /// One scene's result.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct SceneOutput {
+    /// One entry per contact, in the scene's order.
     pub contacts: Vec<ContactOutput>,
+    /// One entry per body, in the scene's order: velocities after the impulses.
     pub bodies: Vec<BodyVelocity>,
+    /// One entry per island.
     pub islands: Vec<IslandOutput>,
-}
-
-impl SceneOutput {
-    pub fn new(sol: &SceneSolution) -> Self {
-        SceneOutput {
-            contacts: sol
-                .impulses
-                .iter()
-                .map(|&impulse| ContactOutput { impulse })
-                .collect(),
-            bodies: sol.bodies.clone(),
-            islands: sol
-                .islands
-                .iter()
-                .map(|r| IslandOutput {
-                    contacts: r.contacts.clone(),
-                    status: r.solution.status.name().to_string(),
-                    error: r.solution.residuals.error,
-                    solver: r.solver.name().to_string(),
-                })
-                .collect(),
-        }
-    }
 }
 
 /// `{"scenes": [...]}`, also for a single scene.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct ScenesOutput {
+    /// One entry per scene, in the input's order.
     pub scenes: Vec<SceneOutput>,
 }
 

@@ -26,7 +26,8 @@ pub enum Solver {
 }
 
 impl Solver {
-    /// The name used on the command line and in output.
+    /// The name used in the tests' messages.
+    #[cfg(test)]
     pub fn name(self) -> &'static str {
         match self {
             Solver::Enum => "enum",
