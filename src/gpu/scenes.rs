@@ -568,7 +568,10 @@ fn velocity_deviation(bodies: &[BodyVelocity], gpu: &[f64]) -> f64 {
     let mut max = 0.0f64;
     for (b, ref_v) in bodies.iter().enumerate() {
         let g = &gpu[b * VELOCITY..(b + 1) * VELOCITY];
-        let (v, w) = (velocity::VELOCITY, velocity::ANGULAR_VELOCITY);
+        let (v, w) = (
+            super::layout::velocity::VELOCITY,
+            super::layout::velocity::ANGULAR_VELOCITY,
+        );
         for i in 0..3 {
             let dv = (g[v + i] - ref_v.velocity[i]).abs() / (1.0 + ref_v.velocity[i].abs());
             let dw = (g[w + i] - ref_v.angular_velocity[i]).abs()
