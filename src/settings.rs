@@ -155,6 +155,15 @@ impl GpuSettings {
     }
 }
 
+impl crate::GpuContext {
+    /// Opens the adapter and device `settings` ask for (the seam through
+    /// which a caller, a test for one, hands its own device to
+    /// [`crate::Solver::with_device`]). `Error::Gpu` when there is none.
+    pub fn open(settings: &GpuSettings) -> Result<Self, Error> {
+        crate::GpuContext::new(&settings.options())
+    }
+}
+
 /// Every setting of a [`crate::Solver`]. `Settings::default()` is the
 /// fastest exact path: on the CPU prediction, then Lemke checked in f64,
 /// then enumeration where the check fails; on a hardware GPU enumeration;

@@ -478,6 +478,22 @@ mod tests {
     }
 
     #[test]
+    fn a_device_handed_in_is_used_and_gives_the_cpus_answers() {
+        let Some(gpu) = crate::tests::common::gpu_settings_or_skip() else {
+            return;
+        };
+        let device = crate::GpuContext::open(&gpu).unwrap();
+        let mut s = Solver::with_device(Settings::default(), device).unwrap();
+        assert_ne!(s.device().kind, crate::DeviceKind::Cpu);
+        let lcp = Lcp::new(vec![2.0, 1.0, 1.0, 2.0], vec![-5.0, -6.0]).unwrap();
+        let r = s.solve_lcps(std::slice::from_ref(&lcp)).unwrap();
+        assert!(r.on_gpu() && r.gpu.is_some());
+        let c = cpu(Method::Enumeration).solve_lcps(&[lcp]).unwrap();
+        assert_eq!(r.islands[0].solution.basis, c.islands[0].solution.basis);
+        assert!((r.islands[0].solution.z[0] - 4.0 / 3.0).abs() < 1e-12);
+    }
+
+    #[test]
     fn bad_input_is_an_error_naming_the_item() {
         let bad = Lcp {
             m: vec![1.0, f64::NAN, 0.0, 1.0],

@@ -4,7 +4,7 @@
 //! Shared helpers live in [`common`]. (The tests of the command-line tool
 //! and of the recorded output are in `tests/`.)
 
-mod common;
+pub(crate) mod common;
 
 mod device_trouble;
 mod gpu_conformance;
