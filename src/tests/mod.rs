@@ -16,6 +16,7 @@ mod gpu_tree;
 mod gpu_unrolled;
 mod gpu_workgroup;
 mod physics;
+mod physics_invariance;
 mod random_crosscheck;
 mod seeds;
 mod siconos;

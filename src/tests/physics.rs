@@ -18,11 +18,11 @@ use crate::solvers::{solve, Solver, SolverSettings};
 use crate::{Contact, Scene, Status};
 use glam::{DMat3, DVec3};
 
-fn settings(s: Solver) -> SolverSettings {
+pub(super) fn settings(s: Solver) -> SolverSettings {
     SolverSettings::with_solver(s)
 }
 
-fn contact(a: usize, b: Option<usize>, point: DVec3, normal: DVec3, e: f64) -> Contact {
+pub(super) fn contact(a: usize, b: Option<usize>, point: DVec3, normal: DVec3, e: f64) -> Contact {
     Contact {
         a,
         b,
@@ -33,13 +33,13 @@ fn contact(a: usize, b: Option<usize>, point: DVec3, normal: DVec3, e: f64) -> C
     }
 }
 
-fn inertia(inv: &[[f64; 3]; 3]) -> DMat3 {
+pub(super) fn inertia(inv: &[[f64; 3]; 3]) -> DMat3 {
     DMat3::from_cols_array_2d(inv).transpose().inverse()
 }
 
 /// Kinetic energy of the dynamic bodies (every generated dynamic body has an
 /// invertible inverse inertia).
-fn kinetic_energy(scene: &Scene, v: &[BodyVelocity]) -> f64 {
+pub(super) fn kinetic_energy(scene: &Scene, v: &[BodyVelocity]) -> f64 {
     scene
         .bodies
         .iter()
@@ -53,7 +53,7 @@ fn kinetic_energy(scene: &Scene, v: &[BodyVelocity]) -> f64 {
         .sum()
 }
 
-fn initial_velocities(scene: &Scene) -> Vec<BodyVelocity> {
+pub(super) fn initial_velocities(scene: &Scene) -> Vec<BodyVelocity> {
     scene
         .bodies
         .iter()
@@ -67,7 +67,7 @@ fn initial_velocities(scene: &Scene) -> Vec<BodyVelocity> {
 /// Linear momentum Σ m v and angular momentum about `about`, Σ I ω + m (x − p) × v,
 /// of the dynamic bodies, with the sum of the magnitudes of the terms (the
 /// scale the rounding is relative to).
-fn momenta(scene: &Scene, v: &[BodyVelocity], about: DVec3) -> (DVec3, DVec3, f64) {
+pub(super) fn momenta(scene: &Scene, v: &[BodyVelocity], about: DVec3) -> (DVec3, DVec3, f64) {
     let (mut p, mut l, mut scale) = (DVec3::ZERO, DVec3::ZERO, 0.0);
     for (b, v) in scene.bodies.iter().zip(v) {
         if b.is_static() {
@@ -85,7 +85,7 @@ fn momenta(scene: &Scene, v: &[BodyVelocity], about: DVec3) -> (DVec3, DVec3, f6
 }
 
 #[test]
-fn equal_balls_head_on_with_full_restitution_exchange_velocities() {
+pub(super) fn equal_balls_head_on_with_full_restitution_exchange_velocities() {
     for (va, vb) in [(3.0, -1.0), (2.0, 0.0), (0.5, -4.0)] {
         // Ball 0 on the left moving right at va, ball 1 on the right at vb.
         let mut left = ball_body(2.0, 0.5, DVec3::ZERO);
@@ -115,7 +115,7 @@ fn equal_balls_head_on_with_full_restitution_exchange_velocities() {
 }
 
 /// Two random boxes touching at 1..4 points, with random restitutions.
-fn two_body_impact(rng: &mut Rng) -> Scene {
+pub(super) fn two_body_impact(rng: &mut Rng) -> Scene {
     let mut bodies = Vec::new();
     for i in 0..2 {
         let mut b = box_body(
@@ -149,7 +149,7 @@ fn two_body_impact(rng: &mut Rng) -> Scene {
 }
 
 #[test]
-fn momentum_is_conserved_in_two_body_impacts() {
+pub(super) fn momentum_is_conserved_in_two_body_impacts() {
     let mut rng = Rng::new(7);
     let mut max_rel = 0.0f64;
     for k in 0..2000 {
@@ -175,7 +175,7 @@ fn momentum_is_conserved_in_two_body_impacts() {
 }
 
 #[test]
-fn inelastic_impacts_lose_exactly_half_z_m_z() {
+pub(super) fn inelastic_impacts_lose_exactly_half_z_m_z() {
     // With ε = 0, q = J v, so ΔKE = zᵀJv + ½ zᵀMz = zᵀq + ½ zᵀMz, and
     // complementarity (zᵀ(Mz + q) = 0) turns it into −½ zᵀMz ≤ 0.
     let mut rng = Rng::new(11);
@@ -218,7 +218,7 @@ fn inelastic_impacts_lose_exactly_half_z_m_z() {
 }
 
 #[test]
-fn a_single_elastic_contact_keeps_kinetic_energy() {
+pub(super) fn a_single_elastic_contact_keeps_kinetic_energy() {
     let mut rng = Rng::new(13);
     let mut approaching = 0;
     for k in 0..2000 {
@@ -241,14 +241,14 @@ fn a_single_elastic_contact_keeps_kinetic_energy() {
     assert!(approaching > 500, "{approaching} of 2000 contacts approach");
 }
 
-fn sol_z(scene: &Scene) -> f64 {
+pub(super) fn sol_z(scene: &Scene) -> f64 {
     solve_scene(scene, &settings(Solver::Enum), "s")
         .unwrap()
         .impulses[0]
 }
 
 #[test]
-fn a_box_landing_flat_on_four_contacts() {
+pub(super) fn a_box_landing_flat_on_four_contacts() {
     // Four coplanar contacts: M is 4×4 of rank 3, z is not unique, but w
     // (hence J v⁺) and the velocities are.
     for speed in [0.0, 0.1, 1.0, 7.5] {
@@ -312,7 +312,7 @@ fn a_box_landing_flat_on_four_contacts() {
 /// Solves the scene's LCP over all its contacts at once (one "island" holding
 /// every contact) and compares it with the pipeline's island-by-island solve:
 /// w per contact and every body's velocities, to 1e-9 of their scales.
-fn whole_equals_islands(scene: &Scene, what: &str) -> (f64, f64) {
+pub(super) fn whole_equals_islands(scene: &Scene, what: &str) -> (f64, f64) {
     let rows = assemble_contacts(scene);
     let all = Island {
         contacts: (0..scene.contacts.len()).collect(),
@@ -365,7 +365,7 @@ fn whole_equals_islands(scene: &Scene, what: &str) -> (f64, f64) {
 }
 
 #[test]
-fn the_seed_chain_island_by_island_equals_the_whole_scene() {
+pub(super) fn the_seed_chain_island_by_island_equals_the_whole_scene() {
     for e in [0.0, 0.5, 1.0] {
         let scene = seed_chain(e);
         assert_eq!(find_islands(&scene).len(), 1, "the chain is one island");
@@ -390,7 +390,7 @@ fn the_seed_chain_island_by_island_equals_the_whole_scene() {
 }
 
 #[test]
-fn islands_one_by_one_equal_the_whole_scene_lcp() {
+pub(super) fn islands_one_by_one_equal_the_whole_scene_lcp() {
     let mut rng = Rng::new(17);
     let (mut max_dw, mut max_dv) = (0.0f64, 0.0f64);
     for k in 0..300 {
@@ -405,7 +405,7 @@ fn islands_one_by_one_equal_the_whole_scene_lcp() {
 }
 
 #[test]
-fn diagonal_of_m_is_n_k_n() {
+pub(super) fn diagonal_of_m_is_n_k_n() {
     let mut rng = Rng::new(19);
     for k in 0..1000 {
         let scene = random_island(&mut rng, 1 + k % 10, 100.0);
@@ -433,7 +433,7 @@ fn diagonal_of_m_is_n_k_n() {
 }
 
 #[test]
-fn active_contacts_obey_newtons_law_after_the_solve() {
+pub(super) fn active_contacts_obey_newtons_law_after_the_solve() {
     let mut rng = Rng::new(23);
     let (mut active_approaching, mut active_separating) = (0, 0);
     for k in 0..3000 {
@@ -479,225 +479,4 @@ fn active_contacts_obey_newtons_law_after_the_solve() {
     }
     eprintln!("active contacts: {active_approaching} approaching, {active_separating} separating");
     assert!(active_approaching > 1000 && active_separating > 10);
-}
-
-/// Impulses of a scene through the pipeline (enumeration), checked solved.
-fn impulses(scene: &Scene) -> (Vec<f64>, Vec<BodyVelocity>) {
-    let sol = solve_scene(scene, &settings(Solver::Enum), "scene").unwrap();
-    assert!(sol.islands.iter().all(|i| i.solution.status.is_solution()));
-    (sol.impulses, sol.bodies)
-}
-
-fn rotate(r: DMat3, v: [f64; 3]) -> [f64; 3] {
-    (r * DVec3::from_array(v)).to_array()
-}
-
-#[test]
-fn a_rigid_motion_of_the_scene_changes_nothing_but_the_frame() {
-    // Rotating and translating every position, point, normal, velocity and
-    // inverse inertia (R I⁻¹ Rᵀ) gives the same impulses and rotated velocities.
-    let mut rng = Rng::new(29);
-    for k in 0..1000 {
-        let scene = random_scene(&mut rng, 2, 6, 100.0);
-        let (r, t) = (rng.rotation(), rng.vector(10.0));
-        let mut moved = scene.clone();
-        for b in &mut moved.bodies {
-            b.position = (r * b.position() + t).to_array();
-            b.velocity = rotate(r, b.velocity);
-            b.angular_velocity = rotate(r, b.angular_velocity);
-            let inv = r * b.inv_inertia_mat() * r.transpose();
-            b.inv_inertia = inv.transpose().to_cols_array_2d();
-        }
-        for c in &mut moved.contacts {
-            c.point = (r * c.point() + t).to_array();
-            c.normal = rotate(r, c.normal);
-        }
-        let (z0, v0) = impulses(&scene);
-        let (z1, v1) = impulses(&moved);
-        let zs = inf_norm(&z0).max(1e-300);
-        assert!(
-            common::max_diff(&z0, &z1) <= 1e-9 * zs,
-            "scene {k}: {z0:?} vs {z1:?}"
-        );
-        for (a, b) in v0.iter().zip(&v1) {
-            let va = DVec3::from_array(rotate(r, a.velocity));
-            let wa = DVec3::from_array(rotate(r, a.angular_velocity));
-            let scale = va.length().max(wa.length()).max(1.0);
-            assert!(
-                (va - DVec3::from_array(b.velocity)).length() <= 1e-9 * scale,
-                "scene {k}"
-            );
-            assert!(
-                (wa - DVec3::from_array(b.angular_velocity)).length() <= 1e-9 * scale,
-                "scene {k}"
-            );
-        }
-    }
-}
-
-#[test]
-fn swapping_a_contacts_bodies_and_flipping_its_normal_changes_nothing() {
-    // (a, b, n) and (b, a, −n) are the same contact: J changes sign, so M and
-    // v_rel do not. World contacts become contacts with a static body.
-    let mut rng = Rng::new(31);
-    for k in 0..1000 {
-        let scene = random_island(&mut rng, 1 + k % 8, 100.0);
-        let mut flipped = scene.clone();
-        let world = flipped.bodies.len();
-        flipped.bodies.push(crate::Body::fixed([0.0, -3.0, 0.0]));
-        for c in &mut flipped.contacts {
-            let b = c.b.unwrap_or(world);
-            c.b = Some(c.a);
-            c.a = b;
-            c.normal = (-c.normal()).to_array();
-        }
-        let (z0, v0) = impulses(&scene);
-        let (z1, v1) = impulses(&flipped);
-        let zs = inf_norm(&z0).max(1e-300);
-        assert!(
-            common::max_diff(&z0, &z1) <= 1e-9 * zs,
-            "island {k}: {z0:?} vs {z1:?}"
-        );
-        for (a, b) in v0.iter().zip(&v1) {
-            assert!(
-                common::max_diff(&a.velocity, &b.velocity) <= 1e-9 * inf_norm(&a.velocity).max(1.0)
-            );
-        }
-        assert_eq!(v1[world].velocity, [0.0; 3], "the static body stays put");
-    }
-}
-
-#[test]
-fn impulses_scale_with_velocities_and_ignore_a_common_drift() {
-    let mut rng = Rng::new(37);
-    for k in 0..1000 {
-        // Body–body contacts only, so that a common velocity changes no v_rel.
-        let mut scene = random_island(&mut rng, 1 + k % 8, 100.0);
-        scene.contacts.retain(|c| c.b.is_some());
-        if scene.contacts.is_empty() {
-            continue;
-        }
-        let (z0, _) = impulses(&scene);
-        let zs = inf_norm(&z0).max(1e-300);
-        // Every velocity × s: every v_rel and q × s, z × s.
-        for s in [1e-6, 3.0, 1e6] {
-            let mut scaled = scene.clone();
-            for b in &mut scaled.bodies {
-                b.velocity = b.velocity.map(|v| v * s);
-                b.angular_velocity = b.angular_velocity.map(|v| v * s);
-            }
-            let (z1, _) = impulses(&scaled);
-            let back: Vec<f64> = z1.iter().map(|z| z / s).collect();
-            assert!(
-                common::max_diff(&z0, &back) <= 1e-9 * zs,
-                "island {k}, s = {s}"
-            );
-        }
-        let drift = rng.vector(5.0);
-        let mut drifting = scene.clone();
-        for b in &mut drifting.bodies {
-            b.velocity = (b.velocity() + drift).to_array();
-        }
-        let (z1, _) = impulses(&drifting);
-        assert!(
-            common::max_diff(&z0, &z1) <= 1e-9 * zs.max(drift.length()),
-            "island {k}: {z0:?} vs {z1:?}"
-        );
-    }
-}
-
-#[test]
-fn pinned_bodies_couple_their_contacts() {
-    // A body with inv_mass 0 but a finite inertia (pinned at its centre) can
-    // still turn, so it couples the contacts that touch it: one island.
-    let mut pinned = box_body(1.0, DVec3::splat(0.5), DMat3::IDENTITY, DVec3::ZERO);
-    pinned.inv_mass = 0.0;
-    pinned.angular_velocity = [0.0, 0.0, 1.0];
-    let mut left = ball_body(1.0, 0.25, DVec3::new(-0.75, 0.4, 0.0));
-    let mut right = ball_body(2.0, 0.25, DVec3::new(0.75, -0.4, 0.0));
-    left.velocity = [0.0, -1.0, 0.0];
-    right.velocity = [0.0, 1.0, 0.0];
-    let scene = Scene {
-        bodies: vec![pinned, left, right],
-        contacts: vec![
-            contact(1, Some(0), DVec3::new(-0.5, 0.4, 0.0), -DVec3::X, 0.3),
-            contact(2, Some(0), DVec3::new(0.5, -0.4, 0.0), DVec3::X, 0.3),
-            contact(1, None, DVec3::new(-0.75, 0.15, 0.0), DVec3::Y, 0.3),
-        ],
-    };
-    assert_eq!(find_islands(&scene).len(), 1);
-    whole_equals_islands(&scene, "pinned");
-    let lcp = &solve_scene(&scene, &settings(Solver::Enum), "p")
-        .unwrap()
-        .islands[0]
-        .lcp;
-    assert!(
-        lcp.at(0, 1) != 0.0,
-        "the pinned body couples contacts 0 and 1"
-    );
-}
-
-#[test]
-fn islands_beyond_the_enumeration_limit_go_to_lemke() {
-    // Enumeration takes n ≤ 20; the pipeline hands larger islands to Lemke
-    // and says so, and the result is still a solution.
-    let mut rng = Rng::new(41);
-    for n in [21, 24, 30] {
-        let scene = random_island(&mut rng, n, 100.0);
-        let sol = solve_scene(&scene, &settings(Solver::Enum), "big").unwrap();
-        assert_eq!(sol.islands.len(), 1);
-        let isl = &sol.islands[0];
-        assert_eq!(isl.lcp.n(), n);
-        assert_eq!(isl.solver, Solver::Lemke, "n = {n}");
-        assert_eq!(isl.solution.status, Status::Solved, "n = {n}");
-        assert!(
-            isl.solution.residuals.error <= 1e-12,
-            "n = {n}: {:?}",
-            isl.solution.residuals
-        );
-    }
-    // At n = 20 enumeration itself runs.
-    let scene = random_island(&mut rng, 20, 100.0);
-    let sol = solve_scene(&scene, &settings(Solver::Enum), "20").unwrap();
-    assert_eq!(sol.islands[0].solver, Solver::Enum);
-    assert!(sol.islands[0].solution.status.is_solution());
-}
-
-#[test]
-fn a_wedged_ball_with_restitution_has_no_newton_solution() {
-    // A ball touching two parallel walls (normals +x and −x), moving toward
-    // the left one. Newton's law asks it to leave the left wall at ε·v, which
-    // the right wall forbids: with d = (1, 1), J d = 0 (M d = 0) and
-    // dᵀq = −ε v < 0, so no z ≥ 0 makes w ≥ 0. With ε = 0 it simply stops.
-    let mut ball = ball_body(1.0, 0.5, DVec3::ZERO);
-    ball.velocity = [-2.0, 0.0, 0.0];
-    let walls = |e: f64| Scene {
-        bodies: vec![ball.clone()],
-        contacts: vec![
-            contact(0, None, DVec3::new(-0.5, 0.0, 0.0), DVec3::X, e),
-            contact(0, None, DVec3::new(0.5, 0.0, 0.0), -DVec3::X, e),
-        ],
-    };
-    let sol = solve_scene(&walls(0.5), &settings(Solver::Enum), "wedged").unwrap();
-    assert_eq!(sol.islands[0].solution.status, Status::NoSolution);
-    assert_eq!(sol.impulses, vec![0.0, 0.0]);
-    assert_eq!(
-        sol.bodies[0].velocity,
-        [-2.0, 0.0, 0.0],
-        "unchanged, not NaN"
-    );
-    let sol = solve_scene(&walls(0.5), &settings(Solver::Lemke), "wedged").unwrap();
-    assert_eq!(sol.islands[0].solution.status, Status::RayTermination);
-    assert!(sol.bodies[0].velocity.iter().all(|v| v.is_finite()));
-    // ε = 0: it stops dead (a continuum of impulse pairs, one velocity).
-    for s in [Solver::Enum, Solver::Lemke, Solver::Pgs] {
-        let sol = solve_scene(&walls(0.0), &settings(s), "wedged").unwrap();
-        assert!(sol.islands[0].solution.status.is_solution(), "{}", s.name());
-        assert!(
-            sol.bodies[0].velocity[0].abs() < 1e-9,
-            "{}: {:?}",
-            s.name(),
-            sol.bodies[0]
-        );
-    }
 }
