@@ -191,10 +191,12 @@ fn a_device_lost_between_batches_hands_the_next_to_the_cpu() {
     let Some(gpu) = gpu_settings_or_skip() else {
         return;
     };
-    let (lcps, scenes) = (lcps(), scenes());
+    // Five copies, so that the batch needs several chunks of the smallest
+    // binding (1 KiB) in f32 as in f64 (one copy fits one chunk in f32).
+    let lcps: Vec<Lcp> = (0..5).flat_map(|_| lcps()).collect();
+    let scenes = scenes();
     let (cpu_l, cpu_s) = cpu_reference(&lcps, &scenes);
-    // Tiny bindings: the batch goes to the GPU in several chunks, in f32 as in f64.
-    let mut s = chunked(gpu, 256);
+    let mut s = chunked(gpu, 1024);
     let before = s.solve_lcps(&lcps).unwrap();
     assert!(before.on_gpu());
     let chunks = before.gpu.as_ref().unwrap().chunks;

@@ -5,20 +5,13 @@
 
 use crate::cpu::enumeration::{enumerate, EnumerationSettings};
 use crate::generate::stress::{generate, Family};
-use crate::gpu::{solve_lcp_batch, GpuContext, GpuOptions, GpuSolveSettings, Precision};
+use crate::gpu::{solve_lcp_batch, GpuSolveSettings, Precision};
 use crate::Lcp;
 
 #[test]
 fn stress_families_match_the_cpu_in_f64() {
-    let mut o = GpuOptions::from_env().expect("GPU environment variables");
-    o.precision = Precision::F64;
-    let ctx = match GpuContext::new(&o) {
-        Ok(c) => c,
-        Err(e) if e.to_string().contains("SHADER_F64") => {
-            eprintln!("skipping: {e}");
-            return;
-        }
-        Err(e) => panic!("no GPU adapter: {e}"),
+    let Some(ctx) = super::common::gpu_context(Precision::F64) else {
+        return;
     };
     let mut lcps: Vec<(Family, Lcp)> = Vec::new();
     for family in Family::ALL {
@@ -70,12 +63,8 @@ fn the_relaxed_rule_matches_the_cpu() {
     let cpu = enumerate(&lcp, &EnumerationSettings::default()).unwrap();
     assert_eq!(cpu.basis, Some(1));
     for precision in [Precision::F64, Precision::F32] {
-        let mut o = GpuOptions::from_env().expect("GPU environment variables");
-        o.precision = precision;
-        let ctx = match GpuContext::new(&o) {
-            Ok(c) => c,
-            Err(e) if e.to_string().contains("SHADER_F64") => continue,
-            Err(e) => panic!("no GPU adapter: {e}"),
+        let Some(ctx) = super::common::gpu_context(precision) else {
+            continue;
         };
         let r = solve_lcp_batch(
             &ctx,
