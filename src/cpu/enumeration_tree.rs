@@ -55,7 +55,7 @@ use crate::lcp::{Counters, Lcp, LcpSolution, Status};
 
 /// Largest island the GPU's tree kernel is generated for (its bitmap of
 /// screened bases has 2ⁿ bits and its straight-line part assumes n − 8 ≤ 5;
-/// `tests/gpu_tree.rs` checks every size up to it). The CPU twin takes any
+/// `src/tests/gpu_tree.rs` checks every size up to it). The CPU twin takes any
 /// n up to 16.
 pub const TREE_MAX_N: usize = 12;
 /// Largest n the CPU twin takes (2ⁿ leaves, one bit each).

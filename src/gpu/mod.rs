@@ -29,7 +29,7 @@
 //! f32 everywhere, f64 where the adapter has SHADER_F64 ([`Precision::Auto`]
 //! picks f64 then). The f64 shaders do the CPU twins' arithmetic in the
 //! same order with the same tolerances: every island's basis, counters and
-//! z equal the CPU's (checked in `tests/gpu_stages.rs`). In f32 the
+//! z equal the CPU's (checked in `src/tests/gpu_stages.rs`). In f32 the
 //! enumeration accepts more (feasibility 1e-4) and the f64 validation decides.
 //!
 //! # llvmpipe ends long loops

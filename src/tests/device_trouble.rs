@@ -2,7 +2,7 @@
 //! a device lost between, before or in the middle of a batch. The CPU path
 //! takes over with a warning, and the results are the CPU path's, byte for
 //! byte (compared as the JSON the CLI writes). The command line's side is
-//! in tests/cli.rs.
+//! in tests/cli/trouble.rs.
 
 use super::common::gpu_settings_or_skip;
 use crate::generate::families::island_lcps;

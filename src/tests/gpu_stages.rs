@@ -230,7 +230,7 @@ fn moving_static_platform_matches_cpu_f64() {
 }
 
 /// Enumeration alone (the elimination kernel: Auto would send positive
-/// definite islands to the tree kernel, which `tests/gpu_tree.rs` compares
+/// definite islands to the tree kernel, which `src/tests/gpu_tree.rs` compares
 /// with its own twin), on the CPU's f64 LCPs: in f64 the same basis and the
 /// same counters as the twin, island by island.
 #[test]

@@ -9,7 +9,7 @@
 /// scalars named by their constant indices (row swaps and skipped updates
 /// become selects), so that nothing is indexed dynamically. The identity
 /// rows never pivot and add exact zeros, so the answers are `solve_basis`'
-/// bit for bit (`tests/gpu_unrolled.rs`, `unrolled_kernel_equals_elimination_kernel`).
+/// bit for bit (`src/tests/gpu_unrolled.rs`, `unrolled_kernel_equals_elimination_kernel`).
 /// Long (about 120 lines) on purpose: it writes one WGSL function top to
 /// bottom, each block emitting one phase of the elimination in order;
 /// split, the phases would have to pass the naming scheme around.
