@@ -45,6 +45,7 @@
 
 pub(crate) mod cpu;
 pub mod error;
+pub mod friction;
 pub mod generate;
 pub(crate) mod gpu;
 pub mod io;
@@ -62,6 +63,7 @@ pub(crate) mod validation;
 
 pub use cpu::impulses::BodyVelocity;
 pub use error::Error;
+pub use friction::{FrictionProblem, FrictionResiduals};
 pub use gpu::{AdapterSummary, BackendChoice, EnumerationKernel, GpuContext, Precision};
 pub use islands::IslandProblem;
 pub use lcp::{Lcp, LcpSolution, Residuals, SolutionSet, Status};

@@ -1,0 +1,155 @@
+//! The friction cone of one contact: its tangent basis, and the Euclidean
+//! projections on the cone and on the disc of seed 001.
+
+use glam::DVec3;
+
+/// The two unit tangents (t₁, t₂) of a contact with unit normal n: an
+/// orthonormal, right-handed frame (t₁ × t₂ = n), a deterministic function
+/// of n alone (Duff et al., "Building an orthonormal basis, revisited",
+/// JCGT 2017). With s = 1 when n.z ≥ 0 (−0.0 included) and −1 otherwise,
+/// a = −1 / (s + n.z), b = n.x n.y a:
+///
+/// ```text
+/// t₁ = (1 + s n.x² a, s b, −s n.x),   t₂ = (b, s + n.y² a, −n.y)
+/// ```
+///
+/// Continuous in n except across the plane n.z = 0 with n.x or n.y away
+/// from 0, where s flips; the ground normal (0, 1, 0) gives t₁ = (1, 0, 0),
+/// t₂ = (0, 0, −1). `shaders/friction_assembly.wgsl` computes the same.
+pub fn tangent_basis(n: DVec3) -> (DVec3, DVec3) {
+    let s = if n.z >= 0.0 { 1.0 } else { -1.0 };
+    let a = -1.0 / (s + n.z);
+    let b = n.x * n.y * a;
+    (
+        DVec3::new(1.0 + s * n.x * n.x * a, s * b, -s * n.x),
+        DVec3::new(b, s + n.y * n.y * a, -n.y),
+    )
+}
+
+/// The Euclidean projection of x = (x_n, x_t₁, x_t₂) on the cone
+/// K = {‖x_t‖ ≤ μ x_n}, with t = ‖x_t‖ (Siconos' fc3d projection):
+///
+/// ```text
+/// μ t ≤ −x_n  →  0                      (in the polar cone)
+/// t ≤ μ x_n   →  x                      (inside)
+/// otherwise   →  p_n = (μ t + x_n) / (μ² + 1),  (p_n, μ p_n x_t / t)
+/// ```
+///
+/// μ = 0 gives (max(x_n, 0), 0, 0). μ must be finite and ≥ 0.
+#[inline]
+pub fn project_on_cone(x: [f64; 3], mu: f64) -> [f64; 3] {
+    let t = x[1].hypot(x[2]);
+    if mu * t <= -x[0] {
+        [0.0; 3]
+    } else if t <= mu * x[0] {
+        x
+    } else {
+        let pn = (mu * t + x[0]) / (mu * mu + 1.0);
+        // t > 0 here: t = 0 is one of the two cases above.
+        let scale = mu * pn / t;
+        [pn, x[1] * scale, x[2] * scale]
+    }
+}
+
+/// Seed 001's closed form: for a normal impulse γ_n and a sliding velocity
+/// v_T, the tangential impulse of maximum dissipation (γ_T minimising
+/// γ_T · v_T over the disc ‖γ_T‖ ≤ μ γ_n) is γ_T = −μ γ_n v_T / ‖v_T‖, on the
+/// disc's boundary, opposing the slide. For v_T = 0 every point of the disc
+/// dissipates nothing; this returns 0. A negative γ_n counts as 0.
+#[inline]
+pub fn project_on_disc(v_t: [f64; 2], mu: f64, gamma_n: f64) -> [f64; 2] {
+    let speed = v_t[0].hypot(v_t[1]);
+    if speed == 0.0 {
+        return [0.0; 2];
+    }
+    let radius = mu * gamma_n.max(0.0);
+    [-radius * v_t[0] / speed, -radius * v_t[1] / speed]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_seeds_disc_examples() {
+        // Seed 001, section 三: v_T = (3, −4), μ = 0.5, γ_n = 10 → (−3, 4).
+        let g = project_on_disc([3.0, -4.0], 0.5, 10.0);
+        assert!(
+            (g[0] + 3.0).abs() < 1e-15 && (g[1] - 4.0).abs() < 1e-15,
+            "{g:?}"
+        );
+        // Exercise 3: v_T = (4, 3), μ = 0.6, γ_n = 5 → (−12/5, −9/5).
+        let g = project_on_disc([4.0, 3.0], 0.6, 5.0);
+        assert!(
+            (g[0] + 2.4).abs() < 1e-15 && (g[1] + 1.8).abs() < 1e-15,
+            "{g:?}"
+        );
+    }
+
+    #[test]
+    fn the_cone_projection_is_a_projection() {
+        let mu = 0.6;
+        let mut seed = 12345u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((seed >> 11) as f64 / (1u64 << 53) as f64) * 4.0 - 2.0
+        };
+        for _ in 0..2000 {
+            let x = [next(), next(), next()];
+            let p = project_on_cone(x, mu);
+            // In the cone.
+            assert!(
+                p[1].hypot(p[2]) <= mu * p[0] * (1.0 + 1e-14) + 1e-15,
+                "{x:?} → {p:?}"
+            );
+            // Idempotent.
+            let pp = project_on_cone(p, mu);
+            for i in 0..3 {
+                assert!((pp[i] - p[i]).abs() <= 1e-14, "{p:?} → {pp:?}");
+            }
+            // x − P(x) is normal to the cone at P(x): ⟨x − P(x), y − P(x)⟩ ≤ 0 for y in K.
+            for _ in 0..4 {
+                let yn = next().abs();
+                let (a, b) = (next(), next());
+                let s = mu * yn / a.hypot(b).max(1e-300) * next().abs().min(1.0);
+                let y = [yn, a * s, b * s];
+                let d: f64 = (0..3).map(|i| (x[i] - p[i]) * (y[i] - p[i])).sum();
+                assert!(d <= 1e-12, "{x:?} {p:?} {y:?}: {d}");
+            }
+        }
+    }
+
+    #[test]
+    fn frictionless_projection_keeps_the_normal_only() {
+        assert_eq!(project_on_cone([2.0, 1.0, -1.0], 0.0), [2.0, 0.0, 0.0]);
+        assert_eq!(project_on_cone([-2.0, 1.0, -1.0], 0.0), [0.0, 0.0, 0.0]);
+    }
+
+    #[test]
+    fn tangents_are_an_orthonormal_right_handed_frame() {
+        let mut normals = vec![
+            DVec3::Y,
+            DVec3::NEG_Y,
+            DVec3::Z,
+            DVec3::NEG_Z,
+            DVec3::X,
+            DVec3::new(0.0, 0.0, -0.0),
+        ];
+        for i in 0..200 {
+            let a = i as f64 * 0.7;
+            let b = i as f64 * 0.31;
+            normals.push(DVec3::new(a.cos() * b.sin(), a.sin() * b.sin(), b.cos()));
+        }
+        for n in normals.into_iter().filter(|n| n.length() > 0.5) {
+            let (t1, t2) = tangent_basis(n);
+            assert!((t1.length() - 1.0).abs() < 1e-14, "{n}");
+            assert!((t2.length() - 1.0).abs() < 1e-14, "{n}");
+            assert!(t1.dot(n).abs() < 1e-14 && t2.dot(n).abs() < 1e-14 && t1.dot(t2).abs() < 1e-14);
+            assert!((t1.cross(t2) - n).length() < 1e-14, "{n}: {t1} × {t2}");
+        }
+        let (t1, t2) = tangent_basis(DVec3::Y);
+        assert_eq!((t1, t2), (DVec3::X, DVec3::NEG_Z));
+    }
+}
