@@ -15,10 +15,16 @@
 //! the μ‖u_t‖ term (a convex problem: min ½ rᵀW r + qᵀr over the cones);
 //! a sliding contact then gains the normal velocity μ‖u_t‖.
 
+pub(crate) mod apgd;
 pub mod cone;
 pub mod problem;
+pub mod projected;
+pub mod random;
 pub mod residual;
 
 pub use cone::{project_on_cone, project_on_disc, tangent_basis};
 pub use problem::FrictionProblem;
+pub use projected::{
+    solve_projected, solve_projected_batch, ProjectedMethod, ProjectedSettings, ProjectedSolution,
+};
 pub use residual::{coulomb_error, FrictionResiduals};
