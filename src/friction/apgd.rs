@@ -91,6 +91,17 @@ pub(crate) fn apgd(
     run
 }
 
+/// The backtracking test: dᵀW d ≤ L‖d‖² (`curvature`, `d2`), or a step
+/// that rounding decides: L‖d‖ ≤ 16 ε ‖∇f(y)‖ (`g2` = ‖∇f(y)‖²). There
+/// dᵀW d is computed from u(x_new) − u(y), whose cancellation error
+/// (about ε‖u‖‖d‖) exceeds L‖d‖² however large L grows, so doubling L
+/// would never end; the iterate is then stationary to working precision.
+#[inline]
+pub(crate) fn accept_step(curvature: f64, d2: f64, g2: f64, lipschitz: f64, eps: f64) -> bool {
+    let noise = 16.0 * eps;
+    curvature <= lipschitz * d2 || lipschitz * lipschitz * d2 <= noise * noise * g2
+}
+
 /// One APGD iteration from `s`, with scratch `xn`, `un` (3k): the step by
 /// backtracking, the momentum, the best iterate, the gradient restart.
 /// Some(restarted), or None when the step or the iterate is not finite or L
@@ -122,13 +133,14 @@ pub(crate) fn apgd_iteration(
         }
         velocity_into(problem, xn, un);
         // f quadratic: f(x_new) − f(y) − ∇f(y)·d = ½ dᵀW d, W d = u(x_new) − u(y).
-        let (mut curvature, mut d2) = (0.0, 0.0);
+        let (mut curvature, mut d2, mut g2) = (0.0, 0.0, 0.0);
         for r in 0..3 * k {
             let d = xn[r] - s.y[r];
             curvature += d * (un[r] - s.uy[r]);
             d2 += d * d;
+            g2 += s.uy[r] * s.uy[r];
         }
-        if curvature <= s.lipschitz * d2 {
+        if accept_step(curvature, d2, g2, s.lipschitz, f64::EPSILON) {
             break;
         }
         s.lipschitz *= 2.0;

@@ -36,9 +36,15 @@ pub fn tangent_basis(n: DVec3) -> (DVec3, DVec3) {
 /// ```
 ///
 /// μ = 0 gives (max(x_n, 0), 0, 0). μ must be finite and ≥ 0.
+///
+/// t is computed as √(x_t₁² + x_t₂²), as `shaders/friction_projected.wgsl`
+/// computes it (WGSL has no hypot): with the same formula the f64 shader
+/// reproduces the CPU twin's iterates bit for bit on lavapipe (measured,
+/// `src/tests/gpu_friction.rs`); `hypot` rounded differently. The squares
+/// overflow only beyond 1e154.
 #[inline]
 pub fn project_on_cone(x: [f64; 3], mu: f64) -> [f64; 3] {
-    let t = x[1].hypot(x[2]);
+    let t = (x[1] * x[1] + x[2] * x[2]).sqrt();
     if mu * t <= -x[0] {
         [0.0; 3]
     } else if t <= mu * x[0] {

@@ -22,6 +22,9 @@ pub mod projected;
 pub mod random;
 pub mod residual;
 
+pub use crate::gpu::friction::{
+    solve_projected_on_gpu, FrictionOrigin, ProjectedGpuFigures, MAX_GPU_CONTACTS,
+};
 pub use cone::{project_on_cone, project_on_disc, tangent_basis};
 pub use problem::FrictionProblem;
 pub use projected::{

@@ -498,4 +498,4 @@ fn sweeps(
 
 #[cfg(test)]
 #[path = "projected_tests.rs"]
-mod tests;
+pub(crate) mod tests;

@@ -322,7 +322,8 @@ fn the_iteration_cap_and_bad_settings_are_reported() {
     assert_eq!(out[0].status, Status::Solved);
     assert_eq!(out[1].status, Status::InvalidInput);
     let warm = vec![vec![f64::NAN; p.dim()]];
-    let e = solve_projected_batch(&[p.clone()], Some(&warm), &Default::default(), 1).unwrap_err();
+    let e = solve_projected_batch(std::slice::from_ref(p), Some(&warm), &Default::default(), 1)
+        .unwrap_err();
     assert!(
         e.to_string().contains("problem 0") && e.to_string().contains("r0[0]"),
         "{e}"

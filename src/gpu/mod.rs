@@ -50,6 +50,9 @@
 //! - [`kernel`]: which enumeration kernel runs which island;
 //!   [`enumeration`]: the enumeration stage in rounds;
 //! - [`batch`] (LCP batches) and [`scenes`] (whole scenes): orchestration;
+//! - [`friction`] (frictional islands through the cone projection
+//!   iterations, validated in f64) and [`friction_rounds`] (their packing
+//!   and rounds);
 //! - [`layout`]: buffer layouts shared with the CPU twins.
 
 pub mod batch;
@@ -57,6 +60,8 @@ pub(crate) mod buffers;
 pub mod context;
 pub(crate) mod dispatch;
 pub(crate) mod enumeration;
+pub mod friction;
+pub(crate) mod friction_rounds;
 pub mod kernel;
 pub mod layout;
 pub(crate) mod pipelines;

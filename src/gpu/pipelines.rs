@@ -69,6 +69,19 @@ pub(crate) const IMPULSES_BINDINGS: Bindings = &[
     (6, ReadWrite),
 ];
 
+/// shaders/friction_projected.wgsl (sweeps, apgd): params, islands, values,
+/// vectors, scalars, states, unfinished, controls.
+pub(crate) const FRICTION_PROJECTED_BINDINGS: Bindings = &[
+    (0, Uniform),
+    (1, Read),
+    (2, Read),
+    (3, ReadWrite),
+    (4, ReadWrite),
+    (5, ReadWrite),
+    (6, ReadWrite),
+    (7, Uniform),
+];
+
 /// Workgroup size of every entry point (`@workgroup_size(64)`).
 pub const WORKGROUP: u32 = 64;
 
@@ -168,6 +181,9 @@ pub(crate) struct Pipelines {
     pub(crate) assemble_contacts: Stage,
     pub(crate) assemble_islands: Stage,
     pub(crate) impulses: Stage,
+    /// shaders/friction_projected.wgsl: `sweeps` (index 0) and `apgd` (1),
+    /// built on first use (the LCP path never builds them).
+    friction_projected: [OnceLock<Stage>; 2],
 }
 
 /// The stage in `cache` (index n − 1), built on first use.
@@ -210,6 +226,7 @@ impl Pipelines {
                     ASSEMBLE_ISLANDS_BINDINGS,
                 )?,
                 impulses: Stage::new(ctx, Shader::Impulses, "main", IMPULSES_BINDINGS)?,
+                friction_projected: [OnceLock::new(), OnceLock::new()],
             })
         })?
     }
@@ -224,6 +241,27 @@ impl Pipelines {
     /// built on first use.
     pub(crate) fn tree(&self, ctx: &GpuContext, n: usize) -> Result<&Stage, Error> {
         lazy(&self.tree, ctx, n, Shader::Tree(n))
+    }
+}
+
+impl Pipelines {
+    /// The entry point `sweeps` (`apgd` false) or `apgd` of
+    /// shaders/friction_projected.wgsl, built on first use.
+    pub(crate) fn friction_projected(&self, ctx: &GpuContext, apgd: bool) -> Result<&Stage, Error> {
+        let slot = &self.friction_projected[apgd as usize];
+        if let Some(s) = slot.get() {
+            return Ok(s);
+        }
+        let entry = if apgd { "apgd" } else { "sweeps" };
+        let stage = ctx.scoped("building the friction pipeline", || {
+            Stage::new(
+                ctx,
+                Shader::FrictionProjected,
+                entry,
+                FRICTION_PROJECTED_BINDINGS,
+            )
+        })??;
+        Ok(slot.get_or_init(|| stage))
     }
 }
 

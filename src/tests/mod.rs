@@ -8,6 +8,7 @@ pub(crate) mod common;
 
 mod device_trouble;
 mod gpu_conformance;
+mod gpu_friction;
 mod gpu_prediction;
 mod gpu_seeds;
 mod gpu_stages;

@@ -23,6 +23,7 @@ const ENUMERATION_WORKGROUP_WGSL: &str =
 const ENUMERATION_TREE_WGSL: &str = include_str!("../../../shaders/enumeration_tree.wgsl");
 const ASSEMBLY_WGSL: &str = include_str!("../../../shaders/assembly.wgsl");
 const IMPULSES_WGSL: &str = include_str!("../../../shaders/impulses.wgsl");
+const FRICTION_PROJECTED_WGSL: &str = include_str!("../../../shaders/friction_projected.wgsl");
 
 /// Environment variable that makes `generated_shaders_are_committed`
 /// rewrite the committed files instead of failing.
@@ -37,9 +38,14 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         Shader::Tree(_) => ("enumeration_tree", ENUMERATION_TREE_WGSL),
         Shader::Assembly => ("assembly", ASSEMBLY_WGSL),
         Shader::Impulses => ("impulses", IMPULSES_WGSL),
+        Shader::FrictionProjected => ("friction_projected", FRICTION_PROJECTED_WGSL),
     };
+    let standalone = matches!(
+        shader,
+        Shader::Assembly | Shader::Impulses | Shader::FrictionProjected
+    );
     let src = match shader {
-        Shader::Assembly | Shader::Impulses => body.to_string(),
+        _ if standalone => body.to_string(),
         _ => format!("{ENUMERATION_BASIS_WGSL}\n{body}"),
     };
     let ty = match precision {
@@ -57,16 +63,41 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
                 shader.name()
             )))
         }
+        // The friction shader tests finiteness and rounding with the type's limits.
+        Shader::FrictionProjected => {
+            let (max, eps) = scalar_limits(precision);
+            let s = replace_host_line(
+                &s,
+                "scalar_max",
+                &format!("const SCALAR_MAX: Scalar = {max};"),
+            )?;
+            replace_host_line(
+                &s,
+                "scalar_epsilon",
+                &format!("const SCALAR_EPSILON: Scalar = {eps};"),
+            )?
+        }
         _ => s,
     };
     let from = match shader {
-        Shader::Assembly | Shader::Impulses => format!("shaders/{file}.wgsl"),
+        _ if standalone => format!("shaders/{file}.wgsl"),
         _ => format!("shaders/enumeration_basis.wgsl + shaders/{file}.wgsl"),
     };
     Ok(format!(
         "// GENERATED from {from} by src/gpu/shaders/compose.rs: do not edit.\n\
          // Regenerate: {BLESS}=1 cargo test --release generated_shaders_are_committed\n\n{s}\n"
     ))
+}
+
+/// The largest finite value and the machine epsilon of `precision`'s
+/// scalar (F32 or F64; composition has already refused Auto), as WGSL
+/// literals.
+fn scalar_limits(precision: Precision) -> (&'static str, &'static str) {
+    if precision == Precision::F64 {
+        ("1.7976931348623157e308", "2.220446049250313e-16")
+    } else {
+        ("3.4028234663852886e38", "1.1920929e-7")
+    }
 }
 
 /// Replaces the `// HOST <what>` line of `src` with `line`.

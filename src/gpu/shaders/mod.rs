@@ -46,6 +46,8 @@ pub(crate) enum Shader {
     Assembly,
     /// `shaders/impulses.wgsl`.
     Impulses,
+    /// `shaders/friction_projected.wgsl` (entry points sweeps, apgd).
+    FrictionProjected,
 }
 
 impl Shader {
@@ -55,7 +57,11 @@ impl Shader {
         let mut v = vec![Shader::Enumeration, Shader::Workgroup];
         v.extend((1..=FIXED_MAX_N).map(Shader::Unrolled));
         v.extend((1..=TREE_MAX_N).map(Shader::Tree));
-        v.extend([Shader::Assembly, Shader::Impulses]);
+        v.extend([
+            Shader::Assembly,
+            Shader::Impulses,
+            Shader::FrictionProjected,
+        ]);
         v
     }
 
@@ -68,6 +74,7 @@ impl Shader {
             Shader::Tree(n) => format!("enumeration_tree_n{n}"),
             Shader::Assembly => "assembly".into(),
             Shader::Impulses => "impulses".into(),
+            Shader::FrictionProjected => "friction_projected".into(),
         }
     }
 
@@ -135,4 +142,5 @@ pub(crate) static GENERATED: &[(&str, &str, &str)] = generated!(
     "enumeration_tree_n12",
     "assembly",
     "impulses",
+    "friction_projected",
 );

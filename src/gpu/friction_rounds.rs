@@ -1,0 +1,366 @@
+//! The cone projection iterations on the GPU: frictional islands packed
+//! into chunks under the binding limits, and the rounds of
+//! `shaders/friction_projected.wgsl` until every island is done.
+
+use bytemuck::{Pod, Zeroable};
+
+use super::dispatch::{Ranges, Span};
+use super::layout::{scalars_from_bytes, scalars_to_bytes};
+use super::pipelines::{Pipelines, Stage};
+use super::{GpuContext, Precision};
+use crate::friction::{FrictionProblem, ProjectedMethod};
+use crate::Error;
+
+/// Largest island the shader takes (3k ≤ 48 entries; `MAX_DIM` there).
+pub const MAX_GPU_CONTACTS: usize = 16;
+
+/// WGSL `FrictionIsland`: an island's contacts and where its data lie.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Pod, Zeroable)]
+pub(crate) struct PackedFrictionIsland {
+    /// k, the island's contacts.
+    pub k: u32,
+    /// Offset of W in `values` (q follows at + 9k², μ at + 9k² + 3k).
+    pub data: u32,
+    /// Offset of the island's vectors in `vectors`.
+    pub vectors: u32,
+    pub _pad: u32,
+}
+
+/// WGSL `FrictionState`: where one island's iteration stands.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Pod, Zeroable)]
+pub(crate) struct FrictionState {
+    /// [`NOT_STARTED`], [`RUNNING`], [`CONVERGED`], [`AT_CAP`], [`FAILED`].
+    pub status: u32,
+    pub iterations: u32,
+    pub restarts: u32,
+    /// APGD: doublings of L so far in the current iteration.
+    pub doublings: u32,
+}
+
+/// [`FrictionState::status`]: not started (zeroed buffers).
+#[allow(dead_code, reason = "the shader's value, named for the record")]
+pub(crate) const NOT_STARTED: u32 = 0;
+/// Still iterating.
+#[allow(dead_code, reason = "the shader's value, named for the record")]
+pub(crate) const RUNNING: u32 = 1;
+/// The shader's stop measure met the tolerance.
+#[cfg_attr(not(test), allow(dead_code))]
+pub(crate) const CONVERGED: u32 = 2;
+/// max_iterations reached.
+#[cfg_attr(not(test), allow(dead_code))]
+pub(crate) const AT_CAP: u32 = 3;
+/// A non-finite error or step (the CPU twin's numerical failure).
+pub(crate) const FAILED: u32 = 4;
+
+/// Scalars per island in `scalars`: θ, L, best error, last error.
+const SCALARS: usize = 4;
+/// Bytes of `unfinished`: one counter per k = 0…16.
+const UNFINISHED_BYTES: u64 = 17 * 4;
+
+/// Scalars of an island's vectors: sweeps x and the steps (4k); APGD x,
+/// u(x), y, u(y), best (15k).
+fn vector_len(method: ProjectedMethod, k: usize) -> usize {
+    if method == ProjectedMethod::Apgd {
+        15 * k
+    } else {
+        4 * k
+    }
+}
+
+/// Where the answer lies among an island's vectors: APGD's best iterate,
+/// the sweeps' x.
+fn answer_offset(method: ProjectedMethod, k: usize) -> usize {
+    if method == ProjectedMethod::Apgd {
+        12 * k
+    } else {
+        0
+    }
+}
+
+/// A chunk of islands (sorted by k) packed for the shader.
+pub(crate) struct FrictionChunk {
+    /// The caller's index of each table entry.
+    pub order: Vec<usize>,
+    table: Vec<PackedFrictionIsland>,
+    /// W, q, μ of every island.
+    values: Vec<f64>,
+    /// Every island's vectors, its start r0 in the first 3k.
+    vectors: Vec<f64>,
+}
+
+/// Packs `problems[i]` for i in `indices` (each valid, k ≤
+/// [`MAX_GPU_CONTACTS`]), sorted by k, into chunks whose buffers each stay
+/// under `max_bytes` at `sb` bytes per scalar; `start(i)` is island i's r0.
+pub(crate) fn pack_friction_chunks(
+    problems: &[FrictionProblem],
+    indices: &[usize],
+    start: &dyn Fn(usize) -> Vec<f64>,
+    method: ProjectedMethod,
+    max_bytes: u64,
+    sb: u64,
+) -> Vec<FrictionChunk> {
+    let mut order = indices.to_vec();
+    order.sort_by_key(|&i| problems[i].contacts());
+    let mut chunks = Vec::new();
+    let mut at = 0;
+    while at < order.len() {
+        let mut chunk = FrictionChunk {
+            order: Vec::new(),
+            table: Vec::new(),
+            values: Vec::new(),
+            vectors: Vec::new(),
+        };
+        while at < order.len() {
+            let i = order[at];
+            let p = &problems[i];
+            let k = p.contacts();
+            let values = (chunk.values.len() + p.w.len() + 4 * k) as u64 * sb;
+            let vectors = (chunk.vectors.len() + vector_len(method, k)) as u64 * sb;
+            let count = chunk.order.len() as u64 + 1;
+            let per_island = (SCALARS as u64 * sb).max(16);
+            let too_big = values.max(vectors).max(count * per_island) > max_bytes;
+            if too_big && !chunk.order.is_empty() {
+                break;
+            }
+            chunk.table.push(PackedFrictionIsland {
+                k: k as u32,
+                data: chunk.values.len() as u32,
+                vectors: chunk.vectors.len() as u32,
+                _pad: 0,
+            });
+            chunk.values.extend_from_slice(&p.w);
+            chunk.values.extend_from_slice(&p.q);
+            chunk.values.extend_from_slice(&p.mu);
+            let v0 = chunk.vectors.len();
+            chunk.vectors.resize(v0 + vector_len(method, k), 0.0);
+            chunk.vectors[v0..v0 + 3 * k].copy_from_slice(&start(i));
+            chunk.order.push(i);
+            at += 1;
+        }
+        chunks.push(chunk);
+    }
+    chunks
+}
+
+/// What the shader gave for one island.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct GpuIslandRun {
+    pub state: FrictionState,
+    /// The shader's answer (APGD's best iterate, the sweeps' x), in the
+    /// shader's precision.
+    pub r: Vec<f64>,
+    /// The shader's own stop measure of that answer (NaN before the first).
+    pub error: f64,
+}
+
+/// What the rounds of one chunk did.
+pub(crate) struct ChunkRun {
+    /// Per table entry.
+    pub islands: Vec<GpuIslandRun>,
+    pub dispatches: usize,
+    pub rounds: usize,
+}
+
+/// The fixed inputs of every chunk's rounds.
+pub(crate) struct RoundsJob<'a> {
+    pub ctx: &'a GpuContext,
+    pub pipelines: &'a Pipelines,
+    pub method: ProjectedMethod,
+    /// The controls uniform (binding 7).
+    pub controls: &'a wgpu::Buffer,
+    pub budget: u32,
+    pub max_groups: u32,
+    pub max_iterations: u32,
+}
+
+/// The controls uniform: max_iterations and three pads (u32), then
+/// tolerance, relaxation and two pads in the shader's precision.
+pub(crate) fn controls_buffer(
+    ctx: &GpuContext,
+    max_iterations: u32,
+    tolerance: f64,
+    relaxation: f64,
+) -> wgpu::Buffer {
+    use wgpu::util::DeviceExt;
+    let mut bytes: Vec<u8> = bytemuck::cast_slice(&[max_iterations, 0u32, 0, 0]).to_vec();
+    bytes.extend(scalars_to_bytes(
+        &[tolerance, relaxation, 0.0, 0.0],
+        ctx.precision(),
+    ));
+    ctx.device
+        .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("friction controls"),
+            contents: &bytes,
+            usage: wgpu::BufferUsages::UNIFORM,
+        })
+}
+
+/// The chunk's device buffers (bindings 1-6).
+struct ChunkBuffers {
+    islands: wgpu::Buffer,
+    values: wgpu::Buffer,
+    vectors: wgpu::Buffer,
+    vectors_size: u64,
+    scalars: wgpu::Buffer,
+    scalars_size: u64,
+    states: wgpu::Buffer,
+    states_size: u64,
+    unfinished: wgpu::Buffer,
+}
+
+impl RoundsJob<'_> {
+    fn stage(&self) -> Result<&Stage, Error> {
+        self.pipelines
+            .friction_projected(self.ctx, self.method == ProjectedMethod::Apgd)
+    }
+
+    fn upload(&self, chunk: &FrictionChunk) -> ChunkBuffers {
+        let (ctx, p) = (self.ctx, self.ctx.precision());
+        let count = chunk.table.len() as u64;
+        let vectors = scalars_to_bytes(&chunk.vectors, p);
+        let states_size = count * std::mem::size_of::<FrictionState>() as u64;
+        let scalars_size = count * SCALARS as u64 * p.bytes();
+        let b = ChunkBuffers {
+            islands: ctx.storage("friction islands", bytemuck::cast_slice(&chunk.table)),
+            values: ctx.storage("friction values", &scalars_to_bytes(&chunk.values, p)),
+            vectors_size: vectors.len() as u64,
+            vectors: ctx.storage("friction vectors", &vectors),
+            scalars: ctx.storage_zeroed("friction scalars", scalars_size),
+            scalars_size,
+            states: ctx.storage_zeroed("friction states", states_size),
+            states_size,
+            unfinished: ctx.storage_zeroed("friction unfinished", UNFINISHED_BYTES),
+        };
+        b
+    }
+
+    /// One dispatch range per island size k (a lane never waits on a larger
+    /// island): (k, ranges).
+    fn buckets(
+        &self,
+        chunk: &FrictionChunk,
+        b: &ChunkBuffers,
+    ) -> Result<Vec<(u32, Ranges)>, Error> {
+        let stage = self.stage()?;
+        let gauss_seidel = (self.method == ProjectedMethod::GaussSeidel) as u32;
+        let mut out = Vec::new();
+        let mut first = 0;
+        while first < chunk.table.len() {
+            let k = chunk.table[first].k;
+            let last = first + chunk.table[first..].iter().take_while(|r| r.k == k).count();
+            let span = Span {
+                budget: self.budget,
+                flags: gauss_seidel,
+                ..Span::items(first as u32, (last - first) as u32)
+            };
+            let bind = |params: &wgpu::Buffer| {
+                stage.bind(
+                    self.ctx,
+                    &[
+                        params,
+                        &b.islands,
+                        &b.values,
+                        &b.vectors,
+                        &b.scalars,
+                        &b.states,
+                        &b.unfinished,
+                        self.controls,
+                    ],
+                )
+            };
+            out.push((k, self.ctx.ranges(span, self.max_groups, &bind)));
+            first = last;
+        }
+        Ok(out)
+    }
+
+    /// Runs the chunk's rounds (doubling the rounds per submission up to
+    /// 256) until no island runs, and reads the answers back.
+    pub(crate) fn run(&self, chunk: &FrictionChunk) -> Result<ChunkRun, Error> {
+        let ctx = self.ctx;
+        let b = self.upload(chunk);
+        let buckets = self.buckets(chunk, &b)?;
+        let stage = self.stage()?;
+        let mut run = ChunkRun {
+            islands: Vec::new(),
+            dispatches: 0,
+            rounds: 0,
+        };
+        // Every round makes each running island try at least one step; a
+        // step is accepted after at most 64 doublings of L.
+        let cap = (self.max_iterations as usize + 1) * 65 + 1;
+        let mut active: Vec<usize> = (0..buckets.len()).collect();
+        let mut per_submit = 1usize;
+        while !active.is_empty() {
+            let mut encoder = ctx.encoder("friction rounds");
+            for r in 0..per_submit {
+                if r + 1 == per_submit {
+                    encoder.clear_buffer(&b.unfinished, 0, None);
+                }
+                for &a in &active {
+                    ctx.record(&mut encoder, stage, &buckets[a].1);
+                    run.dispatches += buckets[a].1.len();
+                }
+            }
+            run.rounds += per_submit;
+            let counts = ctx.submit_and_read(encoder, &[(&b.unfinished, UNFINISHED_BYTES)])?;
+            let counts: &[u32] = bytemuck::try_cast_slice(&counts[0])
+                .map_err(|e| Error::Gpu(format!("unfinished counts: {e}")))?;
+            active.retain(|&a| counts.get(buckets[a].0 as usize).copied().unwrap_or(0) > 0);
+            if run.rounds > cap {
+                return Err(Error::Gpu(format!(
+                    "friction iterations made no progress ({} rounds)",
+                    run.rounds
+                )));
+            }
+            per_submit = (per_submit * 2).min(256);
+        }
+        run.islands = self.read(chunk, &b)?;
+        Ok(run)
+    }
+
+    fn read(&self, chunk: &FrictionChunk, b: &ChunkBuffers) -> Result<Vec<GpuIslandRun>, Error> {
+        let ctx = self.ctx;
+        let reads = [
+            (&b.vectors, b.vectors_size),
+            (&b.scalars, b.scalars_size),
+            (&b.states, b.states_size),
+        ];
+        let mut bytes = ctx
+            .submit_and_read(ctx.encoder("friction readback"), &reads)?
+            .into_iter();
+        let p: Precision = ctx.precision();
+        let vectors = scalars_from_bytes(&bytes.next().unwrap_or_default(), p);
+        let scalars = scalars_from_bytes(&bytes.next().unwrap_or_default(), p);
+        let state_bytes = bytes.next().unwrap_or_default();
+        let states: &[FrictionState] = bytemuck::try_cast_slice(&state_bytes)
+            .map_err(|e| Error::Gpu(format!("friction states: {e}")))?;
+        chunk
+            .table
+            .iter()
+            .enumerate()
+            .map(|(t, rec)| {
+                let (k, v) = (rec.k as usize, rec.vectors as usize);
+                let at = v + answer_offset(self.method, k);
+                // APGD: the best iterate's error; the sweeps: the last one's.
+                let e = if self.method == ProjectedMethod::Apgd {
+                    2
+                } else {
+                    3
+                };
+                Ok(GpuIslandRun {
+                    state: *states
+                        .get(t)
+                        .ok_or_else(|| Error::Gpu("friction states: short read".into()))?,
+                    r: vectors
+                        .get(at..at + 3 * k)
+                        .ok_or_else(|| Error::Gpu("friction vectors: short read".into()))?
+                        .to_vec(),
+                    error: scalars.get(SCALARS * t + e).copied().unwrap_or(f64::NAN),
+                })
+            })
+            .collect()
+    }
+}
