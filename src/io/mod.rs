@@ -287,7 +287,7 @@ fn contact_fields() -> [(
     &'static str,
     bool,
     fn(&serde_json::Value, &str) -> Result<(), FieldError>,
-); 6] {
+); 8] {
     [
         ("a", true, index),
         (
@@ -306,6 +306,14 @@ fn contact_fields() -> [(
                     f.into(),
                     format!("expected an integer id ≥ 0, found {}", kind(v)),
                 ))
+            }
+        }),
+        ("friction", false, number),
+        ("tangent", false, |v, f| {
+            if v.is_null() {
+                Ok(())
+            } else {
+                vec3(v, f)
             }
         }),
     ]
