@@ -2,6 +2,7 @@
 //! JSON output. Field names are fixed so that other tools can write and read
 //! them (see the README).
 
+pub mod fc3d;
 pub mod siconos;
 mod strict;
 
