@@ -114,6 +114,37 @@ pub fn assemble_friction_island(
     FrictionProblem { w, q, mu }
 }
 
+/// One island of a scene and its frictional problem.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FrictionIsland {
+    /// The scene's contact indices, in the order of the problem's contacts.
+    pub contacts: Vec<usize>,
+    /// Its W, q and μ.
+    pub problem: FrictionProblem,
+}
+
+/// Every island of a validated scene with its frictional problem (what the
+/// friction path of [`crate::Solver::solve_scenes`] solves).
+pub fn friction_islands(scene: &Scene) -> Vec<FrictionIsland> {
+    let rows = assemble_friction_contacts(scene);
+    crate::islands::find_islands(scene)
+        .into_iter()
+        .map(|isl| FrictionIsland {
+            problem: assemble_friction_island(scene, &rows, &isl),
+            contacts: isl.contacts,
+        })
+        .collect()
+}
+
+impl Scene {
+    /// Checks the scene (errors name `item`) and returns its islands with
+    /// their frictional problems, assembled in f64 (μ = 0 contacts included).
+    pub fn friction_islands(&self, item: &str) -> Result<Vec<FrictionIsland>, crate::Error> {
+        self.validate(item)?;
+        Ok(friction_islands(self))
+    }
+}
+
 /// The impulse vector of a contact in the world frame from its local
 /// reaction (r_n, r_t₁, r_t₂): r_n n + r_t₁ t₁ + r_t₂ t₂.
 pub fn world_impulse(rows: &FrictionContactRows, r: [f64; 3]) -> DVec3 {

@@ -3,6 +3,7 @@
 //! symmetric positive semidefinite (M = J M⁻¹ Jᵀ).
 
 pub mod families;
+pub mod friction;
 pub mod stress;
 
 use glam::{DMat3, DQuat, DVec3};
