@@ -1,0 +1,74 @@
+//! CPU throughput of the exact Coulomb solvers on fixed-seed frictional
+//! islands of k = 1…16 contacts (src/generate/friction.rs: boxes resting
+//! and sliding at k = 4, stacks at k = 4, 8, 12, 16, random spheres and
+//! boxes at every k), 1000 islands per set, one thread, through the
+//! library's `Solver::solve_friction` (checks and report included), for
+//! `auto` (NSGS then Alart–Curnier Newton) and `nsgs`. Before each group
+//! it prints, per set, the largest Coulomb error reached and the statuses,
+//! so that islands/s can be read against the error. Throughput is in
+//! islands per second. Groups are small (10 samples, 1 s).
+
+use std::hint::black_box;
+use std::time::Duration;
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use lcpbatch::generate::friction::{friction_batch, FrictionFamily};
+use lcpbatch::{Backend, FrictionMethod, FrictionProblem, Settings, Solver, Status};
+
+const ISLANDS: usize = 1000;
+const SIZES: [usize; 7] = [1, 2, 3, 4, 8, 12, 16];
+
+fn sets() -> Vec<(String, Vec<FrictionProblem>)> {
+    let mut out = Vec::new();
+    for family in FrictionFamily::ALL {
+        for k in SIZES {
+            if let Some(batch) = friction_batch(family, k, 0xF1C7, ISLANDS) {
+                out.push((format!("{}/k={k}", family.name()), batch));
+            }
+        }
+    }
+    out
+}
+
+fn bench_friction(c: &mut Criterion) {
+    let sets = sets();
+    for method in [FrictionMethod::Auto, FrictionMethod::Nsgs] {
+        let mut solver = Solver::new(Settings {
+            threads: 1,
+            friction_method: method,
+            ..Settings::new(Backend::Cpu, lcpbatch::Method::Auto)
+        })
+        .expect("valid settings");
+        for (name, batch) in &sets {
+            let r = solver.solve_friction(batch).expect("valid problems");
+            let solved = r
+                .friction
+                .iter()
+                .filter(|i| i.status() == Status::Solved)
+                .count();
+            let max_error = r.friction.iter().map(|i| i.error()).fold(0.0f64, f64::max);
+            let iterations: u64 = r.friction.iter().map(|i| i.solution.iterations).sum();
+            eprintln!(
+                "friction_{} {name}: solved {solved}/{}, max Coulomb error {max_error:.2e}, mean iterations {:.1}",
+                method.name(),
+                batch.len(),
+                iterations as f64 / batch.len() as f64
+            );
+        }
+        let mut group = c.benchmark_group(format!("friction_{}", method.name()));
+        group
+            .sample_size(10)
+            .warm_up_time(Duration::from_millis(300))
+            .measurement_time(Duration::from_secs(1));
+        for (name, batch) in &sets {
+            group.throughput(Throughput::Elements(batch.len() as u64));
+            group.bench_with_input(BenchmarkId::from_parameter(name), batch, |b, batch| {
+                b.iter(|| black_box(solver.solve_friction(black_box(batch)).expect("valid")))
+            });
+        }
+        group.finish();
+    }
+}
+
+criterion_group!(benches, bench_friction);
+criterion_main!(benches);
