@@ -1,9 +1,11 @@
 //! CPU throughput of the exact Coulomb solvers on fixed-seed frictional
 //! islands of k = 1…16 contacts (src/generate/friction.rs: boxes resting
 //! and sliding at k = 4, stacks at k = 4, 8, 12, 16, random spheres and
-//! boxes at every k), 1000 islands per set, one thread, through the
-//! library's `Solver::solve_friction` (checks and report included), for
-//! `auto` (NSGS then Alart–Curnier Newton) and `nsgs`. Before each group
+//! boxes at every k), 1000 islands per set for k ≤ 4 and 200 above, through
+//! the library's `Solver::solve_friction` (checks and report included):
+//! `auto` (NSGS then Alart–Curnier Newton) on one thread and on every core,
+//! `nsgs` on one thread for k ≤ 8 (above, its sweeps take seconds per
+//! batch). Before each group
 //! it prints, per set, the largest Coulomb error reached and the statuses,
 //! so that islands/s can be read against the error. Throughput is in
 //! islands per second. Groups are small (10 samples, 1 s).
@@ -22,7 +24,8 @@ fn sets() -> Vec<(String, Vec<FrictionProblem>)> {
     let mut out = Vec::new();
     for family in FrictionFamily::ALL {
         for k in SIZES {
-            if let Some(batch) = friction_batch(family, k, 0xF1C7, ISLANDS) {
+            let count = if k <= 4 { ISLANDS } else { ISLANDS / 5 };
+            if let Some(batch) = friction_batch(family, k, 0xF1C7, count) {
                 out.push((format!("{}/k={k}", family.name()), batch));
             }
         }
@@ -31,10 +34,18 @@ fn sets() -> Vec<(String, Vec<FrictionProblem>)> {
 }
 
 fn bench_friction(c: &mut Criterion) {
-    let sets = sets();
-    for method in [FrictionMethod::Auto, FrictionMethod::Nsgs] {
+    let all = sets();
+    for (method, threads, max_k, label) in [
+        (FrictionMethod::Auto, 1, 16, "auto"),
+        (FrictionMethod::Auto, 0, 4, "auto_all_cores"),
+        (FrictionMethod::Nsgs, 1, 8, "nsgs"),
+    ] {
+        let sets: Vec<&(String, Vec<FrictionProblem>)> = all
+            .iter()
+            .filter(|(_, b)| b[0].contacts() <= max_k)
+            .collect();
         let mut solver = Solver::new(Settings {
-            threads: 1,
+            threads,
             friction_method: method,
             ..Settings::new(Backend::Cpu, lcpbatch::Method::Auto)
         })
@@ -49,18 +60,17 @@ fn bench_friction(c: &mut Criterion) {
             let max_error = r.friction.iter().map(|i| i.error()).fold(0.0f64, f64::max);
             let iterations: u64 = r.friction.iter().map(|i| i.solution.iterations).sum();
             eprintln!(
-                "friction_{} {name}: solved {solved}/{}, max Coulomb error {max_error:.2e}, mean iterations {:.1}",
-                method.name(),
+                "friction_{label} {name}: solved {solved}/{}, max Coulomb error {max_error:.2e}, mean iterations {:.1}",
                 batch.len(),
                 iterations as f64 / batch.len() as f64
             );
         }
-        let mut group = c.benchmark_group(format!("friction_{}", method.name()));
+        let mut group = c.benchmark_group(format!("friction_{label}"));
         group
             .sample_size(10)
             .warm_up_time(Duration::from_millis(300))
             .measurement_time(Duration::from_secs(1));
-        for (name, batch) in &sets {
+        for (name, batch) in sets {
             group.throughput(Throughput::Elements(batch.len() as u64));
             group.bench_with_input(BenchmarkId::from_parameter(name), batch, |b, batch| {
                 b.iter(|| black_box(solver.solve_friction(black_box(batch)).expect("valid")))

@@ -115,7 +115,7 @@ pub fn solve_friction_problem(
 fn hybrid(p: &FrictionProblem, r: &mut Vec<f64>, cap: u64, tolerance: f64) -> u64 {
     let target = tolerance.min(POLISH);
     let mut used = 0;
-    let mut sweeps_per_round = if p.contacts() == 1 { 1 } else { 8 };
+    let mut sweeps_per_round = if p.contacts() == 1 { 1 } else { 2 };
     let mut best = (f64::INFINITY, r.clone());
     while used < cap {
         let (k, e) = nsgs(p, r, sweeps_per_round.min(cap - used), target);
