@@ -104,6 +104,8 @@ mod tests {
             normal: [0.0, 1.0, 0.0],
             restitution: 0.0,
             id: None,
+            friction: 0.0,
+            tangent: None,
         }
     }
 

@@ -16,11 +16,16 @@
 //! a sliding contact then gains the normal velocity μ‖u_t‖.
 
 pub(crate) mod apgd;
+pub mod assembly;
 pub mod cone;
+pub mod local;
+pub mod newton;
+pub mod nsgs;
 pub mod problem;
 pub mod projected;
 pub mod random;
 pub mod residual;
+pub mod solve;
 
 pub use crate::gpu::friction::{
     solve_projected_on_gpu, FrictionOrigin, ProjectedGpuFigures, MAX_GPU_CONTACTS,
@@ -31,3 +36,4 @@ pub use projected::{
     solve_projected, solve_projected_batch, ProjectedMethod, ProjectedSettings, ProjectedSolution,
 };
 pub use residual::{coulomb_error, FrictionResiduals};
+pub use solve::{solve_friction_problem, FrictionMethod, FrictionSettings, FrictionSolution};

@@ -111,6 +111,8 @@ fn contact(a: usize, b: Option<usize>, point: DVec3, normal: DVec3, restitution:
         normal: normal.to_array(),
         restitution,
         id: None,
+        friction: 0.0,
+        tangent: None,
     }
 }
 

@@ -291,6 +291,8 @@ pub fn assemble_contacts_packed(
             normal: [v[3], v[4], v[5]],
             restitution: v[contact::RESTITUTION],
             id: None,
+            friction: 0.0,
+            tangent: None,
         };
         pack_row(&assemble_contact(&bodies, &c), &mut out);
     }

@@ -166,6 +166,8 @@ fn moving_static_platform_matches_cpu_f64() {
                     normal: [0.0, -1.0, 0.0],
                     restitution: 0.25,
                     id: None,
+                    friction: 0.0,
+                    tangent: None,
                 }
             } else {
                 Contact {
@@ -175,6 +177,8 @@ fn moving_static_platform_matches_cpu_f64() {
                     normal: [0.0, 1.0, 0.0],
                     restitution: 0.5,
                     id: None,
+                    friction: 0.0,
+                    tangent: None,
                 }
             });
         }
