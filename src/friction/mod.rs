@@ -30,6 +30,7 @@ pub mod solve;
 pub use crate::gpu::friction::{
     solve_projected_on_gpu, FrictionOrigin, ProjectedGpuFigures, MAX_GPU_CONTACTS,
 };
+pub use crate::gpu::friction_assembly::assemble_friction_on_gpu;
 pub use cone::{project_on_cone, project_on_disc, tangent_basis};
 pub use problem::FrictionProblem;
 pub use projected::{

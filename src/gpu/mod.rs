@@ -52,7 +52,8 @@
 //! - [`batch`] (LCP batches) and [`scenes`] (whole scenes): orchestration;
 //! - [`friction`] (frictional islands through the cone projection
 //!   iterations, validated in f64) and [`friction_rounds`] (their packing
-//!   and rounds);
+//!   and rounds); [`friction_assembly`] (W and q of frictional islands on
+//!   the GPU, through assembly.wgsl on the direction contacts);
 //! - [`layout`]: buffer layouts shared with the CPU twins.
 
 pub mod batch;
@@ -61,6 +62,7 @@ pub mod context;
 pub(crate) mod dispatch;
 pub(crate) mod enumeration;
 pub mod friction;
+pub mod friction_assembly;
 pub(crate) mod friction_rounds;
 pub mod kernel;
 pub mod layout;

@@ -11,6 +11,7 @@ mod friction;
 mod friction_conformance;
 mod gpu_conformance;
 mod gpu_friction;
+mod gpu_friction_assembly;
 mod gpu_prediction;
 mod gpu_seeds;
 mod gpu_stages;
