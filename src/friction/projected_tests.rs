@@ -172,13 +172,10 @@ fn a_warm_start_from_the_solution_returns_at_once() {
     }
 }
 
-#[test]
-fn frictionless_islands_give_the_lcp_solvers_answer_on_the_normal_block() {
+/// The frictionless LCPs of `problems` (W's normal block, q's normal
+/// entries) solved by Lemke through the Solver door.
+pub(crate) fn lemke_on_the_normal_blocks(problems: &[FrictionProblem]) -> crate::Report {
     use crate::{Backend, Lcp, Method, Settings, Solver};
-    let mut problems = random_problems(11, 30, 4);
-    for p in &mut problems {
-        p.mu.iter_mut().for_each(|m| *m = 0.0);
-    }
     let lcps: Vec<Lcp> = problems
         .iter()
         .map(|p| {
@@ -189,7 +186,16 @@ fn frictionless_islands_give_the_lcp_solvers_answer_on_the_normal_block() {
         })
         .collect();
     let mut solver = Solver::new(Settings::new(Backend::Cpu, Method::Lemke)).unwrap();
-    let report = solver.solve_lcps(&lcps).unwrap();
+    solver.solve_lcps(&lcps).unwrap()
+}
+
+#[test]
+fn frictionless_islands_give_the_lcp_solvers_answer_on_the_normal_block() {
+    let mut problems = random_problems(11, 30, 4);
+    for p in &mut problems {
+        p.mu.iter_mut().for_each(|m| *m = 0.0);
+    }
+    let report = lemke_on_the_normal_blocks(&problems);
     let settings = ProjectedSettings {
         tolerance: Some(1e-12),
         max_iterations: 100_000,

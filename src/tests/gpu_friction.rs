@@ -246,7 +246,6 @@ fn splitting_invalid_and_large_islands() {
 
 #[test]
 fn frictionless_islands_on_the_gpu_give_the_lcp_answer() {
-    use crate::{Backend, Lcp, Method, Settings, Solver};
     let Some(ctx) = gpu_context(Precision::Auto) else {
         return;
     };
@@ -254,18 +253,7 @@ fn frictionless_islands_on_the_gpu_give_the_lcp_answer() {
     for p in &mut problems {
         p.mu.iter_mut().for_each(|m| *m = 0.0);
     }
-    let lcps: Vec<Lcp> = problems
-        .iter()
-        .map(|p| {
-            let k = p.contacts();
-            let m = (0..k * k).map(|e| p.at(3 * (e / k), 3 * (e % k))).collect();
-            Lcp::new(m, (0..k).map(|i| p.q[3 * i]).collect()).unwrap()
-        })
-        .collect();
-    let report = Solver::new(Settings::new(Backend::Cpu, Method::Lemke))
-        .unwrap()
-        .solve_lcps(&lcps)
-        .unwrap();
+    let report = crate::friction::projected::tests::lemke_on_the_normal_blocks(&problems);
     let settings = ProjectedSettings {
         max_iterations: 50_000,
         ..Default::default()
