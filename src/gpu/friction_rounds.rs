@@ -211,9 +211,11 @@ struct ChunkBuffers {
 }
 
 impl RoundsJob<'_> {
-    fn stage(&self) -> Result<&Stage, Error> {
+    /// The kernel of islands of k contacts.
+    fn stage(&self, k: u32) -> Result<&Stage, Error> {
+        let apgd = self.method == ProjectedMethod::Apgd;
         self.pipelines
-            .friction_projected(self.ctx, self.method == ProjectedMethod::Apgd)
+            .friction_projected(self.ctx, k as usize, apgd)
     }
 
     fn upload(&self, chunk: &FrictionChunk) -> ChunkBuffers {
@@ -236,19 +238,19 @@ impl RoundsJob<'_> {
         b
     }
 
-    /// One dispatch range per island size k (a lane never waits on a larger
-    /// island): (k, ranges).
+    /// One dispatch range per island size k, through its kernel (a lane
+    /// never waits on a larger island): (k, ranges).
     fn buckets(
         &self,
         chunk: &FrictionChunk,
         b: &ChunkBuffers,
     ) -> Result<Vec<(u32, Ranges)>, Error> {
-        let stage = self.stage()?;
         let gauss_seidel = (self.method == ProjectedMethod::GaussSeidel) as u32;
         let mut out = Vec::new();
         let mut first = 0;
         while first < chunk.table.len() {
             let k = chunk.table[first].k;
+            let stage = self.stage(k)?;
             let last = first + chunk.table[first..].iter().take_while(|r| r.k == k).count();
             let span = Span {
                 budget: self.budget,
@@ -282,7 +284,6 @@ impl RoundsJob<'_> {
         let ctx = self.ctx;
         let b = self.upload(chunk);
         let buckets = self.buckets(chunk, &b)?;
-        let stage = self.stage()?;
         let mut run = ChunkRun {
             islands: Vec::new(),
             dispatches: 0,
@@ -300,7 +301,7 @@ impl RoundsJob<'_> {
                     encoder.clear_buffer(&b.unfinished, 0, None);
                 }
                 for &a in &active {
-                    ctx.record(&mut encoder, stage, &buckets[a].1);
+                    ctx.record(&mut encoder, self.stage(buckets[a].0)?, &buckets[a].1);
                     run.dispatches += buckets[a].1.len();
                 }
             }

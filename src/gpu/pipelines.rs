@@ -8,7 +8,7 @@ use wgpu::util::DeviceExt;
 
 use super::batch::GpuSolveSettings;
 use super::layout::scalars_to_bytes;
-use super::shaders::{Shader, FIXED_MAX_N};
+use super::shaders::{Shader, FIXED_MAX_N, FRICTION_MAX_K};
 use super::{GpuContext, Precision};
 use crate::cpu::enumeration_tree::{TreeSettings, TREE_MAX_N};
 use crate::Error;
@@ -181,9 +181,10 @@ pub(crate) struct Pipelines {
     pub(crate) assemble_contacts: Stage,
     pub(crate) assemble_islands: Stage,
     pub(crate) impulses: Stage,
-    /// shaders/friction_projected.wgsl: `sweeps` (index 0) and `apgd` (1),
-    /// built on first use (the LCP path never builds them).
-    friction_projected: [OnceLock<Stage>; 2],
+    /// [`Shader::FrictionProjected`] k at index 2(k − 1) (`sweeps`) and
+    /// 2(k − 1) + 1 (`apgd`), built on first use (the LCP path never
+    /// builds them).
+    friction_projected: Vec<OnceLock<Stage>>,
 }
 
 /// The stage in `cache` (index n − 1), built on first use.
@@ -226,7 +227,7 @@ impl Pipelines {
                     ASSEMBLE_ISLANDS_BINDINGS,
                 )?,
                 impulses: Stage::new(ctx, Shader::Impulses, "main", IMPULSES_BINDINGS)?,
-                friction_projected: [OnceLock::new(), OnceLock::new()],
+                friction_projected: (0..2 * FRICTION_MAX_K).map(|_| OnceLock::new()).collect(),
             })
         })?
     }
@@ -246,9 +247,18 @@ impl Pipelines {
 
 impl Pipelines {
     /// The entry point `sweeps` (`apgd` false) or `apgd` of
-    /// shaders/friction_projected.wgsl, built on first use.
-    pub(crate) fn friction_projected(&self, ctx: &GpuContext, apgd: bool) -> Result<&Stage, Error> {
-        let slot = &self.friction_projected[apgd as usize];
+    /// shaders/friction_projected.wgsl for islands of k contacts
+    /// (1 ≤ k ≤ [`FRICTION_MAX_K`]), built on first use.
+    pub(crate) fn friction_projected(
+        &self,
+        ctx: &GpuContext,
+        k: usize,
+        apgd: bool,
+    ) -> Result<&Stage, Error> {
+        let slot = k
+            .checked_sub(1)
+            .and_then(|i| self.friction_projected.get(2 * i + apgd as usize))
+            .ok_or_else(|| Error::Gpu(format!("no friction kernel for k = {k}")))?;
         if let Some(s) = slot.get() {
             return Ok(s);
         }
@@ -256,7 +266,7 @@ impl Pipelines {
         let stage = ctx.scoped("building the friction pipeline", || {
             Stage::new(
                 ctx,
-                Shader::FrictionProjected,
+                Shader::FrictionProjected(k),
                 entry,
                 FRICTION_PROJECTED_BINDINGS,
             )

@@ -11,7 +11,7 @@
 
 use super::tree::tree_pass_source;
 use super::unrolled::straight_line_solver;
-use super::{Shader, FIXED_MAX_N};
+use super::{Shader, FIXED_MAX_N, FRICTION_MAX_K};
 use crate::cpu::enumeration_tree::{TreeSettings, TREE_MAX_N};
 use crate::gpu::Precision;
 use crate::Error;
@@ -38,11 +38,11 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         Shader::Tree(_) => ("enumeration_tree", ENUMERATION_TREE_WGSL),
         Shader::Assembly => ("assembly", ASSEMBLY_WGSL),
         Shader::Impulses => ("impulses", IMPULSES_WGSL),
-        Shader::FrictionProjected => ("friction_projected", FRICTION_PROJECTED_WGSL),
+        Shader::FrictionProjected(_) => ("friction_projected", FRICTION_PROJECTED_WGSL),
     };
     let standalone = matches!(
         shader,
-        Shader::Assembly | Shader::Impulses | Shader::FrictionProjected
+        Shader::Assembly | Shader::Impulses | Shader::FrictionProjected(_)
     );
     let src = match shader {
         _ if standalone => body.to_string(),
@@ -57,14 +57,10 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
     let s = match shader {
         Shader::Unrolled(n) if (1..=FIXED_MAX_N).contains(&n) => fixed_source(&s, n)?,
         Shader::Tree(n) if (1..=TREE_MAX_N).contains(&n) => tree_source(&s, n)?,
-        Shader::Unrolled(n) | Shader::Tree(n) => {
-            return Err(Error::Gpu(format!(
-                "{}: no kernel for n = {n}",
-                shader.name()
-            )))
-        }
-        // The friction shader tests finiteness and rounding with the type's limits.
-        Shader::FrictionProjected => {
+        // The friction kernels: the island size k, and the scalar type's limits
+        // (finiteness and rounding tests).
+        Shader::FrictionProjected(k) if (1..=FRICTION_MAX_K).contains(&k) => {
+            let s = replace_host_line(&s, "fixed_k", &format!("const FIXED_K: u32 = {k}u;"))?;
             let (max, eps) = scalar_limits(precision);
             let s = replace_host_line(
                 &s,
@@ -76,6 +72,12 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
                 "scalar_epsilon",
                 &format!("const SCALAR_EPSILON: Scalar = {eps};"),
             )?
+        }
+        Shader::Unrolled(n) | Shader::Tree(n) | Shader::FrictionProjected(n) => {
+            return Err(Error::Gpu(format!(
+                "{}: no kernel for n = {n}",
+                shader.name()
+            )))
         }
         _ => s,
     };

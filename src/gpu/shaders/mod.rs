@@ -26,6 +26,9 @@ use super::Precision;
 use crate::cpu::enumeration_tree::TREE_MAX_N;
 use crate::Error;
 
+/// Largest frictional island (contacts) of the cone projection kernels.
+pub const FRICTION_MAX_K: usize = 16;
+
 /// Largest island size with a specialised (constant-size) elimination kernel.
 pub const FIXED_MAX_N: usize = 8;
 
@@ -46,8 +49,10 @@ pub(crate) enum Shader {
     Assembly,
     /// `shaders/impulses.wgsl`.
     Impulses,
-    /// `shaders/friction_projected.wgsl` (entry points sweeps, apgd).
-    FrictionProjected,
+    /// `shaders/friction_projected.wgsl` (entry points sweeps, apgd)
+    /// specialised to islands of exactly k contacts (1 ≤ k ≤ 16): constant
+    /// loop bounds, which llvmpipe unrolls.
+    FrictionProjected(usize),
 }
 
 impl Shader {
@@ -57,11 +62,8 @@ impl Shader {
         let mut v = vec![Shader::Enumeration, Shader::Workgroup];
         v.extend((1..=FIXED_MAX_N).map(Shader::Unrolled));
         v.extend((1..=TREE_MAX_N).map(Shader::Tree));
-        v.extend([
-            Shader::Assembly,
-            Shader::Impulses,
-            Shader::FrictionProjected,
-        ]);
+        v.extend([Shader::Assembly, Shader::Impulses]);
+        v.extend((1..=FRICTION_MAX_K).map(Shader::FrictionProjected));
         v
     }
 
@@ -74,7 +76,7 @@ impl Shader {
             Shader::Tree(n) => format!("enumeration_tree_n{n}"),
             Shader::Assembly => "assembly".into(),
             Shader::Impulses => "impulses".into(),
-            Shader::FrictionProjected => "friction_projected".into(),
+            Shader::FrictionProjected(k) => format!("friction_projected_k{k}"),
         }
     }
 
@@ -142,5 +144,20 @@ pub(crate) static GENERATED: &[(&str, &str, &str)] = generated!(
     "enumeration_tree_n12",
     "assembly",
     "impulses",
-    "friction_projected",
+    "friction_projected_k1",
+    "friction_projected_k2",
+    "friction_projected_k3",
+    "friction_projected_k4",
+    "friction_projected_k5",
+    "friction_projected_k6",
+    "friction_projected_k7",
+    "friction_projected_k8",
+    "friction_projected_k9",
+    "friction_projected_k10",
+    "friction_projected_k11",
+    "friction_projected_k12",
+    "friction_projected_k13",
+    "friction_projected_k14",
+    "friction_projected_k15",
+    "friction_projected_k16",
 );

@@ -2,7 +2,8 @@
 // Regenerate: LCPBATCH_BLESS_SHADERS=1 cargo test --release generated_shaders_are_committed
 
 // Cone projection iterations for the cone complementarity problem of
-// Anitescu-Tasora, one invocation per island of k <= 16 contacts.
+// Anitescu-Tasora, one invocation per island of exactly FIXED_K <= 16
+// contacts (one dispatch per k).
 // CPU twin: src/friction/projected.rs (sweeps, the stop measure, the steps)
 // and src/friction/apgd.rs (APGD), the same arithmetic in the same order;
 // read their docs for the methods. Entry points:
@@ -28,11 +29,15 @@
 // which is what the CPU twin's loop does next.
 //
 // The generator (src/gpu/shaders/compose.rs) replaces the lines marked HOST
-// (scalar type, its largest finite value, its machine epsilon).
+// (scalar type, its largest finite value, its machine epsilon, the
+// island size k).
 
-alias Scalar = f32; // HOST scalar
-const SCALAR_MAX: Scalar = 3.4028234663852886e38; // HOST scalar_max
-const SCALAR_EPSILON: Scalar = 1.1920929e-7; // HOST scalar_epsilon
+alias Scalar = f64; // HOST scalar
+const SCALAR_MAX: Scalar = 1.7976931348623157e308; // HOST scalar_max
+const SCALAR_EPSILON: Scalar = 2.220446049250313e-16; // HOST scalar_epsilon
+// Islands of exactly FIXED_K contacts (the generator writes one kernel per
+// k = 1...16): every loop bound is a constant, which llvmpipe unrolls.
+const FIXED_K: u32 = 1u; // HOST fixed_k
 
 // Largest island: 16 contacts, 48 entries.
 const MAX_DIM: u32 = 48u;
@@ -107,7 +112,7 @@ struct Island {
 
 fn island_at(index: u32) -> Island {
     let rec = islands[index];
-    let k = min(rec.k, MAX_DIM / 3u);
+    let k = FIXED_K;
     let n = 3u * k;
     return Island(n, k, rec.data, rec.data + n * n, rec.data + n * n + n, rec.vectors);
 }
