@@ -7,9 +7,9 @@
 //! (`lcpbatch::friction::random::random_problems`); the batch per k is in
 //! `BATCHES` (10,000 islands at k = 1; smaller above, where one GPU batch
 //! of 10,000 takes minutes on a software adapter). Jacobi runs at k = 1
-//! only (on the GPU its sweeps take seconds per batch of 2,000 at k = 4). Before each group it
-//! prints, per row, the largest cone error reached and the islands polished
-//! or repaired. Throughput is in islands per second; groups are small (10
+//! only (on the GPU its sweeps take seconds per batch of 2,000 at k = 4).
+//! Before each row it prints the largest cone error reached and the
+//! islands polished or repaired. Throughput is in islands per second; groups are small (10
 //! samples). Without an adapter only the CPU rows run.
 
 use std::hint::black_box;

@@ -30,10 +30,20 @@ use crate::{GpuSettings, Status};
 
 /// Random islands of k = 1…16 contacts, `per_k` of each.
 fn islands(seed: u64, per_k: usize) -> Vec<FrictionProblem> {
-    (1..=MAX_GPU_CONTACTS)
-        .flat_map(|k| random_problems(seed + k as u64, per_k, k))
+    islands_of(seed, per_k, &(1..=MAX_GPU_CONTACTS).collect::<Vec<_>>())
+}
+
+/// Random islands of each size in `sizes`, `per_k` of each (each size is
+/// one more kernel for lavapipe to compile, about a second each).
+fn islands_of(seed: u64, per_k: usize, sizes: &[usize]) -> Vec<FrictionProblem> {
+    sizes
+        .iter()
+        .flat_map(|&k| random_problems(seed + k as u64, per_k, k))
         .collect()
 }
+
+/// The sizes the end-to-end tests use (the iterate test covers all 16).
+const SOME_SIZES: [usize; 5] = [1, 2, 3, 7, 16];
 
 fn in_cones(p: &FrictionProblem, r: &[f64]) -> bool {
     crate::friction::projected::tests::in_cones(p, r)
@@ -118,7 +128,7 @@ fn final_answers_match(precision: Precision, u_tol: f64) {
     let Some(ctx) = gpu_context(precision) else {
         return;
     };
-    let problems = islands(0xB22, 4);
+    let problems = islands_of(0xB22, 8, &SOME_SIZES);
     let gpu = GpuSettings::default();
     for method in ProjectedMethod::ALL {
         let settings = ProjectedSettings {
@@ -201,7 +211,7 @@ fn splitting_invalid_and_large_islands() {
     let Some(ctx) = gpu_context(Precision::F64) else {
         return;
     };
-    let mut problems = islands(0xC33, 1);
+    let mut problems = islands_of(0xC33, 3, &SOME_SIZES);
     problems.extend(random_problems(5, 2, MAX_GPU_CONTACTS + 2));
     let mut bad = problems[3].clone();
     bad.mu[0] = f64::NAN;
@@ -249,7 +259,7 @@ fn frictionless_islands_on_the_gpu_give_the_lcp_answer() {
     let Some(ctx) = gpu_context(Precision::Auto) else {
         return;
     };
-    let mut problems = islands(0xD44, 1);
+    let mut problems = islands_of(0xD44, 3, &SOME_SIZES);
     for p in &mut problems {
         p.mu.iter_mut().for_each(|m| *m = 0.0);
     }
