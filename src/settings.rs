@@ -176,8 +176,9 @@ pub struct Settings {
     pub method: Method,
     /// Visit every basis and report every solution and whether the solution
     /// set is finite (default false; method Auto or Enumeration, which then
-    /// enumerates). CPU only:
-    /// `Backend::Gpu` refuses it, `Auto` solves on the CPU.
+    /// enumerates). On the GPU every basis of every island of n ≤ 16 is
+    /// screened on the device and the flagged ones re-solved and decided in
+    /// f64 on the CPU: the same solution sets as the CPU's enumeration.
     pub all_solutions: bool,
     /// Enumeration only: settle what needs no enumeration first (separating
     /// islands, single contacts, a warm basis, the predicted basis when M is
@@ -300,7 +301,7 @@ impl Settings {
         if self.backend == Backend::Gpu && !self.gpu_capable() {
             return Err(invalid(
                 "backend",
-                "the GPU backend solves by enumeration only (no Lemke, PGS or all_solutions)",
+                "the GPU backend solves by enumeration only (no Lemke or PGS)",
             ));
         }
         if self.gpu.adapter.as_deref() == Some("") {
@@ -323,7 +324,7 @@ impl Settings {
 
     /// Whether the GPU can serve these settings (enumeration of one solution).
     pub(crate) fn gpu_capable(&self) -> bool {
-        matches!(self.method, Method::Auto | Method::Enumeration) && !self.all_solutions
+        matches!(self.method, Method::Auto | Method::Enumeration)
     }
 
     pub(crate) fn enumeration(&self) -> EnumerationSettings {

@@ -114,14 +114,7 @@ impl Solver {
                 true
             }
             Backend::Auto if !s.gpu_capable() => {
-                self.choice = format!(
-                    "backend auto: {} runs on the CPU only",
-                    if s.all_solutions {
-                        "all_solutions"
-                    } else {
-                        s.method.name()
-                    }
-                );
+                self.choice = format!("backend auto: {} runs on the CPU only", s.method.name());
                 false
             }
             Backend::Auto if s.gpu.adapter.is_some() => {
@@ -270,7 +263,12 @@ impl Solver {
         let warm = self.warm_bases(keys);
         let mut report = None;
         if let Some(ctx) = self.gpu.clone() {
-            match self.lcps_on_gpu(&ctx, lcps, warm.as_deref()) {
+            let on_gpu = if self.settings.all_solutions {
+                self.all_solutions_lcps_on_gpu(&ctx, lcps)
+            } else {
+                self.lcps_on_gpu(&ctx, lcps, warm.as_deref())
+            };
+            match on_gpu {
                 Ok(r) => report = Some(r),
                 Err(Error::Gpu(why)) => self.fall_back(why),
                 Err(e) => return Err(e),
@@ -312,7 +310,12 @@ impl Solver {
         };
         let mut report = None;
         if let Some(ctx) = self.gpu.clone() {
-            match self.scenes_on_gpu(&ctx, scenes, &warm) {
+            let on_gpu = if self.settings.all_solutions {
+                self.all_solutions_scenes_on_gpu(&ctx, scenes)
+            } else {
+                self.scenes_on_gpu(&ctx, scenes, &warm)
+            };
+            match on_gpu {
                 Ok(r) => report = Some(r),
                 Err(Error::Gpu(why)) => self.fall_back(why),
                 Err(e) => return Err(e),
@@ -320,7 +323,7 @@ impl Solver {
         }
         let mut report = match report {
             Some(r) => r,
-            None => self.scenes_on_cpu(scenes, &warm),
+            None => self.scenes_on_cpu(scenes, &warm)?,
         };
         if self.settings.warm_start {
             let ids: Vec<Vec<u64>> = report

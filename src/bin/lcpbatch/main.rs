@@ -446,12 +446,12 @@ fn solve_command(args: SolveArgs) -> Result<(), Error> {
             "--all-solutions needs --solver auto or enum".into(),
         ));
     }
-    // The GPU enumerates; Lemke, PGS and --all-solutions run on the CPU.
-    let gpu_capable = matches!(method, Method::Auto | Method::Enumeration) && !all_solutions;
+    // The GPU enumerates (with --all-solutions every basis); Lemke and PGS
+    // run on the CPU.
+    let gpu_capable = matches!(method, Method::Auto | Method::Enumeration);
     if backend == BackendArg::Gpu && !gpu_capable {
         return Err(Error::Unsupported(
-            "--backend gpu solves by enumeration only (no --solver lemke/pgs, no --all-solutions)"
-                .into(),
+            "--backend gpu solves by enumeration only (no --solver lemke/pgs)".into(),
         ));
     }
     let input = read_input(&file)?;
