@@ -172,6 +172,11 @@ impl crate::GpuContext {
 pub struct Settings {
     /// Where to solve (default [`Backend::Auto`]).
     pub backend: Backend,
+    /// `Backend::Auto` with a GPU open: the measured costs of both paths by
+    /// island size that choose, per batch, the faster one (default None:
+    /// the model cached for this device and thread count, else measured
+    /// once by [`crate::Solver::new`] and cached; see [`crate::CostModel`]).
+    pub cost_model: Option<crate::CostModel>,
     /// The algorithm (default [`Method::Auto`]: the fastest exact path).
     pub method: Method,
     /// Visit every basis and report every solution and whether the solution
@@ -227,6 +232,7 @@ impl Default for Settings {
         let p = PgsSettings::default();
         Settings {
             backend: Backend::Auto,
+            cost_model: None,
             method: Method::Auto,
             all_solutions: false,
             predict: true,
@@ -261,6 +267,9 @@ impl Settings {
 
     /// Checks every field; the error names the first one out of range.
     pub fn validate(&self) -> Result<(), Error> {
+        if let Some(m) = &self.cost_model {
+            m.validate()?;
+        }
         for (name, v) in [
             ("pivot_tol", self.pivot_tol),
             ("feasibility_tol", self.feasibility_tol),

@@ -145,7 +145,7 @@ impl Solver {
 
     fn cpu_report(&self, mut islands: Vec<IslandReport>, scenes: Vec<SceneReport>) -> Report {
         self.check(&mut islands);
-        let mut r = Report::new(islands, scenes, self.device(), self.choice.clone());
+        let mut r = Report::new(islands, scenes, self.cpu_device(), self.choice.clone());
         r.fallback = self.fallback.clone();
         r
     }

@@ -122,6 +122,7 @@ impl Solver {
             figures = f;
             Ok(solved)
         })?;
+        r.device = self.device();
         add_screen_figures(&mut r, figures);
         Ok(r)
     }

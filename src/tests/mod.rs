@@ -9,6 +9,7 @@ pub(crate) mod common;
 mod device_trouble;
 mod gpu_all_solutions;
 mod gpu_conformance;
+mod gpu_cost_model;
 mod gpu_prediction;
 mod gpu_seeds;
 mod gpu_stages;
