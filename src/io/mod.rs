@@ -45,10 +45,70 @@ enum JsonInput {
 /// Parses JSON text holding a scene, `{"scenes": [...]}` or
 /// `{"problems": [...]}`, and checks every item. `path` names the file in errors.
 pub fn parse_json(path: &str, text: &str) -> Result<Input, Error> {
-    // Parse as a generic value first so that syntax errors keep their position,
-    // then pick the shape by its top-level key. A value of the wrong type or
-    // shape is then named by item and field (see [`shape_error`]), as the
-    // checks on values name theirs.
+    let input = match typed(text) {
+        Some(input) => input,
+        None => checked(path, text)?,
+    };
+    match input {
+        JsonInput::Batch { problems } => {
+            if problems.is_empty() {
+                return Err(Error::invalid(path, "problems", "empty list"));
+            }
+            let lcps = problems
+                .into_iter()
+                .enumerate()
+                .map(|(i, p)| {
+                    Lcp::from_rows(&p.m, p.q).map_err(|e| match e {
+                        Error::Invalid { field, reason, .. } => {
+                            Error::invalid(format!("problem {i}"), field, reason)
+                        }
+                        other => other,
+                    })
+                })
+                .collect::<Result<Vec<_>, _>>()?;
+            Ok(Input::Lcps(lcps))
+        }
+        JsonInput::Scenes { scenes } => {
+            if scenes.is_empty() {
+                return Err(Error::invalid(path, "scenes", "empty list"));
+            }
+            for (i, s) in scenes.iter().enumerate() {
+                s.validate(&format!("scene {i}"))?;
+            }
+            Ok(Input::Scenes(scenes))
+        }
+        JsonInput::Scene(scene) => {
+            scene.validate("scene 0")?;
+            Ok(Input::Scenes(vec![scene]))
+        }
+    }
+}
+
+/// The fast path: a file of the right shape parsed straight into its type,
+/// once. serde's derive refuses unknown fields (`deny_unknown_fields`) and a
+/// field given twice in one object, and every object of the formats is a
+/// derived struct, so what parses here is what [`checked`] accepts, with the
+/// same numbers. None for anything else: [`checked`] then says precisely
+/// what is wrong.
+fn typed(text: &str) -> Option<JsonInput> {
+    if let Ok(b) = serde_json::from_str::<BatchFile>(text) {
+        return Some(JsonInput::Batch {
+            problems: b.problems,
+        });
+    }
+    if let Ok(s) = serde_json::from_str::<ScenesFile>(text) {
+        return Some(JsonInput::Scenes { scenes: s.scenes });
+    }
+    serde_json::from_str::<Scene>(text)
+        .ok()
+        .map(JsonInput::Scene)
+}
+
+/// The checked path: parse as a generic value first so that syntax errors
+/// keep their position, look for a key given twice, then pick the shape by
+/// its top-level key. A value of the wrong type or shape is then named by
+/// item and field (see [`shape_error`]), as the checks on values name theirs.
+fn checked(path: &str, text: &str) -> Result<JsonInput, Error> {
     let value: serde_json::Value = serde_json::from_str(text).map_err(|e| Error::json(path, e))?;
     if let Some((at, key)) = strict::duplicate_key(text) {
         return Err(Error::invalid(
@@ -86,39 +146,7 @@ pub fn parse_json(path: &str, text: &str) -> Result<Input, Error> {
             "expected a key `problems` (LCP batch), `scenes` or `bodies` and `contacts` (scene)",
         ));
     };
-    match input {
-        JsonInput::Batch { problems } => {
-            if problems.is_empty() {
-                return Err(Error::invalid(path, "problems", "empty list"));
-            }
-            let lcps = problems
-                .into_iter()
-                .enumerate()
-                .map(|(i, p)| {
-                    Lcp::from_rows(&p.m, p.q).map_err(|e| match e {
-                        Error::Invalid { field, reason, .. } => {
-                            Error::invalid(format!("problem {i}"), field, reason)
-                        }
-                        other => other,
-                    })
-                })
-                .collect::<Result<Vec<_>, _>>()?;
-            Ok(Input::Lcps(lcps))
-        }
-        JsonInput::Scenes { scenes } => {
-            if scenes.is_empty() {
-                return Err(Error::invalid(path, "scenes", "empty list"));
-            }
-            for (i, s) in scenes.iter().enumerate() {
-                s.validate(&format!("scene {i}"))?;
-            }
-            Ok(Input::Scenes(scenes))
-        }
-        JsonInput::Scene(scene) => {
-            scene.validate("scene 0")?;
-            Ok(Input::Scenes(vec![scene]))
-        }
-    }
+    Ok(input)
 }
 
 /// The three shapes of a JSON input file.
