@@ -1,0 +1,236 @@
+"""What a solve returns: :class:`Status`, :class:`Report`, :class:`LcpResult`
+and :class:`ScenesResult`. Plain Python objects holding NumPy arrays, so they
+pickle (for :mod:`lcpbatch.distributed`) and print readably."""
+
+from __future__ import annotations
+
+import enum
+from typing import Any, Dict, List, Optional, Sequence, Union
+
+import numpy as np
+
+from . import _native
+
+__all__ = ["Status", "Report", "LcpResult", "ScenesResult", "PATH_NAMES"]
+
+
+class Status(enum.IntEnum):
+    """What a solve found for one problem (the codes of ``result.status``).
+
+    ``result.status`` is an ``int8`` array of these codes, so NumPy
+    comparisons work directly:
+
+    >>> import numpy as np, lcpbatch
+    >>> r = lcpbatch.solve(np.array([[[2.0, 1.0], [1.0, 2.0]]]), np.array([[-5.0, -6.0]]))
+    >>> bool((r.status == lcpbatch.Status.SOLVED).all())
+    True
+    >>> lcpbatch.Status(int(r.status[0])).name
+    'SOLVED'
+    """
+
+    #: A solution was found (unique when every basis was visited).
+    SOLVED = 0
+    #: Exhaustive enumeration (``all_solutions=True``) found several.
+    MULTIPLE_SOLUTIONS = 1
+    #: Every complementary basis was visited and none is feasible.
+    NO_SOLUTION = 2
+    #: Lemke ended on a secondary ray (no solution for copositive-plus M).
+    RAY_TERMINATION = 3
+    #: PGS or Lemke's pivot cap stopped before the tolerance; z is the last iterate.
+    NOT_CONVERGED = 4
+    #: The problem could not be posed (e.g. PGS with a zero diagonal entry).
+    INVALID_INPUT = 5
+    #: z, w or the error is not finite, or the error is above ``tolerance``.
+    NUMERICAL_FAILURE = 6
+
+    @property
+    def is_solution(self) -> bool:
+        """True for ``SOLVED`` and ``MULTIPLE_SOLUTIONS``."""
+        return self in (Status.SOLVED, Status.MULTIPLE_SOLUTIONS)
+
+
+# The Rust side numbers statuses in this order; a mismatch is a build error.
+if [s.name.lower() for s in Status] != list(_native.status_names()):  # pragma: no cover
+    raise ImportError("lcpbatch: Status codes differ from the extension's; rebuild it")
+
+#: Names of the solve paths, indexed by the codes the extension returns.
+PATH_NAMES: List[str] = list(_native.path_names())
+_PATHS = np.array(PATH_NAMES)
+
+
+class Report:
+    """Batch figures of one call: where it ran and why, islands per path,
+    per status, the largest error, seconds per phase and any GPU fallback.
+
+    ``print(report)`` gives a few lines; every figure is also an attribute:
+
+    >>> import numpy as np, lcpbatch
+    >>> r = lcpbatch.solve(np.array([[[2.0, 1.0], [1.0, 2.0]]]), np.array([[-5.0, -6.0]]), backend="cpu")
+    >>> r.report.statuses["solved"], r.report.device_kind, r.report.fallback
+    (1, 'cpu', None)
+    >>> "islands" in str(r.report)
+    True
+    """
+
+    #: The attributes, in the order of ``repr``.
+    FIELDS = (
+        "device", "device_kind", "precision", "choice", "fallback", "counts",
+        "statuses", "max_error", "max_error_index", "timings", "gpu", "chunks",
+    )
+
+    def __init__(self, d: Dict[str, Any]):
+        self.text: str = d["text"]
+        self.device: str = d["device"]
+        self.device_kind: str = d["device_kind"]
+        self.precision: str = d["precision"]
+        self.choice: str = d["choice"]
+        self.fallback: Optional[str] = d["fallback"]
+        self.counts: Dict[str, int] = dict(d["counts"])
+        self.statuses: Dict[str, int] = dict(d["statuses"])
+        self.max_error: Optional[float] = d["max_error"]
+        self.max_error_index: Optional[int] = d["max_error_index"]
+        self.timings: Dict[str, float] = dict(d["timings"])
+        self.gpu: Optional[Dict[str, float]] = d["gpu"]
+        self.chunks: int = d["chunks"]
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The figures as a plain dict (JSON-friendly)."""
+        d = {k: getattr(self, k) for k in self.FIELDS}
+        d["text"] = self.text
+        return d
+
+    def __str__(self) -> str:
+        return self.text
+
+    def __repr__(self) -> str:
+        body = "\n  ".join(self.text.splitlines())
+        return f"<lcpbatch.Report\n  {body}>"
+
+
+def _split(flat: np.ndarray, offsets: np.ndarray) -> List[np.ndarray]:
+    """Views of ``flat`` between consecutive offsets."""
+    return [flat[offsets[i]: offsets[i + 1]] for i in range(len(offsets) - 1)]
+
+
+class LcpResult:
+    """The answers of an LCP batch, one row per problem.
+
+    Attributes (B problems; for a ragged batch, a list of B arrays where the
+    dense form has a (B, n) array):
+
+    - ``z``, ``w``: (B, n) float64, with w = M z + q recomputed in f64;
+    - ``status``: (B,) int8 codes of :class:`Status`; ``ok``: (B,) bool, a solution;
+    - ``error``: (B,) float64, the Siconos measure ‖z − max(0, z − w)‖ / ‖q‖;
+    - ``basis``: (B, n) bool, z_i basic; ``has_basis``: (B,) bool, whether the
+      solver reported a basis (PGS does not: its rows are all False);
+    - ``pivots`` (Lemke), ``iterations`` (PGS sweeps), ``bases_visited``
+      (enumeration): (B,) uint64;
+    - ``path``: (B,) str, how each problem was settled (``PATH_NAMES``);
+    - ``solution_count``: (B,) int64, distinct solutions with
+      ``all_solutions=True`` (−1 where unknown); ``solution_set``: list of
+      "empty", "isolated", "bounded_continuum", "unbounded_continuum" or None;
+    - ``report``: :class:`Report`.
+
+    >>> import numpy as np, lcpbatch
+    >>> r = lcpbatch.solve(np.array([[[2.0, 1.0], [1.0, 2.0]]]), np.array([[-5.0, -6.0]]))
+    >>> np.round(r.z * 3, 12).tolist(), r.basis.tolist()
+    ([[4.0, 7.0]], [[True, True]])
+    """
+
+    def __init__(self, d: Dict[str, Any], ragged: bool, n: Optional[int]):
+        offsets = d["offsets"]
+        self.ragged = ragged
+        if ragged:
+            self.z: Union[np.ndarray, List[np.ndarray]] = _split(d["z"], offsets)
+            self.w: Union[np.ndarray, List[np.ndarray]] = _split(d["w"], offsets)
+            self.basis: Union[np.ndarray, List[np.ndarray]] = _split(d["basis"], offsets)
+        else:
+            shape = (len(offsets) - 1, n or 0)
+            self.z = d["z"].reshape(shape)
+            self.w = d["w"].reshape(shape)
+            self.basis = d["basis"].reshape(shape)
+        self.status: np.ndarray = d["status"]
+        self.error: np.ndarray = d["error"]
+        self.has_basis: np.ndarray = d["has_basis"]
+        self.pivots: np.ndarray = d["pivots"]
+        self.iterations: np.ndarray = d["iterations"]
+        self.bases_visited: np.ndarray = d["bases_visited"]
+        self.path: np.ndarray = _PATHS[d["path"]] if len(d["path"]) else np.array([], dtype=str)
+        self.solution_count: np.ndarray = d["solution_count"]
+        self.solution_set: List[Optional[str]] = list(d["solution_set"])
+        self.report = Report(d["report"])
+
+    @property
+    def ok(self) -> np.ndarray:
+        """(B,) bool: the status is SOLVED or MULTIPLE_SOLUTIONS."""
+        return self.status <= Status.MULTIPLE_SOLUTIONS
+
+    def status_names(self) -> np.ndarray:
+        """(B,) str: the status of each problem by name ("solved", …)."""
+        names = np.array([s.name.lower() for s in Status])
+        return names[self.status] if len(self.status) else np.array([], dtype=str)
+
+    def __len__(self) -> int:
+        return len(self.status)
+
+    def __repr__(self) -> str:
+        counts = ", ".join(f"{k} {v}" for k, v in self.report.statuses.items() if v)
+        err = self.report.max_error
+        kind = "ragged" if self.ragged else "dense"
+        return (
+            f"<lcpbatch.LcpResult: {len(self)} problems ({kind}); {counts or 'none'}; "
+            f"max error {'none' if err is None else f'{err:.3e}'}; on {self.report.device}>"
+        )
+
+
+class ScenesResult:
+    """The answers of a batch of scenes.
+
+    For one scene (``solve_scenes(bodies=dict, contacts=dict)``):
+    ``impulses`` (C,), ``velocity`` and ``angular_velocity`` (N, 3) after the
+    impact; for a batch (lists of dicts), lists of those, one per scene.
+    Per island (all scenes, in order): ``island_scene`` (I,), ``island_contacts``
+    (list of the scene's contact indices, in the order of the island's LCP
+    rows), ``status`` (I,) :class:`Status` codes, ``error``, ``path``, ``z``
+    and ``w`` (lists). ``scene_ok`` (S,) bool: every island of the scene has a
+    solution. ``report``: :class:`Report`.
+
+    >>> import numpy as np, lcpbatch
+    >>> bodies = dict(inv_mass=[1.0], inv_inertia=[[2.5, 2.5, 2.5]],
+    ...               position=[[0, 0.5, 0]], velocity=[[0, -1.0, 0]])
+    >>> contacts = dict(a=[0], b=[-1], point=[[0, 0, 0]], normal=[[0, 1.0, 0]], restitution=[0.5])
+    >>> r = lcpbatch.solve_scenes(bodies, contacts)
+    >>> float(r.impulses[0]), float(r.velocity[0, 1])
+    (1.5, 0.5)
+    """
+
+    def __init__(self, d: Dict[str, Any], single: bool):
+        impulses = _split(d["impulses"], d["contact_offsets"])
+        velocity = _split(d["velocity"], d["body_offsets"])
+        angular = _split(d["angular_velocity"], d["body_offsets"])
+        self.single = single
+        if single:
+            self.impulses: Union[np.ndarray, List[np.ndarray]] = impulses[0]
+            self.velocity: Union[np.ndarray, List[np.ndarray]] = velocity[0]
+            self.angular_velocity: Union[np.ndarray, List[np.ndarray]] = angular[0]
+        else:
+            self.impulses, self.velocity, self.angular_velocity = impulses, velocity, angular
+        islands = LcpResult(d, ragged=True, n=None)
+        self.island_scene: np.ndarray = d["island_scene"]
+        self.island_contacts: List[np.ndarray] = _split(d["island_contacts"], d["offsets"])
+        self.status = islands.status
+        self.error = islands.error
+        self.path = islands.path
+        self.z: Sequence[np.ndarray] = islands.z
+        self.w: Sequence[np.ndarray] = islands.w
+        self.report = islands.report
+        scenes = len(d["contact_offsets"]) - 1
+        bad = self.island_scene[~islands.ok]
+        self.scene_ok: np.ndarray = ~np.isin(np.arange(scenes), bad)
+
+    def __repr__(self) -> str:
+        counts = ", ".join(f"{k} {v}" for k, v in self.report.statuses.items() if v)
+        return (
+            f"<lcpbatch.ScenesResult: {len(self.scene_ok)} scene(s), {len(self.status)} "
+            f"island(s); {counts or 'none'}; on {self.report.device}>"
+        )
