@@ -35,8 +35,9 @@ def id_array(value: Any, name: str) -> np.ndarray:
     if a.dtype.kind not in "iu":
         raise TypeError(f"{name}: dtype {a.dtype} is not an integer type (contact ids)")
     if a.dtype.kind == "i" and a.size and a.min() < 0:
-        k = np.unravel_index(int(np.argmin(a)), a.shape)
-        raise ValueError(f"{name}{list(k)} is {a[k]}: contact ids must be ≥ 0")
+        k = tuple(int(i) for i in np.unravel_index(int(np.argmin(a)), a.shape))
+        where = ", ".join(map(str, k))
+        raise ValueError(f"{name}[{where}] is {a[k]}: contact ids must be ≥ 0")
     return a.astype(np.uint64, copy=False)
 
 

@@ -20,14 +20,15 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-/// At most this many problems per chunk: a 20,000-problem batch is one call
-/// of the library, a larger one several, with a Ctrl-C check between them.
+/// At most this many problems per chunk (with [`CHUNK_WORK`]): one call of
+/// the library per chunk, a Ctrl-C check between chunks.
 pub(crate) const CHUNK_PROBLEMS: usize = 65_536;
 
 /// At most this much work per chunk, counting 2^n per problem of size n (the
-/// bases enumeration may visit): 65,536 problems of n = 8, 256 of n = 16,
-/// one of n ≥ 24. A chunk takes well under a second on one core for n ≤ 12.
-pub(crate) const CHUNK_WORK: u64 = 1 << 24;
+/// bases enumeration may visit): 16,384 problems of n = 8, 64 of n = 16, one
+/// of n ≥ 22. Enumerating 2^22 bases of n = 12 takes about 0.7 s on two
+/// cores, so Ctrl-C is seen within about a second on the slowest path.
+pub(crate) const CHUNK_WORK: u64 = 1 << 22;
 
 /// Splits problems of sizes `ns` into consecutive chunks under both limits
 /// (every chunk holds at least one problem).

@@ -26,7 +26,7 @@ pub(crate) struct Args<'a> {
 }
 
 fn bad(arg: &str, got: &str, allowed: &str) -> PyErr {
-    PyValueError::new_err(format!("{arg}: {got:?} is not one of {allowed}"))
+    PyValueError::new_err(format!("{arg}: '{got}' is not one of {allowed}"))
 }
 
 /// `backend`: "auto", "cpu" or "gpu".
