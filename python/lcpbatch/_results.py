@@ -234,3 +234,79 @@ class ScenesResult:
             f"<lcpbatch.ScenesResult: {len(self.scene_ok)} scene(s), {len(self.status)} "
             f"island(s); {counts or 'none'}; on {self.report.device}>"
         )
+
+
+def merge_reports(reports: Sequence[Report]) -> Report:
+    """One report for consecutive parts of a batch (shards solved apart):
+    counts, statuses, timings and chunks summed, the largest error with its
+    index in the whole batch, the devices and fallbacks of every part."""
+
+    def total(key: str) -> Dict[str, Any]:
+        out: Dict[str, Any] = {}
+        for r in reports:
+            for k, v in getattr(r, key).items():
+                out[k] = out.get(k, 0) + v
+        return out
+
+    islands = [sum(r.statuses.values()) for r in reports]
+    starts = np.concatenate([[0], np.cumsum(islands)[:-1]]).astype(int)
+    worst = [(r.max_error, int(s) + r.max_error_index) for r, s in zip(reports, starts)
+             if r.max_error is not None and r.max_error_index is not None]
+    max_error, max_index = max(worst, key=lambda e: (np.isnan(e[0]), e[0])) if worst else (None, None)
+    devices = sorted({r.device for r in reports})
+    fallbacks = sorted({r.fallback for r in reports if r.fallback})
+    gpus = [r.gpu for r in reports if r.gpu]
+    d: Dict[str, Any] = dict(
+        device="; ".join(devices), device_kind=reports[0].device_kind if reports else "cpu",
+        precision=reports[0].precision if reports else "f64",
+        choice="; ".join(sorted({r.choice for r in reports})),
+        fallback="; ".join(fallbacks) or None, counts=total("counts"), statuses=total("statuses"),
+        max_error=max_error, max_error_index=max_index, timings=total("timings"),
+        gpu={k: sum(g[k] for g in gpus) for k in gpus[0]} if gpus else None,
+        chunks=sum(r.chunks for r in reports),
+    )
+    paths = ", ".join(f"{k} {v}" for k, v in d["counts"].items() if v)
+    statuses = ", ".join(f"{k} {v}" for k, v in d["statuses"].items() if v)
+    err = "none" if max_error is None else f"{max_error:.3e} (island {max_index})"
+    t = d["timings"]
+    d["text"] = "\n".join([
+        f"device: {d['device']} ({len(reports)} part(s))",
+        *([f"GPU trouble, solved on the CPU: {d['fallback']}"] if d["fallback"] else []),
+        f"{sum(islands)} islands: {paths}",
+        f"statuses: {statuses}",
+        f"max error: {err}",
+        f"time (summed over parts): total {t.get('total', 0):.3f} s (solve {t.get('solve', 0):.3f}, "
+        f"gpu {t.get('gpu', 0):.3f}, validation {t.get('validation', 0):.3f})",
+    ])
+    return Report(d)
+
+
+def _concat(parts: Sequence[Any], attr: str) -> Any:
+    values = [getattr(p, attr) for p in parts]
+    if isinstance(values[0], list):
+        return [v for vs in values for v in vs]
+    return np.concatenate(values)
+
+
+def concat_lcp_results(parts: Sequence[LcpResult]) -> LcpResult:
+    """The result of a batch solved in consecutive parts (all dense or all ragged)."""
+    out = object.__new__(LcpResult)
+    out.ragged = parts[0].ragged
+    for attr in ("z", "w", "basis", "status", "error", "has_basis", "pivots", "iterations",
+                 "bases_visited", "path", "solution_count", "solution_set"):
+        setattr(out, attr, _concat(parts, attr))
+    out.report = merge_reports([p.report for p in parts])
+    return out
+
+
+def concat_scenes_results(parts: Sequence[ScenesResult]) -> ScenesResult:
+    """The result of a batch of scenes solved in consecutive parts (lists)."""
+    out = object.__new__(ScenesResult)
+    out.single = False
+    for attr in ("impulses", "velocity", "angular_velocity", "island_contacts", "status",
+                 "error", "path", "z", "w", "scene_ok"):
+        setattr(out, attr, _concat(parts, attr))
+    starts = np.cumsum([0] + [len(p.scene_ok) for p in parts[:-1]])
+    out.island_scene = np.concatenate([p.island_scene + s for p, s in zip(parts, starts)])
+    out.report = merge_reports([p.report for p in parts])
+    return out
