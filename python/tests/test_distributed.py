@@ -20,6 +20,7 @@ def client():
     cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                                        dashboard_address=":0", silence_logs=logging.ERROR)
     c = distributed.Client(cluster)
+    c.wait_for_workers(2, timeout=60)
     yield c
     c.close()
     cluster.close()
