@@ -242,6 +242,11 @@ def solve(M: Union[ArrayLike, Sequence[ArrayLike]], q: Union[ArrayLike, Sequence
     >>> r.z.round(6).tolist(), r.status_names().tolist(), bool(r.error[0] < 1e-12)
     ([[1.333333, 2.333333]], ['solved'], True)
     """
+    if isinstance(warm_start, (bool, np.bool_)):
+        if warm_start:
+            raise TypeError("warm_start: give the contact ids (integers shaped like q), not True; "
+                            "or keep a Solver(warm_start=True) and pass ids to its solve")
+        warm_start = None
     s = _cached(solver=solver, backend=backend, precision=precision, all_solutions=all_solutions,
                 warm_start=warm_start is not None, tolerance=tolerance, **settings)
     return s.solve(M, q, ids=warm_start)

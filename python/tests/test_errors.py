@@ -62,6 +62,12 @@ def test_ragged_and_id_mismatches():
         lcpbatch.Solver(warm_start=True).solve(M2, Q2, ids=np.array([[1, -4]]))
 
 
+def test_warm_start_takes_ids_not_a_flag():
+    with pytest.raises(TypeError, match="warm_start: give the contact ids"):
+        lcpbatch.solve(M2, Q2, warm_start=True)
+    assert lcpbatch.solve(M2, Q2, warm_start=False).ok.all()
+
+
 def test_n_too_large_for_enumeration_names_the_problem():
     big = np.eye(21)[None]
     with pytest.raises(ValueError, match=r"M\[1\]: n = 21 is too large for enumeration"):
