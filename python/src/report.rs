@@ -6,7 +6,7 @@
 //! index in the whole batch, the device of the last chunk and the first
 //! fallback reason.
 
-use lcpbatch::{GpuFigures, PathCounts, Report, SolvePath, Status, Timings};
+use lcpbatch::{DeviceKind, GpuFigures, PathCounts, Report, SolvePath, Status, Timings};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -111,6 +111,27 @@ pub(crate) fn merge(total: Option<Report>, mut next: Report, scenes_before: usiz
     t
 }
 
+/// "cpu", "hardware_gpu" or "software_gpu".
+pub(crate) fn device_kind_name(kind: DeviceKind) -> &'static str {
+    match kind {
+        DeviceKind::Cpu => "cpu",
+        DeviceKind::HardwareGpu => "hardware_gpu",
+        DeviceKind::SoftwareGpu => "software_gpu",
+    }
+}
+
+/// A dict of (name, value) pairs.
+fn dict_of<'py, V: IntoPyObject<'py> + Copy>(
+    py: Python<'py>,
+    items: &[(&str, V)],
+) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    for (name, v) in items {
+        d.set_item(*name, *v)?;
+    }
+    Ok(d)
+}
+
 /// The report's batch figures as a dict (per-island data goes in arrays).
 pub(crate) fn to_dict<'py>(
     py: Python<'py>,
@@ -120,20 +141,12 @@ pub(crate) fn to_dict<'py>(
     let d = PyDict::new(py);
     d.set_item("text", r.to_string())?;
     d.set_item("device", &r.device.name)?;
-    d.set_item(
-        "device_kind",
-        match r.device.kind {
-            lcpbatch::DeviceKind::Cpu => "cpu",
-            lcpbatch::DeviceKind::HardwareGpu => "hardware_gpu",
-            lcpbatch::DeviceKind::SoftwareGpu => "software_gpu",
-        },
-    )?;
+    d.set_item("device_kind", device_kind_name(r.device.kind))?;
     d.set_item("precision", r.device.precision.name())?;
     d.set_item("choice", &r.choice)?;
     d.set_item("fallback", r.fallback.as_deref())?;
-    let counts = PyDict::new(py);
     let c = &r.counts;
-    for (name, v) in [
+    let counts = [
         ("separating", c.separating),
         ("single_contact", c.single_contact),
         ("warm_start", c.warm_start),
@@ -146,20 +159,18 @@ pub(crate) fn to_dict<'py>(
         ("cpu_fallback", c.cpu_fallback),
         ("pgs", c.pgs),
         ("invalid", c.invalid),
-    ] {
-        counts.set_item(name, v)?;
-    }
-    d.set_item("counts", counts)?;
-    let statuses = PyDict::new(py);
-    for (s, n) in Status::ALL.iter().zip(r.statuses) {
-        statuses.set_item(s.name(), n)?;
-    }
-    d.set_item("statuses", statuses)?;
+    ];
+    d.set_item("counts", dict_of(py, &counts)?)?;
+    let statuses: Vec<(&str, usize)> = Status::ALL
+        .iter()
+        .zip(r.statuses)
+        .map(|(s, n)| (s.name(), n))
+        .collect();
+    d.set_item("statuses", dict_of(py, &statuses)?)?;
     d.set_item("max_error", r.max_error.map(|(e, _)| e))?;
     d.set_item("max_error_index", r.max_error.map(|(_, i)| i))?;
     let t = &r.timings;
-    let timings = PyDict::new(py);
-    for (name, v) in [
+    let timings = [
         ("build", t.build),
         ("prediction", t.prediction),
         ("gpu", t.gpu),
@@ -167,22 +178,24 @@ pub(crate) fn to_dict<'py>(
         ("solve", t.solve),
         ("impulses", t.impulses),
         ("total", t.total),
-    ] {
-        timings.set_item(name, v)?;
-    }
-    d.set_item("timings", timings)?;
+    ];
+    d.set_item("timings", dict_of(py, &timings)?)?;
     d.set_item("gpu", r.gpu.map(|g| gpu_dict(py, &g)).transpose()?)?;
     d.set_item("chunks", chunks)?;
     Ok(d)
 }
 
 fn gpu_dict<'py>(py: Python<'py>, g: &GpuFigures) -> PyResult<Bound<'py, PyDict>> {
-    let d = PyDict::new(py);
-    d.set_item("chunks", g.chunks)?;
-    d.set_item("dispatches", g.dispatches)?;
-    d.set_item("rounds", g.rounds)?;
-    d.set_item("tree_decided", g.tree_decided)?;
-    d.set_item("tree_undecided", g.tree_undecided)?;
+    let d = dict_of(
+        py,
+        &[
+            ("chunks", g.chunks),
+            ("dispatches", g.dispatches),
+            ("rounds", g.rounds),
+            ("tree_decided", g.tree_decided),
+            ("tree_undecided", g.tree_undecided),
+        ],
+    )?;
     d.set_item("max_gpu_error", g.max_gpu_error)?;
     d.set_item("max_velocity_deviation", g.max_velocity_deviation)?;
     Ok(d)

@@ -134,11 +134,7 @@ impl NativeSolver {
 
     /// "cpu", "hardware_gpu" or "software_gpu".
     fn device_kind(&self) -> &'static str {
-        match self.lock().device().kind {
-            lcpbatch::DeviceKind::Cpu => "cpu",
-            lcpbatch::DeviceKind::HardwareGpu => "hardware_gpu",
-            lcpbatch::DeviceKind::SoftwareGpu => "software_gpu",
-        }
+        report::device_kind_name(self.lock().device().kind)
     }
 
     /// Why this device.

@@ -81,3 +81,12 @@ def test_docstring_examples_run(module):
     os.environ.setdefault("XDG_RUNTIME_DIR", "/tmp")
     result = doctest.testmod(importlib.import_module(module), verbose=False)
     assert result.attempted > 0 and result.failed == 0, result
+
+
+def test_the_distributed_extra_is_named_when_dask_is_missing():
+    code = (
+        "import sys; sys.modules['distributed'] = None\n"
+        "try:\n    import lcpbatch.distributed\nexcept ImportError as e:\n    print(e)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60).stdout
+    assert "pip install 'lcpbatch[distributed]'" in out, out
