@@ -129,6 +129,9 @@ class LcpResult:
     - ``solution_count``: (B,) int64, distinct solutions with
       ``all_solutions=True`` (−1 where unknown); ``solution_set``: list of
       "empty", "isolated", "bounded_continuum", "unbounded_continuum" or None;
+    - ``all_z``, ``all_basis``: with ``all_solutions=True``, per problem a
+      (k, n) array of the z (and the basis) of every valid complementary
+      basis found; None otherwise;
     - ``report``: :class:`Report`.
 
     >>> import numpy as np, lcpbatch
@@ -158,6 +161,9 @@ class LcpResult:
         self.path: np.ndarray = _PATHS[d["path"]] if len(d["path"]) else np.array([], dtype=str)
         self.solution_count: np.ndarray = d["solution_count"]
         self.solution_set: List[Optional[str]] = list(d["solution_set"])
+        found = d.get("all_bases")
+        self.all_z: Optional[List[np.ndarray]] = None if found is None else [z for z, _ in found]
+        self.all_basis: Optional[List[np.ndarray]] = None if found is None else [b for _, b in found]
         self.report = Report(d["report"])
 
     @property
@@ -295,6 +301,9 @@ def concat_lcp_results(parts: Sequence[LcpResult]) -> LcpResult:
     for attr in ("z", "w", "basis", "status", "error", "has_basis", "pivots", "iterations",
                  "bases_visited", "path", "solution_count", "solution_set"):
         setattr(out, attr, _concat(parts, attr))
+    for attr in ("all_z", "all_basis"):
+        values = [getattr(p, attr) for p in parts]
+        setattr(out, attr, None if any(v is None for v in values) else [x for v in values for x in v])
     out.report = merge_reports([p.report for p in parts])
     return out
 

@@ -14,11 +14,11 @@
 use std::ops::Range;
 
 use lcpbatch::{IslandReport, Lcp, SolutionSet};
-use numpy::ndarray::{ArrayView1, ArrayView2, ArrayView3, Axis};
+use numpy::ndarray::{Array2, ArrayView1, ArrayView2, ArrayView3, Axis};
 use numpy::{IntoPyArray, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
+use pyo3::types::{PyDict, PyTuple};
 
 /// At most this many problems per chunk (with [`CHUNK_WORK`]): one call of
 /// the library per chunk, a Ctrl-C check between chunks.
@@ -228,5 +228,34 @@ pub(crate) fn islands_into(
         .map(|i| solution_set_name(&i.solution.solution_set))
         .collect();
     d.set_item("solution_set", sets)?;
+    if islands.iter().any(|i| !i.solution.all_bases.is_empty()) {
+        d.set_item("all_bases", all_bases(py, islands)?)?;
+    }
     Ok(())
+}
+
+/// With `all_solutions`: per island, (k, n) arrays of the z and the basis
+/// of every valid complementary basis enumeration found.
+fn all_bases<'py>(py: Python<'py>, islands: &[IslandReport]) -> PyResult<Vec<Bound<'py, PyTuple>>> {
+    islands
+        .iter()
+        .map(|isl| {
+            let n = isl.solution.z.len();
+            let found = &isl.solution.all_bases;
+            let z: Vec<f64> = found.iter().flat_map(|b| b.z.iter().copied()).collect();
+            let basis: Vec<bool> = found
+                .iter()
+                .flat_map(|b| (0..n).map(move |i| i < 32 && b.basis >> i & 1 == 1))
+                .collect();
+            let shape = (found.len(), n);
+            let err = |e: numpy::ndarray::ShapeError| PyValueError::new_err(e.to_string());
+            let z = Array2::from_shape_vec(shape, z)
+                .map_err(err)?
+                .into_pyarray(py);
+            let basis = Array2::from_shape_vec(shape, basis)
+                .map_err(err)?
+                .into_pyarray(py);
+            PyTuple::new(py, [z.into_any(), basis.into_any()])
+        })
+        .collect()
 }

@@ -50,6 +50,18 @@ def test_seed_002_with_all_solutions_is_unique():
     r = lcpbatch.solve(SEED_002_M[None], np.array([[-3.0, 6.0, -1.0]]), all_solutions=True, solver="enum")
     assert r.status[0] == Status.SOLVED
     assert r.solution_set == ["isolated"] and r.solution_count.tolist() == [1]
+    assert r.all_z[0].shape == (1, 3) and r.all_basis[0].tolist() == [[False, True, True]]
+    np.testing.assert_allclose(r.all_z[0], [[0.0, 1.0, 3.0]], atol=1e-12)
+    assert lcpbatch.solve(SEED_002_M[None], np.array([[-3.0, 6.0, -1.0]])).all_z is None
+
+
+def test_all_solutions_of_a_degenerate_problem():
+    # M = [[1, 1], [1, 1]], q = (−1, −1): every z ≥ 0 with z1 + z2 = 1 solves it
+    # (a segment); the bases {1}, {2} give its ends (1, 0) and (0, 1).
+    r = lcpbatch.solve(np.ones((1, 2, 2)), -np.ones((1, 2)), all_solutions=True, solver="enum")
+    assert r.solution_set == ["bounded_continuum"] and r.solution_count.tolist() == [-1]
+    ends = sorted(map(tuple, np.round(r.all_z[0], 12).tolist()))
+    assert (0.0, 1.0) in ends and (1.0, 0.0) in ends
 
 
 def test_random_batches_are_solutions_checked_in_numpy():
