@@ -227,8 +227,8 @@ class ScenesResult:
         self.status = islands.status
         self.error = islands.error
         self.path = islands.path
-        self.z: Sequence[np.ndarray] = islands.z
-        self.w: Sequence[np.ndarray] = islands.w
+        self.z: Union[np.ndarray, List[np.ndarray]] = islands.z
+        self.w: Union[np.ndarray, List[np.ndarray]] = islands.w
         self.report = islands.report
         scenes = len(d["contact_offsets"]) - 1
         bad = self.island_scene[~islands.ok]

@@ -186,8 +186,8 @@ class Solver:
         single = isinstance(bodies, Mapping)
         if single != isinstance(contacts, Mapping):
             raise TypeError("bodies and contacts: give two dicts (one scene) or two lists of dicts (a batch)")
-        bl = [bodies] if single else list(bodies)  # type: ignore[list-item]
-        cl = [contacts] if single else list(contacts)  # type: ignore[list-item]
+        bl: List[SceneArrays] = [bodies] if isinstance(bodies, Mapping) else list(bodies)
+        cl: List[SceneArrays] = [contacts] if isinstance(contacts, Mapping) else list(contacts)
         if len(bl) != len(cl):
             raise ValueError(f"contacts: {len(cl)} scenes of contacts for {len(bl)} scenes of bodies")
         arrays = [scene_arrays(b, c, i) for i, (b, c) in enumerate(zip(bl, cl))]

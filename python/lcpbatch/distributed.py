@@ -70,8 +70,10 @@ class SolverPlugin(WorkerPlugin):
 
 
 def _worker_solver(name: str) -> Tuple[Solver, str]:
+    """The solver the plugin `name` built on this worker, and its address."""
     worker = get_worker()
     plugin = worker.plugins[name]
+    assert isinstance(plugin, SolverPlugin) and plugin.solver is not None, name
     return plugin.solver, worker.address
 
 
@@ -79,6 +81,7 @@ def _solve_shard(name: str, kind: str, shard: Tuple[Any, ...]) -> Tuple[Any, str
     """Runs on a worker: one shard through the worker's solver."""
     solver, address = _worker_solver(name)
     start = time.perf_counter()
+    result: Union[LcpResult, ScenesResult]
     if kind == "lcp":
         result = solver.solve(*shard)
         size = len(result)
@@ -111,7 +114,8 @@ class DistributedSolver:
         self.client = client
         self.settings = settings
         self.plugin = SolverPlugin(settings)
-        register = getattr(client, "register_plugin", None) or client.register_worker_plugin
+        # register_plugin since distributed 2023.9; register_worker_plugin before.
+        register = getattr(client, "register_plugin", None) or getattr(client, "register_worker_plugin")
         register(self.plugin, name=self.plugin.name)
 
     @property
@@ -151,12 +155,14 @@ class DistributedSolver:
         out.workers, out.wall_seconds = workers, wall  # type: ignore[attr-defined]
         return out
 
-    def solve_scenes(self, bodies: Sequence[Mapping[str, Any]], contacts: Sequence[Mapping[str, Any]],
+    def solve_scenes(self, bodies: Union[Sequence[Mapping[str, Any]], Mapping[str, Any]],
+                     contacts: Union[Sequence[Mapping[str, Any]], Mapping[str, Any]],
                      *, shards: Optional[int] = None) -> ScenesResult:
         """A batch of scenes (two lists of dicts, as :meth:`Solver.solve_scenes`),
-        cut into ``shards`` consecutive parts solved on the workers."""
-        if isinstance(bodies, Mapping) or isinstance(contacts, Mapping):
-            bodies, contacts = [bodies], [contacts]  # type: ignore[list-item]
+        cut into ``shards`` consecutive parts solved on the workers (the
+        result is in the batch form: lists, one entry per scene)."""
+        bodies = [bodies] if isinstance(bodies, Mapping) else list(bodies)
+        contacts = [contacts] if isinstance(contacts, Mapping) else list(contacts)
         if len(bodies) != len(contacts):
             raise ValueError(f"contacts: {len(contacts)} scenes of contacts for {len(bodies)} scenes of bodies")
         bounds = _bounds(len(bodies), shards or 2 * self._workers())
