@@ -42,14 +42,21 @@ def id_array(value: Any, name: str) -> np.ndarray:
 
 
 def is_ragged(M: Any) -> bool:
-    """A list or tuple means a ragged batch (one array per problem); any
-    other array-like is a dense (B, n, n) batch."""
-    return isinstance(M, (list, tuple))
+    """A list or tuple of NumPy arrays (one (nᵢ, nᵢ) array per problem, or
+    an empty list) is a ragged batch; anything else, nested lists of numbers
+    included, is read by ``np.asarray`` as a dense (B, n, n) batch."""
+    return isinstance(M, (list, tuple)) and all(isinstance(m, np.ndarray) for m in M)
 
 
 def dense(M: Any, q: Any, ids: Any) -> Dense:
     """M (B, n, n) and q (B, n), ids (B, n) or None."""
-    m = real_array(M, "M")
+    try:
+        m = real_array(M, "M")
+    except ValueError as e:  # nested lists of different lengths
+        raise ValueError(
+            f"M: not a (B, n, n) array ({e}); for problems of different sizes "
+            "give a list of NumPy arrays, one (n, n) array per problem"
+        ) from None
     qa = real_array(q, "q")
     if m.ndim != 3 or m.shape[1] != m.shape[2]:
         hint = " (for one problem pass M[None] and q[None])" if m.ndim == 2 else ""

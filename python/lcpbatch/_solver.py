@@ -136,9 +136,10 @@ class Solver:
         """Solves the LCPs w = M z + q ≥ 0, z ≥ 0, zᵀw = 0 of a batch.
 
         ``M`` (B, n, n) and ``q`` (B, n), float64 or float32 (computed in
-        f64), any memory order; or lists of (nᵢ, nᵢ) and (nᵢ,) arrays for
-        problems of different sizes (the result's z, w, basis are then
-        lists). ``ids`` (same shape as q, integers ≥ 0): contact ids, with
+        f64), any memory order, or nested lists NumPy reads as such; or a
+        list of NumPy arrays, one (nᵢ, nᵢ) per problem, with a list of (nᵢ,)
+        for q, for problems of different sizes (the result's z, w, basis are
+        then lists). ``ids`` (same shape as q, integers ≥ 0): contact ids, with
         ``warm_start=True`` each problem starts from the basis its contacts
         had in the last call. The GIL is released while solving; the batch
         is solved in chunks (``CHUNK_PROBLEMS`` problems, at most
@@ -228,8 +229,8 @@ def solve(M: Union[ArrayLike, Sequence[ArrayLike]], q: Union[ArrayLike, Sequence
     """Solves a batch of LCPs: find z with w = M z + q ≥ 0, z ≥ 0, zᵀw = 0.
 
     ``M`` (B, n, n) and ``q`` (B, n) arrays (float64 or float32, any
-    memory order), or lists of (nᵢ, nᵢ) and (nᵢ,) arrays for problems of
-    different sizes. ``warm_start``: contact ids shaped like q; each problem
+    memory order), or a list of NumPy arrays, one (nᵢ, nᵢ) per problem, and
+    a list of (nᵢ,) for problems of different sizes. ``warm_start``: contact ids shaped like q; each problem
     then starts from the basis its contacts had in the last call with the
     same settings (the solver behind this function is cached per settings).
     Other keyword arguments are those of :class:`Solver`. Returns an

@@ -44,6 +44,7 @@ except ImportError as e:  # pragma: no cover - exercised without the extra
         "pip install 'lcpbatch[distributed]' (the 'distributed' extra: dask and distributed)"
     ) from e
 
+from . import _inputs
 from ._results import LcpResult, ScenesResult, concat_lcp_results, concat_scenes_results
 from ._solver import Solver
 
@@ -142,7 +143,10 @@ class DistributedSolver:
     def solve(self, M: Any, q: Any, ids: Any = None, *, shards: Optional[int] = None) -> LcpResult:
         """A batch of LCPs (dense arrays or ragged lists, as :meth:`Solver.solve`),
         cut into ``shards`` consecutive parts solved on the workers."""
-        ragged = isinstance(M, (list, tuple))
+        ragged = _inputs.is_ragged(M)
+        if not ragged:
+            M, q = np.asarray(M), np.asarray(q)
+            ids = None if ids is None else np.asarray(ids)
         count = len(M)
         if count == 0:
             return Solver(**self.settings).solve(M, q, ids)

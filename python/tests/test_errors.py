@@ -49,6 +49,11 @@ def test_dtypes_are_type_errors():
         lcpbatch.Solver(warm_start=True).solve(M2, Q2, ids=np.zeros((1, 2)))
 
 
+def test_nested_lists_of_different_sizes_point_to_the_ragged_form():
+    with pytest.raises(ValueError, match="give a list of NumPy arrays"):
+        lcpbatch.solve([[[1.0]], [[1.0, 0.0], [0.0, 1.0]]], [[1.0], [1.0, 1.0]])
+
+
 def test_ragged_and_id_mismatches():
     with pytest.raises(ValueError, match=r"q\[1\]: expected shape \(1,\) to match M\[1\]"):
         lcpbatch.solve([np.eye(2), np.eye(1)], [np.zeros(2), np.zeros(2)])

@@ -113,10 +113,11 @@ def test_fortran_order_and_strided_views_give_the_same_answers():
     np.testing.assert_array_equal(view.z, ref.z)
     mt = np.ascontiguousarray(M.transpose(0, 2, 1)).transpose(0, 2, 1)
     np.testing.assert_array_equal(lcpbatch.solve(mt, q, backend="cpu").z, ref.z)
-    # Integers and nested lists are converted too.
-    assert lcpbatch.solve([[[2, 1], [1, 2]]], [[-5, -6]]).ragged  # a list means ragged
-    r = lcpbatch.solve(np.array([[[2, 1], [1, 2]]]), np.array([[-5, -6]]))
-    np.testing.assert_allclose(r.z, [[4 / 3, 7 / 3]])
+    # Integers and nested lists of numbers are read as NumPy reads them.
+    for r in (lcpbatch.solve([[[2, 1], [1, 2]]], [[-5, -6]]),
+              lcpbatch.solve(np.array([[[2, 1], [1, 2]]]), np.array([[-5, -6]]))):
+        assert not r.ragged
+        np.testing.assert_allclose(r.z, [[4 / 3, 7 / 3]])
 
 
 def test_ragged_batches_give_lists_in_order():
