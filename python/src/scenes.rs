@@ -78,12 +78,15 @@ impl SceneArrays<'_> {
             .as_array()
             .iter()
             .enumerate()
-            .map(|(k, &inv_mass)| Body {
-                inv_mass,
-                inv_inertia: std::array::from_fn(|i| std::array::from_fn(|j| inertia[[k, i, j]])),
-                position: vec3(&pos, k),
-                velocity: vec3(&vel, k),
-                angular_velocity: vec3(&ang, k),
+            .map(|(k, &inv_mass)| {
+                // Through the constructor, so that fields the library adds
+                // later keep their defaults here.
+                let mut b = Body::new(inv_mass, [0.0; 3], vec3(&pos, k));
+                b.inv_inertia =
+                    std::array::from_fn(|i| std::array::from_fn(|j| inertia[[k, i, j]]));
+                b.velocity = vec3(&vel, k);
+                b.angular_velocity = vec3(&ang, k);
+                b
             })
             .collect();
         let (point, normal, rest) = (
@@ -95,14 +98,15 @@ impl SceneArrays<'_> {
         let (a, b) = (self.a.as_array(), self.b.as_array());
         let mut contacts = Vec::with_capacity(a.len());
         for k in 0..a.len() {
-            contacts.push(Contact {
-                a: body_index(index, "a", k, a[k], false)?.unwrap_or(0),
-                b: body_index(index, "b", k, b[k], true)?,
-                point: vec3(&point, k),
-                normal: vec3(&normal, k),
-                restitution: rest[k],
-                id: ids.as_ref().map(|i| i[k]),
-            });
+            let mut c = Contact::new(
+                body_index(index, "a", k, a[k], false)?.unwrap_or(0),
+                body_index(index, "b", k, b[k], true)?,
+                vec3(&point, k),
+                vec3(&normal, k),
+                rest[k],
+            );
+            c.id = ids.as_ref().map(|i| i[k]);
+            contacts.push(c);
         }
         Ok(Scene { bodies, contacts })
     }
