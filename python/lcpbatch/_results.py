@@ -168,11 +168,23 @@ class LcpResult:
 
     @property
     def ok(self) -> np.ndarray:
-        """(B,) bool: the status is SOLVED or MULTIPLE_SOLUTIONS."""
+        """(B,) bool: the status is SOLVED or MULTIPLE_SOLUTIONS.
+
+        >>> import numpy as np, lcpbatch
+        >>> M = np.array([[[1.0]], [[-1.0]]])         # the second has no solution
+        >>> lcpbatch.solve(M, np.array([[-1.0], [-1.0]]), solver="enum").ok.tolist()
+        [True, False]
+        """
         return self.status <= Status.MULTIPLE_SOLUTIONS
 
     def status_names(self) -> np.ndarray:
-        """(B,) str: the status of each problem by name ("solved", …)."""
+        """(B,) str: the status of each problem by name ("solved", …).
+
+        >>> import numpy as np, lcpbatch
+        >>> M = np.array([[[1.0]], [[-1.0]]])
+        >>> lcpbatch.solve(M, np.array([[-1.0], [-1.0]]), solver="enum").status_names().tolist()
+        ['solved', 'no_solution']
+        """
         names = np.array([s.name.lower() for s in Status])
         return names[self.status] if len(self.status) else np.array([], dtype=str)
 

@@ -22,7 +22,15 @@ SceneArrays = Mapping[str, ArrayLike]
 class DeviceWarning(RuntimeWarning):
     """The GPU could not be used (no adapter, no f64, a lost device): the
     batch, and every later one of this solver, is solved on the CPU in f64.
-    The reason is also in ``result.report.fallback``."""
+    The reason is also in ``result.report.fallback``.
+
+    >>> import warnings, lcpbatch
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     s = lcpbatch.Solver(backend="gpu", adapter="no-such-adapter")
+    >>> caught[0].category.__name__, s.device_kind
+    ('DeviceWarning', 'cpu')
+    """
 
 
 def adapters(api: str = "auto") -> List[Dict[str, Any]]:
@@ -123,7 +131,15 @@ class Solver:
         return self._native.fallback()
 
     def clear_warm_start(self) -> None:
-        """Forgets the bases remembered for warm start."""
+        """Forgets the bases remembered for warm start.
+
+        >>> import numpy as np, lcpbatch
+        >>> s = lcpbatch.Solver(backend="cpu", warm_start=True)
+        >>> M, q, ids = np.array([[[2.0, 1.0], [1.0, 2.0]]]), np.array([[-5.0, -6.0]]), np.array([[1, 2]])
+        >>> _ = s.solve(M, q, ids=ids); s.clear_warm_start()
+        >>> s.solve(M, q, ids=ids).path.tolist()
+        ['predicted_basis']
+        """
         self._native.clear_warm_start()
 
     def _warn_fallback(self, why: Optional[str]) -> None:
