@@ -126,7 +126,10 @@ class DistributedSolver:
 
     def _run(self, kind: str, shards: List[Tuple[Any, ...]]) -> Tuple[List[Any], Dict[str, Dict[str, Any]], float]:
         start = time.perf_counter()
-        data = self.client.scatter(shards)
+        # hash=False: unique keys. With content hashes a batch scattered again
+        # right after the last call reuses keys the scheduler is still
+        # releasing, and Dask reports the data lost.
+        data = self.client.scatter(shards, hash=False)
         futures = [self.client.submit(_solve_shard, self.name, kind, d, pure=False) for d in data]
         done = self.client.gather(futures)
         wall = time.perf_counter() - start
