@@ -49,6 +49,8 @@ def _rows(d: Mapping[str, Any], key: str, name: str, shape: tuple, default: Opti
     a = real_array(d[key], f"{name}['{key}']")
     if a.ndim == 0 and len(shape) == 1:
         a = np.full(shape, float(a))
+    if a.size == 0 and 0 in shape:  # [] for a scene without contacts
+        a = a.reshape(shape)
     if a.shape != shape:
         raise ValueError(f"{name}['{key}']: expected shape {shape}, got {a.shape}")
     return a
@@ -60,6 +62,8 @@ def _ints(d: Mapping[str, Any], key: str, name: str, c: int, default: Optional[i
             raise ValueError(f"{name}: missing key '{key}'")
         return np.full(c, default, dtype=np.int64)
     a = np.asarray(d[key])
+    if a.size == 0:  # [] reads as float64
+        a = a.astype(np.int64)
     if a.dtype.kind not in "iu":
         raise TypeError(f"{name}['{key}']: dtype {a.dtype} is not an integer type (body indices)")
     if a.shape != (c,):

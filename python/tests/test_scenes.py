@@ -78,6 +78,14 @@ def test_warm_start_by_contact_ids_in_scenes():
     np.testing.assert_allclose(hot.velocity, [[0.0, 0.0, 0.0]], atol=1e-12)
 
 
+def test_a_scene_without_contacts_keeps_its_velocities():
+    none = dict(a=[], point=[], normal=[], restitution=[])
+    r = lcpbatch.solve_scenes([ball(), ball()], [none, GROUND], backend="cpu")
+    assert r.impulses[0].shape == (0,) and r.island_scene.tolist() == [1]
+    np.testing.assert_array_equal(r.velocity[0], [[0.0, -1.0, 0.0]])
+    np.testing.assert_allclose(r.velocity[1], [[0.0, 0.5, 0.0]], atol=1e-12)
+
+
 def test_scene_errors_name_the_scene_the_item_and_the_field():
     with pytest.raises(ValueError, match=r"scene 0, contact 0: field `normal`: not a unit vector"):
         lcpbatch.solve_scenes(ball(), dict(GROUND, normal=[[0.0, 2.0, 0.0]]), backend="cpu")
