@@ -58,7 +58,8 @@ class Solver:
       complementary bases), "lemke" or "pgs";
     - ``precision``: GPU shader precision "auto", "f32" or "f64" (answers are
       checked in f64 on the CPU whatever it is);
-    - ``all_solutions``: enumerate every basis (CPU) and report the solution set;
+    - ``all_solutions``: enumerate every basis and report the solution set
+      (``all_z``, ``all_basis``; where it runs: the library's ``Settings``);
     - ``warm_start``: remember each problem's basis by its contact ``ids``;
     - ``tolerance``: the largest error measure reported as solved (default 1e-8);
     - ``threads``: CPU threads (0: every core); ``adapter``: part of a GPU
