@@ -3,7 +3,7 @@
 //! them (see the README).
 
 pub mod siconos;
-mod strict;
+pub(crate) mod strict;
 
 use std::path::Path;
 

@@ -7,7 +7,7 @@
 /// the path of that object (`["scenes", "[2]", "contacts", "[1]"]`); None
 /// when every object's keys are distinct (serde_json's `Value` would keep
 /// only the last of two, silently). `text` is known to parse.
-pub(super) fn duplicate_key(text: &str) -> Option<(Vec<String>, String)> {
+pub(crate) fn duplicate_key(text: &str) -> Option<(Vec<String>, String)> {
     use serde::de::{DeserializeSeed, Deserializer, MapAccess, SeqAccess, Visitor};
     struct Walk<'a>(&'a mut Vec<String>, &'a mut Option<(Vec<String>, String)>);
     impl<'de> DeserializeSeed<'de> for Walk<'_> {

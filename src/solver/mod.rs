@@ -27,6 +27,7 @@ use std::time::Instant;
 
 mod cpu_path;
 mod gpu_path;
+pub mod world_path;
 
 use crate::gpu::{self, GpuContext, Precision};
 use crate::islands::find_islands;

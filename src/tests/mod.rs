@@ -22,3 +22,4 @@ mod seeds;
 mod siconos;
 mod stress;
 mod stress_gpu_f32;
+mod world;
