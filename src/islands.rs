@@ -105,6 +105,8 @@ mod tests {
             restitution: 0.0,
             id: None,
             bias: 0.0,
+            friction: 0.0,
+            tangent: None,
         }
     }
 

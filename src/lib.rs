@@ -64,13 +64,15 @@ pub mod world;
 
 pub use cpu::impulses::BodyVelocity;
 pub use error::Error;
-pub use friction::{FrictionProblem, FrictionResiduals};
+pub use friction::{
+    FrictionMethod, FrictionProblem, FrictionResiduals, FrictionSettings, FrictionSolution,
+};
 pub use gpu::{AdapterSummary, BackendChoice, EnumerationKernel, GpuContext, Precision};
 pub use islands::IslandProblem;
 pub use lcp::{Lcp, LcpSolution, Residuals, SolutionSet, Status};
 pub use report::{
-    Device, DeviceKind, GpuFigures, IslandReport, PathCounts, Report, SceneReport, SolvePath,
-    Timings,
+    ContactImpulse, Device, DeviceKind, FrictionIslandReport, GpuFigures, IslandReport, PathCounts,
+    Report, SceneFriction, SceneReport, SolvePath, Timings,
 };
 pub use scene::{Body, Contact, Scene};
 pub use settings::{Backend, GpuSettings, Method, Settings};

@@ -112,6 +112,8 @@ fn contact(a: usize, b: Option<usize>, point: DVec3, normal: DVec3, restitution:
         restitution,
         id: None,
         bias: 0.0,
+        friction: 0.0,
+        tangent: None,
     }
 }
 

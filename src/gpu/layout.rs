@@ -294,6 +294,8 @@ pub fn assemble_contacts_packed(
             restitution: v[contact::RESTITUTION],
             id: None,
             bias: v[contact::BIAS],
+            friction: 0.0,
+            tangent: None,
         };
         pack_row(&assemble_contact(&bodies, &c), &mut out);
     }

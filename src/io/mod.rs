@@ -2,6 +2,7 @@
 //! JSON output. Field names are fixed so that other tools can write and read
 //! them (see the README).
 
+pub mod fc3d;
 pub mod siconos;
 pub(crate) mod strict;
 
@@ -287,7 +288,7 @@ fn contact_fields() -> [(
     &'static str,
     bool,
     fn(&serde_json::Value, &str) -> Result<(), FieldError>,
-); 6] {
+); 8] {
     [
         ("a", true, index),
         (
@@ -306,6 +307,14 @@ fn contact_fields() -> [(
                     f.into(),
                     format!("expected an integer id ≥ 0, found {}", kind(v)),
                 ))
+            }
+        }),
+        ("friction", false, number),
+        ("tangent", false, |v, f| {
+            if v.is_null() {
+                Ok(())
+            } else {
+                vec3(v, f)
             }
         }),
     ]

@@ -138,8 +138,8 @@ mod tests {
     fn unknown_fields_are_named_everywhere() {
         let cases = [
             (
-                format!(r#"{{"bodies":[{{{BODY}}}],"contacts":[{{{CONTACT},"friction":0.5}}]}}"#),
-                "scene 0, contact 0: field `friction`",
+                format!(r#"{{"bodies":[{{{BODY}}}],"contacts":[{{{CONTACT},"fricton":0.5}}]}}"#),
+                "scene 0, contact 0: field `fricton`",
             ),
             (
                 format!(r#"{{"bodies":[{{{BODY},"mass":2}}],"contacts":[]}}"#),
@@ -170,5 +170,12 @@ mod tests {
         parse_json("f.json", &ok).unwrap();
         let bad = format!(r#"{{"bodies":[{{{BODY}}}],"contacts":[{{{CONTACT},"id":-1}}]}}"#);
         assert!(err(&bad).contains("field `id`"), "{}", err(&bad));
+        // Friction and a tangent are known; friction must be a number.
+        let ok = format!(
+            r#"{{"bodies":[{{{BODY}}}],"contacts":[{{{CONTACT},"friction":0.5,"tangent":[1,0,0]}}]}}"#
+        );
+        parse_json("f.json", &ok).unwrap();
+        let bad = format!(r#"{{"bodies":[{{{BODY}}}],"contacts":[{{{CONTACT},"friction":"x"}}]}}"#);
+        assert!(err(&bad).contains("field `friction`"), "{}", err(&bad));
     }
 }

@@ -26,10 +26,11 @@ use std::sync::Arc;
 use std::time::Instant;
 
 mod cpu_path;
+mod friction_path;
 mod gpu_path;
 pub mod world_path;
 
-use crate::gpu::{self, GpuContext, Precision};
+use crate::gpu::{self, GpuContext};
 use crate::islands::find_islands;
 use crate::lcp::Lcp;
 use crate::prediction::WarmStart;
@@ -64,6 +65,8 @@ pub struct Solver {
     fallback: Option<String>,
     /// Bases of the last call by contact id (with `settings.warm_start`).
     warm: WarmStart,
+    /// Frictional impulses of the last call by contact id (with `settings.warm_start`).
+    friction_warm: friction_path::FrictionWarm,
     threads: usize,
 }
 
@@ -82,6 +85,7 @@ impl Solver {
             choice: String::new(),
             fallback: None,
             warm: WarmStart::default(),
+            friction_warm: Default::default(),
             threads,
         };
         solver.choose_device()?;
@@ -188,11 +192,7 @@ impl Solver {
                     precision: ctx.precision(),
                 }
             }
-            None => Device {
-                kind: DeviceKind::Cpu,
-                name: format!("cpu ({} thread(s), f64)", self.threads),
-                precision: Precision::F64,
-            },
+            None => self.cpu_device(),
         }
     }
 
@@ -209,6 +209,7 @@ impl Solver {
     /// Forgets the bases remembered for warm start.
     pub fn clear_warm_start(&mut self) {
         self.warm = WarmStart::default();
+        self.friction_warm = Default::default();
     }
 
     /// The device, shared, while the GPU is in use (for tests that lose it
@@ -291,12 +292,28 @@ impl Solver {
     /// Solves scenes: per scene the impulse of every contact, the bodies'
     /// velocities after them, and one [`IslandReport`] per island. Every
     /// scene is checked first (an error names the scene, the item and the
-    /// field). Islands above the enumeration's limit go to Lemke.
+    /// field). Islands above the enumeration's limit go to Lemke. Scenes
+    /// with friction (any contact with μ > 0) go, every island of them, to
+    /// the friction path on the CPU ([`Report::friction`],
+    /// [`SceneReport::friction`](crate::SceneReport::friction)); the others
+    /// are solved as without friction.
     pub fn solve_scenes(&mut self, scenes: &[Scene]) -> Result<Report, Error> {
         let start = Instant::now();
         for (i, s) in scenes.iter().enumerate() {
             s.validate(&format!("scene {i}"))?;
         }
+        if scenes.iter().any(Scene::has_friction) {
+            let mut report = self.scenes_with_friction(scenes)?;
+            report.timings.total = start.elapsed().as_secs_f64();
+            return Ok(report);
+        }
+        let mut report = self.frictionless_scenes(scenes)?;
+        report.timings.total = start.elapsed().as_secs_f64();
+        Ok(report)
+    }
+
+    /// Checked scenes without friction: the LCP path.
+    fn frictionless_scenes(&mut self, scenes: &[Scene]) -> Result<Report, Error> {
         // Per scene, per island: the warm basis of its contacts' ids.
         let warm: Vec<Vec<Option<u32>>> = if self.settings.warm_start {
             scenes
@@ -319,7 +336,7 @@ impl Solver {
                 Err(e) => return Err(e),
             }
         }
-        let mut report = match report {
+        let report = match report {
             Some(r) => r,
             None => self.scenes_on_cpu(scenes, &warm),
         };
@@ -333,7 +350,6 @@ impl Solver {
                 ids.iter().map(Vec::as_slice).zip(&report.islands).collect();
             self.remember(keyed.into_iter());
         }
-        report.timings.total = start.elapsed().as_secs_f64();
         Ok(report)
     }
 

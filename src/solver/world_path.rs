@@ -30,7 +30,8 @@ pub struct WorldStepReport {
     pub contacts: usize,
     /// Islands this step.
     pub islands: usize,
-    /// Largest error measure of this world's islands (0 when none).
+    /// Largest error measure of this world's islands (0 when none): the
+    /// LCP error of frictionless islands, the Coulomb error of frictional ones.
     pub max_error: f64,
     /// Dynamic bodies awake after the step.
     pub awake: usize,
@@ -91,17 +92,25 @@ impl Solver {
         for (k, (w, p)) in worlds.iter_mut().zip(&prepared).enumerate() {
             let scene = &solve.scenes[k];
             finish(w, p, &scene.bodies, dt);
+            // Frictionless islands (LCP error) and frictional ones (Coulomb error).
+            let friction = scene.friction.as_ref().map_or(0..0, |f| f.islands.clone());
             let max_error = solve.islands[scene.islands.clone()]
                 .iter()
                 .filter(|i| i.status().is_solution())
                 .map(|i| i.error())
+                .chain(
+                    solve.friction[friction.clone()]
+                        .iter()
+                        .filter(|i| i.status().is_solution())
+                        .map(|i| i.error()),
+                )
                 .fold(0.0, f64::max);
             reports.push(WorldStepReport {
                 kinetic: w.kinetic_energy(),
                 potential: w.potential_energy(),
                 max_penetration: p.contacts.iter().map(|c| -c.gap).fold(0.0, f64::max),
                 contacts: p.contacts.len(),
-                islands: scene.islands.len(),
+                islands: scene.islands.len() + friction.len(),
                 max_error,
                 awake: w.bodies.iter().filter(|b| !b.fixed && !b.asleep).count(),
             });
@@ -109,7 +118,9 @@ impl Solver {
         let unsolved = solve
             .islands
             .iter()
-            .filter(|i| !i.status().is_solution())
+            .map(|i| i.status())
+            .chain(solve.friction.iter().map(|i| i.status()))
+            .filter(|s| !s.is_solution())
             .count();
         Ok(StepReport {
             worlds: reports,

@@ -168,6 +168,8 @@ fn moving_static_platform_matches_cpu_f64() {
                     id: None,
                     // A gap term (time stepping's φ/Δt) reaches q on both paths.
                     bias: -0.125,
+                    friction: 0.0,
+                    tangent: None,
                 }
             } else {
                 Contact {
@@ -178,6 +180,8 @@ fn moving_static_platform_matches_cpu_f64() {
                     restitution: 0.5,
                     id: None,
                     bias: 0.0625 * i as f64,
+                    friction: 0.0,
+                    tangent: None,
                 }
             });
         }

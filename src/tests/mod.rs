@@ -7,6 +7,7 @@
 pub(crate) mod common;
 
 mod device_trouble;
+mod friction_conformance;
 mod gpu_conformance;
 mod gpu_prediction;
 mod gpu_seeds;
@@ -23,3 +24,4 @@ mod siconos;
 mod stress;
 mod stress_gpu_f32;
 mod world;
+mod world_friction;

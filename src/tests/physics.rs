@@ -31,6 +31,8 @@ pub(super) fn contact(a: usize, b: Option<usize>, point: DVec3, normal: DVec3, e
         restitution: e,
         id: None,
         bias: 0.0,
+        friction: 0.0,
+        tangent: None,
     }
 }
 

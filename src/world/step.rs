@@ -178,7 +178,8 @@ pub fn prepare(world: &World, index: usize, dt: f64) -> Prepared {
     for p in &contacts {
         let (ba, bb) = (&world.bodies[p.a], &world.bodies[p.b]);
         let eps = ba.restitution.max(bb.restitution);
-        friction.push((ba.friction * bb.friction).sqrt());
+        let mu = (ba.friction * bb.friction).sqrt();
+        friction.push(mu);
         let point_velocity = |k: usize| {
             let r = p.point - world.bodies[k].position();
             v[k].0 + v[k].1.cross(r)
@@ -193,6 +194,8 @@ pub fn prepare(world: &World, index: usize, dt: f64) -> Prepared {
             restitution: if bounces { eps } else { 0.0 },
             id: Some(contact_id(index, p)),
             bias: if bounces { 0.0 } else { p.gap / dt },
+            friction: mu,
+            tangent: None,
         });
     }
     Prepared {
