@@ -84,7 +84,10 @@ impl Solver {
         let shared: &[World] = worlds;
         let prepared: Vec<Prepared> =
             parallel_map(shared.len(), self.threads, |i| prepare(&shared[i], i, dt));
-        let scenes: Vec<crate::Scene> = prepared.iter().map(|p| p.scene.clone()).collect();
+        let (scenes, prepared): (Vec<crate::Scene>, Vec<Prepared>) = prepared
+            .into_iter()
+            .map(|mut p| (std::mem::take(&mut p.scene), p))
+            .unzip();
         let collision = start.elapsed().as_secs_f64();
         let solve = self.solve_scenes(&scenes)?;
         let solved_at = Instant::now();

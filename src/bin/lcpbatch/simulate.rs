@@ -11,7 +11,7 @@ use std::time::Instant;
 use lcpbatch::io::write_atomically;
 use lcpbatch::world::format::{parse_worlds, worlds_to_json};
 use lcpbatch::world::generate::{standard_world, WorldKind};
-use lcpbatch::{Error, Settings, Solver, StepReport, World};
+use lcpbatch::{Error, FrictionMethod, Settings, Solver, StepReport, World};
 use plotters::prelude::*;
 
 use super::{BackendArg, GpuArgs};
@@ -39,6 +39,13 @@ pub struct SimulateArgs {
     /// Where to solve.
     #[arg(long, value_enum, default_value = "cpu")]
     backend: BackendArg,
+    /// Solver of frictional islands (pairs with μ = √(μ_a μ_b) > 0).
+    #[arg(long, value_enum, default_value = "auto")]
+    friction_solver: FrictionArg,
+    /// Set every body's friction coefficient μ (0: frictionless worlds, the
+    /// LCP path; GPU-capable).
+    #[arg(long)]
+    friction: Option<f64>,
     /// Put bodies to sleep after this many quiet steps (0: never; overrides
     /// the worlds' own setting when given).
     #[arg(long)]
@@ -48,6 +55,17 @@ pub struct SimulateArgs {
     out: PathBuf,
     #[command(flatten)]
     gpu: GpuArgs,
+}
+
+/// `--friction-solver`.
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum FrictionArg {
+    /// NSGS sweeps, then Alart–Curnier Newton polishing.
+    Auto,
+    /// Non-smooth Gauss–Seidel with exact local Coulomb solves.
+    Nsgs,
+    /// Alart–Curnier semismooth Newton alone.
+    Newton,
 }
 
 /// One line of `steps.jsonl`: the step's figures over every world.
@@ -65,6 +83,12 @@ struct StepLine {
     unsolved: usize,
     collision_s: f64,
     solve_s: f64,
+    /// Within solve_s (the door's timings): checks, islands and assembly.
+    assembly_s: f64,
+    /// Within solve_s: prediction, GPU, validation and CPU solves.
+    lcp_s: f64,
+    /// Within solve_s: velocities after the impulses.
+    impulses_s: f64,
     integrate_s: f64,
 }
 
@@ -84,6 +108,12 @@ impl StepLine {
             unsolved: r.unsolved,
             collision_s: r.timings.collision,
             solve_s: r.timings.solve,
+            assembly_s: r.solve.timings.build,
+            lcp_s: r.solve.timings.prediction
+                + r.solve.timings.gpu
+                + r.solve.timings.validation
+                + r.solve.timings.solve,
+            impulses_s: r.solve.timings.impulses,
             integrate_s: r.timings.integrate,
         }
     }
@@ -127,10 +157,27 @@ pub fn simulate_command(args: SimulateArgs) -> Result<(), Error> {
     if let Some(n) = args.sleep {
         worlds.iter_mut().for_each(|w| w.sleep.steps = n);
     }
+    if let Some(mu) = args.friction {
+        if !mu.is_finite() || mu < 0.0 {
+            return Err(Error::invalid(
+                "--friction",
+                "friction",
+                format!("{mu} is not a number ≥ 0"),
+            ));
+        }
+        for b in worlds.iter_mut().flat_map(|w| w.bodies.iter_mut()) {
+            b.friction = mu;
+        }
+    }
     let mut solver = Solver::new(Settings {
         backend: args.backend.backend(),
         gpu: args.gpu.settings()?,
         warm_start: true,
+        friction_method: match args.friction_solver {
+            FrictionArg::Auto => FrictionMethod::Auto,
+            FrictionArg::Nsgs => FrictionMethod::Nsgs,
+            FrictionArg::Newton => FrictionMethod::Newton,
+        },
         ..Settings::default()
     })?;
     println!("device: {} ({})", solver.device().name, solver.choice());
@@ -167,6 +214,11 @@ fn print_summary(lines: &[StepLine], worlds: usize, wall: f64) {
         ("assembly+solve", sum(|l| l.solve_s)),
         ("integrate", sum(|l| l.integrate_s)),
     ];
+    let door = [
+        ("checks+assembly", sum(|l| l.assembly_s)),
+        ("LCP solve", sum(|l| l.lcp_s)),
+        ("impulses", sum(|l| l.impulses_s)),
+    ];
     let rate = (worlds * lines.len()) as f64 / wall;
     println!(
         "{} worlds x {} steps in {wall:.3} s: {rate:.0} world-steps/s",
@@ -175,6 +227,9 @@ fn print_summary(lines: &[StepLine], worlds: usize, wall: f64) {
     );
     for (name, t) in phases {
         println!("  {name:>15}: {t:.3} s ({:.1}%)", 100.0 * t / wall);
+    }
+    for (name, t) in door {
+        println!("    {name:>15}: {t:.3} s ({:.1}%)", 100.0 * t / wall);
     }
     let slowest = phases
         .iter()
