@@ -22,9 +22,12 @@
 //! when the pair's ε > 0, it approaches faster than
 //! [`bounce_threshold`] = 2|g|Δt (a resting contact approaches at |g|Δt per
 //! step and must not bounce) and the surfaces would meet within the step
-//! (φ + Δt v_rel < 0). Such a contact gets b = 0: v_rel⁺ ≥ −ε v_rel exactly,
-//! so an elastic impact keeps its energy (the gap of at most |v_rel| Δt is
-//! not corrected in that step; it is left to separation).
+//! (φ + Δt v_rel < 0). Such a contact gets b = min(φ, 0)/Δt: from a gap
+//! (φ ≥ 0, the usual case: speculative contacts catch the approach a step
+//! early) b = 0 and v_rel⁺ ≥ −ε v_rel exactly, so an elastic impact keeps its
+//! energy (the gap of at most |v_rel| Δt is not closed; it is left to
+//! separation); a bouncing contact that already penetrates is also pushed
+//! out, as every other contact is.
 
 use glam::{DQuat, DVec3};
 
@@ -193,7 +196,11 @@ pub fn prepare(world: &World, index: usize, dt: f64) -> Prepared {
             normal: p.normal.to_array(),
             restitution: if bounces { eps } else { 0.0 },
             id: Some(contact_id(index, p)),
-            bias: if bounces { 0.0 } else { p.gap / dt },
+            bias: if bounces {
+                p.gap.min(0.0) / dt
+            } else {
+                p.gap / dt
+            },
             friction: mu,
             tangent: None,
         });
