@@ -75,7 +75,7 @@ fn a_dropped_ball_comes_to_rest_without_bouncing() {
         {
             landed_at = Some(step);
         }
-        if let Some(_) = landed_at {
+        if landed_at.is_some() {
             assert!(
                 y <= lowest + 1e-12,
                 "step {step}: bounced to {y} (rest {lowest})"

@@ -314,7 +314,7 @@ mod tests {
                 "world 1, body 1: field `position`",
             ),
             (
-                format!(r#"{{"bodies":[{{"shape":{{"sphere":{{"radius":1}}}},"position":[0,1,0]}}]}}"#),
+                r#"{"bodies":[{"shape":{"sphere":{"radius":1}},"position":[0,1,0]}]}"#.to_string(),
                 "world 0, body 0: field `mass`",
             ),
             (
@@ -330,11 +330,11 @@ mod tests {
                 "world 0: field `gravity`",
             ),
             (
-                format!(r#"{{"bodies":[{{"shape":{{"sphere":{{"radius":1}}}},"position":[0,1,0],"mass":1,"orientation":[0,0,0,2]}}]}}"#),
+                r#"{"bodies":[{"shape":{"sphere":{"radius":1}},"position":[0,1,0],"mass":1,"orientation":[0,0,0,2]}]}"#.to_string(),
                 "world 0, body 0: field `orientation`",
             ),
             (
-                format!(r#"{{"bodies":[{{"shape":{{"sphere":{{"radius":1}}}},"position":[0,1,0],"mass":1,"restitution":1.5}}]}}"#),
+                r#"{"bodies":[{"shape":{"sphere":{"radius":1}},"position":[0,1,0],"mass":1,"restitution":1.5}]}"#.to_string(),
                 "world 0, body 0: field `restitution`",
             ),
             (r#"{"worlds":[]}"#.to_string(), "w.json: field `worlds`"),

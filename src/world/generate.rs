@@ -220,7 +220,9 @@ fn rain(size: usize, rng: &mut Rng) -> World {
         let mut b = RigidBody::new(shape, p.to_array(), 0.0);
         b.mass = None;
         b.density = Some(rng.range(500.0, 2000.0));
-        b.orientation = DQuat::from_axis_angle(rng.unit_vector(), rng.range(0.0, 6.28)).to_array();
+        b.orientation =
+            DQuat::from_axis_angle(rng.unit_vector(), rng.range(0.0, std::f64::consts::TAU))
+                .to_array();
         b.velocity = rng.vector(0.5).to_array();
         b.friction = 0.4;
         b.restitution = rng.range(0.0, 0.3);

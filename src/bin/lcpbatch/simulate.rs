@@ -262,7 +262,7 @@ fn write_outputs(out: &Path, lines: &[StepLine], worlds: &[World]) -> Result<(),
     let t = |f: fn(&StepLine) -> f64| -> Vec<(f64, f64)> {
         lines.iter().map(|l| (l.time, f(l))).collect()
     };
-    let plots: [(&str, &str, Vec<(&str, Vec<(f64, f64)>)>); 4] = [
+    let plots: [(&str, &str, Vec<Series>); 4] = [
         (
             "energy.svg",
             "energy (J)",
@@ -308,8 +308,11 @@ fn write_outputs(out: &Path, lines: &[StepLine], worlds: &[World]) -> Result<(),
     Ok(())
 }
 
+/// One labelled line: (simulated time, value) points.
+type Series<'a> = (&'a str, Vec<(f64, f64)>);
+
 /// Lines of y against simulated time (linear axes).
-fn line_plot(path: &Path, y_desc: &str, series: &[(&str, Vec<(f64, f64)>)]) -> Result<(), Error> {
+fn line_plot(path: &Path, y_desc: &str, series: &[Series]) -> Result<(), Error> {
     let err = |e: String| Error::Io {
         path: path.to_path_buf(),
         source: std::io::Error::other(e),
