@@ -50,21 +50,8 @@ pub fn parse_json(path: &str, text: &str) -> Result<Input, Error> {
     // then pick the shape by its top-level key. A value of the wrong type or
     // shape is then named by item and field (see [`shape_error`]), as the
     // checks on values name theirs.
-    let value: serde_json::Value = serde_json::from_str(text).map_err(|e| Error::json(path, e))?;
-    if let Some((at, key)) = strict::duplicate_key(text) {
-        return Err(Error::invalid(
-            strict::item_of(path, &at),
-            key,
-            "appears twice in one object (each field once)",
-        ));
-    }
-    let Some(obj) = value.as_object() else {
-        return Err(Error::invalid(
-            path,
-            "(top level)",
-            "expected a JSON object",
-        ));
-    };
+    let value = strict::parse_object(path, text, strict::item_of)?;
+    let obj = value.as_object().expect("parse_object checked");
     let input = if obj.contains_key("problems") {
         let batch: BatchFile = serde_json::from_value(value.clone())
             .map_err(|e| shape_error(path, text, &value, Shape::Batch, e))?;

@@ -70,6 +70,34 @@ pub(crate) fn duplicate_key(text: &str) -> Option<(Vec<String>, String)> {
     found
 }
 
+/// Strict parsing of a file's JSON text, shared by every format: syntax
+/// errors keep their position, a key twice in one object is an error naming
+/// the item (`item_of(path, json path)`) and the key, and the top level must
+/// be an object.
+pub(crate) fn parse_object(
+    path: &str,
+    text: &str,
+    item_of: fn(&str, &[String]) -> String,
+) -> Result<serde_json::Value, crate::Error> {
+    use crate::Error;
+    let value: serde_json::Value = serde_json::from_str(text).map_err(|e| Error::json(path, e))?;
+    if let Some((at, key)) = duplicate_key(text) {
+        return Err(Error::invalid(
+            item_of(path, &at),
+            key,
+            "appears twice in one object (each field once)",
+        ));
+    }
+    if !value.is_object() {
+        return Err(Error::invalid(
+            path,
+            "(top level)",
+            "expected a JSON object",
+        ));
+    }
+    Ok(value)
+}
+
 /// The item a JSON path names, in the words of the other errors: `problem
 /// 4`, `scene 2, contact 1`, `scene 0, body 3` (a single scene is scene 0),
 /// the file itself at the top level.

@@ -23,21 +23,8 @@ const UNIT_TOL: f64 = 1e-6;
 
 /// Parses a world file's text; `path` names the file in errors.
 pub fn parse_worlds(path: &str, text: &str) -> Result<Vec<World>, Error> {
-    let value: Value = serde_json::from_str(text).map_err(|e| Error::json(path, e))?;
-    if let Some((at, key)) = crate::io::strict::duplicate_key(text) {
-        return Err(Error::invalid(
-            item_of(path, &at),
-            key,
-            "appears twice in one object (each field once)",
-        ));
-    }
-    let Some(obj) = value.as_object() else {
-        return Err(Error::invalid(
-            path,
-            "(top level)",
-            "expected a JSON object",
-        ));
-    };
+    let value = crate::io::strict::parse_object(path, text, item_of)?;
+    let obj = value.as_object().expect("parse_object checked");
     let worlds: Vec<&Value> = match obj.get("worlds") {
         Some(Value::Array(list)) if obj.len() == 1 => list.iter().collect(),
         Some(_) if obj.len() > 1 => {
