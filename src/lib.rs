@@ -60,20 +60,25 @@ pub mod settings;
 pub mod solver;
 pub(crate) mod solvers;
 pub(crate) mod validation;
+pub mod world;
 
 pub use cpu::impulses::BodyVelocity;
 pub use error::Error;
-pub use friction::{FrictionProblem, FrictionResiduals};
+pub use friction::{
+    FrictionMethod, FrictionProblem, FrictionResiduals, FrictionSettings, FrictionSolution,
+};
 pub use gpu::{AdapterSummary, BackendChoice, EnumerationKernel, GpuContext, Precision};
 pub use islands::IslandProblem;
 pub use lcp::{Lcp, LcpSolution, Residuals, SolutionSet, Status};
 pub use report::{
-    Device, DeviceKind, GpuFigures, IslandReport, PathCounts, Report, SceneReport, SolvePath,
-    Timings,
+    ContactImpulse, Device, DeviceKind, FrictionIslandReport, GpuFigures, IslandReport, PathCounts,
+    Report, SceneFriction, SceneReport, SolvePath, Timings,
 };
 pub use scene::{Body, Contact, Scene};
 pub use settings::{Backend, GpuSettings, Method, Settings};
+pub use solver::world_path::{StepReport, StepTimings, WorldStepReport};
 pub use solver::{CostModel, Solver};
+pub use world::{RigidBody, Shape, World};
 
 /// Every adapter wgpu finds on `api` (for `lcpbatch info`); empty when none.
 pub fn list_adapters(api: BackendChoice) -> Vec<AdapterSummary> {

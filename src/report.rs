@@ -12,6 +12,7 @@
 use std::fmt;
 
 use crate::cpu::impulses::BodyVelocity;
+use crate::friction::{FrictionMethod, FrictionSolution};
 use crate::gpu::Precision;
 use crate::lcp::{LcpSolution, Status};
 use crate::settings::Method;
@@ -117,6 +118,69 @@ pub struct SceneReport {
     pub bodies: Vec<BodyVelocity>,
     /// Its islands: indices into [`Report::islands`].
     pub islands: std::ops::Range<usize>,
+    /// Scenes with friction (any contact with μ > 0): per contact the
+    /// impulse vector and its parts, and the scene's frictional islands.
+    /// None for a frictionless scene, whose output is unchanged. For a scene
+    /// with friction, `impulses` holds the normal parts and `islands` is empty.
+    pub friction: Option<SceneFriction>,
+}
+
+/// A scene's frictional results.
+#[derive(Clone, Debug)]
+pub struct SceneFriction {
+    /// One per contact, in the scene's order.
+    pub contacts: Vec<ContactImpulse>,
+    /// Its islands: indices into [`Report::friction`].
+    pub islands: std::ops::Range<usize>,
+}
+
+/// One contact's impulse with friction.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct ContactImpulse {
+    /// The impulse on body a (world frame): r_n n + r_t₁ t₁ + r_t₂ t₂; body b
+    /// receives the opposite.
+    pub impulse: [f64; 3],
+    /// Its normal part r_n ≥ 0.
+    pub normal: f64,
+    /// Its tangential part in the contact's frame: (r_t₁, r_t₂), with
+    /// ‖(r_t₁, r_t₂)‖ ≤ μ r_n.
+    pub tangential: [f64; 2],
+    /// The tangential part in the world frame: r_t₁ t₁ + r_t₂ t₂.
+    pub tangential_impulse: [f64; 3],
+    /// The frame (t₁, t₂) the parts refer to.
+    pub tangents: [[f64; 3]; 2],
+    /// The local velocity after the impulse (u_n, u_t₁, u_t₂), restitution
+    /// included in u_n as in the LCP's w.
+    pub velocity: [f64; 3],
+}
+
+/// One frictional island's (or one [`crate::FrictionProblem`]'s) result.
+#[derive(Clone, Debug)]
+pub struct FrictionIslandReport {
+    /// The scene it belongs to (None for a batch of problems).
+    pub scene: Option<usize>,
+    /// The scene's contact indices in the order of the problem's contacts
+    /// (for a batch of problems: 0..k).
+    pub contacts: Vec<usize>,
+    /// Whether it started from the last call's impulses (warm start by ids).
+    pub warm_started: bool,
+    /// Status, r, u, residuals (Coulomb error and the others), iterations, method.
+    pub solution: FrictionSolution,
+}
+
+impl FrictionIslandReport {
+    /// The status of the solve.
+    pub fn status(&self) -> Status {
+        self.solution.status
+    }
+    /// The Coulomb error (Siconos' fc3d error with De Saxcé's correction).
+    pub fn error(&self) -> f64 {
+        self.solution.residuals.coulomb_error
+    }
+    /// The method that solved it.
+    pub fn method(&self) -> FrictionMethod {
+        self.solution.method
+    }
 }
 
 /// Islands per path, and what validation did to the GPU's answers.
@@ -279,6 +343,14 @@ pub struct Report {
     pub fallback: Option<String>,
     /// GPU figures when the GPU solved the batch.
     pub gpu: Option<GpuFigures>,
+    /// One per frictional problem (in the caller's order) or per island of
+    /// each scene with friction (scene by scene); empty without friction.
+    pub friction: Vec<FrictionIslandReport>,
+    /// Frictional islands per status, in the order of [`Status::ALL`].
+    pub friction_statuses: [usize; Status::ALL.len()],
+    /// Largest Coulomb error over solved frictional islands and the index of
+    /// that island in `friction` (None when there is none).
+    pub max_coulomb_error: Option<(f64, usize)>,
 }
 
 impl Report {
@@ -316,7 +388,28 @@ impl Report {
             choice,
             fallback: None,
             gpu: None,
+            friction: Vec::new(),
+            friction_statuses: [0; Status::ALL.len()],
+            max_coulomb_error: None,
         }
+    }
+
+    /// Sets the frictional islands, their counts per status and the largest
+    /// Coulomb error.
+    pub(crate) fn set_friction(&mut self, friction: Vec<FrictionIslandReport>) {
+        self.friction_statuses = [0; Status::ALL.len()];
+        self.max_coulomb_error = None;
+        for (i, isl) in friction.iter().enumerate() {
+            let s = isl.status();
+            if let Some(k) = Status::ALL.iter().position(|&x| x == s) {
+                self.friction_statuses[k] += 1;
+            }
+            let e = isl.error();
+            if s.is_solution() && !self.max_coulomb_error.is_some_and(|(m, _)| e <= m) {
+                self.max_coulomb_error = Some((e, i));
+            }
+        }
+        self.friction = friction;
     }
 
     /// (status, count) of every status that occurs, in [`Status::ALL`] order.
@@ -359,6 +452,24 @@ impl fmt::Display for Report {
         match self.max_error {
             Some((e, i)) => writeln!(f, "max error: {e:.3e} (island {i})")?,
             None => writeln!(f, "max error: none (no island has a solution)")?,
+        }
+        if !self.friction.is_empty() {
+            let statuses: Vec<String> = Status::ALL
+                .iter()
+                .zip(self.friction_statuses)
+                .filter(|(_, c)| *c > 0)
+                .map(|(s, c)| format!("{s} {c}"))
+                .collect();
+            writeln!(
+                f,
+                "{} frictional islands (CPU, f64): {}",
+                self.friction.len(),
+                statuses.join(", ")
+            )?;
+            match self.max_coulomb_error {
+                Some((e, i)) => writeln!(f, "max Coulomb error: {e:.3e} (frictional island {i})")?,
+                None => writeln!(f, "max Coulomb error: none (no frictional island solved)")?,
+            }
         }
         if let Some(g) = &self.gpu {
             writeln!(

@@ -46,6 +46,31 @@ pub struct Contact {
     /// starts from the basis its contacts had in the last call. Optional.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub id: Option<u64>,
+    /// A velocity bias b added to the contact's q (m/s): q = v_rel +
+    /// ε min(v_rel, 0) + b ([`crate::cpu::assembly::normal_q`]). Time
+    /// stepping puts the gap here, b = φ/Δt (seed 001 §四: 0 ≤ γ_n ⊥ φ/Δt +
+    /// v_n⁺ ≥ 0): a contact φ apart may close the gap within the step, a
+    /// penetrating one (φ < 0) is pushed out by −φ/Δt. Optional, 0 when
+    /// absent (and then not written, so frictionless single-frame outputs
+    /// are unchanged).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub bias: f64,
+    /// Coulomb's friction coefficient μ ≥ 0 (finite; default 0: frictionless,
+    /// and then the field is left out of every output). An island with any
+    /// contact of μ > 0 is solved by the friction path (README, "Friction").
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub friction: f64,
+    /// The first tangent t₁ of the contact's friction frame, given by the
+    /// caller (unit and orthogonal to the normal, to [`NORMAL_TOL`]); then
+    /// t₂ = n × t₁. Default None: [`crate::friction::tangent_basis`] of the
+    /// normal. Only the directions of the reported tangential impulse
+    /// components depend on it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tangent: Option<[f64; 3]>,
+}
+
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
 }
 
 /// One simulation instance at one instant.
@@ -213,6 +238,29 @@ impl Contact {
             normal,
             restitution,
             id: None,
+            bias: 0.0,
+            friction: 0.0,
+            tangent: None,
+        }
+    }
+
+    /// The same contact with friction coefficient `mu`.
+    pub fn with_friction(mut self, mu: f64) -> Self {
+        self.friction = mu;
+        self
+    }
+
+    /// The contact's friction frame (t₁, t₂): the caller's tangent t₁ with
+    /// t₂ = n × t₁, or [`crate::friction::tangent_basis`] of the normal.
+    /// Right-handed: t₁ × t₂ = n.
+    pub fn tangents(&self) -> (DVec3, DVec3) {
+        let n = self.normal();
+        match self.tangent {
+            Some(t) => {
+                let t1 = DVec3::from_array(t);
+                (t1, n.cross(t1))
+            }
+            None => crate::friction::tangent_basis(n),
         }
     }
 
@@ -279,6 +327,7 @@ impl Contact {
                 format!("{} is not in [0, 1]", self.restitution),
             ));
         }
+        self.validate_friction(item)?;
         let a_static = bodies[self.a].is_static();
         let b_static = self.b.is_none_or(|b| bodies[b].is_static());
         if a_static && b_static {
@@ -288,11 +337,59 @@ impl Contact {
                 "neither body of the contact can move (both static)",
             ));
         }
+        if !self.bias.is_finite() {
+            return Err(Error::invalid(item, "bias", "not a finite number"));
+        }
+        Ok(())
+    }
+}
+
+impl Contact {
+    /// Checks `friction` and `tangent`; `item` names the contact.
+    fn validate_friction(&self, item: &str) -> Result<(), Error> {
+        if !self.friction.is_finite() || self.friction < 0.0 {
+            return Err(Error::invalid(
+                item,
+                "friction",
+                format!("{} is not a finite number ≥ 0", self.friction),
+            ));
+        }
+        let Some(t) = self.tangent else {
+            return Ok(());
+        };
+        if let Some(i) = t.iter().position(|x| !x.is_finite()) {
+            return Err(Error::invalid(
+                item,
+                format!("tangent[{i}]"),
+                "not a finite number",
+            ));
+        }
+        let t = DVec3::from_array(t);
+        if (t.length() - 1.0).abs() > NORMAL_TOL {
+            return Err(Error::invalid(
+                item,
+                "tangent",
+                format!("not a unit vector (length {})", t.length()),
+            ));
+        }
+        let cos = t.dot(self.normal() / self.normal().length());
+        if cos.abs() > NORMAL_TOL {
+            return Err(Error::invalid(
+                item,
+                "tangent",
+                format!("not orthogonal to the normal (t₁·n = {cos})"),
+            ));
+        }
         Ok(())
     }
 }
 
 impl Scene {
+    /// Whether any contact has friction (μ > 0).
+    pub fn has_friction(&self) -> bool {
+        self.contacts.iter().any(|c| c.friction > 0.0)
+    }
+
     /// Checks every body and contact; `item` names the scene in errors
     /// (e.g. "scene 3"). The first failure is returned.
     pub fn validate(&self, item: &str) -> Result<(), Error> {
@@ -322,6 +419,9 @@ mod tests {
             normal: [0.0, 1.0, 0.0],
             restitution: 0.5,
             id: None,
+            bias: 0.0,
+            friction: 0.0,
+            tangent: None,
         }
     }
 
@@ -379,5 +479,22 @@ mod tests {
             "{e}"
         );
         assert!(s(ground_contact()).validate("scene 0").is_ok());
+        let mut c = ground_contact();
+        c.friction = -0.5;
+        let e = s(c).validate("scene 0").unwrap_err().to_string();
+        assert!(e.contains("contact 0") && e.contains("`friction`"), "{e}");
+        let mut c = ground_contact();
+        c.friction = f64::INFINITY;
+        assert!(s(c).validate("scene 0").is_err());
+        let mut c = ground_contact();
+        c.tangent = Some([0.0, 1.0, 0.0]);
+        let e = s(c).validate("scene 0").unwrap_err().to_string();
+        assert!(e.contains("`tangent`") && e.contains("orthogonal"), "{e}");
+        let mut c = ground_contact();
+        c.tangent = Some([0.0, 0.0, 1.0]);
+        c.friction = 0.4;
+        let (t1, t2) = c.tangents();
+        assert_eq!((t1, t2), (DVec3::Z, DVec3::X));
+        assert!(s(c).validate("scene 0").is_ok());
     }
 }

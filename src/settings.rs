@@ -6,6 +6,7 @@
 //! names the field, e.g. `settings: pivot_tol: 2 is not in [0, 1)`.
 
 use crate::cpu::enumeration::EnumerationSettings;
+use crate::friction::{FrictionMethod, FrictionSettings};
 use crate::gpu::{BackendChoice, EnumerationKernel, GpuOptions, GpuSolveSettings, Precision};
 use crate::linalg::PIVOT_TOL;
 use crate::solvers::lemke::LemkeSettings;
@@ -221,6 +222,17 @@ pub struct Settings {
     /// z, w and the error measure are finite and the error is at most this
     /// (default 1e-8); otherwise its status is `numerical_failure`. In (0, 1).
     pub tolerance: f64,
+    /// The algorithm for islands with friction (default
+    /// [`FrictionMethod::Auto`]: NSGS then Alart–Curnier Newton). Islands
+    /// with friction are solved on the CPU in f64 on every backend.
+    pub friction_method: FrictionMethod,
+    /// A frictional island is `solved` only when its Coulomb error (Siconos'
+    /// fc3d error with De Saxcé's correction) is at most this (default 1e-8);
+    /// in (0, 1).
+    pub friction_tolerance: f64,
+    /// Cap on a frictional island's NSGS sweeps plus Newton steps (default
+    /// 1000; at least 1); reaching it gives `not_converged`.
+    pub friction_max_iterations: u64,
     /// The GPU backend's settings.
     pub gpu: GpuSettings,
 }
@@ -246,6 +258,9 @@ impl Default for Settings {
             pgs_max_sweeps: p.max_iterations,
             pgs_tolerance: p.tolerance,
             tolerance: 1e-8,
+            friction_method: FrictionMethod::Auto,
+            friction_tolerance: FrictionSettings::default().tolerance,
+            friction_max_iterations: FrictionSettings::default().max_iterations,
             gpu: GpuSettings::default(),
         }
     }
@@ -291,6 +306,15 @@ impl Settings {
                 "tolerance",
                 format!("{} is not in (0, 1)", self.tolerance),
             ));
+        }
+        if !(self.friction_tolerance > 0.0 && self.friction_tolerance < 1.0) {
+            return Err(invalid(
+                "friction_tolerance",
+                format!("{} is not in (0, 1)", self.friction_tolerance),
+            ));
+        }
+        if self.friction_max_iterations == 0 {
+            return Err(invalid("friction_max_iterations", "must be at least 1"));
         }
         if self.lemke_max_pivots == 0 {
             return Err(invalid("lemke_max_pivots", "must be at least 1"));
@@ -342,6 +366,15 @@ impl Settings {
             pivot_tol: self.pivot_tol,
             feasibility_tol: self.feasibility_tol,
             relaxed_feasibility_tol: self.relaxed_feasibility_tol,
+        }
+    }
+
+    /// The friction solvers' settings.
+    pub fn friction(&self) -> FrictionSettings {
+        FrictionSettings {
+            method: self.friction_method,
+            tolerance: self.friction_tolerance,
+            max_iterations: self.friction_max_iterations,
         }
     }
 
@@ -440,6 +473,20 @@ mod tests {
                 },
             ),
             ("backend", Settings::new(Backend::Gpu, Method::Pgs)),
+            (
+                "friction_tolerance",
+                Settings {
+                    friction_tolerance: 0.0,
+                    ..Default::default()
+                },
+            ),
+            (
+                "friction_max_iterations",
+                Settings {
+                    friction_max_iterations: 0,
+                    ..Default::default()
+                },
+            ),
         ];
         for (field, s) in cases {
             let e = s.validate().expect_err(field).to_string();

@@ -15,10 +15,16 @@
 //! the μ‖u_t‖ term (a convex problem: min ½ rᵀW r + qᵀr over the cones);
 //! a sliding contact then gains the normal velocity μ‖u_t‖.
 
+pub mod assembly;
 pub mod cone;
+pub mod local;
+pub mod newton;
+pub mod nsgs;
 pub mod problem;
 pub mod residual;
+pub mod solve;
 
 pub use cone::{project_on_cone, project_on_disc, tangent_basis};
 pub use problem::FrictionProblem;
 pub use residual::{coulomb_error, FrictionResiduals};
+pub use solve::{solve_friction_problem, FrictionMethod, FrictionSettings, FrictionSolution};

@@ -3,6 +3,7 @@
 //! symmetric positive semidefinite (M = J M⁻¹ Jᵀ).
 
 pub mod families;
+pub mod friction;
 pub mod stress;
 
 use glam::{DMat3, DQuat, DVec3};
@@ -120,6 +121,9 @@ fn contact(a: usize, b: Option<usize>, point: DVec3, normal: DVec3, restitution:
         normal: normal.to_array(),
         restitution,
         id: None,
+        bias: 0.0,
+        friction: 0.0,
+        tangent: None,
     }
 }
 

@@ -2,8 +2,9 @@
 //! JSON output. Field names are fixed so that other tools can write and read
 //! them (see the README).
 
+pub mod fc3d;
 pub mod siconos;
-mod strict;
+pub(crate) mod strict;
 
 use std::path::Path;
 
@@ -109,21 +110,8 @@ fn typed(text: &str) -> Option<JsonInput> {
 /// its top-level key. A value of the wrong type or shape is then named by
 /// item and field (see [`shape_error`]), as the checks on values name theirs.
 fn checked(path: &str, text: &str) -> Result<JsonInput, Error> {
-    let value: serde_json::Value = serde_json::from_str(text).map_err(|e| Error::json(path, e))?;
-    if let Some((at, key)) = strict::duplicate_key(text) {
-        return Err(Error::invalid(
-            strict::item_of(path, &at),
-            key,
-            "appears twice in one object (each field once)",
-        ));
-    }
-    let Some(obj) = value.as_object() else {
-        return Err(Error::invalid(
-            path,
-            "(top level)",
-            "expected a JSON object",
-        ));
-    };
+    let value = strict::parse_object(path, text, strict::item_of)?;
+    let obj = value.as_object().expect("parse_object checked");
     let input = if obj.contains_key("problems") {
         let batch: BatchFile = serde_json::from_value(value.clone())
             .map_err(|e| shape_error(path, text, &value, Shape::Batch, e))?;
@@ -315,7 +303,7 @@ fn contact_fields() -> [(
     &'static str,
     bool,
     fn(&serde_json::Value, &str) -> Result<(), FieldError>,
-); 6] {
+); 8] {
     [
         ("a", true, index),
         (
@@ -334,6 +322,14 @@ fn contact_fields() -> [(
                     f.into(),
                     format!("expected an integer id ≥ 0, found {}", kind(v)),
                 ))
+            }
+        }),
+        ("friction", false, number),
+        ("tangent", false, |v, f| {
+            if v.is_null() {
+                Ok(())
+            } else {
+                vec3(v, f)
             }
         }),
     ]

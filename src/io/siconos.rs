@@ -18,13 +18,13 @@ use crate::Error;
 /// Largest n accepted, so that a corrupt header cannot ask for terabytes.
 pub const MAX_DAT_N: usize = 10_000;
 
-struct Tokens<'a> {
+pub(super) struct Tokens<'a> {
     path: &'a str,
     it: std::iter::Peekable<Box<dyn Iterator<Item = (usize, &'a str)> + 'a>>,
 }
 
 impl<'a> Tokens<'a> {
-    fn new(path: &'a str, text: &'a str) -> Self {
+    pub(super) fn new(path: &'a str, text: &'a str) -> Self {
         let it: Box<dyn Iterator<Item = (usize, &'a str)> + 'a> = Box::new(
             text.lines()
                 .enumerate()
@@ -36,7 +36,7 @@ impl<'a> Tokens<'a> {
         }
     }
 
-    fn err(&self, message: String) -> Error {
+    pub(super) fn err(&self, message: String) -> Error {
         Error::Dat {
             path: self.path.to_string(),
             message,
@@ -49,7 +49,7 @@ impl<'a> Tokens<'a> {
             .ok_or_else(|| self.err(format!("file ends before {what}")))
     }
 
-    fn int(&mut self, what: &str, max: usize) -> Result<usize, Error> {
+    pub(super) fn int(&mut self, what: &str, max: usize) -> Result<usize, Error> {
         let (line, t) = self.next(what)?;
         let v: usize = t.parse().map_err(|_| {
             self.err(format!(
@@ -62,7 +62,7 @@ impl<'a> Tokens<'a> {
         Ok(v)
     }
 
-    fn real(&mut self, what: &str) -> Result<f64, Error> {
+    pub(super) fn real(&mut self, what: &str) -> Result<f64, Error> {
         let (line, t) = self.next(what)?;
         let v: f64 = t.parse().map_err(|_| {
             self.err(format!(
@@ -111,7 +111,9 @@ pub fn parse_dat(path: &str, text: &str) -> Result<Lcp, Error> {
     Lcp::new(m, q)
 }
 
-fn read_sparse_block(t: &mut Tokens, n: usize, m: &mut [f64]) -> Result<(), Error> {
+/// Reads a sparse-block matrix (n × n, row-major into `m`); FrictionContact3D
+/// files store W the same way.
+pub(super) fn read_sparse_block(t: &mut Tokens, n: usize, m: &mut [f64]) -> Result<(), Error> {
     let nbblocks = t.int("nbblocks", n * n)?;
     let bn0 = t.int("blocknumber0", n)?;
     let bn1 = t.int("blocknumber1", n)?;

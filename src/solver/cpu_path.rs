@@ -134,6 +134,7 @@ impl Solver {
                 impulses,
                 bodies,
                 islands: first..islands.len(),
+                friction: None,
             });
         }
         let mut report = self.cpu_report(islands, out);

@@ -77,6 +77,7 @@ impl Solver {
                 impulses: sol.impulses,
                 bodies: sol.bodies,
                 islands: first..islands.len(),
+                friction: None,
             });
         }
         Ok(self.gpu_report(islands, out, &r.report, r.max_velocity_deviation))

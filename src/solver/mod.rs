@@ -30,7 +30,9 @@ use std::time::Instant;
 
 mod cost;
 mod cpu_path;
+mod friction_path;
 mod gpu_path;
+pub mod world_path;
 
 pub use cost::{cache_dir, CostModel, CALIBRATION_SIZES};
 
@@ -69,6 +71,8 @@ pub struct Solver {
     fallback: Option<String>,
     /// Bases of the last call by contact id (with `settings.warm_start`).
     warm: WarmStart,
+    /// Frictional impulses of the last call by contact id (with `settings.warm_start`).
+    friction_warm: friction_path::FrictionWarm,
     threads: usize,
     /// `Backend::Auto` with a GPU open: the costs that choose per batch.
     cost: Option<CostModel>,
@@ -89,6 +93,7 @@ impl Solver {
             choice: String::new(),
             fallback: None,
             warm: WarmStart::default(),
+            friction_warm: Default::default(),
             threads,
             cost: None,
         };
@@ -277,6 +282,7 @@ impl Solver {
     /// Forgets the bases remembered for warm start.
     pub fn clear_warm_start(&mut self) {
         self.warm = WarmStart::default();
+        self.friction_warm = Default::default();
     }
 
     /// The device, shared, while the GPU is in use (for tests that lose it
@@ -368,12 +374,28 @@ impl Solver {
     /// Solves scenes: per scene the impulse of every contact, the bodies'
     /// velocities after them, and one [`IslandReport`] per island. Every
     /// scene is checked first (an error names the scene, the item and the
-    /// field). Islands above the enumeration's limit go to Lemke.
+    /// field). Islands above the enumeration's limit go to Lemke. Scenes
+    /// with friction (any contact with μ > 0) go, every island of them, to
+    /// the friction path on the CPU ([`Report::friction`],
+    /// [`SceneReport::friction`](crate::SceneReport::friction)); the others
+    /// are solved as without friction.
     pub fn solve_scenes(&mut self, scenes: &[Scene]) -> Result<Report, Error> {
         let start = Instant::now();
         for (i, s) in scenes.iter().enumerate() {
             s.validate(&format!("scene {i}"))?;
         }
+        if scenes.iter().any(Scene::has_friction) {
+            let mut report = self.scenes_with_friction(scenes)?;
+            report.timings.total = start.elapsed().as_secs_f64();
+            return Ok(report);
+        }
+        let mut report = self.frictionless_scenes(scenes)?;
+        report.timings.total = start.elapsed().as_secs_f64();
+        Ok(report)
+    }
+
+    /// Checked scenes without friction: the LCP path.
+    fn frictionless_scenes(&mut self, scenes: &[Scene]) -> Result<Report, Error> {
         // Per scene, per island: the warm basis of its contacts' ids.
         let warm: Vec<Vec<Option<u32>>> = if self.settings.warm_start {
             scenes
@@ -427,7 +449,6 @@ impl Solver {
                 ids.iter().map(Vec::as_slice).zip(&report.islands).collect();
             self.remember(keyed.into_iter());
         }
-        report.timings.total = start.elapsed().as_secs_f64();
         Ok(report)
     }
 

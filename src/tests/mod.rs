@@ -7,6 +7,7 @@
 pub(crate) mod common;
 
 mod device_trouble;
+mod friction_conformance;
 mod gpu_all_solutions;
 mod gpu_conformance;
 mod gpu_cost_model;
@@ -24,3 +25,5 @@ mod seeds;
 mod siconos;
 mod stress;
 mod stress_gpu_f32;
+mod world;
+mod world_friction;

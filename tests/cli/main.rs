@@ -8,6 +8,7 @@ mod common;
 mod empty;
 mod golden;
 mod gpu;
+mod simulate;
 mod trouble;
 
 use std::path::{Path, PathBuf};

@@ -1,0 +1,268 @@
+//! Assembly of a frictional island: per contact the Jacobian rows of its
+//! normal n and tangents t₁, t₂, and per island the Delassus matrix
+//! W = J M⁻¹ Jᵀ (3k × 3k, interleaved per contact) and the free velocity q.
+//! Then the impulses stage: the bodies' velocities after the impulse vectors.
+//! CPU f64 twin of the future WGSL stages of the same names
+//! (`assemble_friction_contacts`, `assemble_friction_island`,
+//! `apply_friction_impulses`).
+//!
+//! # Derivation
+//! A direction d at the contact (d = n, t₁ or t₂) has, like the normal of
+//! the frictionless problem (`src/cpu/assembly.rs`, seed 000), the Jacobian
+//! row J_d = [d, r_a × d, −d, −r_b × d] and the response M⁻¹ J_dᵀ; so each
+//! direction is assembled by [`assemble_contact`] with d in place of n, and
+//! W's entry for direction α of contact i and β of contact j is
+//! [`matrix_entry`] of those rows: the sum over the dynamic bodies the two
+//! contacts share (static bodies and the world contribute nothing).
+//!
+//! q: the normal entry is [`normal_q`] of v_rel = (ṗ_a − ṗ_b)·n (restitution
+//! and the contact's bias, e.g. time stepping's gap φ/Δt), the same q as the
+//! LCP path, one function; a tangent entry is t·(ṗ_a − ṗ_b), no restitution
+//! and no bias.
+//!
+//! # Packed layout (for the GPU twin)
+//! Per island of k contacts, in one storage buffer of the batch's scalar
+//! type, at the island's offset `Σ 9k²` of the islands before it: W as 9k²
+//! scalars row-major, entry (3i + α, 3j + β) for contact i direction α and
+//! contact j direction β (α, β: 0 normal, 1 t₁, 2 t₂); q (3k) and μ (k) in
+//! two more buffers at offsets `Σ 3k` and `Σ k`. Per contact the rows are
+//! three [`ContactRow`]s (jacobian 12, response 12, q 1) in the order n, t₁, t₂.
+
+use glam::DVec3;
+
+use super::problem::FrictionProblem;
+use crate::cpu::assembly::{assemble_contact, dynamic_sides, matrix_entry, ContactRow};
+use crate::cpu::impulses::BodyVelocity;
+use crate::islands::Island;
+use crate::scene::{Body, Contact, Scene};
+
+#[cfg(doc)]
+use crate::cpu::assembly::normal_q;
+
+/// The three rows of one contact: normal, t₁, t₂. `rows[0]` is exactly the
+/// frictionless path's row (q with restitution); the tangents' q is the
+/// sliding velocity t·(ṗ_a − ṗ_b).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FrictionContactRows {
+    /// n, t₁, t₂ rows.
+    pub rows: [ContactRow; 3],
+    /// The directions n, t₁, t₂ (world frame).
+    pub frame: [DVec3; 3],
+}
+
+/// Assembles one contact's three rows (stage `assemble_friction_contacts`,
+/// one invocation per contact).
+pub fn assemble_friction_contact(bodies: &[Body], c: &Contact) -> FrictionContactRows {
+    let (t1, t2) = c.tangents();
+    let along = |d: DVec3| {
+        // The same contact with normal d, no restitution and no bias:
+        // q = d·(ṗ_a − ṗ_b).
+        let mut dc = c.clone();
+        dc.normal = d.to_array();
+        dc.restitution = 0.0;
+        dc.bias = 0.0;
+        assemble_contact(bodies, &dc)
+    };
+    FrictionContactRows {
+        rows: [assemble_contact(bodies, c), along(t1), along(t2)],
+        frame: [c.normal(), t1, t2],
+    }
+}
+
+/// Assembles every contact of a scene.
+pub fn assemble_friction_contacts(scene: &Scene) -> Vec<FrictionContactRows> {
+    scene
+        .contacts
+        .iter()
+        .map(|c| assemble_friction_contact(&scene.bodies, c))
+        .collect()
+}
+
+/// Assembles one island's frictional problem (stage
+/// `assemble_friction_island`): W (3k × 3k, interleaved), q (3k) and μ (k),
+/// over the island's contacts in order.
+pub fn assemble_friction_island(
+    scene: &Scene,
+    rows: &[FrictionContactRows],
+    island: &Island,
+) -> FrictionProblem {
+    let k = island.len();
+    let n = 3 * k;
+    let sides: Vec<_> = island
+        .contacts
+        .iter()
+        .map(|&c| dynamic_sides(scene, &scene.contacts[c]))
+        .collect();
+    let mut w = vec![0.0; n * n];
+    for (i, &ci) in island.contacts.iter().enumerate() {
+        for (j, &cj) in island.contacts.iter().enumerate() {
+            for a in 0..3 {
+                for b in 0..3 {
+                    w[(3 * i + a) * n + 3 * j + b] =
+                        matrix_entry(sides[i], &rows[ci].rows[a], sides[j], &rows[cj].rows[b]);
+                }
+            }
+        }
+    }
+    let q = island
+        .contacts
+        .iter()
+        .flat_map(|&c| rows[c].rows.map(|r| r.q))
+        .collect();
+    let mu = island
+        .contacts
+        .iter()
+        .map(|&c| scene.contacts[c].friction)
+        .collect();
+    FrictionProblem { w, q, mu }
+}
+
+/// One island of a scene and its frictional problem.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FrictionIsland {
+    /// The scene's contact indices, in the order of the problem's contacts.
+    pub contacts: Vec<usize>,
+    /// Its W, q and μ.
+    pub problem: FrictionProblem,
+}
+
+/// Every island of a validated scene with its frictional problem (what the
+/// friction path of [`crate::Solver::solve_scenes`] solves).
+pub fn friction_islands(scene: &Scene) -> Vec<FrictionIsland> {
+    let rows = assemble_friction_contacts(scene);
+    crate::islands::find_islands(scene)
+        .into_iter()
+        .map(|isl| FrictionIsland {
+            problem: assemble_friction_island(scene, &rows, &isl),
+            contacts: isl.contacts,
+        })
+        .collect()
+}
+
+impl Scene {
+    /// Checks the scene (errors name `item`) and returns its islands with
+    /// their frictional problems, assembled in f64 (μ = 0 contacts included).
+    pub fn friction_islands(&self, item: &str) -> Result<Vec<FrictionIsland>, crate::Error> {
+        self.validate(item)?;
+        Ok(friction_islands(self))
+    }
+}
+
+/// The impulse vector of a contact in the world frame from its local
+/// reaction (r_n, r_t₁, r_t₂): r_n n + r_t₁ t₁ + r_t₂ t₂.
+pub fn world_impulse(rows: &FrictionContactRows, r: [f64; 3]) -> DVec3 {
+    rows.frame[0] * r[0] + rows.frame[1] * r[1] + rows.frame[2] * r[2]
+}
+
+/// Applies every contact's local reaction `r[c]` (stage
+/// `apply_friction_impulses`): body a gains Σ_α r_α M⁻¹ J_αᵀ (its
+/// `response` blocks), body b the b blocks (already negative).
+pub fn apply_friction_impulses(
+    scene: &Scene,
+    rows: &[FrictionContactRows],
+    r: &[[f64; 3]],
+) -> Vec<BodyVelocity> {
+    let mut v: Vec<(DVec3, DVec3)> = scene
+        .bodies
+        .iter()
+        .map(|b| (b.velocity(), b.angular_velocity()))
+        .collect();
+    for ((c, row), ri) in scene.contacts.iter().zip(rows).zip(r) {
+        for (dir, &z) in row.rows.iter().zip(ri) {
+            if z == 0.0 {
+                continue;
+            }
+            let block = |at: usize| DVec3::from_slice(&dir.response[at..at + 3]);
+            v[c.a].0 += block(0) * z;
+            v[c.a].1 += block(3) * z;
+            if let Some(b) = c.b {
+                v[b].0 += block(6) * z;
+                v[b].1 += block(9) * z;
+            }
+        }
+    }
+    v.into_iter()
+        .map(|(lin, ang)| BodyVelocity {
+            velocity: lin.to_array(),
+            angular_velocity: ang.to_array(),
+        })
+        .collect()
+}
+
+/// Local velocity (u_n, u_t₁, u_t₂) of every contact from the bodies'
+/// velocities: each direction's (ṗ_a − ṗ_b)·d.
+pub fn local_velocities(scene: &Scene, velocities: &[BodyVelocity]) -> Vec<[f64; 3]> {
+    scene
+        .contacts
+        .iter()
+        .map(|c| {
+            let p = c.point();
+            let pdot = |i: usize| {
+                let v = &velocities[i];
+                DVec3::from_array(v.velocity)
+                    + DVec3::from_array(v.angular_velocity).cross(p - scene.bodies[i].position())
+            };
+            let mut d = pdot(c.a);
+            if let Some(b) = c.b {
+                d -= pdot(b);
+            }
+            let (t1, t2) = c.tangents();
+            [d.dot(c.normal()), d.dot(t1), d.dot(t2)]
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cpu::assembly::{assemble_contacts, assemble_island};
+    use crate::generate::{random_island, Rng};
+    use crate::islands::find_islands;
+
+    #[test]
+    fn the_normal_block_is_the_lcp_and_w_is_symmetric_and_consistent() {
+        let mut rng = Rng::new(7);
+        for n in 1..6 {
+            let mut scene = random_island(&mut rng, n, 10.0);
+            for c in &mut scene.contacts {
+                c.friction = 0.5;
+            }
+            let rows = assemble_friction_contacts(&scene);
+            let lrows = assemble_contacts(&scene);
+            for isl in find_islands(&scene) {
+                let p = assemble_friction_island(&scene, &rows, &isl);
+                let lcp = assemble_island(&scene, &lrows, &isl);
+                let k = isl.len();
+                let m = 3 * k;
+                for i in 0..k {
+                    assert_eq!(p.q[3 * i], lcp.q[i]);
+                    for j in 0..k {
+                        assert_eq!(p.w[3 * i * m + 3 * j], lcp.m[i * k + j]);
+                    }
+                }
+                for i in 0..m {
+                    for j in 0..m {
+                        let (a, b) = (p.w[i * m + j], p.w[j * m + i]);
+                        assert!((a - b).abs() <= 1e-12 * (1.0 + a.abs()), "{i} {j}");
+                    }
+                }
+                // u = W r + q equals the local velocities after the impulses.
+                let mut r = vec![[0.0; 3]; scene.contacts.len()];
+                for (i, &c) in isl.contacts.iter().enumerate() {
+                    r[c] = [1.0 + i as f64, 0.3, -0.2 * i as f64];
+                }
+                let flat: Vec<f64> = isl.contacts.iter().flat_map(|&c| r[c]).collect();
+                let u = p.velocity(&flat);
+                let after = local_velocities(&scene, &apply_friction_impulses(&scene, &rows, &r));
+                for (i, &c) in isl.contacts.iter().enumerate() {
+                    // Normal: restitution shifts q, not the velocities.
+                    let e = scene.contacts[c].restitution * rows[c].rows[0].v_rel.min(0.0);
+                    assert!((u[3 * i] - e - after[c][0]).abs() < 1e-9, "{n}");
+                    for a in 1..3 {
+                        assert!((u[3 * i + a] - after[c][a]).abs() < 1e-9, "{n}");
+                    }
+                }
+            }
+        }
+    }
+}
