@@ -76,6 +76,7 @@ class Report:
     FIELDS = (
         "device", "device_kind", "precision", "choice", "fallback", "counts",
         "statuses", "max_error", "max_error_index", "timings", "gpu", "chunks",
+        "friction_islands", "friction_statuses", "max_coulomb_error", "max_coulomb_error_index",
     )
 
     def __init__(self, d: Dict[str, Any]):
@@ -92,6 +93,13 @@ class Report:
         self.timings: Dict[str, float] = dict(d["timings"])
         self.gpu: Optional[Dict[str, float]] = d["gpu"]
         self.chunks: int = d["chunks"]
+        #: Frictional islands (or problems of ``solve_friction``), their
+        #: statuses, and the largest Coulomb error over the solved ones with
+        #: its index (None when there is none).
+        self.friction_islands: int = d.get("friction_islands", 0)
+        self.friction_statuses: Dict[str, int] = dict(d.get("friction_statuses") or {})
+        self.max_coulomb_error: Optional[float] = d.get("max_coulomb_error")
+        self.max_coulomb_error_index: Optional[int] = d.get("max_coulomb_error_index")
 
     def to_dict(self) -> Dict[str, Any]:
         """The figures as a plain dict (JSON-friendly)."""
@@ -210,8 +218,19 @@ class ScenesResult:
     Per island (all scenes, in order): ``island_scene`` (I,), ``island_contacts``
     (list of the scene's contact indices, in the order of the island's LCP
     rows), ``status`` (I,) :class:`Status` codes, ``error``, ``path``, ``z``
-    and ``w`` (lists). ``scene_ok`` (S,) bool: every island of the scene has a
-    solution. ``report``: :class:`Report`.
+    and ``w`` (lists). ``scene_ok`` (S,) bool: every island of the scene (the
+    frictional ones included) has a solution. ``report``: :class:`Report`.
+
+    With friction (``mu`` > 0 on a contact): per contact ``impulse`` (C, 3),
+    the impulse vector on body a in the world frame (normal plus tangential
+    part; z n for a frictionless scene) and ``tangential`` (C, 2), its
+    tangential parts (r_t1, r_t2) in the contact's frame (t1, t2 = n × t1);
+    ``impulses`` stays the normal part. An island with any μ > 0 is a
+    frictional island: ``friction_scene`` (F,), ``friction_contacts`` (list),
+    ``friction_status`` (F,) :class:`Status` codes, ``friction_error`` (F,)
+    the Coulomb error (Siconos' fc3d error with De Saxcé's correction),
+    ``friction_cone_error`` and ``friction_iterations`` (F,). Frictional
+    islands are not in the LCP island arrays (``status``, ``z``, …).
 
     >>> import numpy as np, lcpbatch
     >>> bodies = dict(inv_mass=[1.0], inv_inertia=[[2.5, 2.5, 2.5]],
@@ -227,12 +246,17 @@ class ScenesResult:
         velocity = _split(d["velocity"], d["body_offsets"])
         angular = _split(d["angular_velocity"], d["body_offsets"])
         self.single = single
+        impulse = _split(d["impulse"], d["contact_offsets"])
+        tangential = _split(d["tangential"], d["contact_offsets"])
         if single:
+            self.impulse: Union[np.ndarray, List[np.ndarray]] = impulse[0]
+            self.tangential: Union[np.ndarray, List[np.ndarray]] = tangential[0]
             self.impulses: Union[np.ndarray, List[np.ndarray]] = impulses[0]
             self.velocity: Union[np.ndarray, List[np.ndarray]] = velocity[0]
             self.angular_velocity: Union[np.ndarray, List[np.ndarray]] = angular[0]
         else:
             self.impulses, self.velocity, self.angular_velocity = impulses, velocity, angular
+            self.impulse, self.tangential = impulse, tangential
         islands = LcpResult(d, ragged=True, n=None)
         self.island_scene: np.ndarray = d["island_scene"]
         self.island_contacts: List[np.ndarray] = _split(d["island_contacts"], d["offsets"])
@@ -242,15 +266,23 @@ class ScenesResult:
         self.z: Union[np.ndarray, List[np.ndarray]] = islands.z
         self.w: Union[np.ndarray, List[np.ndarray]] = islands.w
         self.report = islands.report
+        self.friction_scene: np.ndarray = d["friction_scene"]
+        self.friction_contacts: List[np.ndarray] = _split(d["friction_contacts"], d["friction_offsets"])
+        self.friction_status: np.ndarray = d["friction_status"]
+        self.friction_error: np.ndarray = d["friction_error"]
+        self.friction_cone_error: np.ndarray = d["friction_cone_error"]
+        self.friction_iterations: np.ndarray = d["friction_iterations"]
         scenes = len(d["contact_offsets"]) - 1
-        bad = self.island_scene[~islands.ok]
+        bad = np.concatenate([self.island_scene[~islands.ok],
+                              self.friction_scene[self.friction_status > Status.MULTIPLE_SOLUTIONS]])
         self.scene_ok: np.ndarray = ~np.isin(np.arange(scenes), bad)
 
     def __repr__(self) -> str:
         counts = ", ".join(f"{k} {v}" for k, v in self.report.statuses.items() if v)
+        friction = f", {len(self.friction_status)} frictional" if len(self.friction_status) else ""
         return (
             f"<lcpbatch.ScenesResult: {len(self.scene_ok)} scene(s), {len(self.status)} "
-            f"island(s); {counts or 'none'}; on {self.report.device}>"
+            f"island(s){friction}; {counts or 'none'}; on {self.report.device}>"
         )
 
 
@@ -271,6 +303,11 @@ def merge_reports(reports: Sequence[Report]) -> Report:
     worst = [(r.max_error, int(s) + r.max_error_index) for r, s in zip(reports, starts)
              if r.max_error is not None and r.max_error_index is not None]
     max_error, max_index = max(worst, key=lambda e: (np.isnan(e[0]), e[0])) if worst else (None, None)
+    fstarts = np.cumsum([0] + [r.friction_islands for r in reports[:-1]]).astype(int)
+    fworst = [(r.max_coulomb_error, int(s) + r.max_coulomb_error_index) for r, s in zip(reports, fstarts)
+              if r.max_coulomb_error is not None and r.max_coulomb_error_index is not None]
+    max_coulomb, coulomb_index = (max(fworst, key=lambda e: (np.isnan(e[0]), e[0]))
+                                  if fworst else (None, None))
     devices = sorted({r.device for r in reports})
     fallbacks = sorted({r.fallback for r in reports if r.fallback})
     gpus = [r.gpu for r in reports if r.gpu]
@@ -282,6 +319,9 @@ def merge_reports(reports: Sequence[Report]) -> Report:
         max_error=max_error, max_error_index=max_index, timings=total("timings"),
         gpu={k: sum(g[k] for g in gpus) for k in gpus[0]} if gpus else None,
         chunks=sum(r.chunks for r in reports),
+        friction_islands=sum(r.friction_islands for r in reports),
+        friction_statuses=total("friction_statuses"), max_coulomb_error=max_coulomb,
+        max_coulomb_error_index=coulomb_index,
     )
     paths = ", ".join(f"{k} {v}" for k, v in d["counts"].items() if v)
     statuses = ", ".join(f"{k} {v}" for k, v in d["statuses"].items() if v)
@@ -293,6 +333,8 @@ def merge_reports(reports: Sequence[Report]) -> Report:
         f"{sum(islands)} islands: {paths}",
         f"statuses: {statuses}",
         f"max error: {err}",
+        *([f"{d['friction_islands']} frictional islands, max Coulomb error {max_coulomb:.3e} "
+           f"(island {coulomb_index})"] if max_coulomb is not None else []),
         f"time (summed over parts): total {t.get('total', 0):.3f} s (solve {t.get('solve', 0):.3f}, "
         f"gpu {t.get('gpu', 0):.3f}, validation {t.get('validation', 0):.3f})",
     ])
@@ -324,10 +366,13 @@ def concat_scenes_results(parts: Sequence[ScenesResult]) -> ScenesResult:
     """The result of a batch of scenes solved in consecutive parts (lists)."""
     out = object.__new__(ScenesResult)
     out.single = False
-    for attr in ("impulses", "velocity", "angular_velocity", "island_contacts", "status",
-                 "error", "path", "z", "w", "scene_ok"):
+    for attr in ("impulses", "impulse", "tangential", "velocity", "angular_velocity",
+                 "island_contacts", "status", "error", "path", "z", "w", "scene_ok",
+                 "friction_contacts", "friction_status", "friction_error", "friction_cone_error",
+                 "friction_iterations"):
         setattr(out, attr, _concat(parts, attr))
     starts = np.cumsum([0] + [len(p.scene_ok) for p in parts[:-1]])
     out.island_scene = np.concatenate([p.island_scene + s for p, s in zip(parts, starts)])
+    out.friction_scene = np.concatenate([p.friction_scene + s for p, s in zip(parts, starts)])
     out.report = merge_reports([p.report for p in parts])
     return out

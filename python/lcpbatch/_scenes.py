@@ -13,7 +13,14 @@ One scene is a pair of mappings (dicts) of arrays:
     ``b`` (C,) int: body b, −1 for the static world (default −1);
     ``point`` (C, 3): contact point; ``normal`` (C, 3): unit normal from b to a;
     ``restitution`` (C,) or a scalar in [0, 1] (default 0);
-    ``id`` (C,) int ≥ 0, optional: contact ids for warm start.
+    ``id`` (C,) int ≥ 0, optional: contact ids for warm start;
+    ``mu`` (C,) or a scalar ≥ 0: Coulomb friction coefficient (default 0,
+    frictionless); an island with any μ > 0 is solved by the exact Coulomb
+    solvers (CPU, f64);
+    ``tangent`` (C, 3), optional: the first tangent t1 of each contact's
+    friction frame (unit, orthogonal to the normal; t2 = n × t1), default
+    the library's deterministic basis of the normal. Only the frame of the
+    reported tangential parts depends on it.
 
 Conventions (seed 000): r = point − centre of mass, v_rel = (ṗ_a − ṗ_b)·n,
 impulse +z n on a and −z n on b. Unknown keys are an error (a misspelt
@@ -28,15 +35,13 @@ import numpy as np
 from ._inputs import id_array, real_array
 
 BODY_KEYS = ("inv_mass", "inv_inertia", "position", "velocity", "angular_velocity")
-CONTACT_KEYS = ("a", "b", "point", "normal", "restitution", "id")
+CONTACT_KEYS = ("a", "b", "point", "normal", "restitution", "id", "mu", "tangent")
 
 
 def _unknown(given: Mapping[str, Any], known: tuple, name: str) -> None:
     extra = sorted(set(given) - set(known))
     if extra:
-        hint = ""
-        if any(k in ("mu", "friction") for k in extra):
-            hint = " (friction is not in this version of lcpbatch)"
+        hint = " (the friction coefficient is 'mu')" if "friction" in extra else ""
         raise ValueError(f"{name}: unknown key(s) {extra}{hint}; known keys: {list(known)}")
 
 
@@ -114,5 +119,7 @@ def scene_arrays(bodies: Mapping[str, Any], contacts: Mapping[str, Any], index: 
         "point": _rows(contacts, "point", cn, (c, 3)),
         "normal": _rows(contacts, "normal", cn, (c, 3)),
         "restitution": _rows(contacts, "restitution", cn, (c,), 0.0),
+        "mu": _rows(contacts, "mu", cn, (c,), 0.0),
+        "tangent": None if contacts.get("tangent") is None else _rows(contacts, "tangent", cn, (c, 3)),
         "id": ids,
     }

@@ -1,5 +1,6 @@
 """``Solver`` (the library's solver kept between calls), and the functions
-``solve`` and ``solve_scenes`` that use a cached one per set of settings."""
+``solve``, ``solve_scenes``, ``solve_friction`` and ``simulate`` that use a
+cached one per set of settings."""
 
 from __future__ import annotations
 
@@ -9,11 +10,13 @@ from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
-from . import _inputs, _native
+from . import _friction, _inputs, _native
+from ._friction import FrictionResult
 from ._results import LcpResult, ScenesResult
 from ._scenes import scene_arrays
+from ._worlds import StepResult, World
 
-__all__ = ["Solver", "solve", "solve_scenes", "DeviceWarning", "adapters"]
+__all__ = ["Solver", "solve", "solve_scenes", "solve_friction", "simulate", "DeviceWarning", "adapters"]
 
 ArrayLike = Any
 SceneArrays = Mapping[str, ArrayLike]
@@ -65,7 +68,12 @@ class Solver:
     - ``threads``: CPU threads (0: every core); ``adapter``: part of a GPU
       adapter's name; ``api``: "auto", "vulkan", "gl", "metal", "dx12";
       ``predict``: settle easy problems before enumerating (default True);
-      ``lemke_max_pivots``, ``pgs_max_sweeps``, ``pgs_tolerance``.
+      ``lemke_max_pivots``, ``pgs_max_sweeps``, ``pgs_tolerance``;
+    - ``friction_method``: "auto" (NSGS then Alart–Curnier Newton, the
+      default), "nsgs" or "newton", for islands and problems with friction
+      (always on the CPU in f64); ``friction_tolerance``: the largest Coulomb
+      error reported as solved (default 1e-8); ``friction_max_iterations``:
+      cap on NSGS sweeps plus Newton steps (default 1000).
 
     A bad value raises ``ValueError`` naming the argument.
 
@@ -93,12 +101,17 @@ class Solver:
         lemke_max_pivots: Optional[int] = None,
         pgs_max_sweeps: Optional[int] = None,
         pgs_tolerance: Optional[float] = None,
+        friction_method: str = "auto",
+        friction_tolerance: Optional[float] = None,
+        friction_max_iterations: Optional[int] = None,
     ):
         self.settings: Dict[str, Any] = dict(
             backend=backend, solver=solver, precision=precision, all_solutions=all_solutions,
             warm_start=warm_start, tolerance=tolerance, threads=threads, adapter=adapter,
             api=api, predict=predict, lemke_max_pivots=lemke_max_pivots,
             pgs_max_sweeps=pgs_max_sweeps, pgs_tolerance=pgs_tolerance,
+            friction_method=friction_method, friction_tolerance=friction_tolerance,
+            friction_max_iterations=friction_max_iterations,
         )
         if threads < 0:
             raise ValueError(f"threads: {threads} is negative (0 means every core)")
@@ -213,6 +226,70 @@ class Solver:
         self._warn_fallback(result.report.fallback)
         return result
 
+    def solve_friction(self, W: Union[ArrayLike, Sequence[ArrayLike]], q: Union[ArrayLike, Sequence[ArrayLike]],
+                       mu: Union[ArrayLike, Sequence[ArrayLike]],
+                       ids: Optional[Union[ArrayLike, Sequence[ArrayLike]]] = None) -> FrictionResult:
+        """Solves a batch of frictional contact problems (Siconos'
+        FrictionContact3D): u = W r + q with Coulomb's law per contact (see
+        ``lcpbatch._friction``), on the CPU in f64 over every core with
+        ``friction_method``.
+
+        ``W`` (B, 3k, 3k), ``q`` (B, 3k), ``mu`` (B, k) or a scalar, float64
+        or float32, any memory order; contact i owns entries 3i (normal),
+        3i + 1, 3i + 2 (tangents). Or lists of NumPy arrays for problems of
+        different k (results are then lists). ``ids`` (B, k) integers ≥ 0:
+        contact ids; with ``warm_start=True`` each contact starts from its
+        reaction of the last call. GIL released; chunks of at most
+        ``CHUNK_FRICTION_WORK`` (3k)² with a Ctrl-C check between them.
+
+        >>> import numpy as np, lcpbatch
+        >>> s = lcpbatch.Solver(backend="cpu")
+        >>> W = np.eye(3)[None]; q = np.array([[-1.0, 0.1, 0.0]])
+        >>> r = s.solve_friction(W, q, 0.5)        # sticks: u_T = 0
+        >>> (r.r.round(6) + 0.0).tolist(), (r.u.round(6) + 0.0).tolist()
+        ([[1.0, -0.1, 0.0]], [[0.0, 0.0, 0.0]])
+        """
+        if _inputs.is_ragged(W):
+            ws, qs, ms, idl = _friction.ragged(W, q, mu, ids)
+            d = self._native.solve_friction_ragged(ws, qs, ms, idl)
+            result = FrictionResult(d, ragged=True, n=None)
+        else:
+            w, qa, ma, idsa = _friction.dense(W, q, mu, ids)
+            d = self._native.solve_friction_dense(w, qa, ma, idsa)
+            result = FrictionResult(d, ragged=False, n=w.shape[1])
+        self._warn_fallback(result.report.fallback)
+        return result
+
+    def step_worlds(self, worlds: Union[World, Sequence[World]], dt: float, steps: int = 1) -> StepResult:
+        """Advances every world by ``steps`` steps of ``dt`` seconds, in
+        place: per step one library call (collision, one batch of islands
+        for all worlds, integration) with the GIL released, and a Ctrl-C
+        check between steps (after ``KeyboardInterrupt`` the worlds hold the
+        last finished step). A world gives the same trajectory alone or in a
+        batch, and ``steps=2`` equals two calls of ``steps=1``.
+
+        >>> import lcpbatch
+        >>> s = lcpbatch.Solver(backend="cpu")
+        >>> w = lcpbatch.World.generate("slide")           # a box sliding at 2 m/s, μ = 0.5
+        >>> out = s.step_worlds([w], dt=0.01, steps=50)
+        >>> bool(out.velocities[0][1, 0] < 2.0), int(out.unsolved.sum())
+        (True, 0)
+        """
+        ws = [worlds] if isinstance(worlds, World) else list(worlds)
+        for i, w in enumerate(ws):
+            if not isinstance(w, World):
+                raise TypeError(f"worlds[{i}]: expected an lcpbatch.World, got {type(w).__name__}")
+        if isinstance(steps, bool) or not isinstance(steps, (int, np.integer)) or steps < 0:
+            raise ValueError(f"steps: {steps!r} is not an integer ≥ 0")
+        dt = float(dt)
+        if not np.isfinite(dt) or dt <= 0:
+            raise ValueError(f"dt: {dt} is not a positive number of seconds")
+        d = self._native.step_worlds([w._w for w in ws], dt, int(steps))
+        result = StepResult(d, ws)
+        if result.report is not None:
+            self._warn_fallback(result.report.fallback)
+        return result
+
     def __repr__(self) -> str:
         return f"<lcpbatch.Solver on {self.device}; {self.choice}>"
 
@@ -285,3 +362,43 @@ def solve_scenes(bodies: Union[SceneArrays, Sequence[SceneArrays]],
     [[0.0, 0.5, 0.0]]
     """
     return _cached(**settings).solve_scenes(bodies, contacts)
+
+
+def solve_friction(W: Union[ArrayLike, Sequence[ArrayLike]], q: Union[ArrayLike, Sequence[ArrayLike]],
+                   mu: Union[ArrayLike, Sequence[ArrayLike]], *, method: str = "auto",
+                   tolerance: Optional[float] = None, max_iterations: Optional[int] = None,
+                   ids: Optional[Union[ArrayLike, Sequence[ArrayLike]]] = None, **settings: Any) -> FrictionResult:
+    """Solves a batch of frictional contact problems (Siconos'
+    FrictionContact3D form; see :meth:`Solver.solve_friction`). ``method``:
+    "auto", "nsgs" or "newton"; ``tolerance``: the largest Coulomb error
+    reported as solved (default 1e-8); ``ids``: contact ids (B, k) for warm
+    start from the last call with the same settings. Other keyword arguments
+    are those of :class:`Solver`.
+
+    Seed 001's projection example: a contact with W = I, free velocity
+    q = (−1, 3, −4) (approaching, sliding with v_T = (3, −4)) and μ = 0.5 gets
+    r_N = 1 and r_T = −μ r_N v_T/‖v_T‖ = (−0.3, 0.4):
+
+    >>> import numpy as np, lcpbatch
+    >>> r = lcpbatch.solve_friction(np.eye(3)[None], np.array([[-1.0, 3.0, -4.0]]), np.array([[0.5]]))
+    >>> r.r.round(9).tolist(), bool(r.coulomb_error[0] < 1e-10)
+    ([[1.0, -0.3, 0.4]], True)
+    """
+    s = _cached(friction_method=method, friction_tolerance=tolerance,
+                friction_max_iterations=max_iterations, warm_start=ids is not None, **settings)
+    return s.solve_friction(W, q, mu, ids=ids)
+
+
+def simulate(worlds: Union[World, Sequence[World]], dt: float, steps: int = 1, **settings: Any) -> StepResult:
+    """Steps a batch of worlds ``steps`` times by ``dt`` seconds, in place
+    (see :meth:`Solver.step_worlds`); keyword arguments are those of
+    :class:`Solver` (``warm_start=True`` carries contact impulses from step
+    to step by contact id).
+
+    >>> import lcpbatch
+    >>> w = lcpbatch.World.generate("spheres", 1, seed=3)
+    >>> out = lcpbatch.simulate(w, dt=1 / 60, steps=240, backend="cpu")
+    >>> float(out.velocities[0][1:].max()) < 1e-3    # dropped, it came to rest
+    True
+    """
+    return _cached(**settings).step_worlds(worlds, dt, steps)

@@ -19,10 +19,12 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 mod batch;
+mod friction;
 mod report;
 mod scenes;
 mod settings;
 mod solver;
+mod worlds;
 
 /// The library's error as the Python exception a NumPy user expects: bad
 /// values and unsupported requests are `ValueError`s, the rest `RuntimeError`.
@@ -98,6 +100,7 @@ fn _panic_for_test() -> PyResult<()> {
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<solver::NativeSolver>()?;
+    m.add_class::<worlds::NativeWorld>()?;
     m.add_function(wrap_pyfunction!(adapters, m)?)?;
     m.add_function(wrap_pyfunction!(status_names, m)?)?;
     m.add_function(wrap_pyfunction!(path_names, m)?)?;
@@ -105,5 +108,6 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("CHUNK_PROBLEMS", batch::CHUNK_PROBLEMS)?;
     m.add("CHUNK_WORK", batch::CHUNK_WORK)?;
     m.add("CHUNK_CONTACTS", scenes::CHUNK_CONTACTS)?;
+    m.add("CHUNK_FRICTION_WORK", friction::CHUNK_FRICTION_WORK)?;
     Ok(())
 }

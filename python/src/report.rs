@@ -87,10 +87,38 @@ fn add_gpu(a: Option<GpuFigures>, b: Option<GpuFigures>) -> Option<GpuFigures> {
     }
 }
 
+/// Appends the frictional parts of `next` to `t`: scene indices shifted by
+/// `scenes_before`, the scenes' frictional island ranges past `t`'s islands,
+/// statuses summed, the largest Coulomb error (NaN wins, as in the library's
+/// `Report::set_friction`) with its index in the whole batch. Runs before
+/// the scenes are appended.
+fn merge_friction(t: &mut Report, next: &mut Report, scenes_before: usize) {
+    let before = t.friction.len();
+    for isl in &mut next.friction {
+        isl.scene = isl.scene.map(|s| s + scenes_before);
+    }
+    for s in &mut next.scenes {
+        if let Some(f) = &mut s.friction {
+            f.islands = f.islands.start + before..f.islands.end + before;
+        }
+    }
+    for (a, b) in t.friction_statuses.iter_mut().zip(next.friction_statuses) {
+        *a += b;
+    }
+    if let Some((e, i)) = next.max_coulomb_error {
+        if !t.max_coulomb_error.is_some_and(|(m, _)| e <= m) {
+            t.max_coulomb_error = Some((e, i + before));
+        }
+    }
+    t.friction.append(&mut next.friction);
+}
+
 /// Appends the report of the next chunk to `total` (None: the first chunk).
-/// Scene indices and island ranges of `next` are shifted past `total`'s.
+/// Scene indices and island ranges of `next` are shifted past `total`'s
+/// (frictional islands too, see [`merge_friction`]).
 pub(crate) fn merge(total: Option<Report>, mut next: Report, scenes_before: usize) -> Report {
     let Some(mut t) = total else { return next };
+    merge_friction(&mut t, &mut next, scenes_before);
     let islands_before = t.islands.len();
     for isl in &mut next.islands {
         isl.scene = isl.scene.map(|s| s + scenes_before);
@@ -188,6 +216,18 @@ pub(crate) fn to_dict<'py>(
     ];
     d.set_item("timings", dict_of(py, &timings)?)?;
     d.set_item("gpu", r.gpu.map(|g| gpu_dict(py, &g)).transpose()?)?;
+    d.set_item("friction_islands", r.friction.len())?;
+    let statuses: Vec<(&str, usize)> = Status::ALL
+        .iter()
+        .zip(r.friction_statuses)
+        .map(|(s, n)| (s.name(), n))
+        .collect();
+    d.set_item("friction_statuses", dict_of(py, &statuses)?)?;
+    d.set_item("max_coulomb_error", r.max_coulomb_error.map(|(e, _)| e))?;
+    d.set_item(
+        "max_coulomb_error_index",
+        r.max_coulomb_error.map(|(_, i)| i),
+    )?;
     d.set_item("chunks", chunks)?;
     Ok(d)
 }

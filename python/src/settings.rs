@@ -3,7 +3,7 @@
 //! `ValueError` naming the argument and the words it accepts); the ranges are
 //! checked by [`lcpbatch::Settings::validate`] when the solver is built.
 
-use lcpbatch::{Backend, BackendChoice, Method, Precision, Settings};
+use lcpbatch::{Backend, BackendChoice, FrictionMethod, Method, Precision, Settings};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
@@ -23,6 +23,10 @@ pub(crate) struct Args<'a> {
     pub lemke_max_pivots: Option<u64>,
     pub pgs_max_sweeps: Option<u64>,
     pub pgs_tolerance: Option<f64>,
+    /// "auto", "nsgs" or "newton" (islands and problems with friction).
+    pub friction_method: &'a str,
+    pub friction_tolerance: Option<f64>,
+    pub friction_max_iterations: Option<u64>,
 }
 
 fn bad(arg: &str, got: &str, allowed: &str) -> PyErr {
@@ -74,6 +78,20 @@ impl Args<'_> {
         }
         if let Some(t) = self.pgs_tolerance {
             s.pgs_tolerance = t;
+        }
+        s.friction_method = FrictionMethod::from_name(&self.friction_method.to_ascii_lowercase())
+            .ok_or_else(|| {
+            bad(
+                "friction_method",
+                self.friction_method,
+                "'auto', 'nsgs', 'newton'",
+            )
+        })?;
+        if let Some(t) = self.friction_tolerance {
+            s.friction_tolerance = t;
+        }
+        if let Some(n) = self.friction_max_iterations {
+            s.friction_max_iterations = n;
         }
         // "settings: tolerance: 2 is not in (0, 1)" names the argument too.
         s.validate().map_err(crate::to_py_err)?;

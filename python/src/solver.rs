@@ -9,12 +9,12 @@ use std::ops::Range;
 use std::sync::{Mutex, MutexGuard};
 use std::time::Instant;
 
-use lcpbatch::{Lcp, Report, Scene, Settings, Solver};
-use numpy::{PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3};
+use lcpbatch::{FrictionProblem, Lcp, Report, Scene, Settings, Solver};
+use numpy::{IntoPyArray, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::{batch, guard, report, scenes, settings::Args, to_py_err};
+use crate::{batch, friction, guard, report, scenes, settings::Args, to_py_err, worlds};
 
 /// The library's solver behind a mutex (see the module docs).
 #[pyclass(module = "lcpbatch._native")]
@@ -78,16 +78,39 @@ impl NativeSolver {
         d.set_item("report", report::to_dict(py, &r, count)?)?;
         Ok(d)
     }
+
+    fn frictional<'py>(
+        &self,
+        py: Python<'py>,
+        problems: Vec<FrictionProblem>,
+        ids: Option<Vec<Vec<u64>>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let ranges = friction::chunks(problems.iter().map(FrictionProblem::contacts));
+        let (r, count) = self.run_chunks(
+            py,
+            ranges,
+            |_| 0,
+            |s, r| match &ids {
+                Some(ids) => s.solve_friction_keyed(&problems[r.clone()], &ids[r]),
+                None => s.solve_friction(&problems[r]),
+            },
+        )?;
+        let d = PyDict::new(py);
+        friction::problems_into(py, &d, &r.friction)?;
+        d.set_item("report", report::to_dict(py, &r, count)?)?;
+        Ok(d)
+    }
 }
 
 #[pymethods]
 impl NativeSolver {
-    /// Builds the solver (opens the device), GIL released. Thirteen keyword
+    /// Builds the solver (opens the device), GIL released. Sixteen keyword
     /// arguments on purpose: one per setting a Python user may change.
     #[new]
     #[pyo3(signature = (backend="auto", solver="auto", precision="auto", all_solutions=false,
         warm_start=false, tolerance=None, threads=0, adapter=None, api="auto", predict=true,
-        lemke_max_pivots=None, pgs_max_sweeps=None, pgs_tolerance=None))]
+        lemke_max_pivots=None, pgs_max_sweeps=None, pgs_tolerance=None, friction_method="auto",
+        friction_tolerance=None, friction_max_iterations=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         py: Python<'_>,
@@ -104,6 +127,9 @@ impl NativeSolver {
         lemke_max_pivots: Option<u64>,
         pgs_max_sweeps: Option<u64>,
         pgs_tolerance: Option<f64>,
+        friction_method: &str,
+        friction_tolerance: Option<f64>,
+        friction_max_iterations: Option<u64>,
     ) -> PyResult<Self> {
         let settings: Settings = Args {
             backend,
@@ -119,6 +145,9 @@ impl NativeSolver {
             lemke_max_pivots,
             pgs_max_sweeps,
             pgs_tolerance,
+            friction_method,
+            friction_tolerance,
+            friction_max_iterations,
         }
         .settings()?;
         let solver = py.detach(|| guard(|| Solver::new(settings).map_err(to_py_err)))?;
@@ -193,8 +222,94 @@ impl NativeSolver {
         let (r, count) =
             self.run_chunks(py, ranges, |r| r.start, |s, r| s.solve_scenes(&scenes[r]))?;
         let d = PyDict::new(py);
-        scenes::scenes_into(py, &d, &r)?;
+        scenes::scenes_into(py, &d, &scenes, &r)?;
         d.set_item("report", report::to_dict(py, &r, count)?)?;
+        Ok(d)
+    }
+
+    /// A dense batch of frictional problems: W (B, 3k, 3k), q (B, 3k),
+    /// mu (B, k), ids (B, k) or None.
+    #[pyo3(signature = (w, q, mu, ids=None))]
+    fn solve_friction_dense<'py>(
+        &self,
+        py: Python<'py>,
+        w: PyReadonlyArray3<'py, f64>,
+        q: PyReadonlyArray2<'py, f64>,
+        mu: PyReadonlyArray2<'py, f64>,
+        ids: Option<PyReadonlyArray2<'py, u64>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let problems = friction::dense(&w, &q, &mu)?;
+        self.frictional(py, problems, ids.as_ref().map(batch::dense_ids))
+    }
+
+    /// A ragged batch of frictional problems: lists of arrays.
+    #[pyo3(signature = (w, q, mu, ids=None))]
+    fn solve_friction_ragged<'py>(
+        &self,
+        py: Python<'py>,
+        w: Vec<PyReadonlyArray2<'py, f64>>,
+        q: Vec<PyReadonlyArray1<'py, f64>>,
+        mu: Vec<PyReadonlyArray1<'py, f64>>,
+        ids: Option<Vec<PyReadonlyArray1<'py, u64>>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let problems = friction::ragged(&w, &q, &mu)?;
+        self.frictional(py, problems, ids.as_deref().map(batch::ragged_ids))
+    }
+
+    /// Advances `worlds` by `steps` steps of `dt` seconds, one library call
+    /// per step with the GIL released and a Ctrl-C check between steps. The
+    /// worlds are updated in place (after an interruption: to the last
+    /// step finished). Returns the per-step summaries of
+    /// [`worlds::summaries_into`], per step `unsolved` and the seconds of
+    /// `collision`, `solve`, `integrate`, and the last step's `report`.
+    fn step_worlds<'py>(
+        &self,
+        py: Python<'py>,
+        worlds: Vec<Bound<'py, worlds::NativeWorld>>,
+        dt: f64,
+        steps: usize,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let mut ws: Vec<lcpbatch::World> =
+            worlds.iter().map(|w| w.borrow().world.clone()).collect();
+        let (mut summaries, mut unsolved) = (Vec::with_capacity(steps), Vec::new());
+        let mut timings: [Vec<f64>; 3] = Default::default();
+        let mut last = None;
+        let mut outcome = Ok(());
+        for _ in 0..steps {
+            let step =
+                py.detach(|| guard(|| self.lock().step_worlds(&mut ws, dt).map_err(to_py_err)));
+            match step {
+                Ok(rep) => {
+                    summaries.push(rep.worlds);
+                    unsolved.push(rep.unsolved as i64);
+                    timings[0].push(rep.timings.collision);
+                    timings[1].push(rep.timings.solve);
+                    timings[2].push(rep.timings.integrate);
+                    last = Some(rep.solve);
+                }
+                Err(e) => {
+                    outcome = Err(e);
+                    break;
+                }
+            }
+            if let Err(e) = py.check_signals() {
+                outcome = Err(e);
+                break;
+            }
+        }
+        for (w, state) in worlds.iter().zip(ws) {
+            w.borrow_mut().world = state;
+        }
+        outcome?;
+        let d = PyDict::new(py);
+        worlds::summaries_into(py, &d, &summaries, worlds.len())?;
+        d.set_item("unsolved", unsolved.into_pyarray(py))?;
+        let [collision, solve, integrate] = timings;
+        d.set_item("collision", collision.into_pyarray(py))?;
+        d.set_item("solve", solve.into_pyarray(py))?;
+        d.set_item("integrate", integrate.into_pyarray(py))?;
+        let report = last.map(|r| report::to_dict(py, &r, 1)).transpose()?;
+        d.set_item("report", report)?;
         Ok(d)
     }
 

@@ -95,8 +95,8 @@ def test_scene_errors_name_the_scene_the_item_and_the_field():
         lcpbatch.solve_scenes(ball(), dict(GROUND, b=[-2]), backend="cpu")
     with pytest.raises(ValueError, match=r"bodies\[0\]\['position'\]: expected shape \(1, 3\)"):
         lcpbatch.solve_scenes(dict(ball(), position=[0.0, 0.5, 0.0]), GROUND, backend="cpu")
-    with pytest.raises(ValueError, match=r"unknown key\(s\) \['mu'\] \(friction is not in this version"):
-        lcpbatch.solve_scenes(ball(), dict(GROUND, mu=[0.5]), backend="cpu")
+    with pytest.raises(ValueError, match=r"unknown key\(s\) \['friction'\] \(the friction coefficient is 'mu'\)"):
+        lcpbatch.solve_scenes(ball(), dict(GROUND, friction=[0.5]), backend="cpu")
     with pytest.raises(ValueError, match=r"bodies\[0\]: missing key 'position'"):
         b = ball()
         del b["position"]
