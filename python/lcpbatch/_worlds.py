@@ -82,11 +82,16 @@ class World:
         return self._w.to_json()
 
     def copy(self) -> "World":
-        """An independent copy."""
-        return World.from_json(self.to_json())[0]
+        """An independent copy, bit for bit."""
+        return World(self._w.copy())
+
+    def __copy__(self) -> "World":
+        return self.copy()
 
     def __reduce__(self) -> Tuple[Any, ...]:
-        return (_from_json_one, (self.to_json(),))
+        # The JSON text, then the state arrays, so that the state travels bit
+        # for bit whatever the text's decimal form.
+        return (_restore, (self.to_json(), self.state()))
 
     @property
     def shapes(self) -> List[str]:
@@ -144,8 +149,10 @@ class World:
         return f"<lcpbatch.World: {parts or 'no bodies'}>"
 
 
-def _from_json_one(text: str) -> World:
-    return World.from_json(text)[0]
+def _restore(text: str, state: Tuple[np.ndarray, ...]) -> World:
+    w = World.from_json(text)[0]
+    w.set_state(*state)
+    return w
 
 
 class StepResult:

@@ -82,6 +82,11 @@ impl NativeWorld {
         WorldKind::ALL.iter().map(|(_, n)| *n).collect()
     }
 
+    /// An independent copy (the same bits, runtime state included).
+    fn copy(&self) -> NativeWorld {
+        self.clone()
+    }
+
     /// The world in the library's JSON world format.
     fn to_json(&self) -> String {
         worlds_to_json(std::slice::from_ref(&self.world))
