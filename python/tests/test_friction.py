@@ -251,3 +251,29 @@ def test_friction_errors_name_the_argument_index_and_fault():
     bodies, contacts = point_mass_on_ground((1.0, 0.0), 1.0, 0.5, tangent=[0, 1.0, 0])
     with pytest.raises(ValueError, match=r"scene 0, contact 0: field `tangent`"):
         lcpbatch.solve_scenes(bodies, contacts, backend="cpu")
+
+
+def test_the_extensions_chunks_merge_the_friction_parts():
+    """More contacts than CHUNK_CONTACTS: two library calls, one report. Every
+    other scene has friction; the frictional islands keep their scene index
+    in the whole batch and the largest Coulomb error its island index."""
+    count = lcpbatch.CHUNK_CONTACTS + 2
+    rng = np.random.default_rng(5)
+    vt = rng.standard_normal((count, 2))
+    bodies, contacts = [], []
+    for i in range(count):
+        b, c = point_mass_on_ground(vt[i], 1.0 + i % 3, 0.5 if i % 2 == 0 else 0.0)
+        bodies.append(b)
+        contacts.append(c)
+    r = lcpbatch.solve_scenes(bodies, contacts, backend="cpu")
+    assert r.report.chunks == 2
+    np.testing.assert_array_equal(r.friction_scene, np.arange(0, count, 2))
+    assert r.report.friction_islands == len(r.friction_status) == (count + 1) // 2
+    assert r.report.friction_statuses["solved"] == (count + 1) // 2
+    assert r.report.max_coulomb_error == r.friction_error.max()
+    assert r.friction_error[r.report.max_coulomb_error_index] == r.friction_error.max()
+    assert r.report.statuses["solved"] == count // 2          # the frictionless islands
+    # Each frictional answer is seed 001's projection (W = I per scene).
+    gamma_n = 1.0 + np.arange(0, count, 2) % 3
+    expected = -vt[::2] * np.minimum(1.0, 0.5 * gamma_n / np.hypot(vt[::2, 0], vt[::2, 1]))[:, None]
+    np.testing.assert_allclose(np.array([t[0] for t in r.tangential[::2]]), expected, atol=1e-12)

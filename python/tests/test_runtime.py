@@ -76,7 +76,7 @@ def test_ctrl_c_stops_a_long_batch():
     assert waited < 10, f"stopped {waited:.1f} s after Ctrl-C"
 
 
-@pytest.mark.parametrize("module", ["lcpbatch", "lcpbatch._results", "lcpbatch._solver"])
+@pytest.mark.parametrize("module", ["lcpbatch", "lcpbatch._results", "lcpbatch._solver", "lcpbatch._friction", "lcpbatch._worlds"])
 def test_docstring_examples_run(module):
     os.environ.setdefault("XDG_RUNTIME_DIR", "/tmp")
     result = doctest.testmod(importlib.import_module(module), verbose=False)

@@ -3,6 +3,11 @@ arrays, Solver.step_worlds / simulate."""
 
 import json
 import pickle
+import signal
+import subprocess
+import sys
+import textwrap
+import time
 
 import numpy as np
 import pytest
@@ -110,3 +115,29 @@ def test_world_errors_raise_the_right_exception():
         lcpbatch.World.from_json('{"worlds": [{"bodies": [], "bodies": []}]}')
     with pytest.raises(ValueError, match=r"unknown field"):
         lcpbatch.World.from_json('{"worlds": [{"bodies": [], "gravty": [0, 0, 0]}]}')
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="SIGINT to a child process")
+def test_ctrl_c_stops_stepping_and_keeps_the_last_finished_step():
+    code = textwrap.dedent(
+        """
+        import time, lcpbatch
+        worlds = [lcpbatch.World.generate("rain", 32, seed=s) for s in range(4)]
+        s = lcpbatch.Solver(backend="cpu")
+        print("stepping", flush=True)
+        try:
+            s.step_worlds(worlds, dt=0.01, steps=100000)
+            print("finished", flush=True)
+        except KeyboardInterrupt:
+            moved = worlds[0].positions[1, 1] != lcpbatch.World.generate("rain", 32, seed=0).positions[1, 1]
+            print("interrupted", moved, flush=True)
+        """
+    )
+    p = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, text=True)
+    assert p.stdout.readline().strip() == "stepping"
+    time.sleep(1.5)
+    sent = time.perf_counter()
+    p.send_signal(signal.SIGINT)
+    out, _ = p.communicate(timeout=60)
+    assert out.strip() == "interrupted True", out
+    assert time.perf_counter() - sent < 10
