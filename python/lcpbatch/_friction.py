@@ -14,7 +14,7 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
-from ._inputs import id_array, real_array
+from ._inputs import id_array, ragged_ids, real_array
 from ._results import Report, Status, _split
 
 __all__ = ["FrictionResult", "dense", "ragged"]
@@ -84,17 +84,7 @@ def ragged(W: Sequence[Any], q: Any, mu: Any, ids: Any) -> Tuple[List[np.ndarray
         ws.append(w)
         qs.append(qa)
         ms.append(m)
-    idl = None
-    if ids is not None:
-        if not isinstance(ids, (list, tuple)) or len(ids) != len(ws):
-            raise ValueError(f"ids: expected a list of {len(ws)} arrays, one per problem")
-        idl = []
-        for i, k in enumerate(ids):
-            a = id_array(k, f"ids[{i}]")
-            if a.shape != ms[i].shape:
-                raise ValueError(f"ids[{i}]: expected shape {ms[i].shape} (one per contact), got {a.shape}")
-            idl.append(a)
-    return ws, qs, ms, idl
+    return ws, qs, ms, ragged_ids(ids, [m.shape for m in ms], " (one per contact)")
 
 
 class FrictionResult:

@@ -89,17 +89,23 @@ def ragged(M: Sequence[Any], q: Any, ids: Any) -> Ragged:
             raise ValueError(f"q[{i}]: expected shape {(m.shape[0],)} to match M[{i}] {m.shape}, got {qa.shape}")
         ms.append(m)
         qs.append(qa)
-    idl = None
-    if ids is not None:
-        if not isinstance(ids, (list, tuple)) or len(ids) != len(ms):
-            raise ValueError(f"ids: expected a list of {len(ms)} arrays, one per problem")
-        idl = []
-        for i, k in enumerate(ids):
-            a = id_array(k, f"ids[{i}]")
-            if a.shape != qs[i].shape:
-                raise ValueError(f"ids[{i}]: expected shape {qs[i].shape}, got {a.shape}")
-            idl.append(a)
-    return ms, qs, idl
+    return ms, qs, ragged_ids(ids, [x.shape for x in qs], "")
+
+
+def ragged_ids(ids: Any, shapes: Sequence[Tuple[int, ...]], what: str) -> Optional[List[np.ndarray]]:
+    """A list of id arrays, one of each shape in ``shapes`` (``what`` says
+    what an id stands for in the error), or None."""
+    if ids is None:
+        return None
+    if not isinstance(ids, (list, tuple)) or len(ids) != len(shapes):
+        raise ValueError(f"ids: expected a list of {len(shapes)} arrays, one per problem")
+    idl = []
+    for i, (k, shape) in enumerate(zip(ids, shapes)):
+        a = id_array(k, f"ids[{i}]")
+        if a.shape != shape:
+            raise ValueError(f"ids[{i}]: expected shape {shape}{what}, got {a.shape}")
+        idl.append(a)
+    return idl
 
 
 def check_enumeration_size(sizes: Union[Sequence[int], np.ndarray], solver: str, backend: str) -> None:

@@ -34,12 +34,18 @@ pub(crate) const CHUNK_WORK: u64 = 1 << 23;
 /// Splits problems of sizes `ns` into consecutive chunks under both limits
 /// (every chunk holds at least one problem).
 pub(crate) fn chunks(ns: impl Iterator<Item = usize>) -> Vec<Range<usize>> {
+    chunks_by(ns.map(|n| 1u64 << n.min(24)), CHUNK_WORK)
+}
+
+/// Splits problems of work `costs` into consecutive chunks of at most
+/// [`CHUNK_PROBLEMS`] problems and `limit` work (every chunk holds at least
+/// one problem, however costly).
+pub(crate) fn chunks_by(costs: impl Iterator<Item = u64>, limit: u64) -> Vec<Range<usize>> {
     let mut out = Vec::new();
     let (mut start, mut work) = (0usize, 0u64);
     let mut end = 0usize;
-    for n in ns {
-        let cost = 1u64 << n.min(24);
-        if end > start && (end - start == CHUNK_PROBLEMS || work + cost > CHUNK_WORK) {
+    for cost in costs {
+        if end > start && (end - start == CHUNK_PROBLEMS || work + cost > limit) {
             out.push(start..end);
             start = end;
             work = 0;
@@ -54,7 +60,7 @@ pub(crate) fn chunks(ns: impl Iterator<Item = usize>) -> Vec<Range<usize>> {
 }
 
 /// The first entry of `values` that is not finite, as (position, value).
-fn first_non_finite<'a>(values: impl Iterator<Item = &'a f64>) -> Option<(usize, f64)> {
+pub(crate) fn first_non_finite<'a>(values: impl Iterator<Item = &'a f64>) -> Option<(usize, f64)> {
     values
         .enumerate()
         .find(|(_, v)| !v.is_finite())
@@ -87,7 +93,7 @@ fn lcp_of(
     })
 }
 
-fn join(ix: &[usize]) -> String {
+pub(crate) fn join(ix: &[usize]) -> String {
     ix.iter()
         .map(usize::to_string)
         .collect::<Vec<_>>()

@@ -16,42 +16,17 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
+use crate::batch::{first_non_finite, join};
+
 /// At most this much work per chunk, counting (3k)² per problem of k
 /// contacts (one NSGS sweep or Newton step of it): 65,536 problems of one
 /// contact, 4,096 of four. Ctrl-C is checked between chunks.
 pub(crate) const CHUNK_FRICTION_WORK: u64 = 1 << 19;
 
 /// Splits problems of `ks` contacts into consecutive chunks under
-/// [`CHUNK_FRICTION_WORK`] and [`crate::batch::CHUNK_PROBLEMS`] (every chunk
-/// holds at least one problem).
+/// [`CHUNK_FRICTION_WORK`] and [`crate::batch::CHUNK_PROBLEMS`].
 pub(crate) fn chunks(ks: impl Iterator<Item = usize>) -> Vec<Range<usize>> {
-    let mut out = Vec::new();
-    let (mut start, mut end, mut work) = (0usize, 0usize, 0u64);
-    for k in ks {
-        let cost = 9 * (k as u64) * (k as u64);
-        if end > start
-            && (end - start == crate::batch::CHUNK_PROBLEMS || work + cost > CHUNK_FRICTION_WORK)
-        {
-            out.push(start..end);
-            start = end;
-            work = 0;
-        }
-        work += cost;
-        end += 1;
-    }
-    if end > start {
-        out.push(start..end);
-    }
-    out
-}
-
-/// The first entry of `values` that is not finite (or, with `nonneg`, is
-/// negative), as (position, value).
-fn first_bad<'a>(values: impl Iterator<Item = &'a f64>, nonneg: bool) -> Option<(usize, f64)> {
-    values
-        .enumerate()
-        .find(|(_, v)| !v.is_finite() || (nonneg && **v < 0.0))
-        .map(|(k, v)| (k, *v))
+    crate::batch::chunks_by(ks.map(|k| 9 * (k as u64) * (k as u64)), CHUNK_FRICTION_WORK)
 }
 
 /// One problem from views of W (3k, 3k), q (3k) and μ (k); `at` writes the
@@ -63,19 +38,24 @@ fn problem_of(
     at: &dyn Fn(&[usize]) -> String,
 ) -> PyResult<FrictionProblem> {
     let n = q.len();
-    if let Some((k, v)) = first_bad(w.iter(), false) {
+    if let Some((k, v)) = first_non_finite(w.iter()) {
         return Err(PyValueError::new_err(format!(
             "W{} is {v}: every entry of W must be finite",
             at(&[k / n, k % n])
         )));
     }
-    if let Some((k, v)) = first_bad(q.iter(), false) {
+    if let Some((k, v)) = first_non_finite(q.iter()) {
         return Err(PyValueError::new_err(format!(
             "q{} is {v}: every entry of q must be finite",
             at(&[k])
         )));
     }
-    if let Some((k, v)) = first_bad(mu.iter(), true) {
+    if let Some((k, v)) = mu
+        .iter()
+        .enumerate()
+        .find(|(_, v)| !v.is_finite() || **v < 0.0)
+        .map(|(k, v)| (k, *v))
+    {
         return Err(PyValueError::new_err(format!(
             "mu{} is {v}: a friction coefficient must be finite and ≥ 0",
             at(&[k])
@@ -86,13 +66,6 @@ fn problem_of(
         q: q.to_vec(),
         mu: mu.to_vec(),
     })
-}
-
-fn join(ix: &[usize]) -> String {
-    ix.iter()
-        .map(usize::to_string)
-        .collect::<Vec<_>>()
-        .join(", ")
 }
 
 /// A dense batch (shapes checked in Python).

@@ -241,6 +241,8 @@ def test_friction_errors_name_the_argument_index_and_fault():
             lcpbatch.solve_friction(*args, backend="cpu")
     with pytest.raises(ValueError, match=r"ids: expected shape \(1, 1\)"):
         lcpbatch.solve_friction(W, q, mu, ids=[[1, 2]], backend="cpu")
+    with pytest.raises(ValueError, match=r"ids\[0\]: expected shape \(1,\) \(one per contact\), got \(2,\)"):
+        lcpbatch.solve_friction([W[0]], [q[0]], [mu[0]], ids=[np.array([1, 2])], backend="cpu")
     with pytest.raises(ValueError, match=r"friction_method: 'fast' is not one of"):
         lcpbatch.Solver(friction_method="fast")
     with pytest.raises(ValueError, match=r"friction_tolerance"):
