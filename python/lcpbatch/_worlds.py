@@ -16,7 +16,7 @@ import numpy as np
 from . import _native
 from ._results import Report
 
-__all__ = ["World", "StepResult"]
+__all__ = ["World", "StepResult", "concat_step_results"]
 
 
 class World:
@@ -204,3 +204,22 @@ class StepResult:
         steps, worlds = self.kinetic.shape
         return (f"<lcpbatch.StepResult: {steps} step(s) of {worlds} world(s); "
                 f"{int(self.unsolved.sum())} unsolved island(s)>")
+
+
+def concat_step_results(parts: Sequence[StepResult], worlds: Sequence[World]) -> StepResult:
+    """The result of a batch of worlds stepped in consecutive parts (the
+    same steps each): per-world arrays side by side, ``unsolved`` and the
+    seconds per step summed, the parts' last reports merged."""
+    from ._results import merge_reports
+
+    out = object.__new__(StepResult)
+    for attr in ("kinetic", "potential", "max_penetration", "max_error", "contacts", "islands", "awake"):
+        setattr(out, attr, np.concatenate([getattr(p, attr) for p in parts], axis=1))
+    out.unsolved = np.sum([p.unsolved for p in parts], axis=0)
+    out.timings = {k: np.sum([p.timings[k] for p in parts], axis=0) for k in parts[0].timings}
+    reports = [p.report for p in parts if p.report is not None]
+    out.report = merge_reports(reports) if reports else None
+    out.worlds = list(worlds)
+    for attr in ("positions", "orientations", "velocities", "angular_velocities"):
+        setattr(out, attr, [x for p in parts for x in getattr(p, attr)])
+    return out

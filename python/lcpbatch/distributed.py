@@ -1,4 +1,4 @@
-"""Shard a batch of LCPs or scenes over an existing Dask cluster.
+"""Shard a batch of LCPs, scenes or worlds over an existing Dask cluster.
 
 Dask does the scheduling; this module only cuts the batch into consecutive
 shards, scatters them to the workers, solves each shard with the worker's
@@ -19,12 +19,16 @@ solver uses every core of its machine (``threads=0``), or give
 ``threads=k`` and ``--nthreads`` to match.
 
 >>> from dask.distributed import Client, LocalCluster      # doctest: +SKIP
->>> import numpy as np, lcpbatch.distributed as ld         # doctest: +SKIP
+>>> import numpy as np, lcpbatch, lcpbatch.distributed as ld  # doctest: +SKIP
 >>> client = Client(LocalCluster(n_workers=2, threads_per_worker=1))  # doctest: +SKIP
 >>> M = np.tile(np.eye(3), (1000, 1, 1)); q = -np.ones((1000, 3))      # doctest: +SKIP
 >>> r = ld.solve(client, M, q, backend="cpu")              # doctest: +SKIP
 >>> r.z.shape, sorted(r.workers)                           # doctest: +SKIP
 ((1000, 3), ['tcp://127.0.0.1:…', 'tcp://127.0.0.1:…'])
+>>> worlds = [lcpbatch.World.generate("rain", 32, seed=s) for s in range(64)]  # doctest: +SKIP
+>>> out = ld.simulate(client, worlds, dt=0.01, steps=100, backend="cpu")     # doctest: +SKIP
+>>> out.kinetic.shape                                      # doctest: +SKIP
+(100, 64)
 """
 
 from __future__ import annotations
@@ -47,8 +51,9 @@ except ImportError as e:  # pragma: no cover - exercised without the extra
 from . import _inputs
 from ._results import LcpResult, ScenesResult, concat_lcp_results, concat_scenes_results
 from ._solver import Solver
+from ._worlds import StepResult, World, concat_step_results
 
-__all__ = ["DistributedSolver", "solve", "solve_scenes"]
+__all__ = ["DistributedSolver", "solve", "solve_scenes", "simulate"]
 
 
 class SolverPlugin(WorkerPlugin):
@@ -86,6 +91,9 @@ def _solve_shard(name: str, kind: str, shard: Tuple[Any, ...]) -> Tuple[Any, str
     if kind == "lcp":
         result = solver.solve(*shard)
         size = len(result)
+    elif kind == "worlds":
+        result = solver.step_worlds(*shard)
+        size = len(result.worlds)
     else:
         result = solver.solve_scenes(*shard)
         size = len(result.scene_ok)
@@ -135,12 +143,15 @@ class DistributedSolver:
         wall = time.perf_counter() - start
         workers: Dict[str, Dict[str, Any]] = {}
         for result, address, seconds, size in done:
+            report = result.report
             w = workers.setdefault(address, dict(shards=0, items=0, seconds=0.0, solve_seconds=0.0,
-                                                 device=result.report.device))
+                                                 device=report.device if report else None))
             w["shards"] += 1
             w["items"] += size
             w["seconds"] += seconds
-            w["solve_seconds"] += result.report.timings["total"]
+            # Worlds: the seconds of every step's solve; batches: the library's total.
+            w["solve_seconds"] += (float(result.timings["solve"].sum()) if kind == "worlds"
+                                   else report.timings["total"])
         return [d[0] for d in done], workers, wall
 
     def solve(self, M: Any, q: Any, ids: Any = None, *, shards: Optional[int] = None) -> LcpResult:
@@ -179,6 +190,27 @@ class DistributedSolver:
         out.workers, out.wall_seconds = workers, wall  # type: ignore[attr-defined]
         return out
 
+    def step_worlds(self, worlds: Union[World, Sequence[World]], dt: float, steps: int = 1,
+                    *, shards: Optional[int] = None) -> StepResult:
+        """Steps a batch of worlds (as :meth:`Solver.step_worlds`), cut into
+        ``shards`` consecutive parts each stepped ``steps`` times on a
+        worker. The caller's worlds are updated in place; on the CPU each
+        world's trajectory is the one a single process gives, bit for bit."""
+        ws = [worlds] if isinstance(worlds, World) else list(worlds)
+        for i, w in enumerate(ws):
+            if not isinstance(w, World):
+                raise TypeError(f"worlds[{i}]: expected an lcpbatch.World, got {type(w).__name__}")
+        if not ws:
+            return Solver(**self.settings).step_worlds(ws, dt, steps)
+        bounds = _bounds(len(ws), shards or 2 * self._workers())
+        results, workers, wall = self._run("worlds", [(ws[a:b], dt, steps) for a, b in bounds])
+        stepped = [w for r in results for w in r.worlds]
+        for mine, theirs in zip(ws, stepped):
+            mine._w = theirs._w
+        out = concat_step_results(results, ws)
+        out.workers, out.wall_seconds = workers, wall  # type: ignore[attr-defined]
+        return out
+
     def _workers(self) -> int:
         return max(1, len(self.client.scheduler_info().get("workers", {})))
 
@@ -210,3 +242,10 @@ def solve_scenes(client: Client, bodies: Union[Sequence[Mapping[str, Any]], Mapp
     """:meth:`DistributedSolver.solve_scenes` with a solver per worker kept
     for later calls with the same client and settings."""
     return _cached(client, settings).solve_scenes(bodies, contacts, shards=shards)
+
+
+def simulate(client: Client, worlds: Union[World, Sequence[World]], dt: float, steps: int = 1, *,
+             shards: Optional[int] = None, **settings: Any) -> StepResult:
+    """:meth:`DistributedSolver.step_worlds` with a solver per worker kept
+    for later calls with the same client and settings."""
+    return _cached(client, settings).step_worlds(worlds, dt, steps, shards=shards)
