@@ -55,6 +55,8 @@ pub fn assemble_friction_contact(bodies: &[Body], c: &Contact) -> FrictionContac
     let (t1, t2) = c.tangents();
     let along = |d: DVec3| {
         // The same contact with normal d and no restitution: q = d·(ṗ_a − ṗ_b).
+        // Every normal-only term of q (restitution, a later bias) must be
+        // switched off here, so that tangents keep the bare sliding velocity.
         let mut dc = c.clone();
         dc.normal = d.to_array();
         dc.restitution = 0.0;
