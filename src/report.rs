@@ -135,7 +135,7 @@ pub struct SceneFriction {
 }
 
 /// One contact's impulse with friction.
-#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct ContactImpulse {
     /// The impulse on body a (world frame): r_n n + r_t₁ t₁ + r_t₂ t₂; body b
     /// receives the opposite.

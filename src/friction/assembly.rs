@@ -56,7 +56,8 @@ pub fn assemble_friction_contact(bodies: &[Body], c: &Contact) -> FrictionContac
     let (t1, t2) = c.tangents();
     let along = |d: DVec3| {
         // The same contact with normal d, no restitution and no bias:
-        // q = d·(ṗ_a − ṗ_b).
+        // q = d·(ṗ_a − ṗ_b). Every normal-only term of q must be switched
+        // off here, so that tangents keep the bare sliding velocity.
         let mut dc = c.clone();
         dc.normal = d.to_array();
         dc.restitution = 0.0;

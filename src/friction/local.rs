@@ -41,12 +41,22 @@ pub fn solve_contact(w: &Block, q: [f64; 3], mu: f64, current: [f64; 3]) -> [f64
             false => fallback(w, q, mu, current),
         };
     }
-    if let Some(r) = stick(w, q) {
+    let stuck = stick(w, q);
+    if let Some(r) = stuck {
         if r[0] >= 0.0 && r[1].hypot(r[2]) <= mu * r[0] {
             return r;
         }
     }
-    slide(w, q, mu, current).unwrap_or_else(|| fallback(w, q, mu, current))
+    // A guess of the slide direction: the current reaction's, else the
+    // stick solution's (both oppose the slide).
+    let guess = [current, stuck.unwrap_or([0.0; 3])]
+        .into_iter()
+        .find(|r| r[0] > 0.0 && r[1].hypot(r[2]) > 0.0)
+        .map(|r| (-r[2]).atan2(-r[1]));
+    guess
+        .and_then(|theta| slide_near(w, q, mu, theta))
+        .or_else(|| slide(w, q, mu, current))
+        .unwrap_or_else(|| fallback(w, q, mu, current))
 }
 
 /// r = −W⁻¹ q by Cramer's rule, None when W is singular to rounding.
@@ -102,6 +112,35 @@ fn slide_reaction(w: &Block, q: [f64; 3], mu: f64, theta: f64) -> [f64; 3] {
     let a = w[0][0] - mu * (w[0][1] * c + w[0][2] * s);
     let rn = -q[0] / a;
     [rn, -mu * rn * c, -mu * rn * s]
+}
+
+/// A valid slide found by the secant method on f from the angle `theta`
+/// (the fast path: a guess near the answer converges in a few steps);
+/// None when it does not converge to a valid slide, and the grid decides.
+fn slide_near(w: &Block, q: [f64; 3], mu: f64, theta: f64) -> Option<[f64; 3]> {
+    let f = |t: f64| slide_condition(w, q, mu, t).0;
+    let (mut x0, mut x1) = (theta, theta + 1e-4);
+    let (mut f0, mut f1) = (f(x0), f(x1));
+    for _ in 0..30 {
+        if f1 == 0.0 || f1 == f0 {
+            break;
+        }
+        let x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
+        if !x2.is_finite() || (x2 - x1).abs() > 1.0 {
+            return None;
+        }
+        (x0, f0) = (x1, f1);
+        x1 = x2;
+        f1 = f(x1);
+        if (x1 - x0).abs() <= 1e-15 * x1.abs().max(1.0) {
+            break;
+        }
+    }
+    let (fx, a, along) = slide_condition(w, q, mu, x1);
+    // Converged: |f| at rounding level of its terms (q_n W and a q_t).
+    let wmax = w.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
+    let size = (q[0].abs() * wmax * (1.0 + mu) + a.abs() * q[1].hypot(q[2])).max(f64::MIN_POSITIVE);
+    (a > 0.0 && along > 0.0 && fx.abs() <= 1e-13 * size).then(|| slide_reaction(w, q, mu, x1))
 }
 
 /// The valid slide closest to `current`, None when none is found.

@@ -19,7 +19,8 @@
 //!   ∂λ = μ ∂x_n when x_n > 0, else 0.
 //!
 //! ρ_i = 1 / W_ii,nn (1 when that is not positive). The step Δ solves
-//! ∂Φ Δ = −Φ; the merit ½‖Φ‖² decides the step length (Armijo, halving).
+//! ∂Φ Δ = −Φ (a Levenberg–Marquardt step where ∂Φ is singular); the merit
+//! ½‖Φ‖² decides the step length (Armijo, halving).
 
 use super::problem::FrictionProblem;
 use super::residual::coulomb_error;
@@ -103,10 +104,49 @@ pub fn scalings(p: &FrictionProblem) -> Vec<f64> {
         .collect()
 }
 
+/// The step from r: the Newton step ∂Φ Δ = −Φ, or where ∂Φ is singular
+/// (W rank-deficient: a box on four coplanar contacts) the
+/// Levenberg–Marquardt step ((∂Φᵀ∂Φ + λ I) Δ = −∂ΦᵀΦ, λ = 1e-10 of
+/// the mean diagonal, a descent direction of the merit). Returns the step
+/// and the merit's slope along it, (∂ΦᵀΦ)·Δ; None when neither solves.
+fn step(jac: &[f64], phi: &[f64], n: usize) -> Option<(Vec<f64>, f64)> {
+    let slope = |delta: &[f64]| -> f64 {
+        // (∂ΦᵀΦ)·Δ = Φ·(∂Φ Δ).
+        (0..n)
+            .map(|i| phi[i] * (0..n).map(|j| jac[i * n + j] * delta[j]).sum::<f64>())
+            .sum()
+    };
+    let mut a = jac.to_vec();
+    let mut delta: Vec<f64> = phi.iter().map(|v| -v).collect();
+    if solve_in_place(&mut a, &mut delta, n, PIVOT_TOL) && delta.iter().all(|d| d.is_finite()) {
+        let s = slope(&delta);
+        return Some((delta, s));
+    }
+    let mut normal = vec![0.0; n * n];
+    for i in 0..n {
+        for j in 0..n {
+            normal[i * n + j] = (0..n).map(|k| jac[k * n + i] * jac[k * n + j]).sum();
+        }
+    }
+    let mean = (0..n).map(|i| normal[i * n + i]).sum::<f64>() / n as f64;
+    let lambda = 1e-10 * mean + f64::MIN_POSITIVE;
+    for i in 0..n {
+        normal[i * n + i] += lambda;
+    }
+    let mut delta: Vec<f64> = (0..n)
+        .map(|j| -(0..n).map(|k| jac[k * n + j] * phi[k]).sum::<f64>())
+        .collect();
+    if !solve_in_place(&mut normal, &mut delta, n, 0.0) || delta.iter().any(|d| !d.is_finite()) {
+        return None;
+    }
+    let s = slope(&delta);
+    (s < 0.0).then_some((delta, s))
+}
+
 /// Newton from `r` until the Coulomb error is at most `tolerance`, a step
-/// fails (singular Jacobian, or no decrease of the merit along it), or
-/// `max_steps` steps ran: (steps, error of the last r). `r` only ever
-/// moves to points of smaller merit.
+/// fails (no step, or no decrease of the merit along it), or `max_steps`
+/// steps ran: (steps, error of the last r). `r` only ever moves to points
+/// of smaller merit.
 pub fn newton(p: &FrictionProblem, r: &mut [f64], max_steps: u64, tolerance: f64) -> (u64, f64) {
     let n = p.dim();
     let rho = scalings(p);
@@ -117,12 +157,9 @@ pub fn newton(p: &FrictionProblem, r: &mut [f64], max_steps: u64, tolerance: f64
     let mut steps = 0;
     let mut trial = vec![0.0; n];
     while steps < max_steps && !(error <= tolerance) && merit > 0.0 {
-        let mut delta: Vec<f64> = phi.iter().map(|v| -v).collect();
-        if !solve_in_place(&mut jac, &mut delta, n, PIVOT_TOL)
-            || delta.iter().any(|d| !d.is_finite())
-        {
+        let Some((delta, slope)) = step(&jac, &phi, n) else {
             break;
-        }
+        };
         steps += 1;
         let mut t = 1.0;
         let mut accepted = false;
@@ -131,8 +168,8 @@ pub fn newton(p: &FrictionProblem, r: &mut [f64], max_steps: u64, tolerance: f64
                 trial[k] = r[k] + t * delta[k];
             }
             let m = half_squared(&alart_curnier(p, &trial, &rho, None));
-            // Armijo on ½‖Φ‖², whose derivative along the Newton step is −2·merit.
-            if m <= (1.0 - 2e-4 * t) * merit {
+            // Armijo on ½‖Φ‖² (slope −2·merit for a Newton step).
+            if m <= merit + 1e-4 * t * slope {
                 accepted = true;
                 break;
             }

@@ -1,6 +1,7 @@
 //! The exact Coulomb solvers of one island on the CPU in f64, by method,
 //! and what they report.
 
+use super::cone::project_on_cone;
 use super::newton::newton;
 use super::nsgs::nsgs;
 use super::problem::FrictionProblem;
@@ -73,7 +74,8 @@ pub struct FrictionSolution {
     /// `solved` (finite, Coulomb error ≤ tolerance), `not_converged` (the
     /// error reached is in `residuals`) or `numerical_failure` (not finite).
     pub status: Status,
-    /// The reactions, 3k, interleaved (normal, t₁, t₂ per contact).
+    /// The reactions, 3k, interleaved (normal, t₁, t₂ per contact), each in
+    /// its cone (projected there after the solve).
     pub r: Vec<f64>,
     /// u = W r + q.
     pub u: Vec<f64>,
@@ -113,7 +115,7 @@ pub fn solve_friction_problem(
 fn hybrid(p: &FrictionProblem, r: &mut Vec<f64>, cap: u64, tolerance: f64) -> u64 {
     let target = tolerance.min(POLISH);
     let mut used = 0;
-    let mut sweeps_per_round = if p.contacts() == 1 { 1 } else { 8 };
+    let mut sweeps_per_round = if p.contacts() == 1 { 1 } else { 2 };
     let mut best = (f64::INFINITY, r.clone());
     while used < cap {
         let (k, e) = nsgs(p, r, sweeps_per_round.min(cap - used), target);
@@ -140,13 +142,20 @@ fn hybrid(p: &FrictionProblem, r: &mut Vec<f64>, cap: u64, tolerance: f64) -> u6
     used
 }
 
-/// The status and residuals of the final r.
+/// The status and residuals of the final r, first projected on its cones
+/// (a no-op to rounding for a converged r; for a Newton iterate that
+/// stopped outside, the nearest admissible impulses; for μ = 0 exactly
+/// zero tangential parts), so that every returned impulse is in its cone.
 fn finish(
     p: &FrictionProblem,
-    r: Vec<f64>,
+    mut r: Vec<f64>,
     iterations: u64,
     s: &FrictionSettings,
 ) -> FrictionSolution {
+    for (i, &mu) in p.mu.iter().enumerate() {
+        let ri = project_on_cone([r[3 * i], r[3 * i + 1], r[3 * i + 2]], mu);
+        r[3 * i..3 * i + 3].copy_from_slice(&ri);
+    }
     let u = p.velocity(&r);
     let residuals = FrictionResiduals::of_velocity(p, &r, &u);
     let finite = r.iter().chain(&u).all(|v| v.is_finite()) && residuals.coulomb_error.is_finite();

@@ -3,6 +3,7 @@
 //! them (see the README).
 
 pub mod fc3d;
+pub mod friction;
 pub mod siconos;
 pub(crate) mod strict;
 
@@ -22,6 +23,9 @@ pub enum Input {
     Scenes(Vec<Scene>),
     /// LCPs: a JSON batch or one Siconos `.dat` problem.
     Lcps(Vec<Lcp>),
+    /// Frictional problems: a JSON batch (`{"friction_problems": [...]}`)
+    /// or one FrictionContact3D `.dat` problem.
+    Friction(Vec<crate::FrictionProblem>),
 }
 
 /// One LCP in the JSON batch format: M as rows.
@@ -46,10 +50,14 @@ enum JsonInput {
 /// Parses JSON text holding a scene, `{"scenes": [...]}` or
 /// `{"problems": [...]}`, and checks every item. `path` names the file in errors.
 pub fn parse_json(path: &str, text: &str) -> Result<Input, Error> {
-    let input = match typed(text) {
-        Some(input) => input,
-        None => checked(path, text)?,
-    };
+    match typed(text) {
+        Some(input) => checked_items(path, input),
+        None => checked(path, text),
+    }
+}
+
+/// Every item of a parsed file checked (an error names the first bad one).
+fn checked_items(path: &str, input: JsonInput) -> Result<Input, Error> {
     match input {
         JsonInput::Batch { problems } => {
             if problems.is_empty() {
@@ -109,8 +117,11 @@ fn typed(text: &str) -> Option<JsonInput> {
 /// keep their position, look for a key given twice, then pick the shape by
 /// its top-level key. A value of the wrong type or shape is then named by
 /// item and field (see [`shape_error`]), as the checks on values name theirs.
-fn checked(path: &str, text: &str) -> Result<JsonInput, Error> {
+fn checked(path: &str, text: &str) -> Result<Input, Error> {
     let value = strict::parse_object(path, text, strict::item_of)?;
+    if value.get("friction_problems").is_some() {
+        return Ok(Input::Friction(friction::parse_friction_json(path, value)?));
+    }
     let obj = value.as_object().expect("parse_object checked");
     let input = if obj.contains_key("problems") {
         let batch: BatchFile = serde_json::from_value(value.clone())
@@ -131,10 +142,10 @@ fn checked(path: &str, text: &str) -> Result<JsonInput, Error> {
         return Err(Error::invalid(
             path,
             "(top level)",
-            "expected a key `problems` (LCP batch), `scenes` or `bodies` and `contacts` (scene)",
+            "expected a key `problems` (LCP batch), `friction_problems` (frictional batch), `scenes` or `bodies` and `contacts` (scene)",
         ));
     };
-    Ok(input)
+    checked_items(path, input)
 }
 
 /// The three shapes of a JSON input file.
@@ -450,7 +461,8 @@ struct ScenesFile {
     scenes: Vec<Scene>,
 }
 
-/// Reads an input file: `.dat` as Siconos, anything else as JSON.
+/// Reads an input file: `.dat` as Siconos (FrictionContact3D when its
+/// header says so, see [`fc3d::is_fc3d`], else an LCP), anything else as JSON.
 pub fn read_input(path: &Path) -> Result<Input, Error> {
     let text = std::fs::read_to_string(path).map_err(|source| Error::Io {
         path: path.to_path_buf(),
@@ -461,7 +473,11 @@ pub fn read_input(path: &Path) -> Result<Input, Error> {
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("dat"))
     {
-        Ok(Input::Lcps(vec![siconos::parse_dat(&name, &text)?]))
+        if fc3d::is_fc3d(&text) {
+            Ok(Input::Friction(vec![fc3d::parse_fc3d(&name, &text)?]))
+        } else {
+            Ok(Input::Lcps(vec![siconos::parse_dat(&name, &text)?]))
+        }
     } else {
         parse_json(&name, &text)
     }
@@ -546,6 +562,10 @@ pub struct LcpBatchOutput {
 pub struct ContactOutput {
     /// The normal impulse z ≥ 0.
     pub impulse: f64,
+    /// Scenes with friction only: the impulse vector, its normal and
+    /// tangential parts, the frame and the local velocity after.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub friction: Option<friction::ContactFrictionOutput>,
 }
 
 /// One island's result.
@@ -570,6 +590,9 @@ pub struct SceneOutput {
     pub bodies: Vec<BodyVelocity>,
     /// One entry per island.
     pub islands: Vec<IslandOutput>,
+    /// Scenes with friction only: one entry per island (then `islands` is empty).
+    #[serde(skip_serializing_if = "Vec::is_empty", default)]
+    pub friction_islands: Vec<friction::FrictionOutput>,
 }
 
 /// `{"scenes": [...]}`, also for a single scene.
@@ -603,7 +626,11 @@ impl ScenesOutput {
                     contacts: sc
                         .impulses
                         .iter()
-                        .map(|&impulse| ContactOutput { impulse })
+                        .enumerate()
+                        .map(|(c, &impulse)| ContactOutput {
+                            impulse,
+                            friction: sc.friction.as_ref().map(|f| f.contacts[c]),
+                        })
                         .collect(),
                     bodies: sc.bodies.clone(),
                     islands: report.islands[sc.islands.clone()]
@@ -615,6 +642,16 @@ impl ScenesOutput {
                             solver: r.method.name().to_string(),
                         })
                         .collect(),
+                    friction_islands: sc
+                        .friction
+                        .as_ref()
+                        .map(|f| {
+                            report.friction[f.islands.clone()]
+                                .iter()
+                                .map(friction::FrictionOutput::of)
+                                .collect()
+                        })
+                        .unwrap_or_default(),
                 })
                 .collect(),
         }

@@ -217,7 +217,7 @@ fn siconos_batch_matches_the_cpu() {
                     lcps.push(l);
                 }
             }
-            Input::Scenes(_) => panic!("{}: not an LCP", p.display()),
+            _ => panic!("{}: not an LCP", p.display()),
         }
     }
     assert!(lcps.len() >= 20, "{} problems", lcps.len());

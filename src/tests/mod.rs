@@ -7,6 +7,7 @@
 pub(crate) mod common;
 
 mod device_trouble;
+mod friction;
 mod friction_conformance;
 mod gpu_all_solutions;
 mod gpu_conformance;

@@ -211,22 +211,23 @@ fn seed_001_coupled_ncp_by_active_set() {
     }
 }
 
-/// Projection of p onto the disc ‖γ‖ ≤ r in the tangent plane: p itself
-/// inside, r·p/‖p‖ outside. The friction law of seed 001 (maximum
-/// dissipation) is γ_T = proj_{‖γ_T‖ ≤ μγ_n}(−v_T) for this one-shot
-/// projection: the tangential impulse opposing the sliding velocity.
-fn project_disc(p: [f64; 2], r: f64) -> [f64; 2] {
-    let len = p[0].hypot(p[1]);
-    if len <= r {
-        p
-    } else {
-        [r * p[0] / len, r * p[1] / len]
-    }
-}
-
-/// The friction impulse for tangential velocity v_t, friction μ and normal impulse γ_n.
-fn friction_impulse(v_t: [f64; 2], mu: f64, gamma_n: f64) -> [f64; 2] {
-    project_disc([-v_t[0], -v_t[1]], mu * gamma_n)
+/// The friction law of seed 001 (maximum dissipation): for a sliding
+/// velocity v_T the tangential impulse is γ_T = −μ γ_n v_T/‖v_T‖, the
+/// product's [`crate::friction::project_on_disc`]; through the solver, a
+/// unit point mass approaching at γ_n and sliding at v_T (W = I) gets it
+/// when ‖v_T‖ ≥ μ γ_n, and sticks (γ_T = −v_T, inside the disc) otherwise.
+fn solver_friction_impulse(v_t: [f64; 2], mu: f64, gamma_n: f64) -> [f64; 3] {
+    let w = vec![1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0];
+    let p = crate::FrictionProblem::new(w, vec![-gamma_n, v_t[0], v_t[1]], vec![mu]).unwrap();
+    let mut solver = crate::Solver::new(crate::Settings {
+        backend: crate::Backend::Cpu,
+        ..crate::Settings::default()
+    })
+    .unwrap();
+    let r = solver.solve_friction(&[p]).unwrap();
+    let s = &r.friction[0].solution;
+    assert_eq!(s.status, Status::Solved);
+    [s.r[0], s.r[1], s.r[2]]
 }
 
 #[test]
@@ -235,11 +236,13 @@ fn seed_001_friction_disc_projections() {
         (0.5, 10.0, [3.0, -4.0], [-3.0, 4.0]),
         (0.6, 5.0, [4.0, 3.0], [-12.0 / 5.0, -9.0 / 5.0]),
     ] {
-        let g = friction_impulse(v_t, mu, gamma_n);
+        let g = crate::friction::project_on_disc(v_t, mu, gamma_n);
+        let r = solver_friction_impulse(v_t, mu, gamma_n);
+        assert!((r[0] - gamma_n).abs() < 1e-12, "{r:?}");
         for i in 0..2 {
             assert!(
-                (g[i] - expected[i]).abs() < 1e-14,
-                "μ = {mu}, γn = {gamma_n}, v_T = {v_t:?}: {g:?}, expected {expected:?}"
+                (g[i] - expected[i]).abs() < 1e-14 && (r[i + 1] - expected[i]).abs() < 1e-12,
+                "μ = {mu}, γn = {gamma_n}, v_T = {v_t:?}: {g:?} / {r:?}, expected {expected:?}"
             );
         }
         // On the disc's boundary, opposite to v_T.
@@ -248,8 +251,12 @@ fn seed_001_friction_disc_projections() {
             (g[0] * v_t[1] - g[1] * v_t[0]).abs() < 1e-14 && g[0] * v_t[0] + g[1] * v_t[1] < 0.0
         );
     }
-    // A point inside the disc is its own projection (the sticking case).
-    assert_eq!(project_disc([0.3, -0.4], 1.0), [0.3, -0.4]);
+    // Slow sliding inside the disc sticks: γ_T = −v_T (the sticking case).
+    let r = solver_friction_impulse([0.3, -0.4], 0.1, 10.0);
+    assert!(
+        (r[1] + 0.3).abs() < 1e-12 && (r[2] - 0.4).abs() < 1e-12,
+        "{r:?}"
+    );
 }
 
 #[test]

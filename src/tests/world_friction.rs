@@ -83,14 +83,14 @@ fn a_box_on_an_incline_sticks_or_slides_as_coulomb_says() {
     assert!(worlds[0].bodies[1].velocity().dot(normal).abs() < 1e-9);
 }
 
-/// Three unit boxes with μ = 0.5 rest for 300 steps: every box moves less
-/// than 1 mm and none gains kinetic energy beyond 1e-9 J.
+/// Five unit boxes with μ = 0.5 rest for 1,000 steps: every island solved,
+/// every box moves less than 1 mm and none gains kinetic energy beyond 1e-9 J.
 #[test]
 fn a_stack_with_friction_stays_at_rest() {
-    let mut worlds = vec![standard_world(WorldKind::Stack, 3, 0)];
+    let mut worlds = vec![standard_world(WorldKind::Stack, 5, 0)];
     let start: Vec<DVec3> = worlds[0].bodies.iter().map(|b| b.position()).collect();
     let mut solver = cpu();
-    for step in 0..300 {
+    for step in 0..1000 {
         let r = solver.step_worlds(&mut worlds, 0.01).unwrap();
         assert_eq!(r.unsolved, 0, "step {step}");
         for (k, b) in worlds[0].bodies.iter().enumerate().skip(1) {

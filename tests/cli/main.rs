@@ -6,6 +6,7 @@
 mod common;
 
 mod empty;
+mod friction;
 mod golden;
 mod gpu;
 mod simulate;

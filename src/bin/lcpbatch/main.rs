@@ -14,10 +14,11 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand, ValueEnum};
 
 use lcpbatch::generate::{demo_world, Rng};
+use lcpbatch::io::friction::FrictionBatchOutput;
 use lcpbatch::io::{read_input, write_atomically, Input, LcpBatchOutput, ScenesOutput};
 use lcpbatch::{
-    list_adapters, Backend, BackendChoice, Error, GpuSettings, Method, Precision, Scene, Settings,
-    Solver,
+    list_adapters, Backend, BackendChoice, Error, FrictionMethod, GpuSettings, Method, Precision,
+    Scene, Settings, Solver,
 };
 
 #[derive(Parser)]
@@ -39,6 +40,18 @@ enum SolverArg {
     Enum,
     Lemke,
     Pgs,
+}
+
+/// How islands and problems with friction (Coulomb) are solved, on the
+/// CPU in f64; each is judged by its Coulomb error.
+#[derive(Clone, Copy, ValueEnum)]
+enum FrictionSolverArg {
+    /// NSGS sweeps, then Alart–Curnier Newton polishing to the rounding of f64.
+    Auto,
+    /// Non-smooth Gauss–Seidel over contacts, each solved exactly.
+    Nsgs,
+    /// Alart–Curnier semismooth Newton with line search alone.
+    Newton,
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -96,7 +109,8 @@ impl GpuArgs {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Solve a scene file, a many-scene file, an LCP batch (JSON) or a Siconos .dat file.
+    /// Solve a scene file, a many-scene file, an LCP or friction batch (JSON),
+    /// or a Siconos .dat file (LCP or FrictionContact3D, told apart by its header).
     Solve(SolveArgs),
     /// Generate thousands of islands from many simulation instances (balls
     /// and boxes on the ground and on each other), solve them on the best
@@ -158,9 +172,16 @@ impl BackendArg {
 struct SolveArgs {
     /// Input file (.json or .dat).
     file: PathBuf,
-    /// Method for every problem or island.
+    /// Method for every problem or island without friction.
     #[arg(long, value_enum, default_value = "auto")]
     solver: SolverArg,
+    /// Method for every problem or island with friction (contacts with
+    /// μ > 0, friction batches, FrictionContact3D files).
+    #[arg(long, value_enum, default_value = "auto")]
+    friction_solver: FrictionSolverArg,
+    /// A frictional island is `solved` when its Coulomb error is at most this.
+    #[arg(long, default_value_t = 1e-8)]
+    friction_tolerance: f64,
     /// Enumeration only: visit every basis and report every solution.
     #[arg(long)]
     all_solutions: bool,
@@ -450,6 +471,8 @@ fn solve_command(args: SolveArgs) -> Result<(), Error> {
     let SolveArgs {
         file,
         solver,
+        friction_solver,
+        friction_tolerance,
         all_solutions,
         output,
         backend,
@@ -479,6 +502,12 @@ fn solve_command(args: SolveArgs) -> Result<(), Error> {
     let settings = Settings {
         method,
         all_solutions,
+        friction_method: match friction_solver {
+            FrictionSolverArg::Auto => FrictionMethod::Auto,
+            FrictionSolverArg::Nsgs => FrictionMethod::Nsgs,
+            FrictionSolverArg::Newton => FrictionMethod::Newton,
+        },
+        friction_tolerance,
         ..Settings::default()
     };
     let backend = if gpu_capable {
@@ -490,6 +519,7 @@ fn solve_command(args: SolveArgs) -> Result<(), Error> {
     let report = match &input {
         Input::Lcps(lcps) => solver.solve_lcps(lcps)?,
         Input::Scenes(scenes) => solver.solve_scenes(scenes)?,
+        Input::Friction(problems) => solver.solve_friction(problems)?,
     };
     if report.on_gpu() {
         eprintln!("{report}");
@@ -497,6 +527,7 @@ fn solve_command(args: SolveArgs) -> Result<(), Error> {
     let text = match input {
         Input::Lcps(_) => serde_json::to_string_pretty(&LcpBatchOutput::of(&report)),
         Input::Scenes(_) => serde_json::to_string_pretty(&ScenesOutput::of(&report)),
+        Input::Friction(_) => serde_json::to_string_pretty(&FrictionBatchOutput::of(&report)),
     }
     .expect("serialisable");
     match output {
