@@ -161,23 +161,42 @@ fn info_lists_adapters_and_features() {
 
 #[test]
 fn demo_prints_its_summary_and_the_other_path() {
-    // Auto: the CPU unless there is a hardware GPU; the other path compared.
-    let text = ok(&["demo", "--worlds", "200"]);
+    // Auto: the CPU unless there is a hardware GPU; the other path compared;
+    // then 100 worlds stepped in time, their plots written.
+    let out = std::env::temp_dir().join(format!("lcpbatch-demo-{}", std::process::id()));
+    let o = out.to_str().unwrap();
+    let text = ok(&["demo", "--worlds", "200", "--steps", "20", "--out", o]);
     for needle in [
         "device: ",
         "islands: ",
         "statuses: solved",
         "max error: ",
         "islands/s",
+        "many worlds in time: 50 resting 4-box stacks and 50 boxes sliding",
+        "100 worlds x 20 steps",
+        "world-steps/s",
+        "unsolved islands 0",
     ] {
         assert!(text.contains(needle), "`{needle}` missing in:\n{text}");
     }
+    for file in ["steps.jsonl", "final.json", "energy.svg", "penetration.svg"] {
+        assert!(out.join(file).is_file(), "{file}");
+    }
+    std::fs::remove_dir_all(&out).ok();
     if !super::common::gpu_available(Precision::Auto) {
         return;
     }
     assert!(text.contains("for comparison, "), "{text}");
     // On the GPU by name: its path counts and figures.
-    let text = ok(&["demo", "--worlds", "200", "--backend", "gpu"]);
+    let text = ok(&[
+        "demo",
+        "--worlds",
+        "200",
+        "--backend",
+        "gpu",
+        "--steps",
+        "0",
+    ]);
     for needle in [
         "enumerated_gpu ",
         "polished ",

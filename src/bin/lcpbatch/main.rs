@@ -125,6 +125,12 @@ enum Command {
         /// Where to solve (auto: the GPU whenever an adapter exists).
         #[arg(long, value_enum, default_value = "auto")]
         backend: BackendArg,
+        /// Steps of the worlds stepped in time (second part; 0 skips it).
+        #[arg(long, default_value_t = 200)]
+        steps: usize,
+        /// Where the second part writes steps.jsonl, final.json and its plots.
+        #[arg(long, default_value = "demo-out")]
+        out: PathBuf,
         #[command(flatten)]
         gpu: GpuArgs,
     },
@@ -329,6 +335,43 @@ fn demo(worlds: usize, seed: u64, backend: BackendArg, gpu: &GpuArgs) -> Result<
         );
     }
     Ok(())
+}
+
+/// The demo's second part, the main job over time: `count` worlds (half
+/// resting 4-box stacks, frictionless; half boxes sliding on the ground with
+/// μ = 0.5 until friction stops them) stepped together, one contact batch
+/// per step of 10 ms, with the plots of energy, penetration, solver error
+/// and time per step written to `out`.
+fn demo_in_time(
+    count: usize,
+    steps: usize,
+    backend: BackendArg,
+    gpu: &GpuArgs,
+    out: &std::path::Path,
+) -> Result<(), Error> {
+    if steps == 0 || count == 0 {
+        return Ok(());
+    }
+    let mut worlds = simulate::load_worlds("stack:4", count.div_ceil(2), 1)?;
+    for b in worlds.iter_mut().flat_map(|w| w.bodies.iter_mut()) {
+        b.friction = 0.0;
+    }
+    worlds.extend(simulate::load_worlds("slide", count / 2, 1)?);
+    let mut solver = solver_for(
+        backend.backend(),
+        gpu,
+        Settings {
+            warm_start: true,
+            ..Settings::default()
+        },
+    )?;
+    println!(
+        "\nmany worlds in time: {} resting 4-box stacks and {} boxes sliding at μ = 0.5, {steps} steps of 10 ms, one batch per step",
+        count.div_ceil(2),
+        count / 2
+    );
+    println!("device: {} ({})", solver.device().name, solver.choice());
+    simulate::step_and_write(&mut solver, &mut worlds, steps, 0.01, out)
 }
 
 fn info(gpu: &GpuArgs, calibrate: bool) -> Result<(), Error> {
@@ -543,8 +586,13 @@ fn run(cli: Cli) -> Result<(), Error> {
             worlds,
             seed,
             backend,
+            steps,
+            out,
             gpu,
-        } => demo(worlds, seed, backend, &gpu),
+        } => {
+            demo(worlds, seed, backend, &gpu)?;
+            demo_in_time(worlds / 2, steps, backend, &gpu, &out)
+        }
         Command::Info { gpu, calibrate } => info(&gpu, calibrate),
         Command::Generate(args) => generate_command(args),
         Command::Bench(args) => bench_command(args),

@@ -120,7 +120,7 @@ impl StepLine {
 }
 
 /// The worlds `--world` names, `count` of them.
-fn load_worlds(spec: &str, count: usize, seed: u64) -> Result<Vec<World>, Error> {
+pub fn load_worlds(spec: &str, count: usize, seed: u64) -> Result<Vec<World>, Error> {
     if count == 0 {
         return Err(Error::invalid("--worlds", "count", "must be at least 1"));
     }
@@ -181,16 +181,29 @@ pub fn simulate_command(args: SimulateArgs) -> Result<(), Error> {
         ..Settings::default()
     })?;
     println!("device: {} ({})", solver.device().name, solver.choice());
-    let bar = indicatif::ProgressBar::new(args.steps as u64);
+    step_and_write(&mut solver, &mut worlds, args.steps, args.dt, &args.out)
+}
+
+/// Steps `worlds` `steps` times through the solver's door with a progress
+/// bar, then writes steps.jsonl, final.json and the plots to `out` and
+/// prints the summary (`simulate` and `demo`).
+pub fn step_and_write(
+    solver: &mut Solver,
+    worlds: &mut [World],
+    steps: usize,
+    dt: f64,
+    out: &Path,
+) -> Result<(), Error> {
+    let bar = indicatif::ProgressBar::new(steps as u64);
     bar.set_style(
         indicatif::ProgressStyle::with_template("{elapsed_precise} [{bar:30}] {pos}/{len} {msg}")
             .expect("valid template"),
     );
-    let mut lines = Vec::with_capacity(args.steps);
+    let mut lines = Vec::with_capacity(steps);
     let start = Instant::now();
-    for step in 0..args.steps {
-        let r = solver.step_worlds(&mut worlds, args.dt)?;
-        let line = StepLine::of(step, (step + 1) as f64 * args.dt, &r);
+    for step in 0..steps {
+        let r = solver.step_worlds(worlds, dt)?;
+        let line = StepLine::of(step, (step + 1) as f64 * dt, &r);
         bar.set_message(format!(
             "{} contacts, {} islands",
             line.contacts, line.islands
@@ -200,9 +213,9 @@ pub fn simulate_command(args: SimulateArgs) -> Result<(), Error> {
     }
     let wall = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
-    write_outputs(&args.out, &lines, &worlds)?;
-    print_summary(&lines, args.worlds, wall);
-    println!("wrote {}", args.out.display());
+    write_outputs(out, &lines, worlds)?;
+    print_summary(&lines, worlds.len(), wall);
+    println!("wrote {}", out.display());
     Ok(())
 }
 
