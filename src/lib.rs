@@ -75,7 +75,7 @@ pub use report::{
 };
 pub use scene::{Body, Contact, Scene};
 pub use settings::{Backend, GpuSettings, Method, Settings};
-pub use solver::Solver;
+pub use solver::{CostModel, Solver};
 
 /// Every adapter wgpu finds on `api` (for `lcpbatch info`); empty when none.
 pub fn list_adapters(api: BackendChoice) -> Vec<AdapterSummary> {

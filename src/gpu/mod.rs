@@ -52,6 +52,7 @@
 //! - [`batch`] (LCP batches) and [`scenes`] (whole scenes): orchestration;
 //! - [`layout`]: buffer layouts shared with the CPU twins.
 
+pub(crate) mod all_bases;
 pub mod batch;
 pub(crate) mod buffers;
 pub mod context;

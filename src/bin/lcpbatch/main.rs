@@ -130,10 +130,15 @@ enum Command {
     /// Write fixed-seed scenes or LCP batches as JSON (what `solve` reads).
     Generate(GenerateArgs),
     /// List GPU adapters, backends, features (f64, subgroups, timestamps) and
-    /// limits, and say which adapter `solve --backend auto` would pick.
+    /// limits, say which adapter `solve --backend auto` would pick, and show
+    /// the cost model by which auto chooses per batch (measured once and
+    /// cached where a hardware adapter is, or one is named).
     Info {
         #[command(flatten)]
         gpu: GpuArgs,
+        /// Measure the cost model again (on an idle machine) and cache it.
+        #[arg(long)]
+        calibrate: bool,
     },
     /// Every solver on the same fixed-seed batches (well conditioned, mass
     /// ratio 1e4, resting stacks, mixed n, warm-started resting): a table of
@@ -322,7 +327,7 @@ fn demo(worlds: usize, seed: u64, backend: BackendArg, gpu: &GpuArgs) -> Result<
     Ok(())
 }
 
-fn info(gpu: &GpuArgs) -> Result<(), Error> {
+fn info(gpu: &GpuArgs, calibrate: bool) -> Result<(), Error> {
     let g = gpu.settings()?;
     let adapters = list_adapters(g.api);
     if adapters.is_empty() {
@@ -336,8 +341,20 @@ fn info(gpu: &GpuArgs) -> Result<(), Error> {
     for a in &adapters {
         println!("{a}");
     }
-    let auto = solver_for(Backend::Auto, gpu, Settings::default())?;
+    let mut auto = solver_for(Backend::Auto, gpu, Settings::default())?;
     println!("backend auto: {} ({})", auto.device().name, auto.choice());
+    if calibrate && auto.shared_device().is_some() {
+        let model = auto.calibrate()?;
+        let path = model.save()?;
+        println!("measured again and cached in {}", path.display());
+        print!("{model}");
+    } else if let Some(model) = auto.cost_model() {
+        print!("{model}");
+    } else {
+        println!(
+            "no cost model: auto solves on the CPU (name an adapter with --adapter to measure one)"
+        );
+    }
     let named = solver_for(Backend::Gpu, gpu, Settings::default())?;
     match named.fallback() {
         None => println!("backend gpu: {}", named.device().name),
@@ -469,12 +486,12 @@ fn solve_command(args: SolveArgs) -> Result<(), Error> {
             "--all-solutions needs --solver auto or enum".into(),
         ));
     }
-    // The GPU enumerates; Lemke, PGS and --all-solutions run on the CPU.
-    let gpu_capable = matches!(method, Method::Auto | Method::Enumeration) && !all_solutions;
+    // The GPU enumerates (with --all-solutions every basis); Lemke and PGS
+    // run on the CPU.
+    let gpu_capable = matches!(method, Method::Auto | Method::Enumeration);
     if backend == BackendArg::Gpu && !gpu_capable {
         return Err(Error::Unsupported(
-            "--backend gpu solves by enumeration only (no --solver lemke/pgs, no --all-solutions)"
-                .into(),
+            "--backend gpu solves by enumeration only (no --solver lemke/pgs)".into(),
         ));
     }
     let input = read_input(&file)?;
@@ -524,7 +541,7 @@ fn run(cli: Cli) -> Result<(), Error> {
             backend,
             gpu,
         } => demo(worlds, seed, backend, &gpu),
-        Command::Info { gpu } => info(&gpu),
+        Command::Info { gpu, calibrate } => info(&gpu, calibrate),
         Command::Generate(args) => generate_command(args),
         Command::Bench(args) => bench_command(args),
         Command::Stress(args) => stress_command(args),
