@@ -5,7 +5,7 @@
 pub mod fc3d;
 pub mod friction;
 pub mod siconos;
-mod strict;
+pub(crate) mod strict;
 
 use std::path::Path;
 
@@ -123,24 +123,12 @@ fn typed(text: &str) -> Option<JsonInput> {
 /// its top-level key. A value of the wrong type or shape is then named by
 /// item and field (see [`shape_error`]), as the checks on values name theirs.
 fn checked(path: &str, text: &str) -> Result<JsonInput, Error> {
-    let value: serde_json::Value = serde_json::from_str(text).map_err(|e| Error::json(path, e))?;
-    if let Some((at, key)) = strict::duplicate_key(text) {
-        return Err(Error::invalid(
-            strict::item_of(path, &at),
-            key,
-            "appears twice in one object (each field once)",
-        ));
-    }
-    let Some(obj) = value.as_object() else {
-        return Err(Error::invalid(
-            path,
-            "(top level)",
-            "expected a JSON object",
-        ));
-    };
+    let value = strict::parse_object(path, text, strict::item_of)?;
+    let obj = value.as_object().expect("parse_object checked");
     if obj.contains_key("friction_problems") {
         return Ok(JsonInput::Friction(friction::parse_friction_json(
-            path, value,
+            path,
+            value.clone(),
         )?));
     }
     let input = if obj.contains_key("problems") {

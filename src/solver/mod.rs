@@ -32,6 +32,7 @@ mod cost;
 mod cpu_path;
 mod friction_path;
 mod gpu_path;
+pub mod world_path;
 
 pub use cost::{cache_dir, CostModel, CALIBRATION_SIZES};
 

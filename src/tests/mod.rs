@@ -26,3 +26,5 @@ mod seeds;
 mod siconos;
 mod stress;
 mod stress_gpu_f32;
+mod world;
+mod world_friction;

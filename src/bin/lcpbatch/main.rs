@@ -5,6 +5,7 @@ mod bench;
 mod devices;
 mod generate;
 mod plots;
+mod simulate;
 mod stress;
 
 use std::path::PathBuf;
@@ -152,6 +153,9 @@ enum Command {
     /// with f64 enumeration, repaired counts, stress.json and a plot of error
     /// against condition number.
     Stress(StressArgs),
+    /// Step many rigid-body worlds in time (seed 001's DVI step, one contact
+    /// batch per step): progress, steps.jsonl, final.json and plots in --out.
+    Simulate(simulate::SimulateArgs),
 }
 
 impl BackendArg {
@@ -546,6 +550,7 @@ fn run(cli: Cli) -> Result<(), Error> {
         Command::Bench(args) => bench_command(args),
         Command::Stress(args) => stress_command(args),
         Command::Solve(args) => solve_command(args),
+        Command::Simulate(args) => simulate::simulate_command(args),
     }
 }
 
