@@ -7,7 +7,7 @@
 //
 // Packed layouts (src/gpu/layout.rs): body 20 scalars (inv_mass, inverse
 // inertia rows, position, velocity, angular velocity), contact 8 scalars
-// (point, normal, restitution), row 36 scalars (K rows, jacobian, response,
+// (point, normal, restitution, bias), row 36 scalars (K rows, jacobian, response,
 // v_rel, q), island data M row-major then q.
 //
 // The generator (src/gpu/shaders/compose.rs) replaces the line marked HOST
@@ -109,6 +109,7 @@ fn assemble_contacts(@builtin(global_invocation_id) gid: vec3<u32>) {
     let p = vec3<Scalar>(contacts[co], contacts[co + 1u], contacts[co + 2u]);
     let n = vec3<Scalar>(contacts[co + 3u], contacts[co + 4u], contacts[co + 5u]);
     let restitution = contacts[co + 6u];
+    let bias = contacts[co + 7u];
     let out = ci * ROW;
 
     let a = ids.a;
@@ -150,7 +151,8 @@ fn assemble_contacts(@builtin(global_invocation_id) gid: vec3<u32>) {
     put3(out + ROW_K + 6u, kt[2]);
     let v_rel = dot(pdot, n);
     rows[out + ROW_V_REL] = v_rel;
-    rows[out + ROW_Q] = v_rel + restitution * min(v_rel, Scalar(0.0));
+    // normal_q of the twin: v_rel + eps min(v_rel, 0) + bias.
+    rows[out + ROW_Q] = v_rel + restitution * min(v_rel, Scalar(0.0)) + bias;
     rows[out + 35u] = Scalar(0.0);
 }
 

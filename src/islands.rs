@@ -104,6 +104,7 @@ mod tests {
             normal: [0.0, 1.0, 0.0],
             restitution: 0.0,
             id: None,
+            bias: 0.0,
             friction: 0.0,
             tangent: None,
         }

@@ -60,6 +60,7 @@ pub mod settings;
 pub mod solver;
 pub(crate) mod solvers;
 pub(crate) mod validation;
+pub mod world;
 
 pub use cpu::impulses::BodyVelocity;
 pub use error::Error;
@@ -75,7 +76,9 @@ pub use report::{
 };
 pub use scene::{Body, Contact, Scene};
 pub use settings::{Backend, GpuSettings, Method, Settings};
-pub use solver::Solver;
+pub use solver::world_path::{StepReport, StepTimings, WorldStepReport};
+pub use solver::{CostModel, Solver};
+pub use world::{RigidBody, Shape, World};
 
 /// Every adapter wgpu finds on `api` (for `lcpbatch info`); empty when none.
 pub fn list_adapters(api: BackendChoice) -> Vec<AdapterSummary> {

@@ -46,6 +46,15 @@ pub struct Contact {
     /// starts from the basis its contacts had in the last call. Optional.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub id: Option<u64>,
+    /// A velocity bias b added to the contact's q (m/s): q = v_rel +
+    /// ε min(v_rel, 0) + b ([`crate::cpu::assembly::normal_q`]). Time
+    /// stepping puts the gap here, b = φ/Δt (seed 001 §四: 0 ≤ γ_n ⊥ φ/Δt +
+    /// v_n⁺ ≥ 0): a contact φ apart may close the gap within the step, a
+    /// penetrating one (φ < 0) is pushed out by −φ/Δt. Optional, 0 when
+    /// absent (and then not written, so frictionless single-frame outputs
+    /// are unchanged).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub bias: f64,
     /// Coulomb's friction coefficient μ ≥ 0 (finite; default 0: frictionless,
     /// and then the field is left out of every output). An island with any
     /// contact of μ > 0 is solved by the friction path (README, "Friction").
@@ -229,6 +238,7 @@ impl Contact {
             normal,
             restitution,
             id: None,
+            bias: 0.0,
             friction: 0.0,
             tangent: None,
         }
@@ -327,6 +337,9 @@ impl Contact {
                 "neither body of the contact can move (both static)",
             ));
         }
+        if !self.bias.is_finite() {
+            return Err(Error::invalid(item, "bias", "not a finite number"));
+        }
         Ok(())
     }
 }
@@ -406,6 +419,7 @@ mod tests {
             normal: [0.0, 1.0, 0.0],
             restitution: 0.5,
             id: None,
+            bias: 0.0,
             friction: 0.0,
             tangent: None,
         }

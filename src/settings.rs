@@ -173,12 +173,18 @@ impl crate::GpuContext {
 pub struct Settings {
     /// Where to solve (default [`Backend::Auto`]).
     pub backend: Backend,
+    /// `Backend::Auto` with a GPU open: the measured costs of both paths by
+    /// island size that choose, per batch, the faster one (default None:
+    /// the model cached for this device and thread count, else measured
+    /// once by [`crate::Solver::new`] and cached; see [`crate::CostModel`]).
+    pub cost_model: Option<crate::CostModel>,
     /// The algorithm (default [`Method::Auto`]: the fastest exact path).
     pub method: Method,
     /// Visit every basis and report every solution and whether the solution
     /// set is finite (default false; method Auto or Enumeration, which then
-    /// enumerates). CPU only:
-    /// `Backend::Gpu` refuses it, `Auto` solves on the CPU.
+    /// enumerates). On the GPU every basis of every island of n ≤ 16 is
+    /// screened on the device and the flagged ones re-solved and decided in
+    /// f64 on the CPU: the same solution sets as the CPU's enumeration.
     pub all_solutions: bool,
     /// Enumeration only: settle what needs no enumeration first (separating
     /// islands, single contacts, a warm basis, the predicted basis when M is
@@ -238,6 +244,7 @@ impl Default for Settings {
         let p = PgsSettings::default();
         Settings {
             backend: Backend::Auto,
+            cost_model: None,
             method: Method::Auto,
             all_solutions: false,
             predict: true,
@@ -275,6 +282,9 @@ impl Settings {
 
     /// Checks every field; the error names the first one out of range.
     pub fn validate(&self) -> Result<(), Error> {
+        if let Some(m) = &self.cost_model {
+            m.validate()?;
+        }
         for (name, v) in [
             ("pivot_tol", self.pivot_tol),
             ("feasibility_tol", self.feasibility_tol),
@@ -324,7 +334,7 @@ impl Settings {
         if self.backend == Backend::Gpu && !self.gpu_capable() {
             return Err(invalid(
                 "backend",
-                "the GPU backend solves by enumeration only (no Lemke, PGS or all_solutions)",
+                "the GPU backend solves by enumeration only (no Lemke or PGS)",
             ));
         }
         if self.gpu.adapter.as_deref() == Some("") {
@@ -347,7 +357,7 @@ impl Settings {
 
     /// Whether the GPU can serve these settings (enumeration of one solution).
     pub(crate) fn gpu_capable(&self) -> bool {
-        matches!(self.method, Method::Auto | Method::Enumeration) && !self.all_solutions
+        matches!(self.method, Method::Auto | Method::Enumeration)
     }
 
     pub(crate) fn enumeration(&self) -> EnumerationSettings {

@@ -19,8 +19,10 @@
 //! K = (m_a⁻¹ + m_b⁻¹) E − (r_a* I_a⁻¹ r_a* + r_b* I_b⁻¹ r_b*), r* the cross
 //! product matrix (r × x = r* x).
 //!
-//! q_i = v_rel,i + ε_i min(v_rel,i, 0): Newton's restitution on approaching
-//! contacts ((1 + ε) v_rel⁻ in the seed), none on separating ones.
+//! q_i = v_rel,i + ε_i min(v_rel,i, 0) + b_i ([`normal_q`]): Newton's
+//! restitution on approaching contacts ((1 + ε) v_rel⁻ in the seed), none on
+//! separating ones, plus the contact's velocity bias b_i (time stepping puts
+//! the gap there, b = φ/Δt; 0 for a single frame).
 
 use glam::{DMat3, DVec3};
 
@@ -41,7 +43,7 @@ pub struct ContactRow {
     pub response: [f64; 12],
     /// (ṗ_a − ṗ_b)·n before the impulse; negative when approaching.
     pub v_rel: f64,
-    /// v_rel + ε min(v_rel, 0).
+    /// v_rel + ε min(v_rel, 0) + bias ([`normal_q`]).
     pub q: f64,
 }
 
@@ -54,10 +56,17 @@ pub fn cross_matrix(r: DVec3) -> DMat3 {
     )
 }
 
-/// q_i = v_rel + ε min(v_rel, 0).
+/// The normal q of a contact, the one formula every path uses (the shader's
+/// twin is in `assembly.wgsl`, same order of operations):
+/// q = v_rel + ε min(v_rel, 0) + b.
+///
+/// w = Mz + q ≥ 0 then reads v_rel⁺ ≥ −ε v_rel⁻ − b: Newton's restitution on
+/// approach, and with b = φ/Δt seed 001's DVI gap condition
+/// φ + Δt v_rel⁺ ≥ 0 (the time stepper chooses ε and b per contact; see
+/// `crate::world::step`).
 #[inline]
-pub fn restitution_q(v_rel: f64, restitution: f64) -> f64 {
-    v_rel + restitution * v_rel.min(0.0)
+pub fn normal_q(v_rel: f64, restitution: f64, bias: f64) -> f64 {
+    v_rel + restitution * v_rel.min(0.0) + bias
 }
 
 fn put(dst: &mut [f64; 12], at: usize, v: DVec3) {
@@ -100,7 +109,7 @@ pub fn assemble_contact(bodies: &[Body], c: &Contact) -> ContactRow {
         jacobian,
         response,
         v_rel,
-        q: restitution_q(v_rel, c.restitution),
+        q: normal_q(v_rel, c.restitution, c.bias),
     }
 }
 
@@ -178,7 +187,13 @@ mod tests {
 
     #[test]
     fn restitution_acts_only_on_approach() {
-        assert_eq!(restitution_q(-2.0, 0.5), -3.0);
-        assert_eq!(restitution_q(2.0, 0.5), 2.0);
+        assert_eq!(normal_q(-2.0, 0.5, 0.0), -3.0);
+        assert_eq!(normal_q(2.0, 0.5, 0.0), 2.0);
+    }
+
+    #[test]
+    fn the_bias_adds_to_q_after_restitution() {
+        assert_eq!(normal_q(-2.0, 0.5, 0.25), -2.75);
+        assert_eq!(normal_q(2.0, 0.5, -0.5), 1.5);
     }
 }

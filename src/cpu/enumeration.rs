@@ -260,6 +260,53 @@ pub fn enumerate(lcp: &Lcp, settings: &EnumerationSettings) -> Result<LcpSolutio
             "enumeration visits 2^n bases and is limited to n ≤ {MAX_ENUMERATION_N} (this problem has n = {n}); use Lemke"
         )));
     }
+    Ok(decide(lcp, settings, |visit| {
+        for_each_basis_in_order(n, visit)
+    }))
+}
+
+/// [`enumerate`] over the bases a screen left (the GPU's
+/// `shaders/enumeration_all.wgsl`, which solved every basis): `candidates`
+/// are re-solved in f64 in enumeration's order and decided exactly as
+/// [`enumerate`] decides, which gives its answer whenever they include every
+/// basis feasible to the relaxed tolerance in f64. `trusted_singular`: bases
+/// the screen found singular with the twin's own arithmetic (f64), counted
+/// and not re-solved. Counters: every basis visited.
+pub fn enumerate_screened(
+    lcp: &Lcp,
+    settings: &EnumerationSettings,
+    candidates: &mut [u32],
+    trusted_singular: u64,
+) -> Result<LcpSolution, crate::Error> {
+    settings.validate()?;
+    let n = lcp.n();
+    if n > MAX_ENUMERATION_N || candidates.iter().any(|&m| m >> n != 0) {
+        return Err(crate::Error::Unsupported(format!(
+            "screened enumeration: a basis outside 2^{n} or n > {MAX_ENUMERATION_N}"
+        )));
+    }
+    candidates.sort_unstable_by_key(|&m| (m.count_ones(), m));
+    let mut sol = decide(lcp, settings, |visit| {
+        for &m in candidates.iter() {
+            if !visit(m) {
+                return;
+            }
+        }
+    });
+    sol.counters.bases_visited = 1u64 << n;
+    sol.counters.singular_bases += trusted_singular;
+    Ok(sol)
+}
+
+/// The decision of enumeration over the bases `bases` hands to its visitor,
+/// in enumeration's order (by size, then mask); the visitor returns false
+/// to stop (at the first valid basis unless `all_solutions`).
+fn decide(
+    lcp: &Lcp,
+    settings: &EnumerationSettings,
+    bases: impl FnOnce(&mut dyn FnMut(u32) -> bool),
+) -> LcpSolution {
+    let n = lcp.n();
     let mut scratch = Scratch::new();
     let mut counters = Counters::default();
     // The first basis feasible to the strict tolerance, else the least
@@ -267,7 +314,7 @@ pub fn enumerate(lcp: &Lcp, settings: &EnumerationSettings) -> Result<LcpSolutio
     let mut chosen: Option<u32> = None;
     let mut least: Option<(f64, u32)> = None;
     let mut all = Vec::new();
-    for_each_basis_in_order(n, |mask| {
+    bases(&mut |mask| {
         counters.bases_visited += 1;
         let Some(infeasibility) = scratch.solve(lcp, mask, settings) else {
             counters.singular_bases += 1;
@@ -297,7 +344,7 @@ pub fn enumerate(lcp: &Lcp, settings: &EnumerationSettings) -> Result<LcpSolutio
         if settings.all_solutions {
             sol.solution_set = Some(SolutionSet::Empty);
         }
-        return Ok(sol);
+        return sol;
     };
     let BasisOutcome::Solved { z, .. } = solve_basis(lcp, basis, settings) else {
         unreachable!("a basis found nonsingular is nonsingular again")
@@ -312,7 +359,7 @@ pub fn enumerate(lcp: &Lcp, settings: &EnumerationSettings) -> Result<LcpSolutio
         sol.solution_set = Some(set);
         sol.all_bases = all;
     }
-    Ok(sol)
+    sol
 }
 
 /// Two solutions are the same point when they agree to a relative 1e-8.

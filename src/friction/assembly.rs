@@ -15,9 +15,10 @@
 //! [`matrix_entry`] of those rows: the sum over the dynamic bodies the two
 //! contacts share (static bodies and the world contribute nothing).
 //!
-//! q: the normal entry is [`restitution_q`] of v_rel = (ṗ_a − ṗ_b)·n, the
-//! same q as the LCP path (one function, so that a later bias term is added
-//! in one place); a tangent entry is t·(ṗ_a − ṗ_b), no restitution.
+//! q: the normal entry is [`normal_q`] of v_rel = (ṗ_a − ṗ_b)·n (restitution
+//! and the contact's bias, e.g. time stepping's gap φ/Δt), the same q as the
+//! LCP path, one function; a tangent entry is t·(ṗ_a − ṗ_b), no restitution
+//! and no bias.
 //!
 //! # Packed layout (for the GPU twin)
 //! Per island of k contacts, in one storage buffer of the batch's scalar
@@ -36,7 +37,7 @@ use crate::islands::Island;
 use crate::scene::{Body, Contact, Scene};
 
 #[cfg(doc)]
-use crate::cpu::assembly::restitution_q;
+use crate::cpu::assembly::normal_q;
 
 /// The three rows of one contact: normal, t₁, t₂. `rows[0]` is exactly the
 /// frictionless path's row (q with restitution); the tangents' q is the
@@ -54,10 +55,13 @@ pub struct FrictionContactRows {
 pub fn assemble_friction_contact(bodies: &[Body], c: &Contact) -> FrictionContactRows {
     let (t1, t2) = c.tangents();
     let along = |d: DVec3| {
-        // The same contact with normal d and no restitution: q = d·(ṗ_a − ṗ_b).
+        // The same contact with normal d, no restitution and no bias:
+        // q = d·(ṗ_a − ṗ_b). Every normal-only term of q must be switched
+        // off here, so that tangents keep the bare sliding velocity.
         let mut dc = c.clone();
         dc.normal = d.to_array();
         dc.restitution = 0.0;
+        dc.bias = 0.0;
         assemble_contact(bodies, &dc)
     };
     FrictionContactRows {

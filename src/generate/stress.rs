@@ -111,6 +111,7 @@ fn contact(a: usize, b: Option<usize>, point: DVec3, normal: DVec3, restitution:
         normal: normal.to_array(),
         restitution,
         id: None,
+        bias: 0.0,
         friction: 0.0,
         tangent: None,
     }

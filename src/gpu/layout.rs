@@ -9,7 +9,7 @@
 //! | record (scalars)        | stride | fields at offset                                                    |
 //! |-------------------------|--------|---------------------------------------------------------------------|
 //! | body ([`BODY`])         | 20     | inv_mass 0, inv_inertia (rows) 1..10, position 10..13, velocity 13..16, angular_velocity 16..19 |
-//! | contact ([`CONTACT`])   | 8      | point 0..3, normal 3..6, restitution 6                               |
+//! | contact ([`CONTACT`])   | 8      | point 0..3, normal 3..6, restitution 6, bias 7                       |
 //! | contact row ([`ROW`])   | 36     | K (rows) 0..9, jacobian 9..21, response 21..33, v_rel 33, q 34       |
 //! | island data             | n²+n   | M row-major 0..n², q n²..n²+n                                        |
 //! | body velocity ([`VELOCITY`]) | 8 | velocity 0..3, angular_velocity 4..7                                 |
@@ -42,6 +42,7 @@ pub mod contact {
     pub const POINT: usize = 0;
     pub const NORMAL: usize = 3;
     pub const RESTITUTION: usize = 6;
+    pub const BIAS: usize = 7;
     pub const STRIDE: usize = 8;
 }
 pub use contact::STRIDE as CONTACT;
@@ -241,6 +242,7 @@ pub fn pack_contact(
     o[contact::POINT..contact::POINT + 3].copy_from_slice(&c.point);
     o[contact::NORMAL..contact::NORMAL + 3].copy_from_slice(&c.normal);
     o[contact::RESTITUTION] = c.restitution;
+    o[contact::BIAS] = c.bias;
 }
 
 /// Packs one contact row.
@@ -291,6 +293,7 @@ pub fn assemble_contacts_packed(
             normal: [v[3], v[4], v[5]],
             restitution: v[contact::RESTITUTION],
             id: None,
+            bias: v[contact::BIAS],
             friction: 0.0,
             tangent: None,
         };

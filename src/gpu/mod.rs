@@ -56,6 +56,7 @@
 //!   the GPU, through assembly.wgsl on the direction contacts);
 //! - [`layout`]: buffer layouts shared with the CPU twins.
 
+pub(crate) mod all_bases;
 pub mod batch;
 pub(crate) mod buffers;
 pub mod context;

@@ -38,6 +38,15 @@ pub(crate) const ENUMERATION_BINDINGS: Bindings = &[
     (6, ReadWrite),
     (7, Uniform),
 ];
+/// shaders/enumeration_all.wgsl: params, islands, values, tolerances,
+/// verdicts (the shared enumeration bindings it uses, and its own).
+pub(crate) const ALL_BASES_BINDINGS: Bindings = &[
+    (0, Uniform),
+    (1, Read),
+    (2, Read),
+    (7, Uniform),
+    (8, ReadWrite),
+];
 /// `assemble_contacts` (shaders/assembly.wgsl): params, bodies,
 /// contact_bodies, contacts, rows.
 pub(crate) const ASSEMBLE_CONTACTS_BINDINGS: Bindings = &[
@@ -178,6 +187,8 @@ pub(crate) struct Pipelines {
     unrolled: Vec<OnceLock<Stage>>,
     /// [`Shader::Tree`] n at index n − 1 (n = 1…[`TREE_MAX_N`]).
     tree: Vec<OnceLock<Stage>>,
+    /// [`Shader::AllBases`] (`all_solutions` only), built on first use.
+    all_bases: OnceLock<Stage>,
     pub(crate) assemble_contacts: Stage,
     pub(crate) assemble_islands: Stage,
     pub(crate) impulses: Stage,
@@ -214,6 +225,7 @@ impl Pipelines {
                 enumeration_workgroup: enumeration(Shader::Workgroup)?,
                 unrolled: (0..FIXED_MAX_N).map(|_| OnceLock::new()).collect(),
                 tree: (0..TREE_MAX_N).map(|_| OnceLock::new()).collect(),
+                all_bases: OnceLock::new(),
                 assemble_contacts: Stage::new(
                     ctx,
                     Shader::Assembly,
@@ -236,6 +248,15 @@ impl Pipelines {
     /// (1 ≤ n ≤ [`FIXED_MAX_N`]), built on first use.
     pub(crate) fn unrolled(&self, ctx: &GpuContext, n: usize) -> Result<&Stage, Error> {
         lazy(&self.unrolled, ctx, n, Shader::Unrolled(n))
+    }
+
+    /// The stage that screens every basis of every island, built on first use.
+    pub(crate) fn all_bases(&self, ctx: &GpuContext) -> Result<&Stage, Error> {
+        if let Some(s) = self.all_bases.get() {
+            return Ok(s);
+        }
+        let stage = Stage::new(ctx, Shader::AllBases, "main", ALL_BASES_BINDINGS)?;
+        Ok(self.all_bases.get_or_init(|| stage))
     }
 
     /// The tree stage for islands of n contacts (1 ≤ n ≤ [`TREE_MAX_N`]),

@@ -100,7 +100,7 @@ fn assemble_and_enumerate(
             let bodies = ctx.storage("bodies", &scalars_to_bytes(&c.bodies, precision));
             // contact_bodies: each contact's bodies, as chunk-wide body indices.
             let ids = ctx.storage("contact_bodies", bytemuck::cast_slice(&c.ids));
-            // contacts: point, normal, restitution of every contact (8 scalars).
+            // contacts: point, normal, restitution, bias of every contact (8 scalars).
             let contacts = ctx.storage("contacts", &scalars_to_bytes(&c.contacts, precision));
             // rows: assembly's per-contact output (K, J, M⁻¹Jᵀ, v_rel, q); the
             // island stage and the impulse stage read it on the device.

@@ -5,7 +5,7 @@
 pub mod fc3d;
 pub mod friction;
 pub mod siconos;
-mod strict;
+pub(crate) mod strict;
 
 use std::path::Path;
 
@@ -50,50 +50,14 @@ enum JsonInput {
 /// Parses JSON text holding a scene, `{"scenes": [...]}` or
 /// `{"problems": [...]}`, and checks every item. `path` names the file in errors.
 pub fn parse_json(path: &str, text: &str) -> Result<Input, Error> {
-    // Parse as a generic value first so that syntax errors keep their position,
-    // then pick the shape by its top-level key. A value of the wrong type or
-    // shape is then named by item and field (see [`shape_error`]), as the
-    // checks on values name theirs.
-    let value: serde_json::Value = serde_json::from_str(text).map_err(|e| Error::json(path, e))?;
-    if let Some((at, key)) = strict::duplicate_key(text) {
-        return Err(Error::invalid(
-            strict::item_of(path, &at),
-            key,
-            "appears twice in one object (each field once)",
-        ));
+    match typed(text) {
+        Some(input) => checked_items(path, input),
+        None => checked(path, text),
     }
-    let Some(obj) = value.as_object() else {
-        return Err(Error::invalid(
-            path,
-            "(top level)",
-            "expected a JSON object",
-        ));
-    };
-    if obj.contains_key("friction_problems") {
-        return Ok(Input::Friction(friction::parse_friction_json(path, value)?));
-    }
-    let input = if obj.contains_key("problems") {
-        let batch: BatchFile = serde_json::from_value(value.clone())
-            .map_err(|e| shape_error(path, text, &value, Shape::Batch, e))?;
-        JsonInput::Batch {
-            problems: batch.problems,
-        }
-    } else if obj.contains_key("scenes") {
-        let s: ScenesFile = serde_json::from_value(value.clone())
-            .map_err(|e| shape_error(path, text, &value, Shape::Scenes, e))?;
-        JsonInput::Scenes { scenes: s.scenes }
-    } else if obj.contains_key("bodies") || obj.contains_key("contacts") {
-        JsonInput::Scene(
-            serde_json::from_value(value.clone())
-                .map_err(|e| shape_error(path, text, &value, Shape::Scene, e))?,
-        )
-    } else {
-        return Err(Error::invalid(
-            path,
-            "(top level)",
-            "expected a key `problems` (LCP batch), `friction_problems` (frictional batch), `scenes` or `bodies` and `contacts` (scene)",
-        ));
-    };
+}
+
+/// Every item of a parsed file checked (an error names the first bad one).
+fn checked_items(path: &str, input: JsonInput) -> Result<Input, Error> {
     match input {
         JsonInput::Batch { problems } => {
             if problems.is_empty() {
@@ -127,6 +91,61 @@ pub fn parse_json(path: &str, text: &str) -> Result<Input, Error> {
             Ok(Input::Scenes(vec![scene]))
         }
     }
+}
+
+/// The fast path: a file of the right shape parsed straight into its type,
+/// once. serde's derive refuses unknown fields (`deny_unknown_fields`) and a
+/// field given twice in one object, and every object of the formats is a
+/// derived struct, so what parses here is what [`checked`] accepts, with the
+/// same numbers. None for anything else: [`checked`] then says precisely
+/// what is wrong.
+fn typed(text: &str) -> Option<JsonInput> {
+    if let Ok(b) = serde_json::from_str::<BatchFile>(text) {
+        return Some(JsonInput::Batch {
+            problems: b.problems,
+        });
+    }
+    if let Ok(s) = serde_json::from_str::<ScenesFile>(text) {
+        return Some(JsonInput::Scenes { scenes: s.scenes });
+    }
+    serde_json::from_str::<Scene>(text)
+        .ok()
+        .map(JsonInput::Scene)
+}
+
+/// The checked path: parse as a generic value first so that syntax errors
+/// keep their position, look for a key given twice, then pick the shape by
+/// its top-level key. A value of the wrong type or shape is then named by
+/// item and field (see [`shape_error`]), as the checks on values name theirs.
+fn checked(path: &str, text: &str) -> Result<Input, Error> {
+    let value = strict::parse_object(path, text, strict::item_of)?;
+    if value.get("friction_problems").is_some() {
+        return Ok(Input::Friction(friction::parse_friction_json(path, value)?));
+    }
+    let obj = value.as_object().expect("parse_object checked");
+    let input = if obj.contains_key("problems") {
+        let batch: BatchFile = serde_json::from_value(value.clone())
+            .map_err(|e| shape_error(path, text, &value, Shape::Batch, e))?;
+        JsonInput::Batch {
+            problems: batch.problems,
+        }
+    } else if obj.contains_key("scenes") {
+        let s: ScenesFile = serde_json::from_value(value.clone())
+            .map_err(|e| shape_error(path, text, &value, Shape::Scenes, e))?;
+        JsonInput::Scenes { scenes: s.scenes }
+    } else if obj.contains_key("bodies") || obj.contains_key("contacts") {
+        JsonInput::Scene(
+            serde_json::from_value(value.clone())
+                .map_err(|e| shape_error(path, text, &value, Shape::Scene, e))?,
+        )
+    } else {
+        return Err(Error::invalid(
+            path,
+            "(top level)",
+            "expected a key `problems` (LCP batch), `friction_problems` (frictional batch), `scenes` or `bodies` and `contacts` (scene)",
+        ));
+    };
+    checked_items(path, input)
 }
 
 /// The three shapes of a JSON input file.

@@ -7,7 +7,7 @@
 /// the path of that object (`["scenes", "[2]", "contacts", "[1]"]`); None
 /// when every object's keys are distinct (serde_json's `Value` would keep
 /// only the last of two, silently). `text` is known to parse.
-pub(super) fn duplicate_key(text: &str) -> Option<(Vec<String>, String)> {
+pub(crate) fn duplicate_key(text: &str) -> Option<(Vec<String>, String)> {
     use serde::de::{DeserializeSeed, Deserializer, MapAccess, SeqAccess, Visitor};
     struct Walk<'a>(&'a mut Vec<String>, &'a mut Option<(Vec<String>, String)>);
     impl<'de> DeserializeSeed<'de> for Walk<'_> {
@@ -68,6 +68,34 @@ pub(super) fn duplicate_key(text: &str) -> Option<(Vec<String>, String)> {
     let mut d = serde_json::Deserializer::from_str(text);
     Walk(&mut path, &mut found).deserialize(&mut d).ok()?;
     found
+}
+
+/// Strict parsing of a file's JSON text, shared by every format: syntax
+/// errors keep their position, a key twice in one object is an error naming
+/// the item (`item_of(path, json path)`) and the key, and the top level must
+/// be an object.
+pub(crate) fn parse_object(
+    path: &str,
+    text: &str,
+    item_of: fn(&str, &[String]) -> String,
+) -> Result<serde_json::Value, crate::Error> {
+    use crate::Error;
+    let value: serde_json::Value = serde_json::from_str(text).map_err(|e| Error::json(path, e))?;
+    if let Some((at, key)) = duplicate_key(text) {
+        return Err(Error::invalid(
+            item_of(path, &at),
+            key,
+            "appears twice in one object (each field once)",
+        ));
+    }
+    if !value.is_object() {
+        return Err(Error::invalid(
+            path,
+            "(top level)",
+            "expected a JSON object",
+        ));
+    }
+    Ok(value)
 }
 
 /// The item a JSON path names, in the words of the other errors: `problem

@@ -62,10 +62,31 @@ impl Solver {
         Ok(r)
     }
 
-    /// The CPU path for checked scenes, in phases: build (islands and
-    /// assembly), solve (every island of every scene over the cores),
-    /// impulses. `warm`: per scene, per island, the warm basis (empty: none).
-    pub(super) fn scenes_on_cpu(&self, scenes: &[Scene], warm: &[Vec<Option<u32>>]) -> Report {
+    /// The CPU path for checked scenes: every island of every scene over
+    /// the cores. `warm`: per scene, per island, the warm basis (empty: none).
+    pub(super) fn scenes_on_cpu(
+        &self,
+        scenes: &[Scene],
+        warm: &[Vec<Option<u32>>],
+    ) -> Result<Report, Error> {
+        self.scenes_with(scenes, |index, lcps| {
+            Ok(parallel_map(index.len(), self.threads, |j| {
+                let (s, k) = index[j];
+                let w = warm.get(s).and_then(|w| w[k]);
+                solve_on_cpu(lcps[j], w, &self.settings)
+            }))
+        })
+    }
+
+    /// Checked scenes in phases: build (islands and assembly, on the CPU),
+    /// solve (`solve` gets every island of every scene, flattened, as
+    /// (scene, island) and its LCP, and returns one result per island, in
+    /// order), impulses. The report's device is the solver's.
+    pub(super) fn scenes_with(
+        &self,
+        scenes: &[Scene],
+        solve: impl FnOnce(&[(usize, usize)], &[&Lcp]) -> Result<Vec<Solved>, Error>,
+    ) -> Result<Report, Error> {
         let t = Instant::now();
         let built = parallel_map(scenes.len(), self.threads, |i| {
             let s = &scenes[i];
@@ -85,11 +106,8 @@ impl Solver {
             .enumerate()
             .flat_map(|(s, b)| (0..b.2.len()).map(move |k| (s, k)))
             .collect();
-        let solved = parallel_map(index.len(), self.threads, |j| {
-            let (s, k) = index[j];
-            let w = warm.get(s).and_then(|w| w[k]);
-            solve_on_cpu(&built[s].2[k], w, &self.settings)
-        });
+        let lcps: Vec<&Lcp> = index.iter().map(|&(s, k)| &built[s].2[k]).collect();
+        let solved = solve(&index, &lcps)?;
         let solve = t.elapsed().as_secs_f64();
         let t = Instant::now();
         let mut islands = Vec::with_capacity(index.len());
@@ -123,16 +141,19 @@ impl Solver {
         report.timings.build = build;
         report.timings.solve = solve;
         report.timings.impulses = t.elapsed().as_secs_f64();
-        report
+        Ok(report)
     }
 
     fn cpu_report(&self, mut islands: Vec<IslandReport>, scenes: Vec<SceneReport>) -> Report {
         self.check(&mut islands);
-        let mut r = Report::new(islands, scenes, self.device(), self.choice.clone());
+        let mut r = Report::new(islands, scenes, self.cpu_device(), self.choice.clone());
         r.fallback = self.fallback.clone();
         r
     }
 }
+
+/// One island's answer: the method that ran, the path, the solution.
+pub(super) type Solved = (Method, SolvePath, LcpSolution);
 
 /// One island on the CPU with the chosen method: (method that ran, path, solution).
 ///
@@ -140,7 +161,7 @@ impl Solver {
 /// Auto's checked Lemke ([`lemke_checked`]), then enumeration by size;
 /// islands above n = 20 go to Lemke (the LCP path refuses them on the CPU
 /// backend with Enumeration before it gets here).
-fn solve_on_cpu(lcp: &Lcp, warm: Option<u32>, s: &Settings) -> (Method, SolvePath, LcpSolution) {
+pub(super) fn solve_on_cpu(lcp: &Lcp, warm: Option<u32>, s: &Settings) -> Solved {
     let lemke_path = || (Method::Lemke, SolvePath::Lemke, lemke(lcp, &s.lemke()));
     match s.method {
         Method::Lemke => lemke_path(),

@@ -13,11 +13,8 @@ use crate::friction::assembly::{
     FrictionContactRows,
 };
 use crate::friction::{solve_friction_problem, FrictionProblem};
-use crate::gpu::Precision;
 use crate::islands::{find_islands, Island};
-use crate::report::{
-    ContactImpulse, Device, DeviceKind, FrictionIslandReport, Report, SceneFriction, SceneReport,
-};
+use crate::report::{ContactImpulse, FrictionIslandReport, Report, SceneFriction, SceneReport};
 use crate::scene::Scene;
 use crate::Error;
 
@@ -58,15 +55,6 @@ impl FrictionWarm {
 }
 
 impl Solver {
-    /// The CPU as a [`Device`] (where the friction path always runs).
-    pub(super) fn cpu_device(&self) -> Device {
-        Device {
-            kind: DeviceKind::Cpu,
-            name: format!("cpu ({} thread(s), f64)", self.threads),
-            precision: Precision::F64,
-        }
-    }
-
     /// Solves a batch of frictional problems, in the caller's order, on the
     /// CPU in f64 over every core with `settings.friction_method`; the
     /// results are in [`Report::friction`]. Every problem is checked first

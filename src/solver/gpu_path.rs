@@ -11,7 +11,11 @@ use crate::settings::Method;
 use crate::validation::BatchReport;
 use crate::Error;
 
-use super::cpu_path::prediction_path;
+use super::cpu_path::{prediction_path, solve_on_cpu, Solved};
+use crate::cpu::batch::parallel_map;
+use crate::cpu::enumeration::enumerate_screened;
+use crate::gpu::all_bases::{screen_all_bases, ScreenFigures, Screened};
+use crate::gpu::MAX_GPU_N;
 
 impl Solver {
     /// Checked LCPs on the GPU; a panic inside wgpu becomes [`Error::Gpu`].
@@ -79,6 +83,84 @@ impl Solver {
         Ok(self.gpu_report(islands, out, &r.report, r.max_velocity_deviation))
     }
 
+    /// `all_solutions` for LCPs on the GPU ([`Self::all_solutions_on_gpu`]).
+    pub(super) fn all_solutions_lcps_on_gpu(
+        &self,
+        ctx: &GpuContext,
+        lcps: &[Lcp],
+    ) -> Result<Report, Error> {
+        let refs: Vec<&Lcp> = lcps.iter().collect();
+        let t = std::time::Instant::now();
+        let (solved, figures) = self.all_solutions_on_gpu(ctx, &refs)?;
+        let mut islands: Vec<IslandReport> = solved
+            .into_iter()
+            .enumerate()
+            .map(|(i, (method, path, solution))| IslandReport {
+                scene: None,
+                contacts: (0..lcps[i].n()).collect(),
+                method,
+                path,
+                solution,
+            })
+            .collect();
+        self.check(&mut islands);
+        let mut r = Report::new(islands, Vec::new(), self.device(), self.choice.clone());
+        r.timings.solve = t.elapsed().as_secs_f64();
+        add_screen_figures(&mut r, figures);
+        Ok(r)
+    }
+
+    /// `all_solutions` for scenes: islands and assembly on the CPU, every
+    /// basis screened on the GPU ([`Self::all_solutions_on_gpu`]).
+    pub(super) fn all_solutions_scenes_on_gpu(
+        &self,
+        ctx: &GpuContext,
+        scenes: &[Scene],
+    ) -> Result<Report, Error> {
+        let mut figures = ScreenFigures::default();
+        let mut r = self.scenes_with(scenes, |_, lcps| {
+            let (solved, f) = self.all_solutions_on_gpu(ctx, lcps)?;
+            figures = f;
+            Ok(solved)
+        })?;
+        r.device = self.device();
+        add_screen_figures(&mut r, figures);
+        Ok(r)
+    }
+
+    /// Every basis of every island of n ≤ 16 screened on the GPU
+    /// (`shaders/enumeration_all.wgsl`), the flagged bases re-solved in f64
+    /// and decided by the CPU enumeration's rule, so that statuses, solution
+    /// sets and chosen bases are the CPU's; larger islands on the CPU
+    /// (enumeration up to n = 20, Lemke above). A panic inside wgpu becomes
+    /// [`Error::Gpu`].
+    fn all_solutions_on_gpu(
+        &self,
+        ctx: &GpuContext,
+        lcps: &[&Lcp],
+    ) -> Result<(Vec<Solved>, ScreenFigures), Error> {
+        let gs = self.settings.gpu_solve();
+        let small: Vec<usize> = (0..lcps.len())
+            .filter(|&i| lcps[i].n() <= MAX_GPU_N)
+            .collect();
+        let on_gpu: Vec<&Lcp> = small.iter().map(|&i| lcps[i]).collect();
+        let (screened, figures) = guarded(|| screen_all_bases(ctx, &on_gpu, &gs))?;
+        let mut of: Vec<Option<Screened>> = vec![None; lcps.len()];
+        for (i, s) in small.into_iter().zip(screened) {
+            of[i] = Some(s);
+        }
+        let e = self.settings.enumeration();
+        let solved = parallel_map(lcps.len(), self.threads, |i| match &of[i] {
+            Some(s) => {
+                let mut candidates = s.candidates.clone();
+                enumerate_screened(lcps[i], &e, &mut candidates, s.trusted_singular)
+                    .map(|sol| (Method::Enumeration, SolvePath::EnumeratedGpu, sol))
+            }
+            None => Ok(solve_on_cpu(lcps[i], None, &self.settings)),
+        });
+        Ok((solved.into_iter().collect::<Result<_, _>>()?, figures))
+    }
+
     fn gpu_report(
         &self,
         mut islands: Vec<IslandReport>,
@@ -104,6 +186,19 @@ impl Solver {
         });
         r
     }
+}
+
+/// The screen's figures in a report: every GPU-screened island was decided
+/// in f64 (polished), the others solved on the CPU.
+fn add_screen_figures(r: &mut Report, f: ScreenFigures) {
+    r.counts.polished = r.counts.enumerated_gpu;
+    r.counts.cpu_fallback = r.islands.len() - r.counts.enumerated_gpu;
+    r.timings.gpu = f.seconds;
+    r.gpu = Some(GpuFigures {
+        chunks: f.chunks,
+        dispatches: f.dispatches,
+        ..GpuFigures::default()
+    });
 }
 
 /// The path of an island the GPU backend returned.

@@ -6,10 +6,13 @@
 //! - [`Backend::Cpu`]: the f64 path over every core;
 //! - [`Backend::Gpu`]: the GPU (software adapters too), every answer checked
 //!   on the CPU in f64;
-//! - [`Backend::Auto`]: the GPU when there is a hardware adapter or one was
-//!   named in [`crate::GpuSettings::adapter`], else the CPU (software
-//!   adapters are slower than the CPU path on every batch measured,
-//!   BENCHMARKS.md). [`Report::choice`] says why.
+//! - [`Backend::Auto`]: where there is a hardware adapter or one was named
+//!   in [`crate::GpuSettings::adapter`], each batch where a [`CostModel`] of
+//!   this machine (measured once, cached) estimates it faster; else the CPU
+//!   (an unnamed software adapter is not even opened: it is slower than the
+//!   CPU path on every batch measured, BENCHMARKS.md, and calibrating it
+//!   would compile its kernels for tens of seconds). [`Report::choice`]
+//!   says why, with both estimates.
 //!
 //! # Device trouble
 //! No adapter, a named adapter that does not exist, f64 asked of an adapter
@@ -25,11 +28,15 @@
 use std::sync::Arc;
 use std::time::Instant;
 
+mod cost;
 mod cpu_path;
 mod friction_path;
 mod gpu_path;
+pub mod world_path;
 
-use crate::gpu::{self, GpuContext};
+pub use cost::{cache_dir, CostModel, CALIBRATION_SIZES};
+
+use crate::gpu::{self, GpuContext, Precision};
 use crate::islands::find_islands;
 use crate::lcp::Lcp;
 use crate::prediction::WarmStart;
@@ -67,6 +74,8 @@ pub struct Solver {
     /// Frictional impulses of the last call by contact id (with `settings.warm_start`).
     friction_warm: friction_path::FrictionWarm,
     threads: usize,
+    /// `Backend::Auto` with a GPU open: the costs that choose per batch.
+    cost: Option<CostModel>,
 }
 
 impl Solver {
@@ -86,8 +95,12 @@ impl Solver {
             warm: WarmStart::default(),
             friction_warm: Default::default(),
             threads,
+            cost: None,
         };
         solver.choose_device()?;
+        if solver.settings.backend == Backend::Auto && solver.gpu.is_some() {
+            solver.load_cost_model();
+        }
         Ok(solver)
     }
 
@@ -118,14 +131,7 @@ impl Solver {
                 true
             }
             Backend::Auto if !s.gpu_capable() => {
-                self.choice = format!(
-                    "backend auto: {} runs on the CPU only",
-                    if s.all_solutions {
-                        "all_solutions"
-                    } else {
-                        s.method.name()
-                    }
-                );
+                self.choice = format!("backend auto: {} runs on the CPU only", s.method.name());
                 false
             }
             Backend::Auto if s.gpu.adapter.is_some() => {
@@ -164,12 +170,71 @@ impl Solver {
         Ok(())
     }
 
+    /// `Backend::Auto` with a GPU open: the model given in the settings,
+    /// else the cached one, else a calibration (cached). Device trouble
+    /// during the calibration falls back to the CPU.
+    fn load_cost_model(&mut self) {
+        let device = self.device().name;
+        let dir = cost::cache_dir();
+        let model = self.settings.cost_model.clone().or_else(|| {
+            dir.as_deref()
+                .and_then(|d| cost::cached(d, &device, self.threads))
+        });
+        self.cost = match model {
+            Some(m) => Some(m),
+            None => match self.calibrate() {
+                Ok(m) => {
+                    // A cache that cannot be written is skipped: the next
+                    // process measures again.
+                    if let Some(d) = &dir {
+                        let _ = cost::store(d, &m);
+                    }
+                    Some(m)
+                }
+                Err(e) => {
+                    self.fall_back(format!("calibrating the cost model: {e}"));
+                    None
+                }
+            },
+        };
+    }
+
+    /// The cost model `Backend::Auto` chooses by (None: no GPU open, or
+    /// another backend).
+    pub fn cost_model(&self) -> Option<&CostModel> {
+        self.cost.as_ref()
+    }
+
+    /// Whether the next batch of islands of `sizes` goes to the GPU, and
+    /// why in words for the report (without a cost model: wherever a GPU
+    /// is open).
+    fn gpu_for(&self, sizes: impl Iterator<Item = usize>) -> (bool, String) {
+        match (&self.gpu, &self.cost) {
+            (None, _) => (false, self.choice.clone()),
+            (Some(_), None) => (true, self.choice.clone()),
+            (Some(_), Some(m)) => {
+                let (cpu, gpu) = m.estimate(sizes);
+                let on_gpu = gpu < cpu;
+                let why = format!(
+                    "{}; cost model: CPU {:.3} ms, GPU {:.3} ms estimated → {}",
+                    self.choice,
+                    cpu * 1e3,
+                    gpu * 1e3,
+                    if on_gpu { "GPU" } else { "CPU" }
+                );
+                (on_gpu, why)
+            }
+        }
+    }
+
     /// The settings it was built with.
     pub fn settings(&self) -> &Settings {
         &self.settings
     }
 
-    /// Where the next batch will be solved.
+    /// The device that solves batches on the GPU while one is open (with
+    /// `Backend::Auto`'s cost model, the batches it estimates faster there),
+    /// else the CPU.
     pub fn device(&self) -> Device {
         match self.gpu.as_deref() {
             Some(ctx) => {
@@ -192,6 +257,15 @@ impl Solver {
                 }
             }
             None => self.cpu_device(),
+        }
+    }
+
+    /// The CPU path as a device.
+    pub(super) fn cpu_device(&self) -> Device {
+        Device {
+            kind: DeviceKind::Cpu,
+            name: format!("cpu ({} thread(s), f64)", self.threads),
+            precision: Precision::F64,
         }
     }
 
@@ -270,8 +344,14 @@ impl Solver {
         }
         let warm = self.warm_bases(keys);
         let mut report = None;
-        if let Some(ctx) = self.gpu.clone() {
-            match self.lcps_on_gpu(&ctx, lcps, warm.as_deref()) {
+        let (use_gpu, why) = self.gpu_for(lcps.iter().map(Lcp::n));
+        if let Some(ctx) = self.gpu.clone().filter(|_| use_gpu) {
+            let on_gpu = if self.settings.all_solutions {
+                self.all_solutions_lcps_on_gpu(&ctx, lcps)
+            } else {
+                self.lcps_on_gpu(&ctx, lcps, warm.as_deref())
+            };
+            match on_gpu {
                 Ok(r) => report = Some(r),
                 Err(Error::Gpu(why)) => self.fall_back(why),
                 Err(e) => return Err(e),
@@ -281,6 +361,9 @@ impl Solver {
             Some(r) => r,
             None => self.lcps_on_cpu(lcps, warm.as_deref())?,
         };
+        if self.cost.is_some() {
+            report.choice = why;
+        }
         if let Some(keys) = keys {
             self.remember(report.islands.iter().zip(keys).map(|(isl, k)| (*k, isl)));
         }
@@ -328,17 +411,34 @@ impl Solver {
             Vec::new()
         };
         let mut report = None;
-        if let Some(ctx) = self.gpu.clone() {
-            match self.scenes_on_gpu(&ctx, scenes, &warm) {
+        let (use_gpu, why) = if self.cost.is_some() {
+            let sizes: Vec<usize> = scenes
+                .iter()
+                .flat_map(|s| find_islands(s).into_iter().map(|i| i.contacts.len()))
+                .collect();
+            self.gpu_for(sizes.into_iter())
+        } else {
+            self.gpu_for(std::iter::empty())
+        };
+        if let Some(ctx) = self.gpu.clone().filter(|_| use_gpu) {
+            let on_gpu = if self.settings.all_solutions {
+                self.all_solutions_scenes_on_gpu(&ctx, scenes)
+            } else {
+                self.scenes_on_gpu(&ctx, scenes, &warm)
+            };
+            match on_gpu {
                 Ok(r) => report = Some(r),
                 Err(Error::Gpu(why)) => self.fall_back(why),
                 Err(e) => return Err(e),
             }
         }
-        let report = match report {
+        let mut report = match report {
             Some(r) => r,
-            None => self.scenes_on_cpu(scenes, &warm),
+            None => self.scenes_on_cpu(scenes, &warm)?,
         };
+        if self.cost.is_some() {
+            report.choice = why;
+        }
         if self.settings.warm_start {
             let ids: Vec<Vec<u64>> = report
                 .islands

@@ -166,6 +166,8 @@ fn moving_static_platform_matches_cpu_f64() {
                     normal: [0.0, -1.0, 0.0],
                     restitution: 0.25,
                     id: None,
+                    // A gap term (time stepping's φ/Δt) reaches q on both paths.
+                    bias: -0.125,
                     friction: 0.0,
                     tangent: None,
                 }
@@ -177,6 +179,7 @@ fn moving_static_platform_matches_cpu_f64() {
                     normal: [0.0, 1.0, 0.0],
                     restitution: 0.5,
                     id: None,
+                    bias: 0.0625 * i as f64,
                     friction: 0.0,
                     tangent: None,
                 }

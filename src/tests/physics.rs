@@ -30,6 +30,7 @@ pub(super) fn contact(a: usize, b: Option<usize>, point: DVec3, normal: DVec3, e
         normal: normal.to_array(),
         restitution: e,
         id: None,
+        bias: 0.0,
         friction: 0.0,
         tangent: None,
     }

@@ -9,6 +9,7 @@ mod empty;
 mod friction;
 mod golden;
 mod gpu;
+mod simulate;
 mod trouble;
 
 use std::path::{Path, PathBuf};

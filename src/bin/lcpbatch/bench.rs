@@ -224,6 +224,66 @@ pub fn gpu_row(solver: &mut Solver, family: BenchFamily, lcps: &[Lcp]) -> Result
     row(solver, family, lcps, &name)
 }
 
+/// `Backend::Auto` on the bench's adapter, named so that a software adapter
+/// is opened too: it chooses per batch by its cost model (cached, or
+/// measured now). None without a GPU.
+pub fn auto_solver(gpus: &[Solver], gpu: &Option<GpuSettings>) -> Option<Solver> {
+    let name = gpus.first()?.shared_device()?.adapter_info().name.clone();
+    let gpu = GpuSettings {
+        adapter: Some(name),
+        ..gpu.clone()?
+    };
+    Solver::new(Settings {
+        gpu,
+        ..Settings::default()
+    })
+    .ok()
+    .filter(|s| s.cost_model().is_some())
+}
+
+/// The auto row, its note saying where the cost model sent the batch and
+/// its speed against the faster of the CPU (default path, every core) and
+/// the GPU rows on the same batch.
+fn auto_row(
+    solver: &mut Solver,
+    family: BenchFamily,
+    lcps: &[Lcp],
+    same_batch: &[BenchRow],
+) -> Result<BenchRow, Error> {
+    let mut warm;
+    let solver = if family == BenchFamily::WarmResting {
+        warm = Solver::new(Settings {
+            warm_start: true,
+            cost_model: solver.cost_model().cloned(),
+            ..solver.settings().clone()
+        })?;
+        &mut warm
+    } else {
+        solver
+    };
+    let (report, secs, same) = timed(solver, family, lcps)?;
+    let mut r = BenchRow::of(family, "auto (cost model)", &report, secs);
+    if same == Some(false) {
+        r.note.push_str("; DIFFERS from cold");
+    }
+    let chose = if report.choice.ends_with("GPU") {
+        "GPU"
+    } else {
+        "CPU"
+    };
+    let faster = same_batch
+        .iter()
+        .filter(|b| b.solver == "auto, all cores" || b.solver.starts_with("gpu"))
+        .map(|b| b.islands_per_second)
+        .fold(0.0, f64::max);
+    r.backend = format!("auto → {chose}");
+    r.note.push_str(&format!(
+        "; {:.2}x the faster of CPU (all cores) and GPU",
+        r.islands_per_second / faster
+    ));
+    Ok(r)
+}
+
 /// Seconds per island against n (random islands of exactly n contacts):
 /// bare enumeration and the default path on one thread, and each GPU solver.
 fn time_vs_n(opts: &BenchOptions, gpus: &mut [Solver]) -> Result<Vec<Curve>, Error> {
@@ -357,7 +417,11 @@ pub fn run(opts: &BenchOptions) -> Result<(), Error> {
     let mut gpus = gpu_solvers(&opts.gpu, &Settings::default());
     let machine = machine_description(&gpus);
     println!("machine: {machine}");
-    let steps = (BenchFamily::ALL.len() * (9 + gpus.len()) + 2) as u64;
+    let mut auto = auto_solver(&gpus, &opts.gpu);
+    if let Some(m) = auto.as_ref().and_then(Solver::cost_model) {
+        print!("auto's {m}");
+    }
+    let steps = (BenchFamily::ALL.len() * (10 + gpus.len()) + 2) as u64;
     let bar = indicatif::ProgressBar::new(steps);
     bar.set_style(
         indicatif::ProgressStyle::with_template("{elapsed_precise} [{bar:30}] {pos}/{len} {msg}")
@@ -370,10 +434,16 @@ pub fn run(opts: &BenchOptions) -> Result<(), Error> {
             bar.set_message(format!("{} {what}", family.name()));
             bar.inc(1);
         };
+        let first = rows.len();
         rows.extend(cpu_rows(family, &lcps, &progress)?);
         for g in gpus.iter_mut() {
             progress("gpu");
             rows.push(gpu_row(g, family, &lcps)?);
+        }
+        if let Some(a) = auto.as_mut() {
+            progress("auto");
+            let same_batch = rows[first..].to_vec();
+            rows.push(auto_row(a, family, &lcps, &same_batch)?);
         }
     }
     bar.set_message("time against n");

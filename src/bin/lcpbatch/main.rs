@@ -5,6 +5,7 @@ mod bench;
 mod devices;
 mod generate;
 mod plots;
+mod simulate;
 mod stress;
 
 use std::path::PathBuf;
@@ -124,16 +125,27 @@ enum Command {
         /// Where to solve (auto: the GPU whenever an adapter exists).
         #[arg(long, value_enum, default_value = "auto")]
         backend: BackendArg,
+        /// Steps of the worlds stepped in time (second part; 0 skips it).
+        #[arg(long, default_value_t = 200)]
+        steps: usize,
+        /// Where the second part writes steps.jsonl, final.json and its plots.
+        #[arg(long, default_value = "demo-out")]
+        out: PathBuf,
         #[command(flatten)]
         gpu: GpuArgs,
     },
     /// Write fixed-seed scenes or LCP batches as JSON (what `solve` reads).
     Generate(GenerateArgs),
     /// List GPU adapters, backends, features (f64, subgroups, timestamps) and
-    /// limits, and say which adapter `solve --backend auto` would pick.
+    /// limits, say which adapter `solve --backend auto` would pick, and show
+    /// the cost model by which auto chooses per batch (measured once and
+    /// cached where a hardware adapter is, or one is named).
     Info {
         #[command(flatten)]
         gpu: GpuArgs,
+        /// Measure the cost model again (on an idle machine) and cache it.
+        #[arg(long)]
+        calibrate: bool,
     },
     /// Every solver on the same fixed-seed batches (well conditioned, mass
     /// ratio 1e4, resting stacks, mixed n, warm-started resting): a table of
@@ -147,6 +159,9 @@ enum Command {
     /// with f64 enumeration, repaired counts, stress.json and a plot of error
     /// against condition number.
     Stress(StressArgs),
+    /// Step many rigid-body worlds in time (seed 001's DVI step, one contact
+    /// batch per step): progress, steps.jsonl, final.json and plots in --out.
+    Simulate(simulate::SimulateArgs),
 }
 
 impl BackendArg {
@@ -322,7 +337,44 @@ fn demo(worlds: usize, seed: u64, backend: BackendArg, gpu: &GpuArgs) -> Result<
     Ok(())
 }
 
-fn info(gpu: &GpuArgs) -> Result<(), Error> {
+/// The demo's second part, the main job over time: `count` worlds (half
+/// resting 4-box stacks, frictionless; half boxes sliding on the ground with
+/// μ = 0.5 until friction stops them) stepped together, one contact batch
+/// per step of 10 ms, with the plots of energy, penetration, solver error
+/// and time per step written to `out`.
+fn demo_in_time(
+    count: usize,
+    steps: usize,
+    backend: BackendArg,
+    gpu: &GpuArgs,
+    out: &std::path::Path,
+) -> Result<(), Error> {
+    if steps == 0 || count == 0 {
+        return Ok(());
+    }
+    let mut worlds = simulate::load_worlds("stack:4", count.div_ceil(2), 1)?;
+    for b in worlds.iter_mut().flat_map(|w| w.bodies.iter_mut()) {
+        b.friction = 0.0;
+    }
+    worlds.extend(simulate::load_worlds("slide", count / 2, 1)?);
+    let mut solver = solver_for(
+        backend.backend(),
+        gpu,
+        Settings {
+            warm_start: true,
+            ..Settings::default()
+        },
+    )?;
+    println!(
+        "\nmany worlds in time: {} resting 4-box stacks and {} boxes sliding at μ = 0.5, {steps} steps of 10 ms, one batch per step",
+        count.div_ceil(2),
+        count / 2
+    );
+    println!("device: {} ({})", solver.device().name, solver.choice());
+    simulate::step_and_write(&mut solver, &mut worlds, steps, 0.01, out)
+}
+
+fn info(gpu: &GpuArgs, calibrate: bool) -> Result<(), Error> {
     let g = gpu.settings()?;
     let adapters = list_adapters(g.api);
     if adapters.is_empty() {
@@ -336,8 +388,20 @@ fn info(gpu: &GpuArgs) -> Result<(), Error> {
     for a in &adapters {
         println!("{a}");
     }
-    let auto = solver_for(Backend::Auto, gpu, Settings::default())?;
+    let mut auto = solver_for(Backend::Auto, gpu, Settings::default())?;
     println!("backend auto: {} ({})", auto.device().name, auto.choice());
+    if calibrate && auto.shared_device().is_some() {
+        let model = auto.calibrate()?;
+        let path = model.save()?;
+        println!("measured again and cached in {}", path.display());
+        print!("{model}");
+    } else if let Some(model) = auto.cost_model() {
+        print!("{model}");
+    } else {
+        println!(
+            "no cost model: auto solves on the CPU (name an adapter with --adapter to measure one)"
+        );
+    }
     let named = solver_for(Backend::Gpu, gpu, Settings::default())?;
     match named.fallback() {
         None => println!("backend gpu: {}", named.device().name),
@@ -469,12 +533,12 @@ fn solve_command(args: SolveArgs) -> Result<(), Error> {
             "--all-solutions needs --solver auto or enum".into(),
         ));
     }
-    // The GPU enumerates; Lemke, PGS and --all-solutions run on the CPU.
-    let gpu_capable = matches!(method, Method::Auto | Method::Enumeration) && !all_solutions;
+    // The GPU enumerates (with --all-solutions every basis); Lemke and PGS
+    // run on the CPU.
+    let gpu_capable = matches!(method, Method::Auto | Method::Enumeration);
     if backend == BackendArg::Gpu && !gpu_capable {
         return Err(Error::Unsupported(
-            "--backend gpu solves by enumeration only (no --solver lemke/pgs, no --all-solutions)"
-                .into(),
+            "--backend gpu solves by enumeration only (no --solver lemke/pgs)".into(),
         ));
     }
     let input = read_input(&file)?;
@@ -522,13 +586,19 @@ fn run(cli: Cli) -> Result<(), Error> {
             worlds,
             seed,
             backend,
+            steps,
+            out,
             gpu,
-        } => demo(worlds, seed, backend, &gpu),
-        Command::Info { gpu } => info(&gpu),
+        } => {
+            demo(worlds, seed, backend, &gpu)?;
+            demo_in_time(worlds / 2, steps, backend, &gpu, &out)
+        }
+        Command::Info { gpu, calibrate } => info(&gpu, calibrate),
         Command::Generate(args) => generate_command(args),
         Command::Bench(args) => bench_command(args),
         Command::Stress(args) => stress_command(args),
         Command::Solve(args) => solve_command(args),
+        Command::Simulate(args) => simulate::simulate_command(args),
     }
 }
 

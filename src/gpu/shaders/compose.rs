@@ -21,6 +21,7 @@ const ENUMERATION_WGSL: &str = include_str!("../../../shaders/enumeration.wgsl")
 const ENUMERATION_WORKGROUP_WGSL: &str =
     include_str!("../../../shaders/enumeration_workgroup.wgsl");
 const ENUMERATION_TREE_WGSL: &str = include_str!("../../../shaders/enumeration_tree.wgsl");
+const ENUMERATION_ALL_WGSL: &str = include_str!("../../../shaders/enumeration_all.wgsl");
 const ASSEMBLY_WGSL: &str = include_str!("../../../shaders/assembly.wgsl");
 const IMPULSES_WGSL: &str = include_str!("../../../shaders/impulses.wgsl");
 const FRICTION_PROJECTED_WGSL: &str = include_str!("../../../shaders/friction_projected.wgsl");
@@ -36,6 +37,7 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         Shader::Enumeration | Shader::Unrolled(_) => ("enumeration", ENUMERATION_WGSL),
         Shader::Workgroup => ("enumeration_workgroup", ENUMERATION_WORKGROUP_WGSL),
         Shader::Tree(_) => ("enumeration_tree", ENUMERATION_TREE_WGSL),
+        Shader::AllBases => ("enumeration_all", ENUMERATION_ALL_WGSL),
         Shader::Assembly => ("assembly", ASSEMBLY_WGSL),
         Shader::Impulses => ("impulses", IMPULSES_WGSL),
         Shader::FrictionProjected(_) => ("friction_projected", FRICTION_PROJECTED_WGSL),

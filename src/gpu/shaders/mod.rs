@@ -45,6 +45,9 @@ pub(crate) enum Shader {
     /// `shaders/enumeration_tree.wgsl` for islands of exactly n contacts
     /// (1 ≤ n ≤ [`crate::cpu::enumeration_tree::TREE_MAX_N`]).
     Tree(usize),
+    /// `shaders/enumeration_all.wgsl`: every basis of every island
+    /// (`all_solutions`), one invocation per (island, basis).
+    AllBases,
     /// `shaders/assembly.wgsl` (entry points assemble_contacts, assemble_islands).
     Assembly,
     /// `shaders/impulses.wgsl`.
@@ -59,7 +62,7 @@ impl Shader {
     /// Every shader that can run.
     #[cfg(test)]
     pub(crate) fn all() -> Vec<Shader> {
-        let mut v = vec![Shader::Enumeration, Shader::Workgroup];
+        let mut v = vec![Shader::Enumeration, Shader::Workgroup, Shader::AllBases];
         v.extend((1..=FIXED_MAX_N).map(Shader::Unrolled));
         v.extend((1..=TREE_MAX_N).map(Shader::Tree));
         v.extend([Shader::Assembly, Shader::Impulses]);
@@ -74,6 +77,7 @@ impl Shader {
             Shader::Unrolled(n) => format!("enumeration_n{n}"),
             Shader::Workgroup => "enumeration_workgroup".into(),
             Shader::Tree(n) => format!("enumeration_tree_n{n}"),
+            Shader::AllBases => "enumeration_all".into(),
             Shader::Assembly => "assembly".into(),
             Shader::Impulses => "impulses".into(),
             Shader::FrictionProjected(k) => format!("friction_projected_k{k}"),
@@ -122,6 +126,7 @@ macro_rules! generated {
 pub(crate) static GENERATED: &[(&str, &str, &str)] = generated!(
     "enumeration",
     "enumeration_workgroup",
+    "enumeration_all",
     "enumeration_n1",
     "enumeration_n2",
     "enumeration_n3",

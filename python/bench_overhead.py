@@ -1,0 +1,88 @@
+"""The Python call's overhead over the Rust call, on one batch.
+
+Times, on the same 20,000 problems of n = 8 and the same solver (device,
+pipelines, threads):
+
+- python: ``Solver.solve(M, q)`` end to end (argument checks, copying the
+  arrays into the library's problems, the chunks, the result arrays);
+- rust: the library's ``Solver::solve_lcps`` on the whole batch, timed in
+  Rust around the call with the problems already built
+  (``NativeSolver.time_solve_lcps``, there for this script).
+
+Runs alternate (python, rust, python, …) so that a noisy machine hits both
+alike. Three figures, target ≤ 10%: the ratio of the medians, the ratio of
+the minimums (the least disturbed runs), and the time each Python call spent
+outside the library (its wall time less the library's own total, measured
+inside the same call: the least noisy of the three) over the Rust call.
+
+    python python/bench_overhead.py [--problems 20000] [--n 8] [--repeats 9] [--backend cpu]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import statistics
+import time
+
+import numpy as np
+
+import lcpbatch
+
+
+def batch(problems: int, n: int, seed: int = 0):
+    """Random positive definite M = A Aᵀ + I (contact-like: one solution each)."""
+    rng = np.random.default_rng(seed)
+    A = rng.standard_normal((problems, n, n))
+    M = A @ A.transpose(0, 2, 1) + np.eye(n)
+    q = rng.standard_normal((problems, n)) * 3
+    return M, q
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--problems", type=int, default=20_000)
+    ap.add_argument("--n", type=int, default=8)
+    ap.add_argument("--repeats", type=int, default=9)
+    ap.add_argument("--backend", default="cpu")
+    ap.add_argument("--solver", default="auto")
+    args = ap.parse_args()
+
+    M, q = batch(args.problems, args.n)
+    s = lcpbatch.Solver(backend=args.backend, solver=args.solver)
+    s.solve(M, q)  # warm-up: pipelines, thread pool, page faults
+    python, rust, inside = [], [], []
+    for _ in range(args.repeats):
+        t = time.perf_counter()
+        r = s.solve(M, q)
+        python.append(time.perf_counter() - t)
+        inside.append(r.report.timings["total"])
+        rust.extend(s._native.time_solve_lcps(M, q, 1))
+    py_med, rs_med = statistics.median(python), statistics.median(rust)
+    outside = statistics.median(p - i for p, i in zip(python, inside))
+    out = {
+        "problems": args.problems,
+        "n": args.n,
+        "device": s.device,
+        "solver": args.solver,
+        "repeats": args.repeats,
+        "python_call_s_median": py_med,
+        "rust_call_s_median": rs_med,
+        "python_call_s_min": min(python),
+        "rust_call_s_min": min(rust),
+        "outside_library_s_median": outside,
+        "overhead_of_medians": py_med / rs_med - 1.0,
+        "overhead_of_minimums": min(python) / min(rust) - 1.0,
+        "overhead_outside_library": outside / rs_med,
+        "statuses": r.report.statuses,
+    }
+    print(json.dumps(out, indent=2))
+    print(f"overhead of the Python call over the Rust call ({args.problems} problems, n = {args.n}, "
+          f"{s.device}): medians {100 * out['overhead_of_medians']:+.1f}%, minimums "
+          f"{100 * out['overhead_of_minimums']:+.1f}%, time outside the library "
+          f"{1e3 * outside:.2f} ms = {100 * out['overhead_outside_library']:.1f}% of the Rust call "
+          f"({1e3 * rs_med:.1f} ms median of {args.repeats})")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,404 @@
+"""``Solver`` (the library's solver kept between calls), and the functions
+``solve``, ``solve_scenes``, ``solve_friction`` and ``simulate`` that use a
+cached one per set of settings."""
+
+from __future__ import annotations
+
+import threading
+import warnings
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
+
+import numpy as np
+
+from . import _friction, _inputs, _native
+from ._friction import FrictionResult
+from ._results import LcpResult, ScenesResult
+from ._scenes import scene_arrays
+from ._worlds import StepResult, World
+
+__all__ = ["Solver", "solve", "solve_scenes", "solve_friction", "simulate", "DeviceWarning", "adapters"]
+
+ArrayLike = Any
+SceneArrays = Mapping[str, ArrayLike]
+
+
+class DeviceWarning(RuntimeWarning):
+    """The GPU could not be used (no adapter, no f64, a lost device): the
+    batch, and every later one of this solver, is solved on the CPU in f64.
+    The reason is also in ``result.report.fallback``.
+
+    >>> import warnings, lcpbatch
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     s = lcpbatch.Solver(backend="gpu", adapter="no-such-adapter")
+    >>> caught[0].category.__name__, s.device_kind
+    ('DeviceWarning', 'cpu')
+    """
+
+
+def adapters(api: str = "auto") -> List[Dict[str, Any]]:
+    """Every GPU adapter wgpu finds on ``api`` ("auto", "vulkan", "gl",
+    "metal", "dx12"): dicts with name, backend, device_type, driver,
+    software and f64. Empty when there is none.
+
+    >>> import lcpbatch
+    >>> isinstance(lcpbatch.adapters(), list)
+    True
+    """
+    return list(_native.adapters(api))
+
+
+class Solver:
+    """A contact solver built once and used for many batches: it keeps the
+    device, its compiled pipelines and the warm-start memory between calls.
+
+    Keyword arguments (defaults are the library's):
+
+    - ``backend``: "auto" (a hardware GPU if there is one, else the CPU),
+      "cpu" or "gpu" (software adapters too; device trouble falls back to
+      the CPU with a :class:`DeviceWarning`);
+    - ``solver``: "auto" (the fastest exact path), "enum" (enumeration of
+      complementary bases), "lemke" or "pgs";
+    - ``precision``: GPU shader precision "auto", "f32" or "f64" (answers are
+      checked in f64 on the CPU whatever it is);
+    - ``all_solutions``: enumerate every basis and report the solution set
+      (``all_z``, ``all_basis``; where it runs: the library's ``Settings``);
+    - ``warm_start``: remember each problem's basis by its contact ``ids``;
+    - ``tolerance``: the largest error measure reported as solved (default 1e-8);
+    - ``threads``: CPU threads (0: every core); ``adapter``: part of a GPU
+      adapter's name; ``api``: "auto", "vulkan", "gl", "metal", "dx12";
+      ``predict``: settle easy problems before enumerating (default True);
+      ``lemke_max_pivots``, ``pgs_max_sweeps``, ``pgs_tolerance``;
+    - ``friction_method``: "auto" (NSGS then Alart–Curnier Newton, the
+      default), "nsgs" or "newton", for islands and problems with friction
+      (always on the CPU in f64); ``friction_tolerance``: the largest Coulomb
+      error reported as solved (default 1e-8); ``friction_max_iterations``:
+      cap on NSGS sweeps plus Newton steps (default 1000).
+
+    A bad value raises ``ValueError`` naming the argument.
+
+    >>> import numpy as np, lcpbatch
+    >>> s = lcpbatch.Solver(backend="cpu", warm_start=True)
+    >>> M, q = np.array([[[2.0, 1.0], [1.0, 2.0]]]), np.array([[-5.0, -6.0]])
+    >>> ids = np.array([[10, 11]])
+    >>> s.solve(M, q, ids=ids).path.tolist(), s.solve(M, q, ids=ids).path.tolist()
+    (['predicted_basis'], ['warm_start'])
+    """
+
+    def __init__(
+        self,
+        *,
+        backend: str = "auto",
+        solver: str = "auto",
+        precision: str = "auto",
+        all_solutions: bool = False,
+        warm_start: bool = False,
+        tolerance: Optional[float] = None,
+        threads: int = 0,
+        adapter: Optional[str] = None,
+        api: str = "auto",
+        predict: bool = True,
+        lemke_max_pivots: Optional[int] = None,
+        pgs_max_sweeps: Optional[int] = None,
+        pgs_tolerance: Optional[float] = None,
+        friction_method: str = "auto",
+        friction_tolerance: Optional[float] = None,
+        friction_max_iterations: Optional[int] = None,
+    ):
+        self.settings: Dict[str, Any] = dict(
+            backend=backend, solver=solver, precision=precision, all_solutions=all_solutions,
+            warm_start=warm_start, tolerance=tolerance, threads=threads, adapter=adapter,
+            api=api, predict=predict, lemke_max_pivots=lemke_max_pivots,
+            pgs_max_sweeps=pgs_max_sweeps, pgs_tolerance=pgs_tolerance,
+            friction_method=friction_method, friction_tolerance=friction_tolerance,
+            friction_max_iterations=friction_max_iterations,
+        )
+        if threads < 0:
+            raise ValueError(f"threads: {threads} is negative (0 means every core)")
+        self._native = _native.NativeSolver(**self.settings)
+        self._warned = False
+        self._warn_fallback(self._native.fallback())
+
+    def __reduce__(self) -> Tuple[Any, ...]:
+        # A pickled solver is rebuilt from its settings (a new device on the
+        # other side); the warm-start memory does not travel.
+        return (_rebuild, (self.settings,))
+
+    @property
+    def device(self) -> str:
+        """Where the next batch will be solved, in words."""
+        return self._native.device()
+
+    @property
+    def device_kind(self) -> str:
+        """"cpu", "hardware_gpu" or "software_gpu"."""
+        return self._native.device_kind()
+
+    @property
+    def choice(self) -> str:
+        """Why this device: the backend asked for and what was found."""
+        return self._native.choice()
+
+    @property
+    def fallback(self) -> Optional[str]:
+        """Why the CPU took over from the GPU (None: no device trouble)."""
+        return self._native.fallback()
+
+    def clear_warm_start(self) -> None:
+        """Forgets the bases remembered for warm start.
+
+        >>> import numpy as np, lcpbatch
+        >>> s = lcpbatch.Solver(backend="cpu", warm_start=True)
+        >>> M, q, ids = np.array([[[2.0, 1.0], [1.0, 2.0]]]), np.array([[-5.0, -6.0]]), np.array([[1, 2]])
+        >>> _ = s.solve(M, q, ids=ids); s.clear_warm_start()
+        >>> s.solve(M, q, ids=ids).path.tolist()
+        ['predicted_basis']
+        """
+        self._native.clear_warm_start()
+
+    def _warn_fallback(self, why: Optional[str]) -> None:
+        if why is not None and not self._warned:
+            self._warned = True
+            warnings.warn(f"GPU: {why}; solving on the CPU (f64, exact)", DeviceWarning, stacklevel=3)
+
+    def solve(self, M: Union[ArrayLike, Sequence[ArrayLike]], q: Union[ArrayLike, Sequence[ArrayLike]],
+              ids: Optional[Union[ArrayLike, Sequence[ArrayLike]]] = None) -> LcpResult:
+        """Solves the LCPs w = M z + q ≥ 0, z ≥ 0, zᵀw = 0 of a batch.
+
+        ``M`` (B, n, n) and ``q`` (B, n), float64 or float32 (computed in
+        f64), any memory order, or nested lists NumPy reads as such; or a
+        list of NumPy arrays, one (nᵢ, nᵢ) per problem, with a list of (nᵢ,)
+        for q, for problems of different sizes (the result's z, w, basis are
+        then lists). ``ids`` (same shape as q, integers ≥ 0): contact ids, with
+        ``warm_start=True`` each problem starts from the basis its contacts
+        had in the last call. The GIL is released while solving; the batch
+        is solved in chunks (``CHUNK_PROBLEMS`` problems, at most
+        ``CHUNK_WORK`` / 2^n of size n) and Ctrl-C between chunks raises
+        ``KeyboardInterrupt``.
+
+        >>> import numpy as np, lcpbatch
+        >>> s = lcpbatch.Solver(backend="cpu")
+        >>> r = s.solve([np.array([[2.0, 1.0], [1.0, 2.0]]), np.array([[1.0]])],
+        ...             [np.array([-5.0, -6.0]), np.array([3.0])])
+        >>> [z.round(6).tolist() for z in r.z], r.status_names().tolist()
+        ([[1.333333, 2.333333], [0.0]], ['solved', 'solved'])
+        """
+        backend = self.settings["backend"]
+        if _inputs.is_ragged(M):
+            ms, qs, idl = _inputs.ragged(M, q, ids)
+            _inputs.check_enumeration_size([len(x) for x in qs], self.settings["solver"], backend)
+            d = self._native.solve_ragged(ms, qs, idl)
+            result = LcpResult(d, ragged=True, n=None)
+        else:
+            m, qa, idsa = _inputs.dense(M, q, ids)
+            if len(m):
+                _inputs.check_enumeration_size([m.shape[1]], self.settings["solver"], backend)
+            d = self._native.solve_dense(m, qa, idsa)
+            result = LcpResult(d, ragged=False, n=m.shape[1])
+        self._warn_fallback(result.report.fallback)
+        return result
+
+    def solve_scenes(self, bodies: Union[SceneArrays, Sequence[SceneArrays]],
+                     contacts: Union[SceneArrays, Sequence[SceneArrays]]) -> ScenesResult:
+        """Solves the impact of one scene (``bodies`` and ``contacts`` dicts of
+        arrays) or of a batch (two lists of dicts, one per scene): the normal
+        impulse of every contact and the bodies' velocities after it. See
+        ``lcpbatch._scenes`` for the layout (``b = -1``: the static world).
+
+        >>> import lcpbatch
+        >>> s = lcpbatch.Solver(backend="cpu")
+        >>> ball = dict(inv_mass=[1.0], inv_inertia=[[2.5, 2.5, 2.5]], position=[[0, 0.5, 0]],
+        ...             velocity=[[0, -1.0, 0]])
+        >>> ground = dict(a=[0], point=[[0, 0, 0]], normal=[[0, 1.0, 0]], restitution=0.5)
+        >>> r = s.solve_scenes([ball, ball], [ground, ground])
+        >>> [float(i[0]) for i in r.impulses]
+        [1.5, 1.5]
+        """
+        single = isinstance(bodies, Mapping)
+        if single != isinstance(contacts, Mapping):
+            raise TypeError("bodies and contacts: give two dicts (one scene) or two lists of dicts (a batch)")
+        bl: List[SceneArrays] = [bodies] if isinstance(bodies, Mapping) else list(bodies)
+        cl: List[SceneArrays] = [contacts] if isinstance(contacts, Mapping) else list(contacts)
+        if len(bl) != len(cl):
+            raise ValueError(f"contacts: {len(cl)} scenes of contacts for {len(bl)} scenes of bodies")
+        arrays = [scene_arrays(b, c, i) for i, (b, c) in enumerate(zip(bl, cl))]
+        result = ScenesResult(self._native.solve_scenes(arrays), single)
+        self._warn_fallback(result.report.fallback)
+        return result
+
+    def solve_friction(self, W: Union[ArrayLike, Sequence[ArrayLike]], q: Union[ArrayLike, Sequence[ArrayLike]],
+                       mu: Union[ArrayLike, Sequence[ArrayLike]],
+                       ids: Optional[Union[ArrayLike, Sequence[ArrayLike]]] = None) -> FrictionResult:
+        """Solves a batch of frictional contact problems (Siconos'
+        FrictionContact3D): u = W r + q with Coulomb's law per contact (see
+        ``lcpbatch._friction``), on the CPU in f64 over every core with
+        ``friction_method``.
+
+        ``W`` (B, 3k, 3k), ``q`` (B, 3k), ``mu`` (B, k) or a scalar, float64
+        or float32, any memory order; contact i owns entries 3i (normal),
+        3i + 1, 3i + 2 (tangents). Or lists of NumPy arrays for problems of
+        different k (results are then lists). ``ids`` (B, k) integers ≥ 0:
+        contact ids; with ``warm_start=True`` each contact starts from its
+        reaction of the last call. GIL released; chunks of at most
+        ``CHUNK_FRICTION_WORK`` (3k)² with a Ctrl-C check between them.
+
+        >>> import numpy as np, lcpbatch
+        >>> s = lcpbatch.Solver(backend="cpu")
+        >>> W = np.eye(3)[None]; q = np.array([[-1.0, 0.1, 0.0]])
+        >>> r = s.solve_friction(W, q, 0.5)        # sticks: u_T = 0
+        >>> (r.r.round(6) + 0.0).tolist(), (r.u.round(6) + 0.0).tolist()
+        ([[1.0, -0.1, 0.0]], [[0.0, 0.0, 0.0]])
+        """
+        if _inputs.is_ragged(W):
+            ws, qs, ms, idl = _friction.ragged(W, q, mu, ids)
+            d = self._native.solve_friction_ragged(ws, qs, ms, idl)
+            result = FrictionResult(d, ragged=True, n=None)
+        else:
+            w, qa, ma, idsa = _friction.dense(W, q, mu, ids)
+            d = self._native.solve_friction_dense(w, qa, ma, idsa)
+            result = FrictionResult(d, ragged=False, n=w.shape[1])
+        self._warn_fallback(result.report.fallback)
+        return result
+
+    def step_worlds(self, worlds: Union[World, Sequence[World]], dt: float, steps: int = 1) -> StepResult:
+        """Advances every world by ``steps`` steps of ``dt`` seconds, in
+        place: per step one library call (collision, one batch of islands
+        for all worlds, integration) with the GIL released, and a Ctrl-C
+        check between steps (after ``KeyboardInterrupt`` the worlds hold the
+        last finished step). A world gives the same trajectory alone or in a
+        batch, and ``steps=2`` equals two calls of ``steps=1``.
+
+        >>> import lcpbatch
+        >>> s = lcpbatch.Solver(backend="cpu")
+        >>> w = lcpbatch.World.generate("slide")           # a box sliding at 2 m/s, μ = 0.5
+        >>> out = s.step_worlds([w], dt=0.01, steps=50)
+        >>> bool(out.velocities[0][1, 0] < 2.0), int(out.unsolved.sum())
+        (True, 0)
+        """
+        ws = [worlds] if isinstance(worlds, World) else list(worlds)
+        for i, w in enumerate(ws):
+            if not isinstance(w, World):
+                raise TypeError(f"worlds[{i}]: expected an lcpbatch.World, got {type(w).__name__}")
+        if isinstance(steps, bool) or not isinstance(steps, (int, np.integer)) or steps < 0:
+            raise ValueError(f"steps: {steps!r} is not an integer ≥ 0")
+        dt = float(dt)
+        if not np.isfinite(dt) or dt <= 0:
+            raise ValueError(f"dt: {dt} is not a positive number of seconds")
+        d = self._native.step_worlds([w._w for w in ws], dt, int(steps))
+        result = StepResult(d, ws)
+        if result.report is not None:
+            self._warn_fallback(result.report.fallback)
+        return result
+
+    def __repr__(self) -> str:
+        return f"<lcpbatch.Solver on {self.device}; {self.choice}>"
+
+
+def _rebuild(settings: Dict[str, Any]) -> Solver:
+    return Solver(**settings)
+
+
+_CACHE: Dict[Tuple[Any, ...], Solver] = {}
+_CACHE_LOCK = threading.Lock()
+_CACHE_SIZE = 8
+
+
+def _cached(**settings: Any) -> Solver:
+    """One solver per distinct settings, kept for later calls (the device
+    and its pipelines are opened once); at most 8 are kept."""
+    key = tuple(sorted(settings.items()))
+    with _CACHE_LOCK:
+        s = _CACHE.get(key)
+        if s is None:
+            if len(_CACHE) >= _CACHE_SIZE:
+                _CACHE.pop(next(iter(_CACHE)))
+            s = _CACHE[key] = Solver(**settings)
+        return s
+
+
+def solve(M: Union[ArrayLike, Sequence[ArrayLike]], q: Union[ArrayLike, Sequence[ArrayLike]], *,
+          solver: str = "auto", backend: str = "auto", precision: str = "auto",
+          all_solutions: bool = False, warm_start: Optional[Union[ArrayLike, Sequence[ArrayLike]]] = None,
+          tolerance: Optional[float] = None, **settings: Any) -> LcpResult:
+    """Solves a batch of LCPs: find z with w = M z + q ≥ 0, z ≥ 0, zᵀw = 0.
+
+    ``M`` (B, n, n) and ``q`` (B, n) arrays (float64 or float32, any
+    memory order), or a list of NumPy arrays, one (nᵢ, nᵢ) per problem, and
+    a list of (nᵢ,) for problems of different sizes. ``warm_start``: contact ids shaped like q; each problem
+    then starts from the basis its contacts had in the last call with the
+    same settings (the solver behind this function is cached per settings).
+    Other keyword arguments are those of :class:`Solver`. Returns an
+    :class:`LcpResult`.
+
+    >>> import numpy as np, lcpbatch
+    >>> M = np.array([[[2.0, 1.0], [1.0, 2.0]]])      # seed 000's example
+    >>> q = np.array([[-5.0, -6.0]])
+    >>> r = lcpbatch.solve(M, q)
+    >>> r.z.round(6).tolist(), r.status_names().tolist(), bool(r.error[0] < 1e-12)
+    ([[1.333333, 2.333333]], ['solved'], True)
+    """
+    if isinstance(warm_start, (bool, np.bool_)):
+        if warm_start:
+            raise TypeError("warm_start: give the contact ids (integers shaped like q), not True; "
+                            "or keep a Solver(warm_start=True) and pass ids to its solve")
+        warm_start = None
+    s = _cached(solver=solver, backend=backend, precision=precision, all_solutions=all_solutions,
+                warm_start=warm_start is not None, tolerance=tolerance, **settings)
+    return s.solve(M, q, ids=warm_start)
+
+
+def solve_scenes(bodies: Union[SceneArrays, Sequence[SceneArrays]],
+                 contacts: Union[SceneArrays, Sequence[SceneArrays]], **settings: Any) -> ScenesResult:
+    """Solves the impact of one scene or a batch of scenes given as arrays
+    (see :meth:`Solver.solve_scenes`); keyword arguments are those of
+    :class:`Solver`.
+
+    >>> import lcpbatch
+    >>> ball = dict(inv_mass=[1.0], inv_inertia=[[2.5, 2.5, 2.5]], position=[[0, 0.5, 0]],
+    ...             velocity=[[0, -1.0, 0]])
+    >>> ground = dict(a=[0], b=[-1], point=[[0, 0, 0]], normal=[[0, 1.0, 0]], restitution=[0.5])
+    >>> r = lcpbatch.solve_scenes(ball, ground, backend="cpu")
+    >>> r.velocity.tolist()
+    [[0.0, 0.5, 0.0]]
+    """
+    return _cached(**settings).solve_scenes(bodies, contacts)
+
+
+def solve_friction(W: Union[ArrayLike, Sequence[ArrayLike]], q: Union[ArrayLike, Sequence[ArrayLike]],
+                   mu: Union[ArrayLike, Sequence[ArrayLike]], *, method: str = "auto",
+                   tolerance: Optional[float] = None, max_iterations: Optional[int] = None,
+                   ids: Optional[Union[ArrayLike, Sequence[ArrayLike]]] = None, **settings: Any) -> FrictionResult:
+    """Solves a batch of frictional contact problems (Siconos'
+    FrictionContact3D form; see :meth:`Solver.solve_friction`). ``method``:
+    "auto", "nsgs" or "newton"; ``tolerance``: the largest Coulomb error
+    reported as solved (default 1e-8); ``ids``: contact ids (B, k) for warm
+    start from the last call with the same settings. Other keyword arguments
+    are those of :class:`Solver`.
+
+    Seed 001's projection example: a contact with W = I, free velocity
+    q = (−1, 3, −4) (approaching, sliding with v_T = (3, −4)) and μ = 0.5 gets
+    r_N = 1 and r_T = −μ r_N v_T/‖v_T‖ = (−0.3, 0.4):
+
+    >>> import numpy as np, lcpbatch
+    >>> r = lcpbatch.solve_friction(np.eye(3)[None], np.array([[-1.0, 3.0, -4.0]]), np.array([[0.5]]))
+    >>> r.r.round(9).tolist(), bool(r.coulomb_error[0] < 1e-10)
+    ([[1.0, -0.3, 0.4]], True)
+    """
+    s = _cached(friction_method=method, friction_tolerance=tolerance,
+                friction_max_iterations=max_iterations, warm_start=ids is not None, **settings)
+    return s.solve_friction(W, q, mu, ids=ids)
+
+
+def simulate(worlds: Union[World, Sequence[World]], dt: float, steps: int = 1, **settings: Any) -> StepResult:
+    """Steps a batch of worlds ``steps`` times by ``dt`` seconds, in place
+    (see :meth:`Solver.step_worlds`); keyword arguments are those of
+    :class:`Solver` (``warm_start=True`` carries contact impulses from step
+    to step by contact id).
+
+    >>> import lcpbatch
+    >>> w = lcpbatch.World.generate("spheres", 1, seed=3)
+    >>> out = lcpbatch.simulate(w, dt=1 / 60, steps=240, backend="cpu")
+    >>> float(out.velocities[0][1:].max()) < 1e-3    # dropped, it came to rest
+    True
+    """
+    return _cached(**settings).step_worlds(worlds, dt, steps)

@@ -1,0 +1,267 @@
+//! LCP batches: NumPy arrays in, [`Lcp`]s for the library, and per-problem
+//! results out as flat arrays.
+//!
+//! Input comes dense (M of shape (B, n, n), q of shape (B, n), any strides:
+//! C order, Fortran order or a slice are read through the same view, without
+//! a copy on the Python side) or ragged (a list of (nᵢ, nᵢ) and a list of
+//! (nᵢ,) arrays). Every entry is checked to be finite while it is copied;
+//! the error names the argument and the index in NumPy's notation.
+//!
+//! Output is flat: z, w and the basis of every problem one after the other,
+//! with `offsets` (B + 1 entries) marking where each starts, so that Python
+//! reshapes a dense batch to (B, n) or splits a ragged one without copying.
+
+use std::ops::Range;
+
+use lcpbatch::{IslandReport, Lcp, SolutionSet};
+use numpy::ndarray::{Array2, ArrayView1, ArrayView2, ArrayView3, Axis};
+use numpy::{IntoPyArray, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyTuple};
+
+/// At most this many problems per chunk (with [`CHUNK_WORK`]): one call of
+/// the library per chunk, a Ctrl-C check between chunks.
+pub(crate) const CHUNK_PROBLEMS: usize = 65_536;
+
+/// At most this much work per chunk, counting 2^n per problem of size n (the
+/// bases enumeration may visit): 32,768 problems of n = 8 (a 20,000-problem
+/// batch is one call), 128 of n = 16, one of n ≥ 23. Enumerating 2^23 bases
+/// of n = 12 takes about 1.4 s on two cores, so Ctrl-C is seen within about
+/// that on the slowest path (most problems never enumerate).
+pub(crate) const CHUNK_WORK: u64 = 1 << 23;
+
+/// Splits problems of sizes `ns` into consecutive chunks under both limits
+/// (every chunk holds at least one problem).
+pub(crate) fn chunks(ns: impl Iterator<Item = usize>) -> Vec<Range<usize>> {
+    chunks_by(ns.map(|n| 1u64 << n.min(24)), CHUNK_WORK)
+}
+
+/// Splits problems of work `costs` into consecutive chunks of at most
+/// [`CHUNK_PROBLEMS`] problems and `limit` work (every chunk holds at least
+/// one problem, however costly).
+pub(crate) fn chunks_by(costs: impl Iterator<Item = u64>, limit: u64) -> Vec<Range<usize>> {
+    let mut out = Vec::new();
+    let (mut start, mut work) = (0usize, 0u64);
+    let mut end = 0usize;
+    for cost in costs {
+        if end > start && (end - start == CHUNK_PROBLEMS || work + cost > limit) {
+            out.push(start..end);
+            start = end;
+            work = 0;
+        }
+        work += cost;
+        end += 1;
+    }
+    if end > start {
+        out.push(start..end);
+    }
+    out
+}
+
+/// The first entry of `values` that is not finite, as (position, value).
+pub(crate) fn first_non_finite<'a>(values: impl Iterator<Item = &'a f64>) -> Option<(usize, f64)> {
+    values
+        .enumerate()
+        .find(|(_, v)| !v.is_finite())
+        .map(|(k, v)| (k, *v))
+}
+
+fn non_finite(arg: &str, index: String, v: f64) -> PyErr {
+    PyValueError::new_err(format!(
+        "{arg}{index} is {v}: every entry of {arg} must be finite"
+    ))
+}
+
+/// One problem from a (n, n) view of M and a (n,) view of q; `at` prefixes
+/// the index in errors ("3, " for a dense batch, "[3][" style for ragged).
+fn lcp_of(
+    m: ArrayView2<f64>,
+    q: ArrayView1<f64>,
+    index: &dyn Fn(Vec<usize>) -> String,
+) -> PyResult<Lcp> {
+    let n = q.len();
+    if let Some((k, v)) = first_non_finite(m.iter()) {
+        return Err(non_finite("M", index(vec![k / n, k % n]), v));
+    }
+    if let Some((k, v)) = first_non_finite(q.iter()) {
+        return Err(non_finite("q", index(vec![k]), v));
+    }
+    Ok(Lcp {
+        m: m.iter().copied().collect(),
+        q: q.to_vec(),
+    })
+}
+
+pub(crate) fn join(ix: &[usize]) -> String {
+    ix.iter()
+        .map(usize::to_string)
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// Whether every entry is finite (no early exit, so that it vectorises).
+fn all_finite(values: &[f64]) -> bool {
+    values.iter().fold(true, |ok, v| ok & v.is_finite())
+}
+
+/// A dense batch: M (B, n, n), q (B, n) (shapes checked in Python). C-ordered
+/// arrays with finite entries are copied slice by slice; any other layout,
+/// or an array with an entry to name in an error, goes element by element.
+pub(crate) fn dense(m: &PyReadonlyArray3<f64>, q: &PyReadonlyArray2<f64>) -> PyResult<Vec<Lcp>> {
+    let (m, q): (ArrayView3<f64>, ArrayView2<f64>) = (m.as_array(), q.as_array());
+    let n = q.shape()[1];
+    if let (Some(ms), Some(qs)) = (m.as_slice(), q.as_slice()) {
+        if n > 0 && all_finite(ms) && all_finite(qs) {
+            return Ok(ms
+                .chunks_exact(n * n)
+                .zip(qs.chunks_exact(n))
+                .map(|(mb, qb)| Lcp {
+                    m: mb.to_vec(),
+                    q: qb.to_vec(),
+                })
+                .collect());
+        }
+    }
+    m.outer_iter()
+        .zip(q.outer_iter())
+        .enumerate()
+        .map(|(b, (mb, qb))| lcp_of(mb, qb, &|ix| format!("[{b}, {}]", join(&ix))))
+        .collect()
+}
+
+/// A ragged batch: lists of (nᵢ, nᵢ) and (nᵢ,) arrays (shapes checked in Python).
+pub(crate) fn ragged(
+    m: &[PyReadonlyArray2<f64>],
+    q: &[PyReadonlyArray1<f64>],
+) -> PyResult<Vec<Lcp>> {
+    m.iter()
+        .zip(q)
+        .enumerate()
+        .map(|(b, (mb, qb))| {
+            lcp_of(mb.as_array(), qb.as_array(), &|ix| {
+                format!("[{b}][{}]", join(&ix))
+            })
+        })
+        .collect()
+}
+
+/// Contact ids of a dense batch, one row per problem.
+pub(crate) fn dense_ids(ids: &PyReadonlyArray2<u64>) -> Vec<Vec<u64>> {
+    ids.as_array()
+        .axis_iter(Axis(0))
+        .map(|r| r.to_vec())
+        .collect()
+}
+
+/// Contact ids of a ragged batch.
+pub(crate) fn ragged_ids(ids: &[PyReadonlyArray1<u64>]) -> Vec<Vec<u64>> {
+    ids.iter().map(|r| r.as_array().to_vec()).collect()
+}
+
+fn solution_set_name(s: &Option<SolutionSet>) -> Option<&'static str> {
+    s.as_ref().map(|s| match s {
+        SolutionSet::Empty => "empty",
+        SolutionSet::Isolated { .. } => "isolated",
+        SolutionSet::BoundedContinuum => "bounded_continuum",
+        SolutionSet::UnboundedContinuum => "unbounded_continuum",
+    })
+}
+
+/// Per-island results as flat arrays in `d`: `offsets` (I + 1), `z`, `w`,
+/// `basis` (flat, bool), and per island `status`, `path` (codes), `error`,
+/// `has_basis`, `pivots`, `iterations`, `bases_visited`, `solution_count`
+/// (−1 where unknown) and `solution_set` (a list of names or None).
+pub(crate) fn islands_into(
+    py: Python<'_>,
+    d: &Bound<'_, PyDict>,
+    islands: &[IslandReport],
+) -> PyResult<()> {
+    let total: usize = islands.iter().map(|i| i.solution.z.len()).sum();
+    let (mut z, mut w, mut basis) = (
+        Vec::with_capacity(total),
+        Vec::with_capacity(total),
+        Vec::with_capacity(total),
+    );
+    let mut offsets = Vec::with_capacity(islands.len() + 1);
+    offsets.push(0i64);
+    for isl in islands {
+        let s = &isl.solution;
+        z.extend_from_slice(&s.z);
+        w.extend_from_slice(&s.w);
+        let mask = s.basis.unwrap_or(0);
+        basis.extend((0..s.z.len()).map(|i| i < 32 && mask >> i & 1 == 1));
+        offsets.push(z.len() as i64);
+    }
+    let per = |f: &dyn Fn(&IslandReport) -> u64| islands.iter().map(f).collect::<Vec<u64>>();
+    d.set_item("offsets", offsets.into_pyarray(py))?;
+    d.set_item("z", z.into_pyarray(py))?;
+    d.set_item("w", w.into_pyarray(py))?;
+    d.set_item("basis", basis.into_pyarray(py))?;
+    let status: Vec<i8> = islands
+        .iter()
+        .map(|i| crate::report::status_code(i.status()))
+        .collect();
+    d.set_item("status", status.into_pyarray(py))?;
+    let path: Vec<i8> = islands
+        .iter()
+        .map(|i| crate::report::path_code(i.path))
+        .collect();
+    d.set_item("path", path.into_pyarray(py))?;
+    let error: Vec<f64> = islands.iter().map(|i| i.error()).collect();
+    d.set_item("error", error.into_pyarray(py))?;
+    let has_basis: Vec<bool> = islands.iter().map(|i| i.solution.basis.is_some()).collect();
+    d.set_item("has_basis", has_basis.into_pyarray(py))?;
+    d.set_item(
+        "pivots",
+        per(&|i| i.solution.counters.pivots).into_pyarray(py),
+    )?;
+    d.set_item(
+        "iterations",
+        per(&|i| i.solution.counters.iterations).into_pyarray(py),
+    )?;
+    d.set_item(
+        "bases_visited",
+        per(&|i| i.solution.counters.bases_visited).into_pyarray(py),
+    )?;
+    let count: Vec<i64> = islands
+        .iter()
+        .map(|i| i.solution.solution_count().map_or(-1, |c| c as i64))
+        .collect();
+    d.set_item("solution_count", count.into_pyarray(py))?;
+    let sets: Vec<Option<&str>> = islands
+        .iter()
+        .map(|i| solution_set_name(&i.solution.solution_set))
+        .collect();
+    d.set_item("solution_set", sets)?;
+    if islands.iter().any(|i| !i.solution.all_bases.is_empty()) {
+        d.set_item("all_bases", all_bases(py, islands)?)?;
+    }
+    Ok(())
+}
+
+/// With `all_solutions`: per island, (k, n) arrays of the z and the basis
+/// of every valid complementary basis enumeration found.
+fn all_bases<'py>(py: Python<'py>, islands: &[IslandReport]) -> PyResult<Vec<Bound<'py, PyTuple>>> {
+    islands
+        .iter()
+        .map(|isl| {
+            let n = isl.solution.z.len();
+            let found = &isl.solution.all_bases;
+            let z: Vec<f64> = found.iter().flat_map(|b| b.z.iter().copied()).collect();
+            let basis: Vec<bool> = found
+                .iter()
+                .flat_map(|b| (0..n).map(move |i| i < 32 && b.basis >> i & 1 == 1))
+                .collect();
+            let shape = (found.len(), n);
+            let err = |e: numpy::ndarray::ShapeError| PyValueError::new_err(e.to_string());
+            let z = Array2::from_shape_vec(shape, z)
+                .map_err(err)?
+                .into_pyarray(py);
+            let basis = Array2::from_shape_vec(shape, basis)
+                .map_err(err)?
+                .into_pyarray(py);
+            PyTuple::new(py, [z.into_any(), basis.into_any()])
+        })
+        .collect()
+}

@@ -1,0 +1,340 @@
+//! `NativeSolver`: one [`lcpbatch::Solver`] (device, pipelines, warm-start
+//! memory) kept between Python calls.
+//!
+//! Every solve releases the GIL (`py.detach`) around each chunk and checks
+//! for signals (Ctrl-C) between chunks; the solver sits in a mutex so that
+//! two Python threads sharing one `Solver` take turns instead of racing.
+
+use std::ops::Range;
+use std::sync::{Mutex, MutexGuard};
+use std::time::Instant;
+
+use lcpbatch::{FrictionProblem, Lcp, Report, Scene, Settings, Solver};
+use numpy::{IntoPyArray, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use crate::{batch, friction, guard, report, scenes, settings::Args, to_py_err, worlds};
+
+/// The library's solver behind a mutex (see the module docs).
+#[pyclass(module = "lcpbatch._native")]
+pub(crate) struct NativeSolver {
+    solver: Mutex<Solver>,
+}
+
+impl NativeSolver {
+    /// The solver; a mutex poisoned by a panic (already reported as a
+    /// `RuntimeError`) is taken over as it is.
+    fn lock(&self) -> MutexGuard<'_, Solver> {
+        self.solver.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    /// Solves `ranges` one after the other with the GIL released, checking
+    /// for Ctrl-C between them; one merged report. `offset` gives the index
+    /// of a range's first scene (0 for LCP batches).
+    fn run_chunks(
+        &self,
+        py: Python<'_>,
+        ranges: Vec<Range<usize>>,
+        offset: impl Fn(&Range<usize>) -> usize,
+        solve: impl Fn(&mut Solver, Range<usize>) -> Result<Report, lcpbatch::Error> + Sync,
+    ) -> PyResult<(Report, usize)> {
+        let mut total: Option<Report> = None;
+        let count = ranges.len();
+        for r in ranges {
+            let before = offset(&r);
+            let next = py.detach(|| guard(|| solve(&mut self.lock(), r).map_err(to_py_err)))?;
+            total = Some(report::merge(total, next, before));
+            py.check_signals()?;
+        }
+        match total {
+            Some(t) => Ok((t, count)),
+            // An empty batch: the library's own (empty) report.
+            None => Ok((
+                py.detach(|| guard(|| self.lock().solve_lcps(&[]).map_err(to_py_err)))?,
+                0,
+            )),
+        }
+    }
+
+    fn lcps<'py>(
+        &self,
+        py: Python<'py>,
+        lcps: Vec<Lcp>,
+        ids: Option<Vec<Vec<u64>>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let ranges = batch::chunks(lcps.iter().map(Lcp::n));
+        let (r, count) = self.run_chunks(
+            py,
+            ranges,
+            |_| 0,
+            |s, r| match &ids {
+                Some(ids) => s.solve_lcps_keyed(&lcps[r.clone()], &ids[r]),
+                None => s.solve_lcps(&lcps[r]),
+            },
+        )?;
+        let d = PyDict::new(py);
+        batch::islands_into(py, &d, &r.islands)?;
+        d.set_item("report", report::to_dict(py, &r, count)?)?;
+        Ok(d)
+    }
+
+    fn frictional<'py>(
+        &self,
+        py: Python<'py>,
+        problems: Vec<FrictionProblem>,
+        ids: Option<Vec<Vec<u64>>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let ranges = friction::chunks(problems.iter().map(FrictionProblem::contacts));
+        let (r, count) = self.run_chunks(
+            py,
+            ranges,
+            |_| 0,
+            |s, r| match &ids {
+                Some(ids) => s.solve_friction_keyed(&problems[r.clone()], &ids[r]),
+                None => s.solve_friction(&problems[r]),
+            },
+        )?;
+        let d = PyDict::new(py);
+        friction::problems_into(py, &d, &r.friction)?;
+        d.set_item("report", report::to_dict(py, &r, count)?)?;
+        Ok(d)
+    }
+}
+
+#[pymethods]
+impl NativeSolver {
+    /// Builds the solver (opens the device), GIL released. Sixteen keyword
+    /// arguments on purpose: one per setting a Python user may change.
+    #[new]
+    #[pyo3(signature = (backend="auto", solver="auto", precision="auto", all_solutions=false,
+        warm_start=false, tolerance=None, threads=0, adapter=None, api="auto", predict=true,
+        lemke_max_pivots=None, pgs_max_sweeps=None, pgs_tolerance=None, friction_method="auto",
+        friction_tolerance=None, friction_max_iterations=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        py: Python<'_>,
+        backend: &str,
+        solver: &str,
+        precision: &str,
+        all_solutions: bool,
+        warm_start: bool,
+        tolerance: Option<f64>,
+        threads: usize,
+        adapter: Option<String>,
+        api: &str,
+        predict: bool,
+        lemke_max_pivots: Option<u64>,
+        pgs_max_sweeps: Option<u64>,
+        pgs_tolerance: Option<f64>,
+        friction_method: &str,
+        friction_tolerance: Option<f64>,
+        friction_max_iterations: Option<u64>,
+    ) -> PyResult<Self> {
+        let settings: Settings = Args {
+            backend,
+            solver,
+            precision,
+            all_solutions,
+            warm_start,
+            tolerance,
+            threads,
+            adapter,
+            api,
+            predict,
+            lemke_max_pivots,
+            pgs_max_sweeps,
+            pgs_tolerance,
+            friction_method,
+            friction_tolerance,
+            friction_max_iterations,
+        }
+        .settings()?;
+        let solver = py.detach(|| guard(|| Solver::new(settings).map_err(to_py_err)))?;
+        Ok(NativeSolver {
+            solver: Mutex::new(solver),
+        })
+    }
+
+    /// Where the next batch will be solved, in words.
+    fn device(&self) -> String {
+        self.lock().device().name
+    }
+
+    /// "cpu", "hardware_gpu" or "software_gpu".
+    fn device_kind(&self) -> &'static str {
+        report::device_kind_name(self.lock().device().kind)
+    }
+
+    /// Why this device.
+    fn choice(&self) -> String {
+        self.lock().choice().to_string()
+    }
+
+    /// Why the CPU took over from the GPU (None: no device trouble so far).
+    fn fallback(&self) -> Option<String> {
+        self.lock().fallback().map(str::to_string)
+    }
+
+    /// Forgets the bases remembered for warm start.
+    fn clear_warm_start(&self) {
+        self.lock().clear_warm_start();
+    }
+
+    /// A dense batch: M (B, n, n), q (B, n), ids (B, n) or None.
+    #[pyo3(signature = (m, q, ids=None))]
+    fn solve_dense<'py>(
+        &self,
+        py: Python<'py>,
+        m: PyReadonlyArray3<'py, f64>,
+        q: PyReadonlyArray2<'py, f64>,
+        ids: Option<PyReadonlyArray2<'py, u64>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let lcps = batch::dense(&m, &q)?;
+        self.lcps(py, lcps, ids.as_ref().map(batch::dense_ids))
+    }
+
+    /// A ragged batch: lists of (nᵢ, nᵢ) and (nᵢ,) arrays, ids a list or None.
+    #[pyo3(signature = (m, q, ids=None))]
+    fn solve_ragged<'py>(
+        &self,
+        py: Python<'py>,
+        m: Vec<PyReadonlyArray2<'py, f64>>,
+        q: Vec<PyReadonlyArray1<'py, f64>>,
+        ids: Option<Vec<PyReadonlyArray1<'py, u64>>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let lcps = batch::ragged(&m, &q)?;
+        self.lcps(py, lcps, ids.as_deref().map(batch::ragged_ids))
+    }
+
+    /// Scenes, one dict of arrays each (see `scenes.rs` for the layout).
+    fn solve_scenes<'py>(
+        &self,
+        py: Python<'py>,
+        scenes: Vec<scenes::SceneArrays<'py>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let scenes: Vec<Scene> = scenes
+            .iter()
+            .enumerate()
+            .map(|(i, s)| s.scene(i))
+            .collect::<PyResult<_>>()?;
+        let ranges = scenes::chunks(&scenes);
+        let (r, count) =
+            self.run_chunks(py, ranges, |r| r.start, |s, r| s.solve_scenes(&scenes[r]))?;
+        let d = PyDict::new(py);
+        scenes::scenes_into(py, &d, &scenes, &r)?;
+        d.set_item("report", report::to_dict(py, &r, count)?)?;
+        Ok(d)
+    }
+
+    /// A dense batch of frictional problems: W (B, 3k, 3k), q (B, 3k),
+    /// mu (B, k), ids (B, k) or None.
+    #[pyo3(signature = (w, q, mu, ids=None))]
+    fn solve_friction_dense<'py>(
+        &self,
+        py: Python<'py>,
+        w: PyReadonlyArray3<'py, f64>,
+        q: PyReadonlyArray2<'py, f64>,
+        mu: PyReadonlyArray2<'py, f64>,
+        ids: Option<PyReadonlyArray2<'py, u64>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let problems = friction::dense(&w, &q, &mu)?;
+        self.frictional(py, problems, ids.as_ref().map(batch::dense_ids))
+    }
+
+    /// A ragged batch of frictional problems: lists of arrays.
+    #[pyo3(signature = (w, q, mu, ids=None))]
+    fn solve_friction_ragged<'py>(
+        &self,
+        py: Python<'py>,
+        w: Vec<PyReadonlyArray2<'py, f64>>,
+        q: Vec<PyReadonlyArray1<'py, f64>>,
+        mu: Vec<PyReadonlyArray1<'py, f64>>,
+        ids: Option<Vec<PyReadonlyArray1<'py, u64>>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let problems = friction::ragged(&w, &q, &mu)?;
+        self.frictional(py, problems, ids.as_deref().map(batch::ragged_ids))
+    }
+
+    /// Advances `worlds` by `steps` steps of `dt` seconds, one library call
+    /// per step with the GIL released and a Ctrl-C check between steps. The
+    /// worlds are updated in place (after an interruption: to the last
+    /// step finished). Returns the per-step summaries of
+    /// [`worlds::summaries_into`], per step `unsolved` and the seconds of
+    /// `collision`, `solve`, `integrate`, and the last step's `report`.
+    fn step_worlds<'py>(
+        &self,
+        py: Python<'py>,
+        worlds: Vec<Bound<'py, worlds::NativeWorld>>,
+        dt: f64,
+        steps: usize,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let mut ws: Vec<lcpbatch::World> =
+            worlds.iter().map(|w| w.borrow().world.clone()).collect();
+        let (mut summaries, mut unsolved) = (Vec::with_capacity(steps), Vec::new());
+        let mut timings: [Vec<f64>; 3] = Default::default();
+        let mut last = None;
+        let mut outcome = Ok(());
+        for _ in 0..steps {
+            let step =
+                py.detach(|| guard(|| self.lock().step_worlds(&mut ws, dt).map_err(to_py_err)));
+            match step {
+                Ok(rep) => {
+                    summaries.push(rep.worlds);
+                    unsolved.push(rep.unsolved as i64);
+                    timings[0].push(rep.timings.collision);
+                    timings[1].push(rep.timings.solve);
+                    timings[2].push(rep.timings.integrate);
+                    last = Some(rep.solve);
+                }
+                Err(e) => {
+                    outcome = Err(e);
+                    break;
+                }
+            }
+            if let Err(e) = py.check_signals() {
+                outcome = Err(e);
+                break;
+            }
+        }
+        for (w, state) in worlds.iter().zip(ws) {
+            w.borrow_mut().world = state;
+        }
+        outcome?;
+        let d = PyDict::new(py);
+        worlds::summaries_into(py, &d, &summaries, worlds.len())?;
+        d.set_item("unsolved", unsolved.into_pyarray(py))?;
+        let [collision, solve, integrate] = timings;
+        d.set_item("collision", collision.into_pyarray(py))?;
+        d.set_item("solve", solve.into_pyarray(py))?;
+        d.set_item("integrate", integrate.into_pyarray(py))?;
+        let report = last.map(|r| report::to_dict(py, &r, 1)).transpose()?;
+        d.set_item("report", report)?;
+        Ok(d)
+    }
+
+    /// For `bench_overhead.py`: the seconds of `repeats` calls of the
+    /// library's `Solver::solve_lcps` on the whole batch, timed in Rust
+    /// (the problems are built before the clock starts).
+    fn time_solve_lcps(
+        &self,
+        py: Python<'_>,
+        m: PyReadonlyArray3<'_, f64>,
+        q: PyReadonlyArray2<'_, f64>,
+        repeats: usize,
+    ) -> PyResult<Vec<f64>> {
+        let lcps = batch::dense(&m, &q)?;
+        py.detach(|| {
+            guard(|| {
+                let mut solver = self.lock();
+                (0..repeats)
+                    .map(|_| {
+                        let t = Instant::now();
+                        solver.solve_lcps(&lcps).map_err(to_py_err)?;
+                        Ok(t.elapsed().as_secs_f64())
+                    })
+                    .collect()
+            })
+        })
+    }
+}

@@ -1,0 +1,288 @@
+//! `Backend::Auto`'s choice per batch: a cost model of this machine, by
+//! island size, measured once through the solver's own two paths and cached.
+//!
+//! A batch of islands of sizes n₁…n_B is estimated to take
+//!
+//! ```text
+//! CPU: Σ_i cpu(n_i)            GPU: gpu_batch + Σ_i gpu(n_i)
+//! ```
+//!
+//! seconds, where cpu(n) and gpu(n) are the measured seconds per island at
+//! the calibrated sizes (linear in n between them, the first below them,
+//! growing like n³ above them: see [`CostModel::per_island`]), and
+//! gpu_batch the GPU's fixed cost per call (upload, submissions, readback).
+//! `Auto` solves each batch where the estimate is lower; the report's
+//! `choice` gives both estimates.
+//!
+//! Calibration ([`Solver::calibrate`]): physical islands of each size in
+//! [`CALIBRATION_SIZES`] solved by the CPU path (every core) and by the GPU
+//! path at two batch sizes (after an untimed call that compiles the size's
+//! kernels), so that the GPU's per-batch cost separates from its per-island
+//! cost; each figure is the fastest of three runs. It runs when `Backend::Auto` has a GPU open and no model is cached
+//! for this device, precision and thread count; the model is written to
+//! [`cache_dir`] and read by later processes.
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use serde::{Deserialize, Serialize};
+
+use super::Solver;
+use crate::generate::families::islands_of_size;
+use crate::Error;
+
+/// The island sizes a calibration measures.
+pub const CALIBRATION_SIZES: [usize; 4] = [2, 4, 8, 12];
+/// Islands per size in the CPU's timed batch and the GPU's larger one.
+const CALIBRATION_ISLANDS: usize = 1024;
+/// Islands per size in the GPU's smaller batch.
+const CALIBRATION_SMALL: usize = 128;
+
+/// Seconds per island on each path, by island size, on one device.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CostModel {
+    /// The GPU it was measured on (adapter and precision, as
+    /// [`Solver::device`] names it) and the CPU's threads.
+    pub device: String,
+    /// CPU worker threads during the measurement.
+    pub threads: usize,
+    /// Island sizes measured, ascending.
+    pub sizes: Vec<usize>,
+    /// Seconds per island of the CPU path (all `threads`), one per size.
+    pub cpu_per_island: Vec<f64>,
+    /// Seconds per island of the GPU path, one per size.
+    pub gpu_per_island: Vec<f64>,
+    /// Seconds of one GPU call beyond its islands.
+    pub gpu_per_batch: f64,
+}
+
+impl CostModel {
+    /// Checks shapes and values (finite, ≥ 0; sizes ascending, ≥ 1).
+    pub fn validate(&self) -> Result<(), Error> {
+        let bad = |field: &str, why: &str| Err(Error::invalid("settings: cost_model", field, why));
+        let k = self.sizes.len();
+        if k == 0 || self.cpu_per_island.len() != k || self.gpu_per_island.len() != k {
+            return bad("sizes", "needs one CPU and one GPU figure per size");
+        }
+        if self.sizes[0] == 0 || self.sizes.windows(2).any(|w| w[0] >= w[1]) {
+            return bad("sizes", "must be ≥ 1 and strictly ascending");
+        }
+        let figures = self.cpu_per_island.iter().chain(&self.gpu_per_island);
+        if figures
+            .chain([&self.gpu_per_batch])
+            .any(|v| !(v.is_finite() && *v >= 0.0))
+        {
+            return bad("cpu_per_island", "every figure must be finite and ≥ 0");
+        }
+        Ok(())
+    }
+
+    /// Seconds per island of size n from `table` (one figure per size):
+    /// linear in n between measured sizes; below the first, the first;
+    /// above the last, the last scaled by (n / n_last)³ (an island's work
+    /// grows at least like n³ there).
+    pub fn per_island(&self, table: &[f64], n: usize) -> f64 {
+        let s = &self.sizes;
+        let last = s.len() - 1;
+        if n <= s[0] {
+            return table[0];
+        }
+        if n >= s[last] {
+            return table[last] * (n as f64 / s[last] as f64).powi(3);
+        }
+        let j = s.iter().position(|&m| m >= n).unwrap_or(last);
+        let t = (n - s[j - 1]) as f64 / (s[j] - s[j - 1]) as f64;
+        table[j - 1] + t * (table[j] - table[j - 1])
+    }
+
+    /// (CPU seconds, GPU seconds) estimated for a batch of islands of `sizes`.
+    pub fn estimate(&self, sizes: impl Iterator<Item = usize>) -> (f64, f64) {
+        let (mut cpu, mut gpu) = (0.0, self.gpu_per_batch);
+        for n in sizes {
+            cpu += self.per_island(&self.cpu_per_island, n);
+            gpu += self.per_island(&self.gpu_per_island, n);
+        }
+        (cpu, gpu)
+    }
+}
+
+impl std::fmt::Display for CostModel {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        writeln!(
+            f,
+            "cost model ({}; CPU {} thread(s)); GPU per call {:.2} ms",
+            self.device,
+            self.threads,
+            self.gpu_per_batch * 1e3
+        )?;
+        writeln!(f, "   n   CPU µs/island   GPU µs/island")?;
+        for (k, n) in self.sizes.iter().enumerate() {
+            writeln!(
+                f,
+                "{n:>4}   {:>13.3}   {:>13.3}",
+                self.cpu_per_island[k] * 1e6,
+                self.gpu_per_island[k] * 1e6
+            )?;
+        }
+        Ok(())
+    }
+}
+
+/// Where models are cached: `$LCPBATCH_CACHE_DIR`, else
+/// `$XDG_CACHE_HOME/lcpbatch`, else `$HOME/.cache/lcpbatch`.
+pub fn cache_dir() -> Option<PathBuf> {
+    let env = |k| {
+        std::env::var_os(k)
+            .filter(|v| !v.is_empty())
+            .map(PathBuf::from)
+    };
+    env("LCPBATCH_CACHE_DIR")
+        .or_else(|| env("XDG_CACHE_HOME").map(|d| d.join("lcpbatch")))
+        .or_else(|| env("HOME").map(|d| d.join(".cache").join("lcpbatch")))
+}
+
+/// The cache file in `dir` of a device and thread count (FNV-1a of both,
+/// with the crate's version: a new version measures again).
+fn cache_file(dir: &Path, device: &str, threads: usize) -> PathBuf {
+    let key = format!("{} {device} {threads}", env!("CARGO_PKG_VERSION"));
+    let hash = key.bytes().fold(0xcbf29ce484222325u64, |h, b| {
+        (h ^ b as u64).wrapping_mul(0x100000001b3)
+    });
+    dir.join(format!("cost-model-{hash:016x}.json"))
+}
+
+/// The model of this device and thread count cached in `dir`, if one was
+/// measured (an unreadable or invalid file counts as none).
+pub(super) fn cached(dir: &Path, device: &str, threads: usize) -> Option<CostModel> {
+    let text = std::fs::read_to_string(cache_file(dir, device, threads)).ok()?;
+    let m: CostModel = serde_json::from_str(&text).ok()?;
+    (m.device == device && m.threads == threads && m.validate().is_ok()).then_some(m)
+}
+
+/// Writes `model` to the cache in `dir` (atomically); returns the file.
+pub(super) fn store(dir: &Path, model: &CostModel) -> Result<PathBuf, Error> {
+    let path = cache_file(dir, &model.device, model.threads);
+    let text = serde_json::to_string_pretty(model).map_err(|e| Error::json("cost model", e))?;
+    std::fs::create_dir_all(dir).map_err(|source| Error::Io {
+        path: dir.to_path_buf(),
+        source,
+    })?;
+    crate::io::write_atomically(&path, &text)?;
+    Ok(path)
+}
+
+impl CostModel {
+    /// Writes the model to [`cache_dir`], where later solvers on the same
+    /// device and thread count find it; returns the file.
+    pub fn save(&self) -> Result<PathBuf, Error> {
+        let dir = cache_dir().ok_or_else(|| {
+            Error::Unsupported("no cache folder: set LCPBATCH_CACHE_DIR or HOME".into())
+        })?;
+        store(&dir, self)
+    }
+}
+
+impl Solver {
+    /// Measures this solver's CPU and GPU paths by island size (see the
+    /// module docs); needs a GPU open. `Error::Gpu` on device trouble.
+    pub fn calibrate(&mut self) -> Result<CostModel, Error> {
+        let Some(ctx) = self.gpu.clone() else {
+            return Err(Error::Gpu("calibration needs a GPU".into()));
+        };
+        let mut m = CostModel {
+            device: self.device().name,
+            threads: self.threads,
+            sizes: CALIBRATION_SIZES.to_vec(),
+            cpu_per_island: Vec::new(),
+            gpu_per_island: Vec::new(),
+            gpu_per_batch: 0.0,
+        };
+        let mut per_batch = Vec::new();
+        for n in CALIBRATION_SIZES {
+            let lcps = islands_of_size(n, CALIBRATION_ISLANDS, 0xC0FFEE);
+            let cpu = fastest_of(TIMINGS, || self.lcps_on_cpu(&lcps, None))?;
+            m.cpu_per_island.push(cpu / lcps.len() as f64);
+            // Untimed: compiles this size's kernels.
+            self.lcps_on_gpu(&ctx, &lcps[..16], None)?;
+            let small = &lcps[..CALIBRATION_SMALL];
+            let t_small = fastest_of(TIMINGS, || self.lcps_on_gpu(&ctx, small, None))?;
+            let t_large = fastest_of(TIMINGS, || self.lcps_on_gpu(&ctx, &lcps, None))?;
+            // t(B) = per_batch + B per_island through both points.
+            let per_island = ((t_large - t_small) / (lcps.len() - small.len()) as f64).max(0.0);
+            m.gpu_per_island.push(per_island);
+            per_batch.push((t_small - small.len() as f64 * per_island).max(0.0));
+        }
+        per_batch.sort_by(f64::total_cmp);
+        m.gpu_per_batch = per_batch[per_batch.len() / 2];
+        Ok(m)
+    }
+}
+
+/// Each figure is the fastest of this many runs (other work on the machine
+/// only slows a run down).
+const TIMINGS: usize = 3;
+
+/// The fastest of `runs` timed calls of `f`, in seconds.
+fn fastest_of<T>(runs: usize, mut f: impl FnMut() -> Result<T, Error>) -> Result<f64, Error> {
+    let mut best = f64::INFINITY;
+    for _ in 0..runs {
+        let t = Instant::now();
+        f()?;
+        best = best.min(t.elapsed().as_secs_f64());
+    }
+    Ok(best)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn model() -> CostModel {
+        CostModel {
+            device: "test".into(),
+            threads: 2,
+            sizes: vec![1, 4, 8],
+            cpu_per_island: vec![1e-6, 4e-6, 16e-6],
+            gpu_per_island: vec![2e-6, 2e-6, 4e-6],
+            gpu_per_batch: 1e-3,
+        }
+    }
+
+    #[test]
+    fn per_island_interpolates_and_extrapolates() {
+        let m = model();
+        assert_eq!(m.per_island(&m.cpu_per_island, 1), 1e-6);
+        assert!((m.per_island(&m.cpu_per_island, 6) - 10e-6).abs() < 1e-18);
+        assert!((m.per_island(&m.cpu_per_island, 16) - 128e-6).abs() < 1e-15);
+    }
+
+    #[test]
+    fn small_batches_go_to_the_cpu_and_large_heavy_ones_to_the_gpu() {
+        let m = model();
+        let (cpu, gpu) = m.estimate([8usize; 10].into_iter());
+        assert!(cpu < gpu, "{cpu} {gpu}");
+        let (cpu, gpu) = m.estimate(std::iter::repeat_n(8usize, 10_000));
+        assert!(gpu < cpu, "{cpu} {gpu}");
+    }
+
+    #[test]
+    fn a_bad_model_is_an_error_naming_the_field() {
+        let mut m = model();
+        m.sizes = vec![4, 1, 8];
+        assert!(m.validate().unwrap_err().to_string().contains("sizes"));
+        let mut m = model();
+        m.gpu_per_island[1] = f64::NAN;
+        assert!(m.validate().is_err());
+    }
+
+    #[test]
+    fn the_cache_round_trips_and_is_keyed_by_device() {
+        let dir = std::env::temp_dir().join(format!("lcpbatch-cost-{}", std::process::id()));
+        let m = model();
+        store(&dir, &m).unwrap();
+        assert_eq!(cached(&dir, "test", 2), Some(m));
+        assert_eq!(cached(&dir, "test", 4), None);
+        assert_eq!(cached(&dir, "other", 2), None);
+        std::fs::remove_dir_all(dir).ok();
+    }
+}
