@@ -5,6 +5,7 @@ use super::cone::project_on_cone;
 use super::newton::newton;
 use super::nsgs::nsgs;
 use super::problem::FrictionProblem;
+use super::projected::{solve_checked, ProjectedMethod, ProjectedSettings, ProjectedSolution};
 use super::residual::FrictionResiduals;
 use crate::lcp::Status;
 
@@ -27,6 +28,16 @@ pub enum FrictionMethod {
     /// Alart–Curnier semismooth Newton with line search alone, from the warm
     /// start or r = 0.
     Newton,
+    /// Projected Jacobi sweeps over contacts on the cone complementarity
+    /// model of Anitescu–Tasora ([`super::projected`]; on the GPU too),
+    /// judged by that model's residual `cone_error`, not the Coulomb error
+    /// (which the report gives beside it: the model's distance from Coulomb).
+    Jacobi,
+    /// Projected Gauss–Seidel sweeps, as [`Self::Jacobi`] otherwise.
+    Pgs,
+    /// Accelerated projected gradient (APGD with restarts, seed 001), as
+    /// [`Self::Jacobi`] otherwise.
+    Apgd,
 }
 
 impl FrictionMethod {
@@ -36,14 +47,35 @@ impl FrictionMethod {
             FrictionMethod::Auto => "auto",
             FrictionMethod::Nsgs => "nsgs",
             FrictionMethod::Newton => "newton",
+            FrictionMethod::Jacobi => "jacobi",
+            FrictionMethod::Pgs => "pgs",
+            FrictionMethod::Apgd => "apgd",
+        }
+    }
+
+    /// The cone projection iteration of a projected method (None for the
+    /// exact Coulomb methods).
+    pub fn projected(self) -> Option<ProjectedMethod> {
+        match self {
+            FrictionMethod::Jacobi => Some(ProjectedMethod::Jacobi),
+            FrictionMethod::Pgs => Some(ProjectedMethod::GaussSeidel),
+            FrictionMethod::Apgd => Some(ProjectedMethod::Apgd),
+            _ => None,
         }
     }
 
     /// The method of a name of [`Self::name`], None for another.
     pub fn from_name(name: &str) -> Option<Self> {
-        [Self::Auto, Self::Nsgs, Self::Newton]
-            .into_iter()
-            .find(|m| m.name() == name)
+        [
+            Self::Auto,
+            Self::Nsgs,
+            Self::Newton,
+            Self::Jacobi,
+            Self::Pgs,
+            Self::Apgd,
+        ]
+        .into_iter()
+        .find(|m| m.name() == name)
     }
 }
 
@@ -54,15 +86,19 @@ pub struct FrictionSettings {
     pub method: FrictionMethod,
     /// `solved` only when the Coulomb error is at most this.
     pub tolerance: f64,
-    /// Cap on NSGS sweeps plus Newton steps.
+    /// Cap on NSGS sweeps plus Newton steps (the projected methods: on
+    /// their iterations).
     pub max_iterations: u64,
 }
+
+/// The default tolerance of the friction solvers (f64).
+pub const DEFAULT_TOLERANCE: f64 = 1e-8;
 
 impl Default for FrictionSettings {
     fn default() -> Self {
         FrictionSettings {
             method: FrictionMethod::Auto,
-            tolerance: 1e-8,
+            tolerance: DEFAULT_TOLERANCE,
             max_iterations: 1000,
         }
     }
@@ -106,8 +142,40 @@ pub fn solve_friction_problem(
         FrictionMethod::Nsgs => nsgs(p, &mut r, cap, s.tolerance).0,
         FrictionMethod::Newton => newton(p, &mut r, cap, s.tolerance.min(POLISH)).0,
         FrictionMethod::Auto => hybrid(p, &mut r, cap, s.tolerance),
+        FrictionMethod::Jacobi | FrictionMethod::Pgs | FrictionMethod::Apgd => {
+            let ps = s.projected_settings();
+            let sol = solve_checked(p, Some(&r), &ps, ps.f64_tolerance());
+            return from_projected(sol, s.method);
+        }
     };
     finish(p, r, iterations, s)
+}
+
+/// A projected iteration's answer as a [`FrictionSolution`] (its status
+/// judged by `cone_error`; see [`FrictionMethod::Jacobi`]).
+pub(crate) fn from_projected(sol: ProjectedSolution, method: FrictionMethod) -> FrictionSolution {
+    FrictionSolution {
+        status: sol.status,
+        r: sol.r,
+        u: sol.u,
+        residuals: sol.residuals,
+        iterations: sol.iterations as u64,
+        method,
+    }
+}
+
+impl FrictionSettings {
+    /// The settings of the cone projection iterations: the method, the
+    /// iteration cap, and the tolerance where it is not the default (then
+    /// f64 runs stop at 1e-8 and f32 shaders at 1e-5, their own defaults).
+    pub fn projected_settings(&self) -> ProjectedSettings {
+        ProjectedSettings {
+            method: self.method.projected().unwrap_or_default(),
+            tolerance: (self.tolerance != DEFAULT_TOLERANCE).then_some(self.tolerance),
+            max_iterations: self.max_iterations.min(u32::MAX as u64) as u32,
+            ..ProjectedSettings::default()
+        }
+    }
 }
 
 /// NSGS then Newton, alternating while Newton stalls (see

@@ -12,7 +12,8 @@ use crate::friction::assembly::{
     apply_friction_impulses, assemble_friction_contacts, assemble_friction_island, world_impulse,
     FrictionContactRows,
 };
-use crate::friction::{solve_friction_problem, FrictionProblem};
+use crate::friction::solve::from_projected;
+use crate::friction::{solve_friction_problem, solve_projected_on_gpu, FrictionProblem};
 use crate::islands::{find_islands, Island};
 use crate::report::{ContactImpulse, FrictionIslandReport, Report, SceneFriction, SceneReport};
 use crate::scene::Scene;
@@ -113,9 +114,45 @@ impl Solver {
             _ => vec![None; problems.len()],
         };
         let s = self.settings.friction();
-        let solved = parallel_map(problems.len(), self.threads, |i| {
-            solve_friction_problem(&problems[i], warm[i].as_deref(), &s)
-        });
+        let threads = self.threads;
+        let cpu = |warm: &[Option<Vec<f64>>]| {
+            parallel_map(problems.len(), threads, |i| {
+                solve_friction_problem(&problems[i], warm[i].as_deref(), &s)
+            })
+        };
+        // The projected methods run on the GPU where one is open (every
+        // answer checked in f64 there); the exact Coulomb methods on the CPU.
+        let mut figures = None;
+        let solved = match (self.gpu.clone(), s.method.projected()) {
+            (Some(ctx), Some(_)) => {
+                // The GPU takes a warm start for all problems or none.
+                let all_warm: Option<Vec<Vec<f64>>> = warm.iter().cloned().collect();
+                let ps = s.projected_settings();
+                let on_gpu = super::gpu_path::guarded(|| {
+                    solve_projected_on_gpu(
+                        &ctx,
+                        problems,
+                        all_warm.as_deref(),
+                        &ps,
+                        &self.settings.gpu,
+                    )
+                });
+                match on_gpu {
+                    Ok((sols, f)) => {
+                        figures = Some(f);
+                        sols.into_iter()
+                            .map(|x| from_projected(x, s.method))
+                            .collect()
+                    }
+                    Err(Error::Gpu(why)) => {
+                        self.fall_back(why);
+                        cpu(&warm)
+                    }
+                    Err(e) => return Err(e),
+                }
+            }
+            _ => cpu(&warm),
+        };
         let islands: Vec<FrictionIslandReport> = solved
             .into_iter()
             .zip(&warm)
@@ -132,14 +169,26 @@ impl Solver {
                 self.friction_warm.record(k, isl);
             }
         }
-        let mut report = Report::new(
-            Vec::new(),
-            Vec::new(),
-            self.cpu_device(),
-            self.choice.clone(),
-        );
+        let device = match figures {
+            Some(_) => self.device(),
+            None => self.cpu_device(),
+        };
+        let mut report = Report::new(Vec::new(), Vec::new(), device, self.choice.clone());
         report.fallback = self.fallback.clone();
         report.timings.solve = start.elapsed().as_secs_f64();
+        if let Some(f) = figures {
+            report.counts.polished = f.polished;
+            report.counts.repaired = f.repaired;
+            report.counts.cpu_fallback = f.cpu_fallback;
+            report.timings.gpu = f.gpu_seconds;
+            report.timings.validation = f.validation_seconds;
+            report.gpu = Some(crate::report::GpuFigures {
+                chunks: f.chunks,
+                dispatches: f.dispatches,
+                rounds: f.rounds,
+                ..Default::default()
+            });
+        }
         report.set_friction(islands);
         report.timings.total = start.elapsed().as_secs_f64();
         Ok(report)

@@ -219,7 +219,7 @@ fn gpu_path(on: SolvedOn, path: Option<prediction::SolvePath>) -> SolvePath {
 /// device wgpu itself panics in places (`create_buffer_init` cannot map the
 /// new buffer), and a lost device is device trouble like any other. The
 /// device is dropped afterwards, so nothing it left half-done is used again.
-fn guarded<T>(f: impl FnOnce() -> Result<T, Error>) -> Result<T, Error> {
+pub(super) fn guarded<T>(f: impl FnOnce() -> Result<T, Error>) -> Result<T, Error> {
     std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)).unwrap_or_else(|p| {
         let msg = p
             .downcast_ref::<String>()

@@ -14,6 +14,7 @@ mod gpu_conformance;
 mod gpu_cost_model;
 mod gpu_friction;
 mod gpu_friction_assembly;
+mod gpu_friction_door;
 mod gpu_prediction;
 mod gpu_seeds;
 mod gpu_stages;

@@ -45,13 +45,33 @@ enum SolverArg {
 /// How islands and problems with friction (Coulomb) are solved, on the
 /// CPU in f64; each is judged by its Coulomb error.
 #[derive(Clone, Copy, ValueEnum)]
-enum FrictionSolverArg {
+pub(crate) enum FrictionSolverArg {
     /// NSGS sweeps, then Alart–Curnier Newton polishing to the rounding of f64.
     Auto,
     /// Non-smooth Gauss–Seidel over contacts, each solved exactly.
     Nsgs,
     /// Alart–Curnier semismooth Newton with line search alone.
     Newton,
+    /// Projected Jacobi sweeps on the cone complementarity model (GPU with
+    /// --backend gpu), judged by that model's residual.
+    Jacobi,
+    /// Projected Gauss–Seidel sweeps on the cone complementarity model.
+    Pgs,
+    /// Accelerated projected gradient (APGD) on the cone complementarity model.
+    Apgd,
+}
+
+impl FrictionSolverArg {
+    pub(crate) fn method(self) -> FrictionMethod {
+        match self {
+            FrictionSolverArg::Auto => FrictionMethod::Auto,
+            FrictionSolverArg::Nsgs => FrictionMethod::Nsgs,
+            FrictionSolverArg::Newton => FrictionMethod::Newton,
+            FrictionSolverArg::Jacobi => FrictionMethod::Jacobi,
+            FrictionSolverArg::Pgs => FrictionMethod::Pgs,
+            FrictionSolverArg::Apgd => FrictionMethod::Apgd,
+        }
+    }
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -545,11 +565,7 @@ fn solve_command(args: SolveArgs) -> Result<(), Error> {
     let settings = Settings {
         method,
         all_solutions,
-        friction_method: match friction_solver {
-            FrictionSolverArg::Auto => FrictionMethod::Auto,
-            FrictionSolverArg::Nsgs => FrictionMethod::Nsgs,
-            FrictionSolverArg::Newton => FrictionMethod::Newton,
-        },
+        friction_method: friction_solver.method(),
         friction_tolerance,
         ..Settings::default()
     };

@@ -11,10 +11,10 @@ use std::time::Instant;
 use lcpbatch::io::write_atomically;
 use lcpbatch::world::format::{parse_worlds, worlds_to_json};
 use lcpbatch::world::generate::{standard_world, WorldKind};
-use lcpbatch::{Error, FrictionMethod, Settings, Solver, StepReport, World};
+use lcpbatch::{Error, Settings, Solver, StepReport, World};
 use plotters::prelude::*;
 
-use super::{BackendArg, GpuArgs};
+use super::{BackendArg, FrictionSolverArg, GpuArgs};
 
 /// Options of `lcpbatch simulate`.
 #[derive(clap::Args)]
@@ -41,7 +41,7 @@ pub struct SimulateArgs {
     backend: BackendArg,
     /// Solver of frictional islands (pairs with μ = √(μ_a μ_b) > 0).
     #[arg(long, value_enum, default_value = "auto")]
-    friction_solver: FrictionArg,
+    friction_solver: FrictionSolverArg,
     /// Set every body's friction coefficient μ (0: frictionless worlds, the
     /// LCP path; GPU-capable).
     #[arg(long)]
@@ -55,17 +55,6 @@ pub struct SimulateArgs {
     out: PathBuf,
     #[command(flatten)]
     gpu: GpuArgs,
-}
-
-/// `--friction-solver`.
-#[derive(Clone, Copy, clap::ValueEnum)]
-enum FrictionArg {
-    /// NSGS sweeps, then Alart–Curnier Newton polishing.
-    Auto,
-    /// Non-smooth Gauss–Seidel with exact local Coulomb solves.
-    Nsgs,
-    /// Alart–Curnier semismooth Newton alone.
-    Newton,
 }
 
 /// One line of `steps.jsonl`: the step's figures over every world.
@@ -173,11 +162,7 @@ pub fn simulate_command(args: SimulateArgs) -> Result<(), Error> {
         backend: args.backend.backend(),
         gpu: args.gpu.settings()?,
         warm_start: true,
-        friction_method: match args.friction_solver {
-            FrictionArg::Auto => FrictionMethod::Auto,
-            FrictionArg::Nsgs => FrictionMethod::Nsgs,
-            FrictionArg::Newton => FrictionMethod::Newton,
-        },
+        friction_method: args.friction_solver.method(),
         ..Settings::default()
     })?;
     println!("device: {} ({})", solver.device().name, solver.choice());
