@@ -13,7 +13,7 @@
 use glam::DVec3;
 
 use crate::cpu::assembly::ContactRow;
-use crate::scene::Scene;
+use crate::scene::{Contact, Scene};
 
 /// A body's velocities after the impact.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -26,16 +26,32 @@ pub struct BodyVelocity {
 
 /// Applies the impulses `z` (one per contact of the scene) to every body.
 pub fn apply_impulses(scene: &Scene, rows: &[ContactRow], z: &[f64]) -> Vec<BodyVelocity> {
+    let pushes = scene
+        .contacts
+        .iter()
+        .zip(rows)
+        .zip(z)
+        .map(|((c, row), &zi)| (c, &row.response, zi));
+    velocities_after(scene, pushes)
+}
+
+/// The bodies' velocities after impulses given as (contact, the row's
+/// M⁻¹Jᵀ, impulse along the row): body a gains z times the a blocks of the
+/// response, body b the b blocks (already negative). The frictional path
+/// passes three rows per contact (n, t₁, t₂).
+pub(crate) fn velocities_after<'a>(
+    scene: &Scene,
+    pushes: impl Iterator<Item = (&'a Contact, &'a [f64; 12], f64)>,
+) -> Vec<BodyVelocity> {
     let mut v: Vec<(DVec3, DVec3)> = scene
         .bodies
         .iter()
         .map(|b| (b.velocity(), b.angular_velocity()))
         .collect();
-    for ((c, row), &zi) in scene.contacts.iter().zip(rows).zip(z) {
+    for (c, r, zi) in pushes {
         if zi == 0.0 {
             continue;
         }
-        let r = &row.response;
         let block = |at: usize| DVec3::new(r[at], r[at + 1], r[at + 2]);
         v[c.a].0 += block(0) * zi;
         v[c.a].1 += block(3) * zi;

@@ -32,7 +32,7 @@ use glam::DVec3;
 
 use super::problem::FrictionProblem;
 use crate::cpu::assembly::{assemble_contact, dynamic_sides, matrix_entry, ContactRow};
-use crate::cpu::impulses::BodyVelocity;
+use crate::cpu::impulses::{velocities_after, BodyVelocity};
 use crate::islands::Island;
 use crate::scene::{Body, Contact, Scene};
 
@@ -163,31 +163,18 @@ pub fn apply_friction_impulses(
     rows: &[FrictionContactRows],
     r: &[[f64; 3]],
 ) -> Vec<BodyVelocity> {
-    let mut v: Vec<(DVec3, DVec3)> = scene
-        .bodies
+    let pushes = scene
+        .contacts
         .iter()
-        .map(|b| (b.velocity(), b.angular_velocity()))
-        .collect();
-    for ((c, row), ri) in scene.contacts.iter().zip(rows).zip(r) {
-        for (dir, &z) in row.rows.iter().zip(ri) {
-            if z == 0.0 {
-                continue;
-            }
-            let block = |at: usize| DVec3::from_slice(&dir.response[at..at + 3]);
-            v[c.a].0 += block(0) * z;
-            v[c.a].1 += block(3) * z;
-            if let Some(b) = c.b {
-                v[b].0 += block(6) * z;
-                v[b].1 += block(9) * z;
-            }
-        }
-    }
-    v.into_iter()
-        .map(|(lin, ang)| BodyVelocity {
-            velocity: lin.to_array(),
-            angular_velocity: ang.to_array(),
-        })
-        .collect()
+        .zip(rows)
+        .zip(r)
+        .flat_map(|((c, row), ri)| {
+            row.rows
+                .iter()
+                .zip(ri)
+                .map(move |(dir, &z)| (c, &dir.response, z))
+        });
+    velocities_after(scene, pushes)
 }
 
 /// Local velocity (u_n, u_t₁, u_t₂) of every contact from the bodies'

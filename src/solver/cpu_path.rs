@@ -46,18 +46,7 @@ impl Solver {
             let w = warm.and_then(|w| w[i]);
             solve_on_cpu(&lcps[i], w, &self.settings)
         });
-        let islands = solved
-            .into_iter()
-            .enumerate()
-            .map(|(i, (method, path, solution))| IslandReport {
-                scene: None,
-                contacts: (0..lcps[i].n()).collect(),
-                method,
-                path,
-                solution,
-            })
-            .collect();
-        let mut r = self.cpu_report(islands, Vec::new());
+        let mut r = self.cpu_report(lcp_islands(lcps, solved), Vec::new());
         r.timings.solve = t.elapsed().as_secs_f64();
         Ok(r)
     }
@@ -150,6 +139,21 @@ impl Solver {
         r.fallback = self.fallback.clone();
         r
     }
+}
+
+/// The reports of an LCP batch's answers, in order.
+pub(super) fn lcp_islands(lcps: &[Lcp], solved: Vec<Solved>) -> Vec<IslandReport> {
+    solved
+        .into_iter()
+        .zip(lcps)
+        .map(|((method, path, solution), lcp)| IslandReport {
+            scene: None,
+            contacts: (0..lcp.n()).collect(),
+            method,
+            path,
+            solution,
+        })
+        .collect()
 }
 
 /// One island's answer: the method that ran, the path, the solution.

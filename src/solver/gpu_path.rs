@@ -11,7 +11,7 @@ use crate::settings::Method;
 use crate::validation::BatchReport;
 use crate::Error;
 
-use super::cpu_path::{prediction_path, solve_on_cpu, Solved};
+use super::cpu_path::{lcp_islands, prediction_path, solve_on_cpu, Solved};
 use crate::cpu::batch::parallel_map;
 use crate::cpu::enumeration::enumerate_screened;
 use crate::gpu::all_bases::{screen_all_bases, ScreenFigures, Screened};
@@ -92,17 +92,7 @@ impl Solver {
         let refs: Vec<&Lcp> = lcps.iter().collect();
         let t = std::time::Instant::now();
         let (solved, figures) = self.all_solutions_on_gpu(ctx, &refs)?;
-        let mut islands: Vec<IslandReport> = solved
-            .into_iter()
-            .enumerate()
-            .map(|(i, (method, path, solution))| IslandReport {
-                scene: None,
-                contacts: (0..lcps[i].n()).collect(),
-                method,
-                path,
-                solution,
-            })
-            .collect();
+        let mut islands = lcp_islands(lcps, solved);
         self.check(&mut islands);
         let mut r = Report::new(islands, Vec::new(), self.device(), self.choice.clone());
         r.timings.solve = t.elapsed().as_secs_f64();
