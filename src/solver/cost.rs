@@ -41,8 +41,8 @@ const CALIBRATION_SMALL: usize = 128;
 /// Seconds per island on each path, by island size, on one device.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct CostModel {
-    /// The GPU it was measured on (adapter and precision, as
-    /// [`Solver::device`] names it) and the CPU's threads.
+    /// The GPU it was measured on: adapter name, wgpu backend, device type
+    /// and precision.
     pub device: String,
     /// CPU worker threads during the measurement.
     pub threads: usize,
@@ -183,6 +183,22 @@ impl CostModel {
 }
 
 impl Solver {
+    /// What a cost model is kept under: the GPU's name, wgpu backend, type
+    /// and precision, however it was chosen (by name or not); empty
+    /// without a GPU.
+    pub(super) fn cost_key(&self) -> String {
+        self.gpu.as_deref().map_or_else(String::new, |ctx| {
+            let a = ctx.adapter_info();
+            format!(
+                "{} ({}, {}; {})",
+                a.name,
+                a.backend,
+                a.device_type,
+                ctx.precision().name()
+            )
+        })
+    }
+
     /// Measures this solver's CPU and GPU paths by island size (see the
     /// module docs); needs a GPU open. `Error::Gpu` on device trouble.
     pub fn calibrate(&mut self) -> Result<CostModel, Error> {
@@ -190,7 +206,7 @@ impl Solver {
             return Err(Error::Gpu("calibration needs a GPU".into()));
         };
         let mut m = CostModel {
-            device: self.device().name,
+            device: self.cost_key(),
             threads: self.threads,
             sizes: CALIBRATION_SIZES.to_vec(),
             cpu_per_island: Vec::new(),

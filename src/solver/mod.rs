@@ -174,7 +174,7 @@ impl Solver {
     /// else the cached one, else a calibration (cached). Device trouble
     /// during the calibration falls back to the CPU.
     fn load_cost_model(&mut self) {
-        let device = self.device().name;
+        let device = self.cost_key();
         let dir = cost::cache_dir();
         let model = self.settings.cost_model.clone().or_else(|| {
             dir.as_deref()
