@@ -77,6 +77,7 @@ pub use report::{
 pub use scene::{Body, Contact, Scene};
 pub use settings::{Backend, GpuSettings, Method, Settings};
 pub use solver::world_path::{StepReport, StepTimings, WorldStepReport};
+pub use solver::Repairs;
 pub use solver::{CostModel, Solver};
 pub use world::{RigidBody, Shape, World};
 

@@ -32,7 +32,11 @@ mod cost;
 mod cpu_path;
 mod friction_path;
 mod gpu_path;
+mod world_cpu;
 pub mod world_path;
+mod world_repair;
+
+pub use world_repair::Repairs;
 
 pub use cost::{cache_dir, CostModel, CALIBRATION_SIZES};
 
@@ -74,6 +78,9 @@ pub struct Solver {
     /// Frictional impulses of the last call by contact id (with `settings.warm_start`).
     friction_warm: friction_path::FrictionWarm,
     threads: usize,
+    /// Per world of the last `step_worlds` batch (by position): its contacts'
+    /// bases of the last step (with `settings.warm_start`).
+    world_warm: Vec<world_cpu::WorldWarm>,
     /// `Backend::Auto` with a GPU open: the costs that choose per batch.
     cost: Option<CostModel>,
 }
@@ -95,6 +102,7 @@ impl Solver {
             warm: WarmStart::default(),
             friction_warm: Default::default(),
             threads,
+            world_warm: Vec::new(),
             cost: None,
         };
         solver.choose_device()?;
@@ -283,6 +291,7 @@ impl Solver {
     pub fn clear_warm_start(&mut self) {
         self.warm = WarmStart::default();
         self.friction_warm = Default::default();
+        self.world_warm.clear();
     }
 
     /// The device, shared, while the GPU is in use (for tests that lose it
@@ -384,6 +393,18 @@ impl Solver {
         for (i, s) in scenes.iter().enumerate() {
             s.validate(&format!("scene {i}"))?;
         }
+        let mut report = self.solve_built_scenes(scenes)?;
+        report.timings.total = start.elapsed().as_secs_f64();
+        Ok(report)
+    }
+
+    /// [`Solver::solve_scenes`] without the scene checks, for scenes built
+    /// by the library itself from checked input (the world step builds them
+    /// from worlds checked at the start of the step: indices in range, unit
+    /// normals, finite numbers, masses and inertias ≥ 0, by construction).
+    /// Never for a caller's scenes: unchecked input could panic in assembly.
+    pub(crate) fn solve_built_scenes(&mut self, scenes: &[Scene]) -> Result<Report, Error> {
+        let start = Instant::now();
         if scenes.iter().any(Scene::has_friction) {
             let mut report = self.scenes_with_friction(scenes)?;
             report.timings.total = start.elapsed().as_secs_f64();

@@ -1,18 +1,40 @@
 //! The door for worlds in time: [`Solver::step_worlds`] advances a batch of
 //! [`World`]s by one step Δt (seed 001 §四, DVI; the parts per world are in
-//! [`crate::world::step`]): collision for every world (over every core),
-//! ONE [`Solver::solve_scenes`] call holding every world's islands (CPU or
-//! GPU, warm-started by contact id with `Settings::warm_start`), then the
-//! velocities after the impulses and the poses.
+//! [`crate::world::step`]) in two passes over the worlds, each spread over
+//! the cores:
+//!
+//! 1. **collision**: gravity, broad and narrow phase, each world's scene;
+//! 2. the **solve**, then the velocities, poses and sleep counters.
+//!
+//! Where the islands are solved:
+//! - on the CPU, a frictionless world is solved inside pass 2, world by
+//!   world ([`world_cpu`](super::world_cpu)): its islands found once, its
+//!   LCPs assembled and solved by the same per-island functions as
+//!   [`Solver::solve_scenes`] (prediction, checked Lemke, enumeration; the
+//!   same final check), warm-started from that world's own memory of the
+//!   last step, so that its bits do not depend on the batch around it;
+//! - worlds with friction (any contact with μ > 0), and every world while a
+//!   GPU is open, go together in ONE batch through the door
+//!   ([`Solver::solve_built_scenes`]) between the two passes.
+//!
+//! The scenes are built here from worlds checked at the start of the step,
+//! so the door's scene checks are skipped for them: every index is in
+//! range, every normal unit, every number finite and every mass and inertia
+//! ≥ 0 by construction. Islands the solver leaves unsolved are repaired
+//! before any body moves ([`super::world_repair`]).
 
 use std::time::Instant;
 
 use serde::Serialize;
 
+use super::world_cpu::{parallel_map_mut, WorldWarm};
+use super::world_repair::{repair_settings, Repairs};
 use super::Solver;
 use crate::cpu::batch::parallel_map;
-use crate::report::Report;
-use crate::world::step::{finish, prepare, Prepared};
+use crate::cpu::impulses::BodyVelocity;
+use crate::report::{FrictionIslandReport, IslandReport, Report, SceneReport};
+use crate::scene::Scene;
+use crate::world::step::{prepare, Prepared};
 use crate::world::World;
 use crate::Error;
 
@@ -35,14 +57,19 @@ pub struct WorldStepReport {
     pub max_error: f64,
     /// Dynamic bodies awake after the step.
     pub awake: usize,
+    /// Islands of this world the solver left unsolved (repaired, see
+    /// [`StepReport::repairs`]).
+    pub unsolved: usize,
 }
 
-/// Seconds per phase of one step.
+/// Seconds per phase of one step (wall time; within pass 2, each phase's
+/// share of the pass as the threads measured it).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
 pub struct StepTimings {
     /// Gravity, broad and narrow phase, the scenes (all worlds).
     pub collision: f64,
-    /// The door's `solve_scenes`: checks, assembly and solve, impulses.
+    /// Islands, assembly, solves, repairs and impulses (the door's batch
+    /// included); its parts are in [`StepReport::solve`]'s timings.
     pub solve: f64,
     /// Velocities and poses.
     pub integrate: f64,
@@ -53,13 +80,48 @@ pub struct StepTimings {
 pub struct StepReport {
     /// One per world, in the caller's order.
     pub worlds: Vec<WorldStepReport>,
-    /// The door's report of the step's one batch (statuses, paths, device).
+    /// Every world's islands as one report (statuses, paths, device;
+    /// scene k is world k), as [`Solver::solve_scenes`] gives it.
     pub solve: Report,
     /// Seconds per phase.
     pub timings: StepTimings,
-    /// Islands whose status is not a solution (their worlds' bodies then
-    /// get the velocities the door reports for them, v* where no impulse).
+    /// Islands whose status was not a solution (before their repair).
     pub unsolved: usize,
+    /// What the unsolved islands got instead (see `world_repair`).
+    pub repairs: Repairs,
+}
+
+/// What pass 2 gives back for one world.
+pub(super) struct Stepped {
+    /// Its islands (worlds solved in pass 2 only).
+    pub islands: Vec<IslandReport>,
+    /// Its scene's results.
+    pub solved: Solved,
+    /// The world's figures.
+    pub world: WorldStepReport,
+    /// Thread seconds: islands and assembly, solves, repairs and impulses,
+    /// integration.
+    pub times: [f64; 4],
+    /// Repaired islands.
+    pub repairs: Repairs,
+}
+
+/// Where a world's scene results are.
+pub(super) enum Solved {
+    /// Solved in pass 2: its scene report (island range local).
+    Own(SceneReport),
+    /// In the door's batch; the bodies' velocities when a repair changed
+    /// them.
+    Door(Option<Vec<BodyVelocity>>),
+}
+
+/// One world in pass 2.
+pub(super) struct Item<'a> {
+    pub world: &'a mut World,
+    pub prepared: Prepared,
+    pub warm: &'a mut WorldWarm,
+    /// Its index in the door's batch (None: solved in pass 2).
+    pub door: Option<usize>,
 }
 
 impl Solver {
@@ -67,8 +129,8 @@ impl Solver {
     /// docs. Every world is checked first (an error names the world, the
     /// body and the field) and none moves then; `dt` must be finite and > 0.
     /// The same world gives the same trajectory alone or in a batch (bit for
-    /// bit on the CPU: each island is solved on its own, contact ids carry
-    /// the world's index).
+    /// bit on the CPU: each island is solved on its own, warm start is per
+    /// world, contact ids carry the world's index).
     pub fn step_worlds(&mut self, worlds: &mut [World], dt: f64) -> Result<StepReport, Error> {
         if !dt.is_finite() || dt <= 0.0 {
             return Err(Error::invalid(
@@ -78,62 +140,186 @@ impl Solver {
             ));
         }
         for (i, w) in worlds.iter().enumerate() {
-            w.validate(&format!("world {i}"))?;
+            // The world's name is formatted only for the error.
+            if w.validate("world").is_err() {
+                w.validate(&format!("world {i}"))?;
+            }
         }
         let start = Instant::now();
         let shared: &[World] = worlds;
-        let prepared: Vec<Prepared> =
+        let mut prepared: Vec<Prepared> =
             parallel_map(shared.len(), self.threads, |i| prepare(&shared[i], i, dt));
-        let (scenes, prepared): (Vec<crate::Scene>, Vec<Prepared>) = prepared
-            .into_iter()
-            .map(|mut p| (std::mem::take(&mut p.scene), p))
-            .unzip();
         let collision = start.elapsed().as_secs_f64();
-        let solve = self.solve_scenes(&scenes)?;
-        let solved_at = Instant::now();
-        let mut reports = Vec::with_capacity(worlds.len());
-        for (k, (w, p)) in worlds.iter_mut().zip(&prepared).enumerate() {
-            let scene = &solve.scenes[k];
-            finish(w, p, &scene.bodies, dt);
-            // Frictionless islands (LCP error) and frictional ones (Coulomb error).
-            let friction = scene.friction.as_ref().map_or(0..0, |f| f.islands.clone());
-            let max_error = solve.islands[scene.islands.clone()]
-                .iter()
-                .filter(|i| i.status().is_solution())
-                .map(|i| i.error())
-                .chain(
-                    solve.friction[friction.clone()]
-                        .iter()
-                        .filter(|i| i.status().is_solution())
-                        .map(|i| i.error()),
-                )
-                .fold(0.0, f64::max);
-            reports.push(WorldStepReport {
-                kinetic: w.kinetic_energy(),
-                potential: w.potential_energy(),
-                max_penetration: p.contacts.iter().map(|c| -c.gap).fold(0.0, f64::max),
-                contacts: p.contacts.len(),
-                islands: scene.islands.len() + friction.len(),
-                max_error,
-                awake: w.bodies.iter().filter(|b| !b.fixed && !b.asleep).count(),
+        // The door's batch: every world while a GPU is open, else those with friction.
+        let start = Instant::now();
+        let on_door = |p: &Prepared| self.gpu.is_some() || p.scene.has_friction();
+        let mut door_worlds = Vec::new();
+        let mut scenes: Vec<Scene> = Vec::new();
+        for (k, p) in prepared.iter_mut().enumerate() {
+            if on_door(p) {
+                door_worlds.push(k);
+                scenes.push(std::mem::take(&mut p.scene));
+            }
+        }
+        let door = if scenes.is_empty() {
+            None
+        } else {
+            Some(self.solve_built_scenes(&scenes)?)
+        };
+        let door_seconds = start.elapsed().as_secs_f64();
+        let start = Instant::now();
+        let mut memory = std::mem::take(&mut self.world_warm);
+        memory.resize_with(worlds.len(), WorldWarm::default);
+        let mut items: Vec<Item> = Vec::with_capacity(worlds.len());
+        let mut next_door = door_worlds.iter().copied().enumerate().peekable();
+        for (k, ((world, prepared), warm)) in worlds
+            .iter_mut()
+            .zip(prepared)
+            .zip(memory.iter_mut())
+            .enumerate()
+        {
+            let door = next_door.next_if(|&(_, w)| w == k).map(|(j, _)| j);
+            items.push(Item {
+                world,
+                prepared,
+                warm,
+                door,
             });
         }
-        let unsolved = solve
-            .islands
-            .iter()
-            .map(|i| i.status())
-            .chain(solve.friction.iter().map(|i| i.status()))
-            .filter(|s| !s.is_solution())
-            .count();
-        Ok(StepReport {
-            worlds: reports,
+        let fix = repair_settings(&self.settings);
+        let this: &Solver = self;
+        let stepped = parallel_map_mut(&mut items, self.threads, |k, item| match item.door {
+            None => this.step_world_on_cpu(k, item, dt, &fix),
+            Some(j) => {
+                let report = door.as_ref().expect("a door batch for its worlds");
+                this.finish_door_world(item, (&scenes[j], j, report), dt, &fix)
+            }
+        });
+        drop(items);
+        self.world_warm = memory;
+        let pass = start.elapsed().as_secs_f64();
+        Ok(self.step_report(stepped, door, collision, door_seconds, pass))
+    }
+
+    /// The step's report from pass 2's results and the door's batch:
+    /// islands and scenes in world order, times per phase.
+    fn step_report(
+        &self,
+        stepped: Vec<Stepped>,
+        door: Option<Report>,
+        collision: f64,
+        door_seconds: f64,
+        pass: f64,
+    ) -> StepReport {
+        let mut sums = [0.0; 4];
+        for s in &stepped {
+            for (t, x) in sums.iter_mut().zip(s.times) {
+                *t += x;
+            }
+        }
+        // Wall seconds of pass 2 shared out by the threads' measured times.
+        let all: f64 = sums.iter().sum();
+        let share = |x: f64| if all > 0.0 { pass * x / all } else { 0.0 };
+        let (mut report, repairs) = merge_reports(self, stepped.iter().map(|s| &s.repairs), door);
+        let mut islands = Vec::new();
+        let mut scenes = Vec::with_capacity(stepped.len());
+        let mut door_islands = std::mem::take(&mut report.islands).into_iter();
+        let mut door_scenes = std::mem::take(&mut report.scenes).into_iter();
+        let mut friction = std::mem::take(&mut report.friction);
+        let mut worlds = Vec::with_capacity(stepped.len());
+        for (k, s) in stepped.into_iter().enumerate() {
+            worlds.push(s.world);
+            let first = islands.len();
+            let mut scene = match s.solved {
+                Solved::Own(scene) => {
+                    islands.extend(s.islands);
+                    scene
+                }
+                Solved::Door(bodies) => {
+                    let mut d = door_scenes.next().expect("one door scene per door world");
+                    islands.extend(door_islands.by_ref().take(d.islands.len()));
+                    if let Some(f) = &d.friction {
+                        for isl in &mut friction[f.islands.clone()] {
+                            isl.scene = Some(k);
+                        }
+                    }
+                    if let Some(b) = bodies {
+                        d.bodies = b;
+                    }
+                    d
+                }
+            };
+            for isl in &mut islands[first..] {
+                isl.scene = Some(k);
+            }
+            scene.islands = first..islands.len();
+            scenes.push(scene);
+        }
+        let timings = report.timings;
+        let mut solve = Report::new(
+            islands,
+            scenes,
+            report.device.clone(),
+            report.choice.clone(),
+        );
+        solve.fallback = report.fallback.take();
+        solve.gpu = report.gpu.take();
+        // The door's frictional islands keep their order (and the scenes'
+        // ranges into them); their scene is now the world's index.
+        solve.set_friction(friction);
+        solve.timings = timings;
+        solve.timings.build += share(sums[0]);
+        solve.timings.solve += share(sums[1]);
+        solve.timings.impulses += share(sums[2]);
+        solve.timings.total = door_seconds + share(sums[0] + sums[1] + sums[2]);
+        StepReport {
+            unsolved: worlds.iter().map(|w| w.unsolved).sum(),
+            worlds,
             timings: StepTimings {
                 collision,
                 solve: solve.timings.total,
-                integrate: solved_at.elapsed().as_secs_f64(),
+                integrate: share(sums[3]),
             },
             solve,
-            unsolved,
-        })
+            repairs,
+        }
     }
+}
+
+/// The door's report (or an empty one on the CPU device) and every
+/// world's repairs added up.
+fn merge_reports<'a>(
+    solver: &Solver,
+    repairs: impl Iterator<Item = &'a Repairs>,
+    door: Option<Report>,
+) -> (Report, Repairs) {
+    let mut total = Repairs::default();
+    repairs.for_each(|r| total.merge(*r));
+    let report = door.unwrap_or_else(|| {
+        let mut r = Report::new(
+            Vec::new(),
+            Vec::new(),
+            solver.cpu_device(),
+            solver.choice.clone(),
+        );
+        r.fallback = solver.fallback.clone();
+        r
+    });
+    (report, total)
+}
+
+/// Largest error of the solved islands among `lcp` and `friction` (0 when
+/// none).
+pub(super) fn max_error<'a>(
+    lcp: impl Iterator<Item = &'a IslandReport>,
+    friction: impl Iterator<Item = &'a FrictionIslandReport>,
+) -> f64 {
+    lcp.filter(|i| i.status().is_solution())
+        .map(|i| i.error())
+        .chain(
+            friction
+                .filter(|i| i.status().is_solution())
+                .map(|i| i.error()),
+        )
+        .fold(0.0, f64::max)
 }

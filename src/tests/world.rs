@@ -166,6 +166,7 @@ fn worlds_in_one_batch_step_as_each_alone() {
             standard_world(WorldKind::Stack, 3, 0),
             standard_world(WorldKind::Rain, 12, 2),
             standard_world(WorldKind::Pyramid, 3, 0),
+            frictionless(standard_world(WorldKind::Rain, 12, 3)),
         ]
     };
     let mut together = make();
@@ -187,6 +188,78 @@ fn worlds_in_one_batch_step_as_each_alone() {
         .iter()
         .skip(1)
         .any(|b| b.position[1] < 0.9));
+}
+
+fn frictionless(mut w: World) -> World {
+    w.bodies.iter_mut().for_each(|b| b.friction = 0.0);
+    w
+}
+
+/// Lemke capped at one pivot leaves every island of a resting 4-box stack
+/// unsolved; the step repairs each with the exact frictionless solve
+/// instead of applying Lemke's last iterate (which lets the stack sink):
+/// the stack stays where it was, and the report counts every repair.
+#[test]
+fn an_unsolved_island_is_repaired_and_the_stack_stays_up() {
+    let mut worlds = vec![frictionless(standard_world(WorldKind::Stack, 4, 0))];
+    let start: Vec<DVec3> = worlds[0].bodies.iter().map(|b| b.position()).collect();
+    let mut solver = Solver::new(Settings {
+        warm_start: true,
+        lemke_max_pivots: 1,
+        ..Settings::new(Backend::Cpu, Method::Lemke)
+    })
+    .unwrap();
+    let mut unsolved = 0;
+    for step in 0..100 {
+        let r = solver.step_worlds(&mut worlds, 0.01).unwrap();
+        let failed = r.solve.islands.iter().filter(|i| !i.status().is_solution());
+        assert_eq!(r.unsolved, failed.count(), "step {step}");
+        assert_eq!(r.repairs.exact, r.unsolved, "step {step}: {:?}", r.repairs);
+        assert_eq!(r.worlds[0].unsolved, r.unsolved);
+        unsolved += r.unsolved;
+    }
+    assert!(
+        unsolved >= 100,
+        "{unsolved} unsolved islands: the test needs them"
+    );
+    for (k, b) in worlds[0].bodies.iter().enumerate().skip(1) {
+        let drift = (b.position() - start[k]).length();
+        assert!(drift < 1e-6, "box {k} drifted {drift} m");
+    }
+}
+
+/// A Coulomb solver stopped after one sweep, with a tolerance no sweep
+/// reaches, leaves the sliding box's island unsolved; the repair keeps its contact exact (no sinking, no
+/// lift) by dropping friction for that step only, and says so.
+#[test]
+fn an_unsolved_frictional_island_keeps_its_contact_exact() {
+    let mut worlds = vec![standard_world(WorldKind::Slide, 1, 0)];
+    let mut solver = Solver::new(Settings {
+        warm_start: true,
+        friction_max_iterations: 1,
+        friction_tolerance: 1e-300,
+        friction_method: crate::FrictionMethod::Nsgs,
+        ..Settings::new(Backend::Cpu, Method::Auto)
+    })
+    .unwrap();
+    let mut unsolved = 0;
+    for step in 0..50 {
+        let r = solver.step_worlds(&mut worlds, 0.01).unwrap();
+        assert_eq!(r.repairs.exact, r.unsolved, "step {step}: {:?}", r.repairs);
+        unsolved += r.unsolved;
+        let b = &worlds[0].bodies[1];
+        assert!(
+            b.velocity[1].abs() < 1e-9,
+            "step {step}: v_y {}",
+            b.velocity[1]
+        );
+        assert!(
+            (b.position[1] - 0.5).abs() < 1e-6,
+            "step {step}: y {}",
+            b.position[1]
+        );
+    }
+    assert!(unsolved > 0, "the test needs an unsolved island");
 }
 
 /// A ball that sleeps on the ground is skipped (no contacts) until a

@@ -1,0 +1,302 @@
+//! Pass 2 of a world step ([`Solver::step_worlds`]) for one world: a
+//! frictionless world is solved here on the CPU ([`Solver::step_world_on_cpu`]),
+//! a world of the door's batch gets its repairs ([`Solver::finish_door_world`]);
+//! then its velocities, poses and figures. Also the pass's parallel loop
+//! over the worlds ([`parallel_map_mut`]) and each world's warm-start memory
+//! ([`WorldWarm`]).
+
+use std::time::Instant;
+
+use super::cpu_path::solve_on_cpu;
+use super::world_path::{max_error, Item, Solved, Stepped, WorldStepReport};
+use super::world_repair::{reapply, repair_island, Repairs};
+use super::Solver;
+use crate::cpu::assembly::{assemble_contacts, assemble_island};
+use crate::cpu::impulses::{apply_impulses, BodyVelocity};
+use crate::islands::{find_islands, Island};
+use crate::lcp::Lcp;
+use crate::report::{IslandReport, Report, SceneReport};
+use crate::scene::Scene;
+use crate::settings::Settings;
+use crate::world::step::{finish, Prepared};
+use crate::world::World;
+
+/// Worlds handed to a thread at a time.
+const CHUNK: usize = 16;
+
+/// `f(i, &mut items[i])` for every item on up to `threads` threads (0 or 1:
+/// on this one), results in order. Chunks of [`CHUNK`] consecutive items
+/// are handed out as threads ask, so a core busy elsewhere takes fewer.
+pub(super) fn parallel_map_mut<T: Send, R: Send>(
+    items: &mut [T],
+    threads: usize,
+    f: impl Fn(usize, &mut T) -> R + Sync,
+) -> Vec<R> {
+    let threads = threads.min(items.len().div_ceil(CHUNK)).max(1);
+    if threads == 1 {
+        return items.iter_mut().enumerate().map(|(i, t)| f(i, t)).collect();
+    }
+    let chunks = std::sync::Mutex::new(items.chunks_mut(CHUNK).enumerate());
+    let mut parts: Vec<(usize, Vec<R>)> = std::thread::scope(|scope| {
+        let workers: Vec<_> = (0..threads)
+            .map(|_| {
+                scope.spawn(|| {
+                    let mut done = Vec::new();
+                    loop {
+                        let next = chunks.lock().unwrap_or_else(|p| p.into_inner()).next();
+                        let Some((c, chunk)) = next else { break };
+                        let out: Vec<R> = chunk
+                            .iter_mut()
+                            .enumerate()
+                            .map(|(k, t)| f(c * CHUNK + k, t))
+                            .collect();
+                        done.push((c, out));
+                    }
+                    done
+                })
+            })
+            .collect();
+        workers
+            .into_iter()
+            .flat_map(|w| w.join().expect("a world's step panicked"))
+            .collect()
+    });
+    parts.sort_unstable_by_key(|p| p.0);
+    parts.into_iter().flat_map(|p| p.1).collect()
+}
+
+/// One world's memory of its last step for warm start: per contact id,
+/// whether the contact carried impulse (was in its island's basis), sorted
+/// by id. Kept by the solver per position in the batch, replaced each step.
+#[derive(Clone, Debug, Default)]
+pub(super) struct WorldWarm {
+    active: Vec<(u64, bool)>,
+}
+
+impl WorldWarm {
+    /// The warm basis of an island with these contact ids: bit i set when
+    /// contact i was active last step; None when none of them was seen.
+    fn basis(&self, ids: impl Iterator<Item = u64>) -> Option<u32> {
+        let mut seen = false;
+        let mut mask = 0u32;
+        for (i, id) in ids.enumerate().take(32) {
+            if let Ok(k) = self.active.binary_search_by_key(&id, |e| e.0) {
+                seen = true;
+                mask |= u32::from(self.active[k].1) << i;
+            }
+        }
+        seen.then_some(mask)
+    }
+
+    /// Replaces the memory with this step's solved islands.
+    fn record<'a>(&mut self, scene: &Scene, islands: impl Iterator<Item = &'a IslandReport>) {
+        self.active.clear();
+        for isl in islands {
+            let (Some(basis), true) = (isl.solution.basis, isl.status().is_solution()) else {
+                continue;
+            };
+            for (i, &c) in isl.contacts.iter().enumerate() {
+                if let Some(id) = scene.contacts[c].id {
+                    self.active.push((id, i < 32 && basis >> i & 1 == 1));
+                }
+            }
+        }
+        self.active.sort_unstable_by_key(|e| e.0);
+    }
+}
+
+impl Solver {
+    /// Pass 2 for a frictionless world on the CPU: islands (once), assembly,
+    /// warm hints from its own memory, the door's per-island solve and
+    /// check, repairs, impulses, integration. `fix`: the repair settings.
+    pub(super) fn step_world_on_cpu(
+        &self,
+        index: usize,
+        item: &mut Item,
+        dt: f64,
+        fix: &Settings,
+    ) -> Stepped {
+        let t0 = Instant::now();
+        let scene = &item.prepared.scene;
+        let islands = find_islands(scene);
+        let rows = assemble_contacts(scene);
+        let lcps: Vec<Lcp> = islands
+            .iter()
+            .map(|isl| assemble_island(scene, &rows, isl))
+            .collect();
+        let warm = self.settings.warm_start;
+        let id = |c: &usize| scene.contacts[*c].id.unwrap_or(u64::MAX);
+        let hints: Vec<Option<u32>> = islands
+            .iter()
+            .map(|isl| {
+                warm.then(|| item.warm.basis(isl.contacts.iter().map(id)))
+                    .flatten()
+            })
+            .collect();
+        let t1 = Instant::now();
+        let mut reports: Vec<IslandReport> = islands
+            .into_iter()
+            .zip(lcps.iter().zip(&hints))
+            .map(|(isl, (lcp, &hint))| {
+                let (method, path, solution) = solve_on_cpu(lcp, hint, &self.settings);
+                IslandReport {
+                    scene: Some(index),
+                    contacts: isl.contacts,
+                    method,
+                    path,
+                    solution,
+                }
+            })
+            .collect();
+        self.check(&mut reports);
+        let t2 = Instant::now();
+        let mut impulses = vec![0.0; scene.contacts.len()];
+        let mut repairs = Repairs::default();
+        for (isl, lcp) in reports.iter().zip(&lcps) {
+            let repaired;
+            let z = if isl.status().is_solution() {
+                &isl.solution.z
+            } else {
+                let (r, z) = repair_island(lcp, fix);
+                repairs.add(r);
+                repaired = z;
+                &repaired
+            };
+            for (&c, &zi) in isl.contacts.iter().zip(z) {
+                impulses[c] = zi;
+            }
+        }
+        let bodies = apply_impulses(scene, &rows, &impulses);
+        if warm {
+            item.warm.record(scene, reports.iter());
+        }
+        let t3 = Instant::now();
+        finish(item.world, &item.prepared, &bodies, dt);
+        let error = max_error(reports.iter(), std::iter::empty());
+        let world = figures(
+            item.world,
+            &item.prepared,
+            reports.len(),
+            error,
+            repairs.total(),
+        );
+        let t4 = Instant::now();
+        Stepped {
+            solved: Solved::Own(SceneReport {
+                impulses,
+                bodies,
+                islands: 0..0,
+                friction: None,
+            }),
+            islands: reports,
+            world,
+            times: [t1 - t0, t2 - t1, t3 - t2, t4 - t3].map(|d| d.as_secs_f64()),
+            repairs,
+        }
+    }
+
+    /// Pass 2 for a world of the door's batch (`door`: its scene, its index
+    /// in the batch, the batch's report): repairs of its unsolved islands
+    /// (LCP or frictional), integration.
+    pub(super) fn finish_door_world(
+        &self,
+        item: &mut Item,
+        door: (&Scene, usize, &Report),
+        dt: f64,
+        fix: &Settings,
+    ) -> Stepped {
+        let (scene, j, report) = door;
+        let t0 = Instant::now();
+        let d = &report.scenes[j];
+        let lcp = &report.islands[d.islands.clone()];
+        let friction = d.friction.as_ref().map_or(&report.friction[0..0], |f| {
+            &report.friction[f.islands.clone()]
+        });
+        let unsolved: Vec<&[usize]> = lcp
+            .iter()
+            .filter(|i| !i.status().is_solution())
+            .map(|i| i.contacts.as_slice())
+            .chain(
+                friction
+                    .iter()
+                    .filter(|i| !i.status().is_solution())
+                    .map(|i| i.contacts.as_slice()),
+            )
+            .collect();
+        let mut repairs = Repairs::default();
+        let mut bodies: Option<Vec<BodyVelocity>> = None;
+        if !unsolved.is_empty() {
+            let rows = assemble_contacts(scene);
+            let mut after = d.bodies.clone();
+            for contacts in unsolved {
+                let island = Island {
+                    contacts: contacts.to_vec(),
+                };
+                let (r, z) = repair_island(&assemble_island(scene, &rows, &island), fix);
+                repairs.add(r);
+                reapply(scene, &rows, contacts, &z, &mut after);
+            }
+            bodies = Some(after);
+        }
+        let t1 = Instant::now();
+        finish(
+            item.world,
+            &item.prepared,
+            bodies.as_deref().unwrap_or(&d.bodies),
+            dt,
+        );
+        let error = max_error(lcp.iter(), friction.iter());
+        let islands = lcp.len() + friction.len();
+        let world = figures(item.world, &item.prepared, islands, error, repairs.total());
+        Stepped {
+            islands: Vec::new(),
+            solved: Solved::Door(bodies),
+            world,
+            times: [
+                0.0,
+                0.0,
+                (t1 - t0).as_secs_f64(),
+                t1.elapsed().as_secs_f64(),
+            ],
+            repairs,
+        }
+    }
+}
+
+/// A world's figures after its step.
+fn figures(
+    w: &World,
+    p: &Prepared,
+    islands: usize,
+    max_error: f64,
+    unsolved: usize,
+) -> WorldStepReport {
+    WorldStepReport {
+        kinetic: w.kinetic_energy(),
+        potential: w.potential_energy(),
+        max_penetration: p.contacts.iter().map(|c| -c.gap).fold(0.0, f64::max),
+        contacts: p.contacts.len(),
+        islands,
+        max_error,
+        awake: w.bodies.iter().filter(|b| !b.fixed && !b.asleep).count(),
+        unsolved,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_parallel_loop_gives_every_result_in_order_and_mutates_each_item_once() {
+        for threads in [0, 1, 2, 3] {
+            let mut items: Vec<usize> = (0..1000).collect();
+            let out = parallel_map_mut(&mut items, threads, |i, x| {
+                *x += 1;
+                i * 2
+            });
+            assert_eq!(out, (0..1000).map(|i| i * 2).collect::<Vec<_>>());
+            assert_eq!(items, (1..1001).collect::<Vec<_>>());
+        }
+    }
+}
