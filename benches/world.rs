@@ -96,8 +96,15 @@ fn phases(reports: &[StepReport]) -> String {
     let door = sum(&|r| r.timings.solve);
     let integrate = sum(&|r| r.timings.integrate);
     let unsolved: usize = reports.iter().map(|r| r.unsolved).sum();
+    let last = &reports[reports.len() - 1].solve;
+    let paths: Vec<String> = last
+        .counts
+        .nonzero()
+        .iter()
+        .map(|(p, n)| format!("{p} {n}"))
+        .collect();
     format!(
-        "{:.1} µs/step: collision {:.0}%, door {:.0}% (checks+islands+assembly {:.0}%, solves {:.0}%, impulses {:.0}%, rest {:.0}%), integrate {:.0}%; unsolved islands {unsolved}",
+        "{:.1} µs/step: collision {:.0}%, door {:.0}% (checks+islands+assembly {:.0}%, solves {:.0}%, impulses {:.0}%, rest {:.0}%), integrate {:.0}%; unsolved islands {unsolved}; last step's paths: {}, frictional islands {}",
         1e6 * total / reports.len() as f64,
         part(collision),
         part(door),
@@ -106,6 +113,8 @@ fn phases(reports: &[StepReport]) -> String {
         part(impulses),
         part(door - build - solves - impulses),
         part(integrate),
+        paths.join(", "),
+        last.friction.len(),
     )
 }
 

@@ -46,6 +46,74 @@ pub(super) struct Hit {
     pub feature: u16,
 }
 
+/// Up to [`Manifold::CAPACITY`] points of one pair, on the stack (no
+/// allocation per pair): what the narrow phase returns, at most 4 after
+/// [`reduce_to_four`]. Reads as a slice of [`Hit`]s.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Manifold {
+    hits: [Hit; Manifold::CAPACITY],
+    len: usize,
+}
+
+impl Manifold {
+    /// The most points a pair's candidates can hold (8 box corners; a face
+    /// quad clipped by 4 side planes).
+    pub const CAPACITY: usize = 8;
+
+    /// No points.
+    pub fn new() -> Self {
+        const NONE: Hit = Hit {
+            point: DVec3::ZERO,
+            normal: DVec3::ZERO,
+            gap: 0.0,
+            feature: 0,
+        };
+        Manifold {
+            hits: [NONE; Manifold::CAPACITY],
+            len: 0,
+        }
+    }
+
+    /// One point.
+    pub fn one(h: Hit) -> Self {
+        let mut m = Manifold::new();
+        m.push(h);
+        m
+    }
+
+    /// Adds a point (a full manifold is a bug of the caller: every
+    /// producer makes at most `CAPACITY`).
+    pub fn push(&mut self, h: Hit) {
+        assert!(
+            self.len < Self::CAPACITY,
+            "a manifold holds at most 8 points"
+        );
+        self.hits[self.len] = h;
+        self.len += 1;
+    }
+}
+
+impl std::ops::Deref for Manifold {
+    type Target = [Hit];
+    fn deref(&self) -> &[Hit] {
+        &self.hits[..self.len]
+    }
+}
+
+impl std::ops::DerefMut for Manifold {
+    fn deref_mut(&mut self) -> &mut [Hit] {
+        &mut self.hits[..self.len]
+    }
+}
+
+impl<'a> IntoIterator for &'a Manifold {
+    type Item = &'a Hit;
+    type IntoIter = std::slice::Iter<'a, Hit>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter()
+    }
+}
+
 /// A shape placed in the world.
 #[derive(Clone, Copy, Debug)]
 pub struct Placed {
@@ -79,15 +147,11 @@ impl Placed {
 
 /// The contact points of shapes `x` and `y` closer than `margin`, normals
 /// from y to x. Two planes (or an unsupported pair) give none.
-pub(super) fn collide_shapes(x: &Placed, y: &Placed, margin: f64) -> Vec<Hit> {
+pub(super) fn collide_shapes(x: &Placed, y: &Placed, margin: f64) -> Manifold {
     use Shape::*;
-    let flip = |hits: Vec<Hit>| -> Vec<Hit> {
-        hits.into_iter()
-            .map(|h| Hit {
-                normal: -h.normal,
-                ..h
-            })
-            .collect()
+    let flip = |mut hits: Manifold| -> Manifold {
+        hits.iter_mut().for_each(|h| h.normal = -h.normal);
+        hits
     };
     match (x.shape, y.shape) {
         (Sphere { radius: r }, Plane { normal }) => {
@@ -126,41 +190,41 @@ pub(super) fn collide_shapes(x: &Placed, y: &Placed, margin: f64) -> Vec<Hit> {
         (Box { half_extents: ha }, Box { half_extents: hb }) => {
             super::collide_box::box_box(x, DVec3::from_array(ha), y, DVec3::from_array(hb), margin)
         }
-        (Plane { .. }, Plane { .. }) => Vec::new(),
+        (Plane { .. }, Plane { .. }) => Manifold::new(),
     }
 }
 
 /// Sphere (centre c, radius r) against the plane through p with outward
 /// normal n: φ = n·(c − p) − r, normal n (plane to sphere).
-pub(super) fn sphere_plane(c: DVec3, r: f64, p: DVec3, n: DVec3, margin: f64) -> Vec<Hit> {
+pub(super) fn sphere_plane(c: DVec3, r: f64, p: DVec3, n: DVec3, margin: f64) -> Manifold {
     let gap = n.dot(c - p) - r;
     if gap >= margin {
-        return Vec::new();
+        return Manifold::new();
     }
-    vec![Hit {
+    Manifold::one(Hit {
         point: c - n * (r + 0.5 * gap),
         normal: n,
         gap,
         feature: 0,
-    }]
+    })
 }
 
 /// Sphere a against sphere b: φ = |c_a − c_b| − r_a − r_b, normal along
 /// c_a − c_b (+y when the centres coincide).
-pub(super) fn sphere_sphere(ca: DVec3, ra: f64, cb: DVec3, rb: f64, margin: f64) -> Vec<Hit> {
+pub(super) fn sphere_sphere(ca: DVec3, ra: f64, cb: DVec3, rb: f64, margin: f64) -> Manifold {
     let d = ca - cb;
     let dist = d.length();
     let gap = dist - ra - rb;
     if gap >= margin {
-        return Vec::new();
+        return Manifold::new();
     }
     let normal = if dist > 0.0 { d / dist } else { DVec3::Y };
-    vec![Hit {
+    Manifold::one(Hit {
         point: cb + normal * (rb + 0.5 * gap),
         normal,
         gap,
         feature: 0,
-    }]
+    })
 }
 
 /// The 8 corners of a box (half extents h), corner k having sign −/+ on
@@ -178,27 +242,26 @@ pub(super) fn corners(b: &Placed, h: DVec3) -> [DVec3; 8] {
 
 /// Box against the plane through p with outward normal n: every corner
 /// closer than `margin` (feature: the corner's index), reduced to 4.
-pub(super) fn box_plane(b: &Placed, h: DVec3, p: DVec3, n: DVec3, margin: f64) -> Vec<Hit> {
-    let hits: Vec<Hit> = corners(b, h)
-        .iter()
-        .enumerate()
-        .filter_map(|(k, &v)| {
-            let gap = n.dot(v - p);
-            (gap < margin).then(|| Hit {
+pub(super) fn box_plane(b: &Placed, h: DVec3, p: DVec3, n: DVec3, margin: f64) -> Manifold {
+    let mut hits = Manifold::new();
+    for (k, &v) in corners(b, h).iter().enumerate() {
+        let gap = n.dot(v - p);
+        if gap < margin {
+            hits.push(Hit {
                 point: v - n * (0.5 * gap),
                 normal: n,
                 gap,
                 feature: k as u16,
-            })
-        })
-        .collect();
+            });
+        }
+    }
     reduce_to_four(hits)
 }
 
 /// Sphere (centre c, radius r) against a box: the closest point of the box
 /// to the centre; a centre inside the box leaves through the nearest face.
 /// Normal from the box to the sphere.
-pub(super) fn sphere_box(c: DVec3, r: f64, b: &Placed, h: DVec3, margin: f64) -> Vec<Hit> {
+pub(super) fn sphere_box(c: DVec3, r: f64, b: &Placed, h: DVec3, margin: f64) -> Manifold {
     let local = b.rotation.transpose() * (c - b.centre);
     let clamped = local.clamp(-h, h);
     let (surface, normal_local, dist) = if clamped != local {
@@ -224,22 +287,22 @@ pub(super) fn sphere_box(c: DVec3, r: f64, b: &Placed, h: DVec3, margin: f64) ->
     };
     let gap = dist - r;
     if gap >= margin {
-        return Vec::new();
+        return Manifold::new();
     }
     let normal = b.rotation * normal_local;
     let on_box = b.centre + b.rotation * surface;
-    vec![Hit {
+    Manifold::one(Hit {
         point: on_box + normal * (0.5 * gap),
         normal,
         gap,
         feature: 0,
-    }]
+    })
 }
 
 /// At most 4 points of a manifold, spread over its area: the deepest, the
 /// farthest from it, then the two on either side of their line farthest from
 /// it (the largest quadrilateral these choices give). Order is kept.
-pub(super) fn reduce_to_four(hits: Vec<Hit>) -> Vec<Hit> {
+pub(super) fn reduce_to_four(hits: Manifold) -> Manifold {
     if hits.len() <= 4 {
         return hits;
     }
@@ -262,10 +325,15 @@ pub(super) fn reduce_to_four(hits: Vec<Hit>) -> Vec<Hit> {
     let fourth = (0..hits.len())
         .min_by(|&i, &j| area(i).total_cmp(&area(j)))
         .expect("non-empty");
-    let mut keep = vec![first, second, third, fourth];
+    let mut keep = [first, second, third, fourth];
     keep.sort_unstable();
-    keep.dedup();
-    keep.into_iter().map(|i| hits[i]).collect()
+    let mut out = Manifold::new();
+    for (k, &i) in keep.iter().enumerate() {
+        if k == 0 || keep[k - 1] != i {
+            out.push(hits[i]);
+        }
+    }
+    out
 }
 
 #[cfg(test)]

@@ -5,10 +5,24 @@
 //! the two edges. Faces are preferred unless an edge axis separates clearly
 //! better (Box2D's relative 0.98 and an absolute 10⁻³ of the boxes' size),
 //! so that a resting box keeps the same 4 feature ids step after step.
+//!
+//! Clipping keeps a vertex that lies outside a side plane by less than
+//! [`CLIP_TOL`] times the reference box's size, as it is: two equal boxes stacked face to face have their
+//! incident vertices exactly on the reference's side planes, where the
+//! rounding of the poses would otherwise keep a vertex one step (its id a
+//! vertex's) and cut it the next (its id a clipping's), and warm start,
+//! which finds contacts by id, would miss every such step. Such a point
+//! lies at most that tolerance outside the reference face; no point moves.
+//!
+//! Polygons and manifolds live on the stack: no allocation per pair.
 
 use glam::DVec3;
 
-use super::collide::{reduce_to_four, Hit, Placed};
+use super::collide::{reduce_to_four, Hit, Manifold, Placed};
+
+/// Relative tolerance of the clipping (see the module docs): 10⁻⁷ of the
+/// reference box's largest half extent (0.05 µm for a unit box).
+pub(super) const CLIP_TOL: f64 = 1e-7;
 
 /// Which axis separates best, and by how much.
 #[derive(Clone, Copy, Debug)]
@@ -81,9 +95,9 @@ fn best_axis(x: &Placed, hx: DVec3, y: &Placed, hy: DVec3, margin: f64) -> Optio
 }
 
 /// Box x against box y, normals from y to x; see the module docs.
-pub(super) fn box_box(x: &Placed, hx: DVec3, y: &Placed, hy: DVec3, margin: f64) -> Vec<Hit> {
+pub(super) fn box_box(x: &Placed, hx: DVec3, y: &Placed, hy: DVec3, margin: f64) -> Manifold {
     match best_axis(x, hx, y, hy, margin) {
-        None => Vec::new(),
+        None => Manifold::new(),
         Some(Axis::Face { of_x: true, i, .. }) => face_contact(x, hx, y, hy, i, margin, false),
         Some(Axis::Face { of_x: false, i, .. }) => face_contact(y, hy, x, hx, i, margin, true),
         Some(Axis::Edge { i, j, axis, .. }) => edge_contact(x, hx, y, hy, i, j, axis, margin),
@@ -93,6 +107,33 @@ pub(super) fn box_box(x: &Placed, hx: DVec3, y: &Placed, hy: DVec3, margin: f64)
 /// A point of the clipped polygon and its tag (which incident vertex, or
 /// which side plane cut which edge), for the feature id.
 type Tagged = (DVec3, u16);
+
+/// A convex polygon of at most 8 tagged points (a quad clipped by 4 planes
+/// gains at most one point per plane), on the stack.
+#[derive(Clone, Copy)]
+struct Polygon {
+    points: [Tagged; 8],
+    len: usize,
+}
+
+impl Polygon {
+    fn new() -> Self {
+        Polygon {
+            points: [(DVec3::ZERO, 0); 8],
+            len: 0,
+        }
+    }
+
+    fn push(&mut self, p: Tagged) {
+        assert!(self.len < 8, "a clipped quad has at most 8 points");
+        self.points[self.len] = p;
+        self.len += 1;
+    }
+
+    fn as_slice(&self) -> &[Tagged] {
+        &self.points[..self.len]
+    }
+}
 
 /// Clipping of the incident face of box `inc` by the side planes of face
 /// `axis` of box `re` (the reference). Normals from y to x: the reference's
@@ -110,7 +151,7 @@ fn face_contact(
     axis: usize,
     margin: f64,
     ref_is_y: bool,
-) -> Vec<Hit> {
+) -> Manifold {
     let d = inc.centre - re.centre;
     let mut n = re.rotation.col(axis);
     let ref_face = 2 * axis + usize::from(n.dot(d) < 0.0);
@@ -128,52 +169,61 @@ fn face_contact(
     let fc = inc.centre + inc.rotation.col(k) * (s * hi[k]);
     let eu = inc.rotation.col(u) * hi[u];
     let ev = inc.rotation.col(v) * hi[v];
-    let mut poly: Vec<Tagged> = vec![
+    let mut poly = Polygon::new();
+    for p in [
         (fc + eu + ev, 0),
         (fc - eu + ev, 1),
         (fc - eu - ev, 2),
         (fc + eu - ev, 3),
-    ];
+    ] {
+        poly.push(p);
+    }
     // Side planes of the reference face: ±t at distance h_t from the centre.
+    let tol = CLIP_TOL * hr.max_element();
     let mut side = 0u16;
     for t in (0..3).filter(|&t| t != axis) {
         for sign in [1.0, -1.0] {
             let pn = re.rotation.col(t) * sign;
             let off = pn.dot(re.centre) + hr[t];
-            poly = clip(&poly, pn, off, side);
+            poly = clip(poly.as_slice(), (pn, off), tol, side);
             side += 1;
         }
     }
     let face_point = re.centre + n * hr[axis];
     let normal = if ref_is_y { n } else { -n };
     let base = (u16::from(ref_is_y) << 11) | ((ref_face as u16) << 8) | ((inc_face as u16) << 5);
-    let hits = poly
-        .into_iter()
-        .filter_map(|(p, tag)| {
-            let gap = n.dot(p - face_point);
-            (gap < margin).then(|| Hit {
+    let mut hits = Manifold::new();
+    for &(p, tag) in poly.as_slice() {
+        let gap = n.dot(p - face_point);
+        if gap < margin {
+            hits.push(Hit {
                 point: p - n * (0.5 * gap),
                 normal,
                 gap,
                 feature: base | (tag & 31),
-            })
-        })
-        .collect();
+            });
+        }
+    }
     reduce_to_four(hits)
 }
 
-/// Sutherland–Hodgman: the part of `poly` with pn·p ≤ off. A point made on
-/// this plane is tagged 4 + 4·side + (the edge's first vertex's tag mod 4).
-fn clip(poly: &[Tagged], pn: DVec3, off: f64, side: u16) -> Vec<Tagged> {
-    let mut out = Vec::with_capacity(poly.len() + 2);
+/// Sutherland–Hodgman with a tolerance: the part of `poly` with
+/// pn·p ≤ off, where a vertex outside by at most `tol` is kept as it is
+/// (and then stands for the crossing on its edges). A point made on the
+/// plane is tagged 4 + 4·side + (the edge's first vertex's tag mod 4).
+fn clip(poly: &[Tagged], plane: (DVec3, f64), tol: f64, side: u16) -> Polygon {
+    let (pn, off) = plane;
+    let mut out = Polygon::new();
     for (k, &(p, tp)) in poly.iter().enumerate() {
         let (q, _) = poly[(k + 1) % poly.len()];
         let dp = pn.dot(p) - off;
         let dq = pn.dot(q) - off;
-        if dp <= 0.0 {
+        if dp <= tol {
             out.push((p, tp));
         }
-        if (dp <= 0.0) != (dq <= 0.0) {
+        // Crossing: the kept end is inside (d ≤ 0), the other beyond tol,
+        // so t ∈ [0, 1]; a kept end within tol is the crossing itself.
+        if (dp <= tol) != (dq <= tol) && dp.min(dq) <= 0.0 {
             let t = dp / (dp - dq);
             out.push((p + (q - p) * t, 4 + 4 * side + (tp & 3)));
         }
@@ -195,7 +245,7 @@ fn edge_contact(
     j: usize,
     axis: DVec3,
     margin: f64,
-) -> Vec<Hit> {
+) -> Manifold {
     // The edge of x farthest along the axis, the edge of y farthest against it.
     let mut pa = x.centre;
     let mut pb = y.centre;
@@ -225,14 +275,14 @@ fn edge_contact(
     let qb = pb + db * t;
     let gap = (qb - qa).dot(axis);
     if gap >= margin {
-        return Vec::new();
+        return Manifold::new();
     }
-    vec![Hit {
+    Manifold::one(Hit {
         point: (qa + qb) * 0.5,
         normal: -axis,
         gap,
         feature: (7 << 8) | (3 * i + j) as u16,
-    }]
+    })
 }
 
 #[cfg(test)]
@@ -321,5 +371,31 @@ mod tests {
         let x = cube(DVec3::ZERO, DQuat::IDENTITY, 0.5);
         let y = cube(DVec3::new(0.0, 1.1, 0.0), DQuat::from_rotation_y(0.3), 0.5);
         assert!(box_box(&x, DVec3::splat(0.5), &y, DVec3::splat(0.5), 0.05).is_empty());
+    }
+
+    /// Two equal boxes face to face: rounding-size changes of the pose keep
+    /// the same 4 points and feature ids (warm start finds them by id).
+    #[test]
+    fn equal_stacked_boxes_keep_their_feature_ids_under_rounding() {
+        let h = DVec3::splat(0.5);
+        let bottom = cube(DVec3::new(0.0, 0.5, 0.0), DQuat::IDENTITY, 0.5);
+        let ids = |top: &Placed| {
+            let m = box_box(top, h, &bottom, h, 0.005);
+            let mut f: Vec<u16> = m.iter().map(|x| x.feature).collect();
+            f.sort_unstable();
+            f
+        };
+        let exact = ids(&cube(DVec3::new(0.0, 1.5, 0.0), DQuat::IDENTITY, 0.5));
+        assert_eq!(exact.len(), 4);
+        for (dx, dz, angle) in [
+            (1e-15, -1e-15, 0.0),
+            (-3e-16, 2e-15, 1e-15),
+            (2e-12, 0.0, -1e-13),
+            (-1e-9, 1e-9, 1e-12),
+        ] {
+            let q = DQuat::from_rotation_y(angle);
+            let top = cube(DVec3::new(dx, 1.5 - 1e-12, dz), q, 0.5);
+            assert_eq!(ids(&top), exact, "offset ({dx}, {dz}), angle {angle}");
+        }
     }
 }

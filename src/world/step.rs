@@ -125,7 +125,7 @@ pub fn world_contacts(
             }
             // The dynamic body is a (normal from b to a).
             let swap = world.bodies[i].fixed;
-            points.extend(hits.into_iter().map(|h| ContactPoint {
+            points.extend(hits.iter().map(|h| ContactPoint {
                 a: if swap { j } else { i },
                 b: if swap { i } else { j },
                 point: h.point,
