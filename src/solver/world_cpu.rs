@@ -7,17 +7,19 @@
 
 use std::time::Instant;
 
-use super::cpu_path::solve_on_cpu;
-use super::world_path::{max_error, Item, Solved, Stepped, WorldStepReport};
+use super::cpu_path::{solve_on_cpu, Solved};
+use super::world_path::Solved as Results;
+use super::world_path::{max_error, Item, Stepped, WorldStepReport};
 use super::world_repair::{reapply, repair_island, Repairs};
 use super::Solver;
 use crate::cpu::assembly::{assemble_contacts, assemble_island};
+use crate::cpu::enumeration::{solve_basis, BasisOutcome, MAX_ENUMERATION_N};
 use crate::cpu::impulses::{apply_impulses, BodyVelocity};
 use crate::islands::{find_islands, Island};
-use crate::lcp::Lcp;
-use crate::report::{IslandReport, Report, SceneReport};
+use crate::lcp::{Counters, Lcp, LcpSolution, Status};
+use crate::report::{IslandReport, Report, SceneReport, SolvePath};
 use crate::scene::Scene;
-use crate::settings::Settings;
+use crate::settings::{Method, Settings};
 use crate::world::step::{finish, Prepared};
 use crate::world::World;
 
@@ -138,7 +140,9 @@ impl Solver {
             .into_iter()
             .zip(lcps.iter().zip(&hints))
             .map(|(isl, (lcp, &hint))| {
-                let (method, path, solution) = solve_on_cpu(lcp, hint, &self.settings);
+                let (method, path, solution) = hint
+                    .and_then(|h| warm_settle(lcp, h, &self.settings))
+                    .unwrap_or_else(|| solve_on_cpu(lcp, None, &self.settings));
                 IslandReport {
                     scene: Some(index),
                     contacts: isl.contacts,
@@ -182,7 +186,7 @@ impl Solver {
         );
         let t4 = Instant::now();
         Stepped {
-            solved: Solved::Own(SceneReport {
+            solved: Results::Own(SceneReport {
                 impulses,
                 bodies,
                 islands: 0..0,
@@ -250,7 +254,7 @@ impl Solver {
         let world = figures(item.world, &item.prepared, islands, error, repairs.total());
         Stepped {
             islands: Vec::new(),
-            solved: Solved::Door(bodies),
+            solved: Results::Door(bodies),
             world,
             times: [
                 0.0,
@@ -261,6 +265,44 @@ impl Solver {
             repairs,
         }
     }
+}
+
+/// The world path's warm start: last step's basis `hint`, accepted when
+/// its solution is feasible to `relaxed_feasibility_tol` and its LCP error
+/// passes the door's final check (`tolerance`), the check every answer
+/// passes. A resting stack's basis is degenerate (4 coplanar contacts per
+/// face, rank 3: a contact that carries no load sits at z = 0), and
+/// rounding moves that zero by 10⁻¹² relative from step to step, past the
+/// strict `feasibility_tol` of the door's own warm start, which then sends
+/// the island to Lemke. None (the hint failed): the island is solved as
+/// usual, without it. Only for Auto and Enumeration with `predict`, n ≤ 20.
+fn warm_settle(lcp: &Lcp, hint: u32, s: &Settings) -> Option<Solved> {
+    let n = lcp.n();
+    let enumerates = matches!(s.method, Method::Auto | Method::Enumeration);
+    if !enumerates || !s.predict || s.all_solutions || n > MAX_ENUMERATION_N || hint >> n != 0 {
+        return None;
+    }
+    let e = s.enumeration();
+    let BasisOutcome::Solved {
+        z, infeasibility, ..
+    } = solve_basis(lcp, hint, &e)
+    else {
+        return None;
+    };
+    if !(infeasibility <= e.relaxed_feasibility_tol) {
+        return None;
+    }
+    let counters = Counters {
+        bases_visited: 1,
+        ..Counters::default()
+    };
+    let mut solution = LcpSolution::from_z(lcp, Status::Solved, z, counters);
+    let finite = solution.z.iter().chain(&solution.w).all(|v| v.is_finite());
+    if !(finite && solution.residuals.error <= s.tolerance) {
+        return None;
+    }
+    solution.basis = Some(hint);
+    Some((Method::Enumeration, SolvePath::WarmStart, solution))
 }
 
 /// A world's figures after its step.
