@@ -170,7 +170,11 @@ pub(super) fn validate_world(w: &World, item: &str) -> Result<(), Error> {
         ));
     }
     for (i, b) in w.bodies.iter().enumerate() {
-        validate_body(b, &format!("{item}, body {i}"))?;
+        // The body's name is formatted only for the error (every step
+        // checks every world).
+        if validate_body(b, item).is_err() {
+            validate_body(b, &format!("{item}, body {i}"))?;
+        }
     }
     Ok(())
 }
@@ -181,7 +185,10 @@ fn validate_body(b: &RigidBody, item: &str) -> Result<(), Error> {
         Shape::Sphere { radius } => positive(item, "shape.sphere.radius", radius)?,
         Shape::Box { half_extents } => {
             for (k, h) in half_extents.iter().enumerate() {
-                positive(item, &format!("shape.box.half_extents[{k}]"), *h)?;
+                // The field's name is formatted only for the error.
+                if !(h.is_finite() && *h > 0.0) {
+                    positive(item, &format!("shape.box.half_extents[{k}]"), *h)?;
+                }
             }
         }
         Shape::Plane { normal } => {
