@@ -142,7 +142,14 @@ fn phases(reports: &[StepReport]) -> String {
     )
 }
 
+/// The first argument that is not an option: criterion's filter. Cases it
+/// does not name are skipped before their (slow) setup and phase print.
+fn filter() -> Option<String> {
+    std::env::args().skip(1).find(|a| !a.starts_with('-'))
+}
+
 fn bench_worlds(c: &mut Criterion) {
+    let wanted = |id: &str| filter().is_none_or(|f| id.contains(f.as_str()));
     for case in &CASES {
         let mut group = c.benchmark_group(case.name);
         group
@@ -151,6 +158,9 @@ fn bench_worlds(c: &mut Criterion) {
             .measurement_time(Duration::from_secs(1));
         for count in COUNTS {
             for (threads, label) in [(1, "1_thread_cpu_time"), (0, "all_cores_wall")] {
+                if !wanted(&format!("{}/{label}/{count}", case.name)) {
+                    continue;
+                }
                 let mut s = solver(threads);
                 let mut batch = worlds(case, count);
                 for _ in 0..50 {

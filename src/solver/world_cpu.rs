@@ -267,15 +267,22 @@ impl Solver {
     }
 }
 
-/// The world path's warm start: last step's basis `hint`, accepted when
-/// its solution is feasible to `relaxed_feasibility_tol` and its LCP error
-/// passes the door's final check (`tolerance`), the check every answer
-/// passes. A resting stack's basis is degenerate (4 coplanar contacts per
-/// face, rank 3: a contact that carries no load sits at z = 0), and
-/// rounding moves that zero by 10⁻¹² relative from step to step, past the
-/// strict `feasibility_tol` of the door's own warm start, which then sends
-/// the island to Lemke. None (the hint failed): the island is solved as
-/// usual, without it. Only for Auto and Enumeration with `predict`, n ≤ 20.
+/// Block principal pivots tried from a warm basis before giving up on it.
+const WARM_PIVOTS: u64 = 3;
+
+/// The world path's warm start: last step's basis `hint`, and when its
+/// solution is not feasible (to the door's strict `feasibility_tol`), up to
+/// [`WARM_PIVOTS`] block principal pivots from it (Kostreva 1978; Júdice
+/// and Pires 1994): the basic contacts whose impulse came out negative
+/// leave the basis, the others that would penetrate (w < 0) enter. A
+/// resting stack's basis is degenerate (4 coplanar contacts per face, rank
+/// 3: a contact that carries no load sits at z = 0 or w = 0), and rounding
+/// moves that zero across from step to step; the door's own warm start
+/// then sends the island to Lemke, while one pivot finds the neighbouring
+/// basis. Every answer is an exact basis solution, feasible to the strict
+/// tolerance and within the door's `tolerance` (the door's final check
+/// again). None: the island is solved as usual, without the hint. Only for
+/// Auto and Enumeration with `predict`, n ≤ 20.
 fn warm_settle(lcp: &Lcp, hint: u32, s: &Settings) -> Option<Solved> {
     let n = lcp.n();
     let enumerates = matches!(s.method, Method::Auto | Method::Enumeration);
@@ -283,26 +290,35 @@ fn warm_settle(lcp: &Lcp, hint: u32, s: &Settings) -> Option<Solved> {
         return None;
     }
     let e = s.enumeration();
-    let BasisOutcome::Solved {
-        z, infeasibility, ..
-    } = solve_basis(lcp, hint, &e)
-    else {
-        return None;
-    };
-    if !(infeasibility <= e.relaxed_feasibility_tol) {
-        return None;
+    let mut mask = hint;
+    for round in 0..=WARM_PIVOTS {
+        let BasisOutcome::Solved { z, w, feasible, .. } = solve_basis(lcp, mask, &e) else {
+            return None;
+        };
+        if feasible {
+            let counters = Counters {
+                bases_visited: round + 1,
+                ..Counters::default()
+            };
+            let mut solution = LcpSolution::from_z(lcp, Status::Solved, z, counters);
+            let finite = solution.z.iter().chain(&solution.w).all(|v| v.is_finite());
+            if !(finite && solution.residuals.error <= s.tolerance) {
+                return None;
+            }
+            solution.basis = Some(mask);
+            return Some((Method::Enumeration, SolvePath::WarmStart, solution));
+        }
+        // z comes back clamped at 0: a basic contact at 0 had a negative one.
+        let basic = |i: usize| mask >> i & 1 == 1;
+        let leave = (0..n).filter(|&i| basic(i) && z[i] <= 0.0);
+        let enter = (0..n).filter(|&j| !basic(j) && w[j] < 0.0);
+        let next = leave.fold(mask, |m, i| m & !(1 << i)) | enter.fold(0, |m, j| m | 1 << j);
+        if next == mask {
+            return None;
+        }
+        mask = next;
     }
-    let counters = Counters {
-        bases_visited: 1,
-        ..Counters::default()
-    };
-    let mut solution = LcpSolution::from_z(lcp, Status::Solved, z, counters);
-    let finite = solution.z.iter().chain(&solution.w).all(|v| v.is_finite());
-    if !(finite && solution.residuals.error <= s.tolerance) {
-        return None;
-    }
-    solution.basis = Some(hint);
-    Some((Method::Enumeration, SolvePath::WarmStart, solution))
+    None
 }
 
 /// A world's figures after its step.

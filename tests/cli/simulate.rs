@@ -45,6 +45,8 @@ fn simulate_writes_steps_final_states_and_plots() {
         assert_eq!(l["contacts"], 36, "{l}");
         assert_eq!(l["islands"], 3, "{l}");
         assert_eq!(l["unsolved"], 0, "{l}");
+        assert_eq!(l["repaired_exact"], 0, "{l}");
+        assert_eq!(l["repaired_dropped"], 0, "{l}");
         assert!(l["kinetic"].as_f64().unwrap() < 1e-12, "{l}");
         assert!(l["max_penetration"].as_f64().unwrap() < 1e-9, "{l}");
         assert!(l["max_error"].as_f64().unwrap() < 1e-9, "{l}");

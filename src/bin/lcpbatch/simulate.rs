@@ -70,6 +70,11 @@ struct StepLine {
     max_error: f64,
     awake: usize,
     unsolved: usize,
+    /// What the unsolved islands got instead: exact frictionless impulses,
+    /// PGS's approximate ones, none.
+    repaired_exact: usize,
+    repaired_approximate: usize,
+    repaired_dropped: usize,
     collision_s: f64,
     solve_s: f64,
     /// Within solve_s (the door's timings): checks, islands and assembly.
@@ -95,6 +100,9 @@ impl StepLine {
             max_error: w.iter().map(|x| x.max_error).fold(0.0, f64::max),
             awake: w.iter().map(|x| x.awake).sum(),
             unsolved: r.unsolved,
+            repaired_exact: r.repairs.exact,
+            repaired_approximate: r.repairs.approximate,
+            repaired_dropped: r.repairs.dropped,
             collision_s: r.timings.collision,
             solve_s: r.timings.solve,
             assembly_s: r.solve.timings.build,
@@ -235,12 +243,15 @@ fn print_summary(lines: &[StepLine], worlds: usize, wall: f64) {
         .expect("3 phases");
     let last = lines.last().expect("at least one step");
     println!(
-        "  slowest phase: {}; last step: energy {:.6e} J, max penetration {:.3e} m, max error {:.3e}, unsolved islands {}",
+        "  slowest phase: {}; last step: energy {:.6e} J, max penetration {:.3e} m, max error {:.3e}, unsolved islands {} (repaired: {} exactly without friction, {} by PGS, {} without impulse)",
         slowest.0,
         last.kinetic + last.potential,
         last.max_penetration,
         last.max_error,
-        lines.iter().map(|l| l.unsolved).sum::<usize>()
+        lines.iter().map(|l| l.unsolved).sum::<usize>(),
+        lines.iter().map(|l| l.repaired_exact).sum::<usize>(),
+        lines.iter().map(|l| l.repaired_approximate).sum::<usize>(),
+        lines.iter().map(|l| l.repaired_dropped).sum::<usize>(),
     );
 }
 
