@@ -5,7 +5,7 @@ use std::time::Instant;
 use super::Solver;
 use crate::cpu::assembly::{assemble_contacts, assemble_island};
 use crate::cpu::batch::parallel_map;
-use crate::cpu::enumeration::{enumerate, solve_basis, BasisOutcome, MAX_ENUMERATION_N};
+use crate::cpu::enumeration::{enumerate, feasible_basis, MAX_ENUMERATION_N};
 use crate::cpu::impulses::apply_impulses;
 use crate::islands::find_islands;
 use crate::lcp::{Lcp, LcpSolution, Status};
@@ -232,30 +232,11 @@ fn checked_basis(
     pivots: u64,
     e: &crate::cpu::enumeration::EnumerationSettings,
 ) -> Option<LcpSolution> {
-    match solve_basis(lcp, mask, e) {
-        BasisOutcome::Solved {
-            z,
-            w,
-            feasible: true,
-            ..
-        } => {
-            let residuals = crate::lcp::Residuals::of(&z, &w, &lcp.q);
-            Some(LcpSolution {
-                status: Status::Solved,
-                z,
-                w,
-                residuals,
-                counters: crate::lcp::Counters {
-                    pivots,
-                    ..Default::default()
-                },
-                basis: Some(mask),
-                all_bases: Vec::new(),
-                solution_set: None,
-            })
-        }
-        _ => None,
-    }
+    let counters = crate::lcp::Counters {
+        pivots,
+        ..Default::default()
+    };
+    feasible_basis(lcp, mask, e, counters)
 }
 
 pub(super) fn prediction_path(p: prediction::SolvePath) -> SolvePath {

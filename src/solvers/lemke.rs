@@ -11,7 +11,7 @@
 use std::cell::RefCell;
 
 use super::lemke_tableau::{PathEnd, Workspace};
-use crate::lcp::{Counters, Lcp, LcpSolution, Status};
+use crate::lcp::{Counters, Lcp, LcpSolution, Residuals, Status};
 use crate::linalg::{solve_in_place, PIVOT_TOL};
 
 /// Settings of Lemke's algorithm.
@@ -203,14 +203,11 @@ fn lemke_scaled(
     if let (Status::Solved, Some(mask)) = (s.status, s.basis) {
         ws.support.clear();
         ws.support.extend((0..n).filter(|&i| mask >> i & 1 == 1));
-        if let Some(polished) = polish(ws, lcp) {
-            let better = LcpSolution::from_z(lcp, s.status, polished, s.counters);
-            if polish_wins(lcp, &better, &sol) {
-                sol = LcpSolution {
-                    basis: s.basis,
-                    ..better
-                };
-            }
+        if polish(ws, lcp) && polish_wins(lcp, &ws.z_polished, &sol.z) {
+            sol = LcpSolution {
+                basis: s.basis,
+                ..LcpSolution::from_z(lcp, s.status, ws.z_polished.clone(), s.counters)
+            };
         }
     }
     sol
@@ -296,9 +293,9 @@ fn lemke_as_posed(
 }
 
 /// The solution of the workspace's final tableau: z from its basic values,
-/// then the basis re-solved with the true q ([`polish`]). With `checked`,
-/// `Solved` stands only if the error is at most [`ACCEPT_TOL`] (else
-/// `RayTermination`).
+/// or the basis re-solved with the true q ([`polish`]) where that has the
+/// smaller row residual ([`polish_wins`]). With `checked`, `Solved` stands
+/// only if the error is at most [`ACCEPT_TOL`] (else `RayTermination`).
 fn basis_solution(
     ws: &mut Workspace,
     lcp: &Lcp,
@@ -309,30 +306,45 @@ fn basis_solution(
     let n = lcp.n();
     let cols = 2 * n + 2;
     let rhs = 2 * n + 1;
-    let mut z = vec![0.0; n];
+    ws.z_tableau.clear();
+    ws.z_tableau.resize(n, 0.0);
     ws.support.clear();
     for (i, &v) in ws.basic.iter().enumerate() {
         if (n..2 * n).contains(&v) {
-            z[v - n] = ws.t[i * cols + rhs].max(0.0);
+            ws.z_tableau[v - n] = ws.t[i * cols + rhs].max(0.0);
             ws.support.push(v - n);
         }
     }
+    if status != Status::Solved {
+        return LcpSolution::from_z(lcp, status, ws.z_tableau.clone(), counters);
+    }
     ws.support.sort_unstable();
-    let mut sol = LcpSolution::from_z(lcp, status, z, counters);
-    if status == Status::Solved {
-        if let Some(polished) = polish(ws, lcp) {
-            let better = LcpSolution::from_z(lcp, status, polished, counters);
-            if polish_wins(lcp, &better, &sol) {
-                sol = better;
-            }
-        }
-        if n <= 32 {
-            sol.basis = Some(ws.support.iter().fold(0u32, |m, &i| m | 1 << i));
-        }
-        if checked && !(sol.residuals.error <= ACCEPT_TOL) {
-            sol.status = Status::RayTermination;
-            sol.basis = None;
-        }
+    // w of each candidate z comes out of its row residual; the winner's
+    // goes into the answer as is.
+    let tableau = row_residual(lcp, &ws.z_tableau, &mut ws.w_tableau);
+    let polished =
+        polish(ws, lcp) && row_residual(lcp, &ws.z_polished, &mut ws.w_polished) <= tableau;
+    let (z, w) = if polished {
+        (&ws.z_polished, &ws.w_polished)
+    } else {
+        (&ws.z_tableau, &ws.w_tableau)
+    };
+    let mut sol = LcpSolution {
+        status,
+        residuals: Residuals::of(z, w, &lcp.q),
+        z: z.clone(),
+        w: w.clone(),
+        counters,
+        basis: None,
+        all_bases: Vec::new(),
+        solution_set: None,
+    };
+    if n <= 32 {
+        sol.basis = Some(ws.support.iter().fold(0u32, |m, &i| m | 1 << i));
+    }
+    if checked && !(sol.residuals.error <= ACCEPT_TOL) {
+        sol.status = Status::RayTermination;
+        sol.basis = None;
     }
     sol
 }
@@ -347,39 +359,43 @@ const ACCEPT_TOL: f64 = 1e-9;
 /// error measure, which cannot see rounding in a small w_i beside a huge
 /// z_i (z_i − max(0, z_i − w_i) rounds to 0): the tableau's z can be wrong in
 /// its 8th digit with an error measure of 1e-127.
-fn polish_wins(lcp: &Lcp, polished: &LcpSolution, tableau: &LcpSolution) -> bool {
-    row_residual(lcp, polished) <= row_residual(lcp, tableau)
+fn polish_wins(lcp: &Lcp, polished: &[f64], tableau: &[f64]) -> bool {
+    let mut w = Vec::new();
+    row_residual(lcp, polished, &mut w) <= row_residual(lcp, tableau, &mut w)
 }
 
 /// max_i of the violation of row i (|w_i| where z_i > 0, else max(0, −w_i))
 /// relative to the row's scale |q_i| + Σ_j |M_ij z_j|: the accuracy of a
-/// basic solution that every row sees at its own scale.
-fn row_residual(lcp: &Lcp, sol: &LcpSolution) -> f64 {
+/// basic solution that every row sees at its own scale. w = M z + q is left
+/// in `w`, each w_i = q_i + Σ_j M_ij z_j summed in [`Lcp::w`]'s order (from
+/// −0, as `Iterator::sum` starts), in the same pass as the scale.
+fn row_residual(lcp: &Lcp, z: &[f64], w: &mut Vec<f64>) -> f64 {
     let n = lcp.n();
-    (0..n)
-        .map(|i| {
-            let w = sol.w[i];
-            let v = if sol.z[i] > 0.0 {
-                w.abs()
-            } else {
-                (-w).max(0.0)
-            };
-            let scale =
-                lcp.q[i].abs() + (0..n).map(|j| (lcp.at(i, j) * sol.z[j]).abs()).sum::<f64>();
-            if v == 0.0 {
-                0.0
-            } else {
-                v / scale
-            }
-        })
-        .fold(0.0, f64::max)
+    w.clear();
+    let mut worst = 0.0f64;
+    for (i, row) in lcp.m.chunks_exact(n).enumerate() {
+        let (mut sum, mut size) = (-0.0f64, 0.0f64);
+        for (a, b) in row.iter().zip(z) {
+            let t = a * b;
+            sum += t;
+            size += t.abs();
+        }
+        let wi = lcp.q[i] + sum;
+        w.push(wi);
+        let v = if z[i] > 0.0 { wi.abs() } else { (-wi).max(0.0) };
+        if v != 0.0 {
+            worst = worst.max(v / (lcp.q[i].abs() + size));
+        }
+    }
+    worst
 }
 
-/// Re-solves the basis `ws.support` from the original data,
-/// M_SS z_S = −q_S: the tableau's values carry the rounding of every pivot,
-/// this solve only its own. None when M_SS is singular. Negative entries are
-/// clamped to 0; the caller keeps whichever z has the smaller error.
-fn polish(ws: &mut Workspace, lcp: &Lcp) -> Option<Vec<f64>> {
+/// Re-solves the basis `ws.support` from the original data into
+/// `ws.z_polished`, M_SS z_S = −q_S: the tableau's values carry the rounding
+/// of every pivot, this solve only its own. False when M_SS is singular.
+/// Negative entries are clamped to 0; the caller keeps whichever z has the
+/// smaller row residual.
+fn polish(ws: &mut Workspace, lcp: &Lcp) -> bool {
     let k = ws.support.len();
     let support = &ws.support;
     ws.solve_a.clear();
@@ -391,13 +407,14 @@ fn polish(ws: &mut Workspace, lcp: &Lcp) -> Option<Vec<f64>> {
     ws.solve_x.clear();
     ws.solve_x.extend(support.iter().map(|&i| -lcp.q[i]));
     if !solve_in_place(&mut ws.solve_a, &mut ws.solve_x, k, PIVOT_TOL) {
-        return None;
+        return false;
     }
-    let mut z = vec![0.0; lcp.n()];
+    ws.z_polished.clear();
+    ws.z_polished.resize(lcp.n(), 0.0);
     for (&i, &v) in support.iter().zip(&ws.solve_x) {
-        z[i] = v.max(0.0);
+        ws.z_polished[i] = v.max(0.0);
     }
-    Some(z)
+    true
 }
 
 #[cfg(test)]

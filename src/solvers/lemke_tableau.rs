@@ -42,8 +42,6 @@ pub struct Workspace {
     candidates: Vec<usize>,
     /// Rows still tied in the lexicographic ratio test.
     tied: Vec<usize>,
-    /// A copy of the pivot row (so that the update loop borrows nothing twice).
-    pivot_row: Vec<f64>,
     /// The entering column as the original data hold it (Noise::Data).
     column: Vec<f64>,
     /// (basis as a bit set over the 2n + 1 variables, entering) pairs seen
@@ -57,6 +55,14 @@ pub struct Workspace {
     pub(crate) solve_x: Vec<f64>,
     /// The support S of the final basis (z_i basic), increasing.
     pub(crate) support: Vec<usize>,
+    /// z read from the final tableau.
+    pub(crate) z_tableau: Vec<f64>,
+    /// z of the basis re-solved from the data.
+    pub(crate) z_polished: Vec<f64>,
+    /// w = M z + q for `z_tableau`.
+    pub(crate) w_tableau: Vec<f64>,
+    /// w = M z + q for `z_polished`.
+    pub(crate) w_polished: Vec<f64>,
 }
 
 /// Variable indices in the tableau: w_i = i, z_i = n + i, z0 = 2n.
@@ -95,7 +101,6 @@ impl Workspace {
         }
         self.basic.clear();
         self.basic.extend(0..n);
-        self.pivot_row.resize(cols, 0.0);
         self.seen.clear();
         self.seen_large.clear();
     }
@@ -186,7 +191,14 @@ impl Workspace {
         let n = lcp.n();
         let cols = 2 * n + 2;
         let t = &self.t;
-        let colmax = (0..n).fold(0.0f64, |m, i| m.max(t[i * cols + entering].abs()));
+        // Plain comparisons (a NaN entry is skipped, as f64::max would).
+        let mut colmax = 0.0f64;
+        for i in 0..n {
+            let v = t[i * cols + entering].abs();
+            if v > colmax {
+                colmax = v;
+            }
+        }
         self.candidates.clear();
         match noise {
             Noise::Column => {
@@ -290,21 +302,22 @@ impl Workspace {
 
     /// Gauss–Jordan pivot on (row r, column c): row r divided by its pivot,
     /// then every other row minus its entry in column c times row r.
+    #[inline(always)]
     fn pivot(&mut self, n: usize, r: usize, c: usize) {
         let cols = 2 * n + 2;
-        let prow = &mut self.pivot_row[..cols];
-        prow.copy_from_slice(&self.t[r * cols..(r + 1) * cols]);
+        let (head, rest) = self.t[..n * cols].split_at_mut(r * cols);
+        let (prow, tail) = rest.split_at_mut(cols);
         let inv = 1.0 / prow[c];
         prow.iter_mut().for_each(|x| *x *= inv);
         prow[c] = 1.0;
-        for (i, row) in self.t.chunks_exact_mut(cols).enumerate() {
-            if i == r {
-                row.copy_from_slice(prow);
-                continue;
-            }
+        let prow = &*prow;
+        for row in head
+            .chunks_exact_mut(cols)
+            .chain(tail.chunks_exact_mut(cols))
+        {
             let f = row[c];
             if f != 0.0 {
-                for (x, p) in row.iter_mut().zip(prow.iter()) {
+                for (x, p) in row.iter_mut().zip(prow) {
                     *x -= f * p;
                 }
                 row[c] = 0.0;
