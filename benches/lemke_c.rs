@@ -188,5 +188,30 @@ fn bench_lemke_c(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_lemke_c);
+/// The default path on one and two threads over 10,000 islands (the
+/// issue's batch size for its two-thread target).
+fn bench_threads(c: &mut Criterion) {
+    let batches = [
+        ("spd_8", spd_batch(8, 10_000, 80)),
+        ("resting_12", resting_batch(12, 10_000, 2027)),
+    ];
+    let (mut one, mut two) = (default_path(1), default_path(2));
+    let mut group = c.benchmark_group("threads");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(2));
+    for (name, lcps) in &batches {
+        group.throughput(Throughput::Elements(lcps.len() as u64));
+        group.bench_with_input(BenchmarkId::new("auto_1t", name), lcps, |b, l| {
+            b.iter(|| black_box(one.solve_lcps(black_box(l)).expect("solvable")))
+        });
+        group.bench_with_input(BenchmarkId::new("auto_2t", name), lcps, |b, l| {
+            b.iter(|| black_box(two.solve_lcps(black_box(l)).expect("solvable")))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench_lemke_c, bench_threads);
 criterion_main!(benches);
