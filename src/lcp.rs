@@ -147,16 +147,7 @@ pub fn lcp_error(z: &[f64], w: &[f64], q: &[f64]) -> f64 {
 
 /// Euclidean norm, scaled by the largest magnitude so that it neither
 /// overflows for entries near 1e200 nor underflows for entries near 1e-200.
-///
-/// Where the plain sum of squares lies well inside f64's range (1e-280 …
-/// 1e280, so that no square that matters underflowed and none overflowed)
-/// its square root is the answer, in one pass; the scaled second pass runs
-/// only outside it.
 pub fn norm2(v: impl Iterator<Item = f64> + Clone) -> f64 {
-    let plain = v.clone().fold(0.0f64, |s, x| s + x * x);
-    if (1e-280..=1e280).contains(&plain) {
-        return plain.sqrt();
-    }
     let big = v.clone().fold(0.0f64, |m, x| m.max(x.abs()));
     if big == 0.0 || !big.is_finite() {
         return big;

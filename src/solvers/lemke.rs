@@ -39,11 +39,22 @@ thread_local! {
     static WORKSPACE: RefCell<Workspace> = RefCell::new(Workspace::default());
 }
 
+/// Tableau entries a thread keeps between solves (n = 64: 64 × 130); a
+/// larger problem's workspace is dropped after its solve, so that one big
+/// LCP does not pin its tableau to the thread for good.
+const KEPT_TABLEAU: usize = 64 * 130;
+
 /// `f` with this thread's workspace (a fresh one should the thread's be in
 /// use already, which no caller in the crate does).
 fn with_workspace<T>(f: impl FnOnce(&mut Workspace) -> T) -> T {
     WORKSPACE.with(|ws| match ws.try_borrow_mut() {
-        Ok(mut ws) => f(&mut ws),
+        Ok(mut ws) => {
+            let out = f(&mut ws);
+            if ws.t.capacity() > KEPT_TABLEAU {
+                *ws = Workspace::default();
+            }
+            out
+        }
         Err(_) => f(&mut Workspace::default()),
     })
 }
@@ -420,6 +431,41 @@ fn polish(ws: &mut Workspace, lcp: &Lcp) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// M = A Aᵀ / n + 0.05 I, A_ij and q_i ~ U[−1, 1].
+    fn spd(n: usize, rng: &mut crate::generate::Rng) -> Lcp {
+        let a: Vec<f64> = (0..n * n).map(|_| rng.range(-1.0, 1.0)).collect();
+        let m = (0..n * n)
+            .map(|k| {
+                let (i, j) = (k / n, k % n);
+                let dot: f64 = (0..n).map(|t| a[i * n + t] * a[j * n + t]).sum();
+                dot / n as f64 + if i == j { 0.05 } else { 0.0 }
+            })
+            .collect();
+        Lcp::new(m, (0..n).map(|_| rng.range(-1.0, 1.0)).collect()).unwrap()
+    }
+
+    #[test]
+    fn a_reused_workspace_gives_the_answers_of_a_fresh_one() {
+        // Sizes up and down through this thread's workspace, and one beyond
+        // what the thread keeps (n = 70): every answer is the one a fresh
+        // workspace gives, bit for bit, and the textbook basis is Lemke's.
+        let mut rng = crate::generate::Rng::new(7);
+        let settings = LemkeSettings::default();
+        for n in [12, 3, 8, 1, 70, 12, 5, 2] {
+            let lcp = spd(n, &mut rng);
+            let reused = lemke(&lcp, &settings);
+            let fresh = lemke_in(&mut Workspace::default(), &lcp, &settings);
+            assert_eq!(reused, fresh, "n = {n}");
+            assert_eq!(reused.status, Status::Solved, "n = {n}");
+            let (mask, pivots) = lemke_textbook_basis(&lcp, &settings);
+            if n <= 32 {
+                assert_eq!(mask, reused.basis, "n = {n}");
+            }
+            assert_eq!(pivots, if n <= 32 { reused.counters.pivots } else { 0 });
+            WORKSPACE.with(|ws| assert!(ws.borrow().t.capacity() <= KEPT_TABLEAU));
+        }
+    }
 
     #[test]
     fn seed_002_walkthrough() {
