@@ -79,6 +79,7 @@ pub use settings::{Backend, GpuSettings, Method, Settings};
 pub use solver::world_path::{StepReport, StepTimings, WorldStepReport};
 pub use solver::Repairs;
 pub use solver::{CostModel, Solver};
+pub use solvers::lemke::{lemke, lemke_textbook_basis, LemkeSettings};
 pub use world::{RigidBody, Shape, World};
 
 /// Every adapter wgpu finds on `api` (for `lcpbatch info`); empty when none.

@@ -25,7 +25,7 @@
 
 use serde::Serialize;
 
-use crate::cpu::enumeration::{solve_basis, BasisOutcome, EnumerationSettings, MAX_ENUMERATION_N};
+use crate::cpu::enumeration::{feasible_basis, EnumerationSettings, MAX_ENUMERATION_N};
 use crate::lcp::{Counters, Lcp, LcpSolution, Status};
 
 /// How an island was settled; every batch reports a count of each.
@@ -78,7 +78,21 @@ pub fn is_positive_definite(lcp: &Lcp) -> bool {
     if n > MAX_ENUMERATION_N || !lcp.is_symmetric() {
         return false;
     }
-    let mut l = [0.0f64; MAX_ENUMERATION_N * MAX_ENUMERATION_N];
+    // The factor lives on the stack, no larger than n needs: zeroing 20×20
+    // entries for a 4×4 island would cost more than the factorisation.
+    match n {
+        0..=4 => cholesky_succeeds::<16>(lcp),
+        5..=8 => cholesky_succeeds::<64>(lcp),
+        9..=12 => cholesky_succeeds::<144>(lcp),
+        _ => cholesky_succeeds::<{ MAX_ENUMERATION_N * MAX_ENUMERATION_N }>(lcp),
+    }
+}
+
+/// The Cholesky factorisation of [`is_positive_definite`], with an L of
+/// `N` ≥ n² entries.
+fn cholesky_succeeds<const N: usize>(lcp: &Lcp) -> bool {
+    let n = lcp.n();
+    let mut l = [0.0f64; N];
     let dmax = (0..n).map(|i| lcp.at(i, i)).fold(0.0f64, f64::max);
     let threshold = n as f64 * f64::EPSILON * 16.0 * dmax;
     for j in 0..n {
@@ -177,19 +191,11 @@ pub fn prediction(
         return Err(unknown);
     }
     let settle = |path: SolvePath, mask: u32, bases: u64| {
-        let BasisOutcome::Solved {
-            z, feasible: true, ..
-        } = solve_basis(lcp, mask, settings)
-        else {
-            return None;
-        };
         let counters = Counters {
             bases_visited: bases,
             ..Counters::default()
         };
-        let mut sol = LcpSolution::from_z(lcp, Status::Solved, z, counters);
-        sol.basis = Some(mask);
-        Some((path, sol))
+        feasible_basis(lcp, mask, settings, counters).map(|sol| (path, sol))
     };
     // 1. Separating: the empty basis, feasible iff q ≥ 0.
     if lcp.q.iter().all(|&v| v >= 0.0) {

@@ -1,38 +1,46 @@
 //! The CPU path's parallelism: a batch of islands spread over the cores in
 //! interleaved chunks, in order.
 
+use std::sync::Mutex;
+
+/// Indices per chunk handed to a thread at a time: large enough that taking
+/// a chunk (one lock) costs nothing beside solving it, small enough that
+/// large and small islands spread evenly over the threads.
+const CHUNK: usize = 64;
+
 /// `f(0), …, f(count − 1)` in order, computed on up to `threads` threads
-/// (0 or 1: on this one). Work is handed out in interleaved chunks of 64
-/// indices, so that large and small islands spread evenly over the threads.
+/// (0 or 1: on this one). Work is handed out in interleaved chunks of
+/// [`CHUNK`] indices; each result is written once, straight into its slot
+/// of the output (no per-chunk buffer, no second lock), and the calling
+/// thread works as one of the `threads` (one thread fewer to start).
 pub fn parallel_map<T: Send>(
     count: usize,
     threads: usize,
     f: impl Fn(usize) -> T + Sync,
 ) -> Vec<T> {
-    let threads = threads.min(count.div_ceil(64)).max(1);
+    let threads = threads.min(count.div_ceil(CHUNK)).max(1);
     if threads == 1 {
         return (0..count).map(f).collect();
     }
-    let chunk = 64;
     let mut out: Vec<Option<T>> = (0..count).map(|_| None).collect();
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    let results = std::sync::Mutex::new(&mut out);
-    std::thread::scope(|scope| {
-        for _ in 0..threads {
-            scope.spawn(|| loop {
-                let start = next.fetch_add(chunk, std::sync::atomic::Ordering::Relaxed);
-                if start >= count {
-                    break;
-                }
-                let end = (start + chunk).min(count);
-                let part: Vec<T> = (start..end).map(&f).collect();
-                let mut guard = results.lock().unwrap_or_else(|p| p.into_inner());
-                for (k, r) in part.into_iter().enumerate() {
-                    guard[start + k] = Some(r);
-                }
-            });
-        }
-    });
+    {
+        let chunks = Mutex::new(out.chunks_mut(CHUNK).enumerate());
+        let work = || loop {
+            let next = chunks.lock().unwrap_or_else(|p| p.into_inner()).next();
+            let Some((k, slots)) = next else {
+                break;
+            };
+            for (j, slot) in slots.iter_mut().enumerate() {
+                *slot = Some(f(k * CHUNK + j));
+            }
+        };
+        std::thread::scope(|scope| {
+            for _ in 1..threads {
+                scope.spawn(&work);
+            }
+            work();
+        });
+    }
     out.into_iter()
         .map(|r| r.expect("every chunk was computed"))
         .collect()

@@ -5,7 +5,7 @@ use std::time::Instant;
 use super::Solver;
 use crate::cpu::assembly::{assemble_contacts, assemble_island};
 use crate::cpu::batch::parallel_map;
-use crate::cpu::enumeration::{enumerate, solve_basis, BasisOutcome, MAX_ENUMERATION_N};
+use crate::cpu::enumeration::{enumerate, feasible_basis, MAX_ENUMERATION_N};
 use crate::cpu::impulses::apply_impulses;
 use crate::islands::find_islands;
 use crate::lcp::{Lcp, LcpSolution, Status};
@@ -13,7 +13,7 @@ use crate::prediction::{self, prediction};
 use crate::report::{IslandReport, Report, SceneReport, SolvePath};
 use crate::scene::Scene;
 use crate::settings::{Backend, Method, Settings};
-use crate::solvers::lemke::lemke;
+use crate::solvers::lemke::{lemke, lemke_textbook_basis};
 use crate::solvers::pgs::pgs;
 use crate::Error;
 
@@ -197,22 +197,46 @@ pub(super) fn solve_on_cpu(lcp: &Lcp, warm: Option<u32>, s: &Settings) -> Solved
 /// tolerances (the check every GPU answer goes through: feasible, M_SS not
 /// singular); the solution is the re-solve's. Err(pivots spent) when Lemke
 /// did not end on a solution or its basis fails the check.
+///
+/// The textbook run's basis is checked first ([`lemke_textbook_basis`]:
+/// no tableau read-back, no polish, since the re-solve here is the answer);
+/// where it does not give a checked solution with an error of at most 1e-12,
+/// the whole of [`lemke`] (its scaled and covering-vector retries) runs.
 fn lemke_checked(lcp: &Lcp, s: &Settings) -> Result<LcpSolution, u64> {
+    let e = s.enumeration();
+    let (mask, first_pivots) = lemke_textbook_basis(lcp, &s.lemke());
+    if let Some(mask) = mask {
+        if let Some(solution) = checked_basis(lcp, mask, first_pivots, &e) {
+            if solution.residuals.error <= TEXTBOOK_ACCEPT {
+                return Ok(solution);
+            }
+        }
+    }
     let l = lemke(lcp, &s.lemke());
     let pivots = l.counters.pivots;
     let (Status::Solved, Some(mask)) = (l.status, l.basis) else {
         return Err(pivots);
     };
-    match solve_basis(lcp, mask, &s.enumeration()) {
-        BasisOutcome::Solved {
-            z, feasible: true, ..
-        } => {
-            let mut solution = LcpSolution::from_z(lcp, Status::Solved, z, l.counters);
-            solution.basis = Some(mask);
-            Ok(solution)
-        }
-        _ => Err(pivots),
-    }
+    checked_basis(lcp, mask, pivots, &e).ok_or(pivots)
+}
+
+/// The error at or below which the textbook run's checked basis is the
+/// answer ([`lemke`] itself retries above it).
+const TEXTBOOK_ACCEPT: f64 = 1e-12;
+
+/// Basis `mask` re-solved in f64 and checked (feasible, M_SS not singular):
+/// the solution with `pivots` in its counters, or None.
+fn checked_basis(
+    lcp: &Lcp,
+    mask: u32,
+    pivots: u64,
+    e: &crate::cpu::enumeration::EnumerationSettings,
+) -> Option<LcpSolution> {
+    let counters = crate::lcp::Counters {
+        pivots,
+        ..Default::default()
+    };
+    feasible_basis(lcp, mask, e, counters)
 }
 
 pub(super) fn prediction_path(p: prediction::SolvePath) -> SolvePath {

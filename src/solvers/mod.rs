@@ -3,6 +3,7 @@
 //! Lemke and PGS run on the CPU only.
 
 pub mod lemke;
+mod lemke_tableau;
 pub mod pgs;
 
 use crate::cpu::enumeration::{enumerate, EnumerationSettings};
