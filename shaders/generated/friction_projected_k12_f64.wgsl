@@ -1,9 +1,14 @@
-// GENERATED from shaders/friction_projected.wgsl by src/gpu/shaders/compose.rs: do not edit.
+// GENERATED from shaders/friction_projected_global.wgsl by src/gpu/shaders/compose.rs: do not edit.
 // Regenerate: LCPBATCH_BLESS_SHADERS=1 cargo test --release generated_shaders_are_committed
 
 // Cone projection iterations for the cone complementarity problem of
 // Anitescu-Tasora, one invocation per island of exactly FIXED_K <= 16
-// contacts (one dispatch per k).
+// contacts (one dispatch per k): the kernels for k > 4, which read W and
+// the vectors in the storage buffers at every use. The kernels for k <= 4
+// come from friction_projected.wgsl (private copies, unrolled loops); a
+// private W of 9k^2 entries at run-time indices made lavapipe's k = 16
+// kernel run for minutes on 50 islands, measured. Same bindings, same
+// arithmetic in the same order.
 // CPU twin: src/friction/projected.rs (sweeps, the stop measure, the steps)
 // and src/friction/apgd.rs (APGD), the same arithmetic in the same order;
 // read their docs for the methods. Entry points:
@@ -23,8 +28,9 @@
 // 65,535 iterations in all, silently. An invocation therefore spends at most
 // params.budget units of loop work per dispatch (one unit per inner loop
 // iteration: a product W x costs 9k^2 + 3k), keeps its state in the buffers
-// and counts itself in `unfinished[k]` while it runs; the host dispatches
-// rounds until no island is unfinished. A round may end between two
+// and counts itself in `unfinished[k]` while it runs; the host reads the
+// states back after each submission and dispatches only the islands still
+// running (a compacted `islands` table) until none is. A round may end between two
 // backtracking tries of APGD: the next one retries with the L it saved,
 // which is what the CPU twin's loop does next.
 //
@@ -61,11 +67,14 @@ struct Params {
     flags: u32,
 }
 
+// slot: the island's entry in `states` and `scalars`; the table holds
+// only the islands still running (the host compacts it between
+// submissions), so entry and slot differ.
 struct FrictionIsland {
     k: u32,
     data: u32,
     vectors: u32,
-    _pad: u32,
+    slot: u32,
 }
 
 struct FrictionState {
@@ -110,8 +119,7 @@ struct Island {
     v: u32,
 }
 
-fn island_at(index: u32) -> Island {
-    let rec = islands[index];
+fn island_at(rec: FrictionIsland) -> Island {
     let k = FIXED_K;
     let n = 3u * k;
     return Island(n, k, rec.data, rec.data + n * n, rec.data + n * n + n, rec.vectors);
@@ -285,12 +293,13 @@ fn sweeps(@builtin(global_invocation_id) gid: vec3<u32>) {
     if gid.x >= params.count {
         return;
     }
-    let index = params.first + gid.x;
+    let rec = islands[params.first + gid.x];
+    let index = rec.slot;
     var st = states[index];
     if st.status > RUNNING {
         return;
     }
-    let is = island_at(index);
+    let is = island_at(rec);
     let gauss_seidel = (params.flags & 1u) == 1u;
     var spent = 0u;
     if st.status == NOT_STARTED {
@@ -465,12 +474,13 @@ fn apgd(@builtin(global_invocation_id) gid: vec3<u32>) {
     if gid.x >= params.count {
         return;
     }
-    let index = params.first + gid.x;
+    let rec = islands[params.first + gid.x];
+    let index = rec.slot;
     var st = states[index];
     if st.status > RUNNING {
         return;
     }
-    let is = island_at(index);
+    let is = island_at(rec);
     let s = 4u * index;
     var spent = 0u;
     if st.status == NOT_STARTED {
