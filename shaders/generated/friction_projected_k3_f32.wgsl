@@ -1,47 +1,12 @@
-// GENERATED from shaders/friction_projected.wgsl by src/gpu/shaders/compose.rs: do not edit.
+// GENERATED from shaders/friction_common.wgsl + shaders/friction_projected.wgsl by src/gpu/shaders/compose.rs: do not edit.
 // Regenerate: LCPBATCH_BLESS_SHADERS=1 cargo test --release generated_shaders_are_committed
 
-// Cone projection iterations for the cone complementarity problem of
-// Anitescu-Tasora, one invocation per island of exactly FIXED_K <= 16
-// contacts (one dispatch per k).
-// CPU twin: src/friction/projected.rs (sweeps, the stop measure, the steps)
-// and src/friction/apgd.rs (APGD), the same arithmetic in the same order;
-// read their docs for the methods. Entry points:
-//   sweeps: projected Jacobi (params.flags bit 0 clear) or Gauss-Seidel
-//           (bit 0 set) sweeps over contacts;
-//   apgd:   accelerated projected gradient descent with backtracking on the
-//           Lipschitz estimate, gradient restarts and the best iterate.
-//
-// Interleaved per contact: entries 3i (normal), 3i + 1, 3i + 2 (tangents).
-// An island's W (3k x 3k, row-major), q (3k) and mu (k) lie in `values`
-// from island.data; its vectors in `vectors` from island.vectors:
-//   sweeps: x (3k), then the contacts' steps eta (k);
-//   apgd:   x, u(x), y, u(y), best (3k each).
-// `scalars` holds 4 per island: theta, L, best error, last error.
-//
-// Loops marked UNROLL are unrolled by the generator for k <= 4 (every
-// index into a private array a constant: see src/gpu/shaders/unroll_loops.rs).
-//
-// Private state: a dispatch copies its island's W, q, mu and vectors from
-// the buffers into private arrays once, iterates on those, and writes the
-// vectors back at the end of its round. llvmpipe turns every storage-buffer
-// access at a per-island address into a loop over the SIMD lanes; private
-// arrays indexed by the (constant-bound) loop counters are plain vector
-// registers or stack slots. Measured 2026-11-25 (BENCHMARKS.md).
-//
-// Rounds: llvmpipe (lavapipe) ends every loop of an invocation after about
-// 65,535 iterations in all, silently. An invocation therefore spends at most
-// params.budget units of loop work per dispatch (one unit per inner loop
-// iteration: a product W x costs 9k^2 + 3k), keeps its state in the buffers
-// and counts itself in `unfinished[k]` while it runs; the host reads the
-// states back after each submission and dispatches only the islands still
-// running (a compacted `islands` table) until none is. A round may end between two
-// backtracking tries of APGD: the next one retries with the L it saved,
-// which is what the CPU twin's loop does next.
-//
-// The generator (src/gpu/shaders/compose.rs) replaces the lines marked HOST
-// (scalar type, its largest finite value, its machine epsilon, the
-// island size k).
+// The part of the friction kernels common to both sources (prepended to
+// shaders/friction_projected.wgsl for k <= 4 and to
+// shaders/friction_projected_global.wgsl for k > 4 by
+// src/gpu/shaders/compose.rs): the HOST lines, the constants, the records,
+// the bindings, the finiteness test and the cone projection. Read the two
+// sources' headers for the layout and the rounds.
 
 alias Scalar = f32; // HOST scalar
 const SCALAR_MAX: Scalar = 3.4028234663852886e38; // HOST scalar_max
@@ -110,6 +75,69 @@ struct Controls {
 @group(0) @binding(6) var<storage, read_write> unfinished: array<atomic<u32>, 17>;
 @group(0) @binding(7) var<uniform> controls: Controls;
 
+fn finite(v: Scalar) -> bool {
+    return v == v && abs(v) <= SCALAR_MAX;
+}
+
+// Siconos' fc3d projection on {|x_t| <= mu x_n} (cone.rs project_on_cone).
+fn project_on_cone(v: vec3<Scalar>, m: Scalar) -> vec3<Scalar> {
+    let t = sqrt(v.y * v.y + v.z * v.z);
+    if m * t <= -v.x {
+        return vec3<Scalar>(Scalar(0.0));
+    }
+    if t <= m * v.x {
+        return v;
+    }
+    let pn = (m * t + v.x) / (m * m + Scalar(1.0));
+    let scale = m * pn / t;
+    return vec3<Scalar>(pn, v.y * scale, v.z * scale);
+}
+
+// Cone projection iterations for the cone complementarity problem of
+// Anitescu-Tasora, one invocation per island of exactly FIXED_K <= 16
+// contacts (one dispatch per k).
+// CPU twin: src/friction/projected.rs (sweeps, the stop measure, the steps)
+// and src/friction/apgd.rs (APGD), the same arithmetic in the same order;
+// read their docs for the methods. Entry points:
+//   sweeps: projected Jacobi (params.flags bit 0 clear) or Gauss-Seidel
+//           (bit 0 set) sweeps over contacts;
+//   apgd:   accelerated projected gradient descent with backtracking on the
+//           Lipschitz estimate, gradient restarts and the best iterate.
+//
+// Interleaved per contact: entries 3i (normal), 3i + 1, 3i + 2 (tangents).
+// An island's W (3k x 3k, row-major), q (3k) and mu (k) lie in `values`
+// from island.data; its vectors in `vectors` from island.vectors:
+//   sweeps: x (3k), then the contacts' steps eta (k);
+//   apgd:   x, u(x), y, u(y), best (3k each).
+// `scalars` holds 4 per island: theta, L, best error, last error.
+//
+// Loops marked UNROLL are unrolled by the generator for k <= 4 (every
+// index into a private array a constant: see src/gpu/shaders/unroll_loops.rs).
+//
+// Private state: a dispatch copies its island's W, q, mu and vectors from
+// the buffers into private arrays once, iterates on those, and writes the
+// vectors back at the end of its round. llvmpipe turns every storage-buffer
+// access at a per-island address into a loop over the SIMD lanes; private
+// arrays indexed by the (constant-bound) loop counters are plain vector
+// registers or stack slots. Measured 2026-11-25 (BENCHMARKS.md).
+//
+// Rounds: llvmpipe (lavapipe) ends every loop of an invocation after about
+// 65,535 iterations in all, silently. An invocation therefore spends at most
+// params.budget units of loop work per dispatch (one unit per inner loop
+// iteration: a product W x costs 9k^2 + 3k), keeps its state in the buffers
+// and counts itself in `unfinished[k]` while it runs; the host reads the
+// states back after each submission and dispatches only the islands still
+// running (a compacted `islands` table) until none is. A round may end between two
+// backtracking tries of APGD: the next one retries with the L it saved,
+// which is what the CPU twin's loop does next.
+//
+// The generator (src/gpu/shaders/compose.rs) replaces the lines marked HOST
+// (scalar type, its largest finite value, its machine epsilon, the
+// island size k).
+
+// Prepended by the generator: shaders/friction_common.wgsl (HOST lines,
+// constants, records, bindings, finite, project_on_cone).
+
 // Entries of an island: N = 3k; W has N * N.
 const N: u32 = 3u * FIXED_K;
 const NN: u32 = N * N;
@@ -128,24 +156,6 @@ var<private> eta: array<Scalar, FIXED_K>;
 // APGD's trial iterate and its velocity; the sweeps' velocity u in `un`.
 var<private> xn: array<Scalar, N>;
 var<private> un: array<Scalar, N>;
-
-fn finite(v: Scalar) -> bool {
-    return v == v && abs(v) <= SCALAR_MAX;
-}
-
-// Siconos' fc3d projection on {|x_t| <= mu x_n} (cone.rs project_on_cone).
-fn project_on_cone(v: vec3<Scalar>, m: Scalar) -> vec3<Scalar> {
-    let t = sqrt(v.y * v.y + v.z * v.z);
-    if m * t <= -v.x {
-        return vec3<Scalar>(Scalar(0.0));
-    }
-    if t <= m * v.x {
-        return v;
-    }
-    let pn = (m * t + v.x) / (m * m + Scalar(1.0));
-    let scale = m * pn / t;
-    return vec3<Scalar>(pn, v.y * scale, v.z * scale);
-}
 
 // Copies island `rec`'s W, q, mu and its first `vectors` vectors of N
 // (x, u(x), y, u(y), best in that order) into the private arrays; returns

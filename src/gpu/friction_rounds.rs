@@ -225,7 +225,7 @@ impl RoundsJob<'_> {
         let vectors = scalars_to_bytes(&chunk.vectors, p);
         let states_size = count * std::mem::size_of::<FrictionState>() as u64;
         let scalars_size = count * SCALARS as u64 * p.bytes();
-        let b = ChunkBuffers {
+        ChunkBuffers {
             values: ctx.storage("friction values", &scalars_to_bytes(&chunk.values, p)),
             vectors_size: vectors.len() as u64,
             vectors: ctx.storage("friction vectors", &vectors),
@@ -234,8 +234,7 @@ impl RoundsJob<'_> {
             states: ctx.storage_zeroed("friction states", states_size),
             states_size,
             unfinished: ctx.storage_zeroed("friction unfinished", UNFINISHED_BYTES),
-        };
-        b
+        }
     }
 
     /// One dispatch range per island size k over `table` (sorted by k;

@@ -26,6 +26,7 @@ const ENUMERATION_ALL_WGSL: &str = include_str!("../../../shaders/enumeration_al
 const ASSEMBLY_WGSL: &str = include_str!("../../../shaders/assembly.wgsl");
 const IMPULSES_WGSL: &str = include_str!("../../../shaders/impulses.wgsl");
 const FRICTION_PROJECTED_WGSL: &str = include_str!("../../../shaders/friction_projected.wgsl");
+const FRICTION_COMMON_WGSL: &str = include_str!("../../../shaders/friction_common.wgsl");
 const FRICTION_PROJECTED_GLOBAL_WGSL: &str =
     include_str!("../../../shaders/friction_projected_global.wgsl");
 
@@ -63,6 +64,7 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         Shader::Assembly | Shader::Impulses | Shader::FrictionProjected(_)
     );
     let src = match shader {
+        Shader::FrictionProjected(_) => format!("{FRICTION_COMMON_WGSL}\n{body}"),
         _ if standalone => body.to_string(),
         _ => format!("{ENUMERATION_BASIS_WGSL}\n{body}"),
     };
@@ -103,6 +105,9 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         _ => s,
     };
     let from = match shader {
+        Shader::FrictionProjected(_) => {
+            format!("shaders/friction_common.wgsl + shaders/{file}.wgsl")
+        }
         _ if standalone => format!("shaders/{file}.wgsl"),
         _ => format!("shaders/enumeration_basis.wgsl + shaders/{file}.wgsl"),
     };
