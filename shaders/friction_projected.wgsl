@@ -16,12 +16,23 @@
 //   apgd:   x, u(x), y, u(y), best (3k each).
 // `scalars` holds 4 per island: theta, L, best error, last error.
 //
+// Loops marked UNROLL are unrolled by the generator for k <= 4 (every
+// index into a private array a constant: see src/gpu/shaders/unroll_loops.rs).
+//
+// Private state: a dispatch copies its island's W, q, mu and vectors from
+// the buffers into private arrays once, iterates on those, and writes the
+// vectors back at the end of its round. llvmpipe turns every storage-buffer
+// access at a per-island address into a loop over the SIMD lanes; private
+// arrays indexed by the (constant-bound) loop counters are plain vector
+// registers or stack slots. Measured 2026-11-25 (BENCHMARKS.md).
+//
 // Rounds: llvmpipe (lavapipe) ends every loop of an invocation after about
 // 65,535 iterations in all, silently. An invocation therefore spends at most
 // params.budget units of loop work per dispatch (one unit per inner loop
 // iteration: a product W x costs 9k^2 + 3k), keeps its state in the buffers
-// and counts itself in `unfinished[k]` while it runs; the host dispatches
-// rounds until no island is unfinished. A round may end between two
+// and counts itself in `unfinished[k]` while it runs; the host reads the
+// states back after each submission and dispatches only the islands still
+// running (a compacted `islands` table) until none is. A round may end between two
 // backtracking tries of APGD: the next one retries with the L it saved,
 // which is what the CPU twin's loop does next.
 //
@@ -29,174 +40,119 @@
 // (scalar type, its largest finite value, its machine epsilon, the
 // island size k).
 
-alias Scalar = f32; // HOST scalar
-const SCALAR_MAX: Scalar = 3.4028234663852886e38; // HOST scalar_max
-const SCALAR_EPSILON: Scalar = 1.1920929e-7; // HOST scalar_epsilon
-// Islands of exactly FIXED_K contacts (the generator writes one kernel per
-// k = 1...16): every loop bound is a constant, which llvmpipe unrolls.
-const FIXED_K: u32 = 1u; // HOST fixed_k
+// Prepended by the generator: shaders/friction_common.wgsl (HOST lines,
+// constants, records, bindings, finite, project_on_cone).
 
-// Largest island: 16 contacts, 48 entries.
-const MAX_DIM: u32 = 48u;
-// Below this scale the stop measure is not divided (projected.rs SCALE_FLOOR).
-const SCALE_FLOOR: Scalar = Scalar(2.220446049250313e-16);
-// Consecutive doublings of L in one APGD iteration before a numerical failure.
-const MAX_BACKTRACKS: u32 = 64u;
+// Entries of an island: N = 3k; W has N * N.
+const N: u32 = 3u * FIXED_K;
+const NN: u32 = N * N;
 
-// FrictionState.status
-const NOT_STARTED: u32 = 0u;
-const RUNNING: u32 = 1u;
-const CONVERGED: u32 = 2u;
-const AT_CAP: u32 = 3u;
-const FAILED: u32 = 4u;
-
-struct Params {
-    first: u32,
-    count: u32,
-    budget: u32,
-    // bit 0: Gauss-Seidel (sweeps)
-    flags: u32,
-}
-
-struct FrictionIsland {
-    k: u32,
-    data: u32,
-    vectors: u32,
-    _pad: u32,
-}
-
-struct FrictionState {
-    status: u32,
-    iterations: u32,
-    restarts: u32,
-    // APGD: doublings of L so far in the current iteration.
-    doublings: u32,
-}
-
-struct Controls {
-    max_iterations: u32,
-    _p0: u32,
-    _p1: u32,
-    _p2: u32,
-    tolerance: Scalar,
-    relaxation: Scalar,
-    _s0: Scalar,
-    _s1: Scalar,
-}
-
-@group(0) @binding(0) var<uniform> params: Params;
-@group(0) @binding(1) var<storage, read> islands: array<FrictionIsland>;
-@group(0) @binding(2) var<storage, read> values: array<Scalar>;
-@group(0) @binding(3) var<storage, read_write> vectors: array<Scalar>;
-@group(0) @binding(4) var<storage, read_write> scalars: array<Scalar>;
-@group(0) @binding(5) var<storage, read_write> states: array<FrictionState>;
-@group(0) @binding(6) var<storage, read_write> unfinished: array<atomic<u32>, 17>;
-@group(0) @binding(7) var<uniform> controls: Controls;
-
+// The island's data and vectors, private to the invocation (see the top).
+var<private> w: array<Scalar, NN>;
+var<private> q: array<Scalar, N>;
+var<private> mu: array<Scalar, FIXED_K>;
+// Sweeps: x and the steps eta; APGD: x, u(x), y, u(y), best.
+var<private> x: array<Scalar, N>;
+var<private> ux: array<Scalar, N>;
+var<private> y: array<Scalar, N>;
+var<private> uy: array<Scalar, N>;
+var<private> best: array<Scalar, N>;
+var<private> eta: array<Scalar, FIXED_K>;
 // APGD's trial iterate and its velocity; the sweeps' velocity u in `un`.
-var<private> xn: array<Scalar, MAX_DIM>;
-var<private> un: array<Scalar, MAX_DIM>;
+var<private> xn: array<Scalar, N>;
+var<private> un: array<Scalar, N>;
 
-// Where one island's data lie.
-struct Island {
-    n: u32,
-    k: u32,
-    w: u32,
-    q: u32,
-    mu: u32,
-    v: u32,
-}
-
-fn island_at(index: u32) -> Island {
-    let rec = islands[index];
-    let k = FIXED_K;
-    let n = 3u * k;
-    return Island(n, k, rec.data, rec.data + n * n, rec.data + n * n + n, rec.vectors);
-}
-
-fn finite(x: Scalar) -> bool {
-    return x == x && abs(x) <= SCALAR_MAX;
-}
-
-// Siconos' fc3d projection on {|x_t| <= mu x_n} (cone.rs project_on_cone).
-fn project_on_cone(x: vec3<Scalar>, mu: Scalar) -> vec3<Scalar> {
-    let t = sqrt(x.y * x.y + x.z * x.z);
-    if mu * t <= -x.x {
-        return vec3<Scalar>(Scalar(0.0));
+// Copies island `rec`'s W, q, mu and its first `vectors` vectors of N
+// (x, u(x), y, u(y), best in that order) into the private arrays; returns
+// where its vectors lie in `vectors`.
+fn load_island(rec: FrictionIsland, vectors_used: u32) -> u32 {
+    for (var i = 0u; i < NN; i++) { // UNROLL
+        w[i] = values[rec.data + i];
     }
-    if t <= mu * x.x {
-        return x;
+    for (var r = 0u; r < N; r++) { // UNROLL
+        q[r] = values[rec.data + NN + r];
     }
-    let pn = (mu * t + x.x) / (mu * mu + Scalar(1.0));
-    let scale = mu * pn / t;
-    return vec3<Scalar>(pn, x.y * scale, x.z * scale);
+    for (var i = 0u; i < FIXED_K; i++) { // UNROLL
+        mu[i] = values[rec.data + NN + N + i];
+    }
+    let v = rec.vectors;
+    for (var r = 0u; r < N; r++) { // UNROLL
+        x[r] = vectors[v + r];
+    }
+    if vectors_used > 1u {
+        for (var r = 0u; r < N; r++) { // UNROLL
+            ux[r] = vectors[v + N + r];
+            y[r] = vectors[v + 2u * N + r];
+            uy[r] = vectors[v + 3u * N + r];
+            best[r] = vectors[v + 4u * N + r];
+        }
+    }
+    return v;
 }
 
-// Row r of W x + q with x = vectors[x0..x0 + n]: s = sum_j W_rj x_j, then q_r + s.
-fn velocity_row(is: Island, x0: u32, r: u32) -> Scalar {
+// Row r of W x + q: s = sum_j W_rj x_j, then q_r + s.
+fn velocity_row(r: u32) -> Scalar {
     var s = Scalar(0.0);
-    let row = is.w + r * is.n;
-    for (var j = 0u; j < is.n; j++) {
-        s += values[row + j] * vectors[x0 + j];
+    for (var j = 0u; j < N; j++) { // UNROLL
+        s += w[r * N + j] * x[j];
     }
-    return values[is.q + r] + s;
+    return q[r] + s;
 }
 
-// un = W x + q for x = vectors[x0..x0 + n].
-fn velocity_of_stored(is: Island, x0: u32) {
-    for (var r = 0u; r < is.n; r++) {
-        un[r] = velocity_row(is, x0, r);
+// un = W x + q.
+fn velocity_of_x() {
+    for (var r = 0u; r < N; r++) { // UNROLL
+        un[r] = velocity_row(r);
     }
 }
 
 // un = W xn + q.
-fn velocity_of_trial(is: Island) {
-    for (var r = 0u; r < is.n; r++) {
+fn velocity_of_trial() {
+    for (var r = 0u; r < N; r++) { // UNROLL
         var s = Scalar(0.0);
-        let row = is.w + r * is.n;
-        for (var j = 0u; j < is.n; j++) {
-            s += values[row + j] * xn[j];
+        for (var j = 0u; j < N; j++) { // UNROLL
+            s += w[r * N + j] * xn[j];
         }
-        un[r] = values[is.q + r] + s;
+        un[r] = q[r] + s;
     }
 }
 
-fn q_squared(is: Island) -> Scalar {
+fn q_squared() -> Scalar {
     var s = Scalar(0.0);
-    for (var r = 0u; r < is.n; r++) {
-        s += values[is.q + r] * values[is.q + r];
+    for (var r = 0u; r < N; r++) { // UNROLL
+        s += q[r] * q[r];
     }
     return s;
 }
 
-// The stop measure (projected.rs stop_measure) of x with velocity u = un:
-// x = xn (trial) or vectors[x0..x0 + n].
-fn stop_measure(is: Island, x0: u32, trial: bool) -> Scalar {
+// The stop measure (projected.rs stop_measure) of x (trial: xn) with
+// velocity u = un.
+fn stop_measure(trial: bool) -> Scalar {
     var e2 = Scalar(0.0);
     var x2 = Scalar(0.0);
     var u2 = Scalar(0.0);
-    for (var i = 0u; i < is.k; i++) {
+    for (var i = 0u; i < FIXED_K; i++) { // UNROLL
         let c = 3u * i;
-        var x: vec3<Scalar>;
+        var xi: vec3<Scalar>;
         if trial {
-            x = vec3<Scalar>(xn[c], xn[c + 1u], xn[c + 2u]);
+            xi = vec3<Scalar>(xn[c], xn[c + 1u], xn[c + 2u]);
         } else {
-            x = vec3<Scalar>(vectors[x0 + c], vectors[x0 + c + 1u], vectors[x0 + c + 2u]);
+            xi = vec3<Scalar>(x[c], x[c + 1u], x[c + 2u]);
         }
         let u = vec3<Scalar>(un[c], un[c + 1u], un[c + 2u]);
-        let p = project_on_cone(x - u, values[is.mu + i]);
-        let d = x - p;
+        let p = project_on_cone(xi - u, mu[i]);
+        let d = xi - p;
         e2 += d.x * d.x;
         e2 += d.y * d.y;
         e2 += d.z * d.z;
-        x2 += x.x * x.x;
-        x2 += x.y * x.y;
-        x2 += x.z * x.z;
+        x2 += xi.x * xi.x;
+        x2 += xi.y * xi.y;
+        x2 += xi.z * xi.z;
         u2 += u.x * u.x;
         u2 += u.y * u.y;
         u2 += u.z * u.z;
     }
-    let scale = sqrt(max(max(q_squared(is), x2), u2));
+    let scale = sqrt(max(max(q_squared(), x2), u2));
     let e = sqrt(e2);
     if scale > SCALE_FLOOR {
         return e / scale;
@@ -204,76 +160,74 @@ fn stop_measure(is: Island, x0: u32, trial: bool) -> Scalar {
     return e;
 }
 
-// Every contact's reaction in vectors[x0..] projected on its cone.
-fn project_stored(is: Island, x0: u32) {
-    for (var i = 0u; i < is.k; i++) {
-        let c = x0 + 3u * i;
-        let p = project_on_cone(vec3<Scalar>(vectors[c], vectors[c + 1u], vectors[c + 2u]), values[is.mu + i]);
-        vectors[c] = p.x;
-        vectors[c + 1u] = p.y;
-        vectors[c + 2u] = p.z;
+// Every contact's reaction in x projected on its cone.
+fn project_x() {
+    for (var i = 0u; i < FIXED_K; i++) { // UNROLL
+        let c = 3u * i;
+        let p = project_on_cone(vec3<Scalar>(x[c], x[c + 1u], x[c + 2u]), mu[i]);
+        x[c] = p.x;
+        x[c + 1u] = p.y;
+        x[c + 2u] = p.z;
     }
 }
 
 // One unit of loop work per inner iteration of W x.
-fn product_cost(is: Island) -> u32 {
-    return is.n * is.n + is.n;
+fn product_cost() -> u32 {
+    return N * N + N;
 }
 
 // Saves the state; a running island counts itself in unfinished[k]. (k is
-// passed in: indexing with min(islands[index].k, 16u) here counted every
-// island in unfinished[0] on lavapipe, measured.)
-fn finish_round(index: u32, k: u32, st: FrictionState) {
+// the constant: indexing with min(islands[index].k, 16u) here counted
+// every island in unfinished[0] on lavapipe, measured.)
+fn finish_round(index: u32, st: FrictionState) {
     states[index] = st;
     if st.status == RUNNING {
-        atomicAdd(&unfinished[k], 1u);
+        atomicAdd(&unfinished[FIXED_K], 1u);
     }
 }
 
-// The sweeps' steps (projected.rs contact_steps) into vectors[v + n..v + n + k].
-fn contact_steps(is: Island, gauss_seidel: bool) {
-    for (var i = 0u; i < is.k; i++) {
-        var lo = 0u;
-        var hi = is.n;
-        if gauss_seidel {
-            lo = 3u * i;
-            hi = 3u * i + 3u;
-        }
+// The sweeps' steps (projected.rs contact_steps) into eta: the sums run
+// over every column and skip those outside the contact's block for
+// Gauss-Seidel (the same additions in the same order as the twin's
+// loop over the block, with constant bounds for the unrolling).
+fn contact_steps(gauss_seidel: bool) {
+    for (var i = 0u; i < FIXED_K; i++) { // UNROLL
         var big = Scalar(0.0);
-        for (var r = 3u * i; r < 3u * i + 3u; r++) {
+        for (var r = 3u * i; r < 3u * i + 3u; r++) { // UNROLL
             var s = Scalar(0.0);
-            for (var j = lo; j < hi; j++) {
-                s += abs(values[is.w + r * is.n + j]);
+            for (var j = 0u; j < N; j++) { // UNROLL
+                if !gauss_seidel || (j >= 3u * i && j < 3u * i + 3u) {
+                    s += abs(w[r * N + j]);
+                }
             }
             big = max(big, s);
         }
-        var eta = Scalar(1.0);
+        var e = Scalar(1.0);
         if big > Scalar(0.0) {
-            eta = Scalar(1.0) / big;
+            e = Scalar(1.0) / big;
         }
-        vectors[is.v + is.n + i] = eta;
+        eta[i] = e;
     }
 }
 
 // One sweep over the contacts from u = un (Gauss-Seidel: each contact's
 // velocity recomputed from the reactions updated so far).
-fn sweep(is: Island, gauss_seidel: bool) {
-    for (var i = 0u; i < is.k; i++) {
+fn sweep(gauss_seidel: bool) {
+    for (var i = 0u; i < FIXED_K; i++) { // UNROLL
         let c = 3u * i;
         if gauss_seidel {
-            for (var r = c; r < c + 3u; r++) {
-                un[r] = velocity_row(is, is.v, r);
+            for (var r = 3u * i; r < 3u * i + 3u; r++) { // UNROLL
+                un[r] = velocity_row(r);
             }
         }
-        let h = controls.relaxation * vectors[is.v + is.n + i];
-        let x = vec3<Scalar>(vectors[is.v + c], vectors[is.v + c + 1u], vectors[is.v + c + 2u]);
+        let h = controls.relaxation * eta[i];
         let p = project_on_cone(
-            vec3<Scalar>(x.x - h * un[c], x.y - h * un[c + 1u], x.z - h * un[c + 2u]),
-            values[is.mu + i]
+            vec3<Scalar>(x[c] - h * un[c], x[c + 1u] - h * un[c + 1u], x[c + 2u] - h * un[c + 2u]),
+            mu[i]
         );
-        vectors[is.v + c] = p.x;
-        vectors[is.v + c + 1u] = p.y;
-        vectors[is.v + c + 2u] = p.z;
+        x[c] = p.x;
+        x[c + 1u] = p.y;
+        x[c + 2u] = p.z;
     }
 }
 
@@ -282,32 +236,39 @@ fn sweeps(@builtin(global_invocation_id) gid: vec3<u32>) {
     if gid.x >= params.count {
         return;
     }
-    let index = params.first + gid.x;
+    let rec = islands[params.first + gid.x];
+    let index = rec.slot;
     var st = states[index];
     if st.status > RUNNING {
         return;
     }
-    let is = island_at(index);
+    let v = load_island(rec, 1u);
     let gauss_seidel = (params.flags & 1u) == 1u;
-    var spent = 0u;
+    var spent = NN + 4u * N;
     if st.status == NOT_STARTED {
-        project_stored(is, is.v);
-        contact_steps(is, gauss_seidel);
+        project_x();
+        contact_steps(gauss_seidel);
         st.status = RUNNING;
-        spent += product_cost(is);
+        spent += product_cost();
+    } else {
+        for (var i = 0u; i < FIXED_K; i++) { // UNROLL
+            eta[i] = vectors[v + N + i];
+        }
     }
-    var cost = product_cost(is) + 6u * is.n;
+    var cost = product_cost() + 6u * N;
     if gauss_seidel {
-        cost += product_cost(is);
+        cost += product_cost();
     }
+    var err = Scalar(0.0);
+    var tried = false;
     loop {
-        if spent > 0u && spent + cost > params.budget {
+        if tried && spent + cost > params.budget {
             break;
         }
+        tried = true;
         spent += cost;
-        velocity_of_stored(is, is.v);
-        let err = stop_measure(is, is.v, false);
-        scalars[4u * index + 3u] = err;
+        velocity_of_x();
+        err = stop_measure(false);
         if !finite(err) {
             st.status = FAILED;
             break;
@@ -320,50 +281,47 @@ fn sweeps(@builtin(global_invocation_id) gid: vec3<u32>) {
             st.status = AT_CAP;
             break;
         }
-        sweep(is, gauss_seidel);
+        sweep(gauss_seidel);
         st.iterations++;
     }
-    finish_round(index, is.k, st);
+    scalars[4u * index + 3u] = err;
+    for (var r = 0u; r < N; r++) { // UNROLL
+        vectors[v + r] = x[r];
+    }
+    for (var i = 0u; i < FIXED_K; i++) { // UNROLL
+        vectors[v + N + i] = eta[i];
+    }
+    finish_round(index, st);
 }
 
-// APGD's start (apgd.rs apgd): x projected, u(x), its error, y = x,
-// u(y) = u(x), best = x, theta = 1, L from first_lipschitz.
-fn apgd_start(is: Island, index: u32) -> bool {
-    project_stored(is, is.v);
-    velocity_of_stored(is, is.v);
-    let err = stop_measure(is, is.v, false);
-    for (var r = 0u; r < is.n; r++) {
-        let x = vectors[is.v + r];
-        vectors[is.v + is.n + r] = un[r];
-        vectors[is.v + 2u * is.n + r] = x;
-        vectors[is.v + 3u * is.n + r] = un[r];
-        vectors[is.v + 4u * is.n + r] = x;
+// Writes APGD's vectors back to `vectors` from v.
+fn store_apgd(v: u32) {
+    for (var r = 0u; r < N; r++) { // UNROLL
+        vectors[v + r] = x[r];
+        vectors[v + N + r] = ux[r];
+        vectors[v + 2u * N + r] = y[r];
+        vectors[v + 3u * N + r] = uy[r];
+        vectors[v + 4u * N + r] = best[r];
     }
-    let s = 4u * index;
-    scalars[s] = Scalar(1.0);
-    scalars[s + 1u] = first_lipschitz(is);
-    scalars[s + 2u] = err;
-    scalars[s + 3u] = err;
-    return finite(err);
 }
 
 // ||W e|| / ||e|| for e = (1, ..., 1), else the largest |W_rr|, else 1.
-fn first_lipschitz(is: Island) -> Scalar {
+fn first_lipschitz() -> Scalar {
     var s2 = Scalar(0.0);
-    for (var r = 0u; r < is.n; r++) {
+    for (var r = 0u; r < N; r++) { // UNROLL
         var s = Scalar(0.0);
-        for (var j = 0u; j < is.n; j++) {
-            s += values[is.w + r * is.n + j];
+        for (var j = 0u; j < N; j++) { // UNROLL
+            s += w[r * N + j];
         }
         s2 += s * s;
     }
-    let l = sqrt(s2 / Scalar(is.n));
+    let l = sqrt(s2 / Scalar(N));
     if l > Scalar(0.0) && finite(l) {
         return l;
     }
     var d = Scalar(0.0);
-    for (var r = 0u; r < is.n; r++) {
-        d = max(d, abs(values[is.w + r * is.n + r]));
+    for (var r = 0u; r < N; r++) { // UNROLL
+        d = max(d, abs(w[r * N + r]));
     }
     if d > Scalar(0.0) && finite(d) {
         return d;
@@ -373,88 +331,102 @@ fn first_lipschitz(is: Island) -> Scalar {
 
 // One backtracking try from y with step 1/L: xn = P_K(y - u(y) / L),
 // un = u(xn); true when d^T W d <= L |d|^2, d = xn - y.
-fn apgd_try(is: Island, lipschitz: Scalar) -> bool {
-    let y0 = is.v + 2u * is.n;
-    let uy0 = is.v + 3u * is.n;
+fn apgd_try(lipschitz: Scalar) -> bool {
     let t = Scalar(1.0) / lipschitz;
-    for (var i = 0u; i < is.k; i++) {
+    for (var i = 0u; i < FIXED_K; i++) { // UNROLL
         let c = 3u * i;
         let p = project_on_cone(
-            vec3<Scalar>(
-                vectors[y0 + c] - t * vectors[uy0 + c],
-                vectors[y0 + c + 1u] - t * vectors[uy0 + c + 1u],
-                vectors[y0 + c + 2u] - t * vectors[uy0 + c + 2u]
-            ),
-            values[is.mu + i]
+            vec3<Scalar>(y[c] - t * uy[c], y[c + 1u] - t * uy[c + 1u], y[c + 2u] - t * uy[c + 2u]),
+            mu[i]
         );
         xn[c] = p.x;
         xn[c + 1u] = p.y;
         xn[c + 2u] = p.z;
     }
-    velocity_of_trial(is);
+    velocity_of_trial();
     var curvature = Scalar(0.0);
     var d2 = Scalar(0.0);
     var g2 = Scalar(0.0);
-    for (var r = 0u; r < is.n; r++) {
-        let d = xn[r] - vectors[y0 + r];
-        curvature += d * (un[r] - vectors[uy0 + r]);
+    for (var r = 0u; r < N; r++) { // UNROLL
+        let d = xn[r] - y[r];
+        curvature += d * (un[r] - uy[r]);
         d2 += d * d;
-        g2 += vectors[uy0 + r] * vectors[uy0 + r];
+        g2 += uy[r] * uy[r];
     }
     // Or a step that rounding decides (apgd.rs accept_step).
     let noise = Scalar(16.0) * SCALAR_EPSILON;
     return curvature <= lipschitz * d2 || lipschitz * lipschitz * d2 <= noise * noise * g2;
 }
 
+// APGD's scalars of one island: theta, L, best error, last error.
+struct ApgdScalars {
+    theta: Scalar,
+    lipschitz: Scalar,
+    best: Scalar,
+    last: Scalar,
+}
+
 // After an accepted try: the best iterate, the momentum, the gradient
 // restart, x = xn (apgd.rs apgd_iteration); counts the iteration and a
 // restart in st, or writes FAILED into it.
-fn apgd_accept(is: Island, index: u32, st: ptr<function, FrictionState>) {
-    let s = 4u * index;
-    let err = stop_measure(is, 0u, true);
-    scalars[s + 3u] = err;
+fn apgd_accept(a: ptr<function, ApgdScalars>, st: ptr<function, FrictionState>) {
+    let err = stop_measure(true);
+    (*a).last = err;
     if !finite(err) {
         (*st).status = FAILED;
         return;
     }
-    if err < scalars[s + 2u] {
-        scalars[s + 2u] = err;
-        for (var r = 0u; r < is.n; r++) {
-            vectors[is.v + 4u * is.n + r] = xn[r];
+    if err < (*a).best {
+        (*a).best = err;
+        for (var r = 0u; r < N; r++) { // UNROLL
+            best[r] = xn[r];
         }
     }
-    let th = scalars[s];
+    let th = (*a).theta;
     let th_new = Scalar(0.5) * (th * sqrt(th * th + Scalar(4.0)) - th * th);
     let beta = th * (Scalar(1.0) - th) / (th * th + th_new);
-    let x0 = is.v;
-    let ux0 = is.v + is.n;
-    let y0 = is.v + 2u * is.n;
-    let uy0 = is.v + 3u * is.n;
     var g_dot = Scalar(0.0);
-    for (var r = 0u; r < is.n; r++) {
-        g_dot += vectors[uy0 + r] * (xn[r] - vectors[x0 + r]);
+    for (var r = 0u; r < N; r++) { // UNROLL
+        g_dot += uy[r] * (xn[r] - x[r]);
     }
     let restart = g_dot > Scalar(0.0);
-    for (var r = 0u; r < is.n; r++) {
+    for (var r = 0u; r < N; r++) { // UNROLL
         if restart {
-            vectors[y0 + r] = xn[r];
-            vectors[uy0 + r] = un[r];
+            y[r] = xn[r];
+            uy[r] = un[r];
         } else {
-            vectors[y0 + r] = xn[r] + beta * (xn[r] - vectors[x0 + r]);
-            vectors[uy0 + r] = un[r] + beta * (un[r] - vectors[ux0 + r]);
+            y[r] = xn[r] + beta * (xn[r] - x[r]);
+            uy[r] = un[r] + beta * (un[r] - ux[r]);
         }
-        vectors[x0 + r] = xn[r];
-        vectors[ux0 + r] = un[r];
+        x[r] = xn[r];
+        ux[r] = un[r];
     }
     if restart {
-        scalars[s] = Scalar(1.0);
+        (*a).theta = Scalar(1.0);
         (*st).restarts++;
     } else {
-        scalars[s] = th_new;
+        (*a).theta = th_new;
     }
-    scalars[s + 1u] = scalars[s + 1u] * Scalar(0.9);
+    (*a).lipschitz = (*a).lipschitz * Scalar(0.9);
     (*st).iterations++;
     (*st).doublings = 0u;
+}
+
+// APGD's start (apgd.rs apgd): x projected, u(x), its error, y = x,
+// u(y) = u(x), best = x, theta = 1, L from first_lipschitz; false when the
+// error is not finite.
+fn apgd_start(a: ptr<function, ApgdScalars>) -> bool {
+    project_x();
+    velocity_of_x();
+    let err = stop_measure(false);
+    for (var r = 0u; r < N; r++) { // UNROLL
+        ux[r] = un[r];
+        y[r] = x[r];
+        uy[r] = un[r];
+        best[r] = x[r];
+    }
+    *a = ApgdScalars(Scalar(1.0), first_lipschitz(), err, err);
+    return finite(err);
 }
 
 @compute @workgroup_size(64)
@@ -462,27 +434,34 @@ fn apgd(@builtin(global_invocation_id) gid: vec3<u32>) {
     if gid.x >= params.count {
         return;
     }
-    let index = params.first + gid.x;
+    let rec = islands[params.first + gid.x];
+    let index = rec.slot;
     var st = states[index];
     if st.status > RUNNING {
         return;
     }
-    let is = island_at(index);
     let s = 4u * index;
-    var spent = 0u;
+    var spent = NN + 6u * N;
+    var a: ApgdScalars;
+    var v: u32;
     if st.status == NOT_STARTED {
+        v = load_island(rec, 1u);
         st.status = RUNNING;
-        if !apgd_start(is, index) {
+        if !apgd_start(&a) {
             st.status = FAILED;
         }
-        spent += 2u * product_cost(is) + 8u * is.n;
+        spent += 2u * product_cost() + 8u * N;
+    } else {
+        v = load_island(rec, 5u);
+        a = ApgdScalars(scalars[s], scalars[s + 1u], scalars[s + 2u], scalars[s + 3u]);
     }
-    let cost = product_cost(is) + 10u * is.n;
+    let cost = product_cost() + 10u * N;
+    var tried = false;
     loop {
         if st.status != RUNNING {
             break;
         }
-        if scalars[s + 2u] <= controls.tolerance {
+        if a.best <= controls.tolerance {
             st.status = CONVERGED;
             break;
         }
@@ -490,21 +469,27 @@ fn apgd(@builtin(global_invocation_id) gid: vec3<u32>) {
             st.status = AT_CAP;
             break;
         }
-        if spent > 0u && spent + cost > params.budget {
+        if tried && spent + cost > params.budget {
             break;
         }
+        tried = true;
         spent += cost;
-        let lipschitz = scalars[s + 1u];
-        if apgd_try(is, lipschitz) {
-            apgd_accept(is, index, &st);
+        let lipschitz = a.lipschitz;
+        if apgd_try(lipschitz) {
+            apgd_accept(&a, &st);
         } else {
             let doubled = Scalar(2.0) * lipschitz;
-            scalars[s + 1u] = doubled;
+            a.lipschitz = doubled;
             st.doublings++;
             if st.doublings >= MAX_BACKTRACKS || !finite(doubled) {
                 st.status = FAILED;
             }
         }
     }
-    finish_round(index, is.k, st);
+    scalars[s] = a.theta;
+    scalars[s + 1u] = a.lipschitz;
+    scalars[s + 2u] = a.best;
+    scalars[s + 3u] = a.last;
+    store_apgd(v);
+    finish_round(index, st);
 }

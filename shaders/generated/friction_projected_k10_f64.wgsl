@@ -1,36 +1,12 @@
-// GENERATED from shaders/friction_projected.wgsl by src/gpu/shaders/compose.rs: do not edit.
+// GENERATED from shaders/friction_common.wgsl + shaders/friction_projected_global.wgsl by src/gpu/shaders/compose.rs: do not edit.
 // Regenerate: LCPBATCH_BLESS_SHADERS=1 cargo test --release generated_shaders_are_committed
 
-// Cone projection iterations for the cone complementarity problem of
-// Anitescu-Tasora, one invocation per island of exactly FIXED_K <= 16
-// contacts (one dispatch per k).
-// CPU twin: src/friction/projected.rs (sweeps, the stop measure, the steps)
-// and src/friction/apgd.rs (APGD), the same arithmetic in the same order;
-// read their docs for the methods. Entry points:
-//   sweeps: projected Jacobi (params.flags bit 0 clear) or Gauss-Seidel
-//           (bit 0 set) sweeps over contacts;
-//   apgd:   accelerated projected gradient descent with backtracking on the
-//           Lipschitz estimate, gradient restarts and the best iterate.
-//
-// Interleaved per contact: entries 3i (normal), 3i + 1, 3i + 2 (tangents).
-// An island's W (3k x 3k, row-major), q (3k) and mu (k) lie in `values`
-// from island.data; its vectors in `vectors` from island.vectors:
-//   sweeps: x (3k), then the contacts' steps eta (k);
-//   apgd:   x, u(x), y, u(y), best (3k each).
-// `scalars` holds 4 per island: theta, L, best error, last error.
-//
-// Rounds: llvmpipe (lavapipe) ends every loop of an invocation after about
-// 65,535 iterations in all, silently. An invocation therefore spends at most
-// params.budget units of loop work per dispatch (one unit per inner loop
-// iteration: a product W x costs 9k^2 + 3k), keeps its state in the buffers
-// and counts itself in `unfinished[k]` while it runs; the host dispatches
-// rounds until no island is unfinished. A round may end between two
-// backtracking tries of APGD: the next one retries with the L it saved,
-// which is what the CPU twin's loop does next.
-//
-// The generator (src/gpu/shaders/compose.rs) replaces the lines marked HOST
-// (scalar type, its largest finite value, its machine epsilon, the
-// island size k).
+// The part of the friction kernels common to both sources (prepended to
+// shaders/friction_projected.wgsl for k <= 4 and to
+// shaders/friction_projected_global.wgsl for k > 4 by
+// src/gpu/shaders/compose.rs): the HOST lines, the constants, the records,
+// the bindings, the finiteness test and the cone projection. Read the two
+// sources' headers for the layout and the rounds.
 
 alias Scalar = f64; // HOST scalar
 const SCALAR_MAX: Scalar = 1.7976931348623157e308; // HOST scalar_max
@@ -61,11 +37,14 @@ struct Params {
     flags: u32,
 }
 
+// slot: the island's entry in `states` and `scalars`; the table holds
+// only the islands still running (the host compacts it between
+// submissions), so entry and slot differ.
 struct FrictionIsland {
     k: u32,
     data: u32,
     vectors: u32,
-    _pad: u32,
+    slot: u32,
 }
 
 struct FrictionState {
@@ -96,6 +75,64 @@ struct Controls {
 @group(0) @binding(6) var<storage, read_write> unfinished: array<atomic<u32>, 17>;
 @group(0) @binding(7) var<uniform> controls: Controls;
 
+fn finite(v: Scalar) -> bool {
+    return v == v && abs(v) <= SCALAR_MAX;
+}
+
+// Siconos' fc3d projection on {|x_t| <= mu x_n} (cone.rs project_on_cone).
+fn project_on_cone(v: vec3<Scalar>, m: Scalar) -> vec3<Scalar> {
+    let t = sqrt(v.y * v.y + v.z * v.z);
+    if m * t <= -v.x {
+        return vec3<Scalar>(Scalar(0.0));
+    }
+    if t <= m * v.x {
+        return v;
+    }
+    let pn = (m * t + v.x) / (m * m + Scalar(1.0));
+    let scale = m * pn / t;
+    return vec3<Scalar>(pn, v.y * scale, v.z * scale);
+}
+
+// Cone projection iterations for the cone complementarity problem of
+// Anitescu-Tasora, one invocation per island of exactly FIXED_K <= 16
+// contacts (one dispatch per k): the kernels for k > 4, which read W and
+// the vectors in the storage buffers at every use. The kernels for k <= 4
+// come from friction_projected.wgsl (private copies, unrolled loops); a
+// private W of 9k^2 entries at run-time indices made lavapipe's k = 16
+// kernel run for minutes on 50 islands, measured. Same bindings, same
+// arithmetic in the same order.
+// CPU twin: src/friction/projected.rs (sweeps, the stop measure, the steps)
+// and src/friction/apgd.rs (APGD), the same arithmetic in the same order;
+// read their docs for the methods. Entry points:
+//   sweeps: projected Jacobi (params.flags bit 0 clear) or Gauss-Seidel
+//           (bit 0 set) sweeps over contacts;
+//   apgd:   accelerated projected gradient descent with backtracking on the
+//           Lipschitz estimate, gradient restarts and the best iterate.
+//
+// Interleaved per contact: entries 3i (normal), 3i + 1, 3i + 2 (tangents).
+// An island's W (3k x 3k, row-major), q (3k) and mu (k) lie in `values`
+// from island.data; its vectors in `vectors` from island.vectors:
+//   sweeps: x (3k), then the contacts' steps eta (k);
+//   apgd:   x, u(x), y, u(y), best (3k each).
+// `scalars` holds 4 per island: theta, L, best error, last error.
+//
+// Rounds: llvmpipe (lavapipe) ends every loop of an invocation after about
+// 65,535 iterations in all, silently. An invocation therefore spends at most
+// params.budget units of loop work per dispatch (one unit per inner loop
+// iteration: a product W x costs 9k^2 + 3k), keeps its state in the buffers
+// and counts itself in `unfinished[k]` while it runs; the host reads the
+// states back after each submission and dispatches only the islands still
+// running (a compacted `islands` table) until none is. A round may end between two
+// backtracking tries of APGD: the next one retries with the L it saved,
+// which is what the CPU twin's loop does next.
+//
+// The generator (src/gpu/shaders/compose.rs) replaces the lines marked HOST
+// (scalar type, its largest finite value, its machine epsilon, the
+// island size k).
+
+// Prepended by the generator: shaders/friction_common.wgsl (HOST lines,
+// constants, records, bindings, finite, project_on_cone).
+
 // APGD's trial iterate and its velocity; the sweeps' velocity u in `un`.
 var<private> xn: array<Scalar, MAX_DIM>;
 var<private> un: array<Scalar, MAX_DIM>;
@@ -110,29 +147,10 @@ struct Island {
     v: u32,
 }
 
-fn island_at(index: u32) -> Island {
-    let rec = islands[index];
+fn island_at(rec: FrictionIsland) -> Island {
     let k = FIXED_K;
     let n = 3u * k;
     return Island(n, k, rec.data, rec.data + n * n, rec.data + n * n + n, rec.vectors);
-}
-
-fn finite(x: Scalar) -> bool {
-    return x == x && abs(x) <= SCALAR_MAX;
-}
-
-// Siconos' fc3d projection on {|x_t| <= mu x_n} (cone.rs project_on_cone).
-fn project_on_cone(x: vec3<Scalar>, mu: Scalar) -> vec3<Scalar> {
-    let t = sqrt(x.y * x.y + x.z * x.z);
-    if mu * t <= -x.x {
-        return vec3<Scalar>(Scalar(0.0));
-    }
-    if t <= mu * x.x {
-        return x;
-    }
-    let pn = (mu * t + x.x) / (mu * mu + Scalar(1.0));
-    let scale = mu * pn / t;
-    return vec3<Scalar>(pn, x.y * scale, x.z * scale);
 }
 
 // Row r of W x + q with x = vectors[x0..x0 + n]: s = sum_j W_rj x_j, then q_r + s.
@@ -285,12 +303,13 @@ fn sweeps(@builtin(global_invocation_id) gid: vec3<u32>) {
     if gid.x >= params.count {
         return;
     }
-    let index = params.first + gid.x;
+    let rec = islands[params.first + gid.x];
+    let index = rec.slot;
     var st = states[index];
     if st.status > RUNNING {
         return;
     }
-    let is = island_at(index);
+    let is = island_at(rec);
     let gauss_seidel = (params.flags & 1u) == 1u;
     var spent = 0u;
     if st.status == NOT_STARTED {
@@ -465,12 +484,13 @@ fn apgd(@builtin(global_invocation_id) gid: vec3<u32>) {
     if gid.x >= params.count {
         return;
     }
-    let index = params.first + gid.x;
+    let rec = islands[params.first + gid.x];
+    let index = rec.slot;
     var st = states[index];
     if st.status > RUNNING {
         return;
     }
-    let is = island_at(index);
+    let is = island_at(rec);
     let s = 4u * index;
     var spent = 0u;
     if st.status == NOT_STARTED {

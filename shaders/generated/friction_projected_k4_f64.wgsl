@@ -1,36 +1,12 @@
-// GENERATED from shaders/friction_projected.wgsl by src/gpu/shaders/compose.rs: do not edit.
+// GENERATED from shaders/friction_common.wgsl + shaders/friction_projected.wgsl by src/gpu/shaders/compose.rs: do not edit.
 // Regenerate: LCPBATCH_BLESS_SHADERS=1 cargo test --release generated_shaders_are_committed
 
-// Cone projection iterations for the cone complementarity problem of
-// Anitescu-Tasora, one invocation per island of exactly FIXED_K <= 16
-// contacts (one dispatch per k).
-// CPU twin: src/friction/projected.rs (sweeps, the stop measure, the steps)
-// and src/friction/apgd.rs (APGD), the same arithmetic in the same order;
-// read their docs for the methods. Entry points:
-//   sweeps: projected Jacobi (params.flags bit 0 clear) or Gauss-Seidel
-//           (bit 0 set) sweeps over contacts;
-//   apgd:   accelerated projected gradient descent with backtracking on the
-//           Lipschitz estimate, gradient restarts and the best iterate.
-//
-// Interleaved per contact: entries 3i (normal), 3i + 1, 3i + 2 (tangents).
-// An island's W (3k x 3k, row-major), q (3k) and mu (k) lie in `values`
-// from island.data; its vectors in `vectors` from island.vectors:
-//   sweeps: x (3k), then the contacts' steps eta (k);
-//   apgd:   x, u(x), y, u(y), best (3k each).
-// `scalars` holds 4 per island: theta, L, best error, last error.
-//
-// Rounds: llvmpipe (lavapipe) ends every loop of an invocation after about
-// 65,535 iterations in all, silently. An invocation therefore spends at most
-// params.budget units of loop work per dispatch (one unit per inner loop
-// iteration: a product W x costs 9k^2 + 3k), keeps its state in the buffers
-// and counts itself in `unfinished[k]` while it runs; the host dispatches
-// rounds until no island is unfinished. A round may end between two
-// backtracking tries of APGD: the next one retries with the L it saved,
-// which is what the CPU twin's loop does next.
-//
-// The generator (src/gpu/shaders/compose.rs) replaces the lines marked HOST
-// (scalar type, its largest finite value, its machine epsilon, the
-// island size k).
+// The part of the friction kernels common to both sources (prepended to
+// shaders/friction_projected.wgsl for k <= 4 and to
+// shaders/friction_projected_global.wgsl for k > 4 by
+// src/gpu/shaders/compose.rs): the HOST lines, the constants, the records,
+// the bindings, the finiteness test and the cone projection. Read the two
+// sources' headers for the layout and the rounds.
 
 alias Scalar = f64; // HOST scalar
 const SCALAR_MAX: Scalar = 1.7976931348623157e308; // HOST scalar_max
@@ -61,11 +37,14 @@ struct Params {
     flags: u32,
 }
 
+// slot: the island's entry in `states` and `scalars`; the table holds
+// only the islands still running (the host compacts it between
+// submissions), so entry and slot differ.
 struct FrictionIsland {
     k: u32,
     data: u32,
     vectors: u32,
-    _pad: u32,
+    slot: u32,
 }
 
 struct FrictionState {
@@ -96,110 +75,1786 @@ struct Controls {
 @group(0) @binding(6) var<storage, read_write> unfinished: array<atomic<u32>, 17>;
 @group(0) @binding(7) var<uniform> controls: Controls;
 
-// APGD's trial iterate and its velocity; the sweeps' velocity u in `un`.
-var<private> xn: array<Scalar, MAX_DIM>;
-var<private> un: array<Scalar, MAX_DIM>;
-
-// Where one island's data lie.
-struct Island {
-    n: u32,
-    k: u32,
-    w: u32,
-    q: u32,
-    mu: u32,
-    v: u32,
-}
-
-fn island_at(index: u32) -> Island {
-    let rec = islands[index];
-    let k = FIXED_K;
-    let n = 3u * k;
-    return Island(n, k, rec.data, rec.data + n * n, rec.data + n * n + n, rec.vectors);
-}
-
-fn finite(x: Scalar) -> bool {
-    return x == x && abs(x) <= SCALAR_MAX;
+fn finite(v: Scalar) -> bool {
+    return v == v && abs(v) <= SCALAR_MAX;
 }
 
 // Siconos' fc3d projection on {|x_t| <= mu x_n} (cone.rs project_on_cone).
-fn project_on_cone(x: vec3<Scalar>, mu: Scalar) -> vec3<Scalar> {
-    let t = sqrt(x.y * x.y + x.z * x.z);
-    if mu * t <= -x.x {
+fn project_on_cone(v: vec3<Scalar>, m: Scalar) -> vec3<Scalar> {
+    let t = sqrt(v.y * v.y + v.z * v.z);
+    if m * t <= -v.x {
         return vec3<Scalar>(Scalar(0.0));
     }
-    if t <= mu * x.x {
-        return x;
+    if t <= m * v.x {
+        return v;
     }
-    let pn = (mu * t + x.x) / (mu * mu + Scalar(1.0));
-    let scale = mu * pn / t;
-    return vec3<Scalar>(pn, x.y * scale, x.z * scale);
+    let pn = (m * t + v.x) / (m * m + Scalar(1.0));
+    let scale = m * pn / t;
+    return vec3<Scalar>(pn, v.y * scale, v.z * scale);
 }
 
-// Row r of W x + q with x = vectors[x0..x0 + n]: s = sum_j W_rj x_j, then q_r + s.
-fn velocity_row(is: Island, x0: u32, r: u32) -> Scalar {
+// Cone projection iterations for the cone complementarity problem of
+// Anitescu-Tasora, one invocation per island of exactly FIXED_K <= 16
+// contacts (one dispatch per k).
+// CPU twin: src/friction/projected.rs (sweeps, the stop measure, the steps)
+// and src/friction/apgd.rs (APGD), the same arithmetic in the same order;
+// read their docs for the methods. Entry points:
+//   sweeps: projected Jacobi (params.flags bit 0 clear) or Gauss-Seidel
+//           (bit 0 set) sweeps over contacts;
+//   apgd:   accelerated projected gradient descent with backtracking on the
+//           Lipschitz estimate, gradient restarts and the best iterate.
+//
+// Interleaved per contact: entries 3i (normal), 3i + 1, 3i + 2 (tangents).
+// An island's W (3k x 3k, row-major), q (3k) and mu (k) lie in `values`
+// from island.data; its vectors in `vectors` from island.vectors:
+//   sweeps: x (3k), then the contacts' steps eta (k);
+//   apgd:   x, u(x), y, u(y), best (3k each).
+// `scalars` holds 4 per island: theta, L, best error, last error.
+//
+// Loops marked UNROLL are unrolled by the generator for k <= 4 (every
+// index into a private array a constant: see src/gpu/shaders/unroll_loops.rs).
+//
+// Private state: a dispatch copies its island's W, q, mu and vectors from
+// the buffers into private arrays once, iterates on those, and writes the
+// vectors back at the end of its round. llvmpipe turns every storage-buffer
+// access at a per-island address into a loop over the SIMD lanes; private
+// arrays indexed by the (constant-bound) loop counters are plain vector
+// registers or stack slots. Measured 2026-11-25 (BENCHMARKS.md).
+//
+// Rounds: llvmpipe (lavapipe) ends every loop of an invocation after about
+// 65,535 iterations in all, silently. An invocation therefore spends at most
+// params.budget units of loop work per dispatch (one unit per inner loop
+// iteration: a product W x costs 9k^2 + 3k), keeps its state in the buffers
+// and counts itself in `unfinished[k]` while it runs; the host reads the
+// states back after each submission and dispatches only the islands still
+// running (a compacted `islands` table) until none is. A round may end between two
+// backtracking tries of APGD: the next one retries with the L it saved,
+// which is what the CPU twin's loop does next.
+//
+// The generator (src/gpu/shaders/compose.rs) replaces the lines marked HOST
+// (scalar type, its largest finite value, its machine epsilon, the
+// island size k).
+
+// Prepended by the generator: shaders/friction_common.wgsl (HOST lines,
+// constants, records, bindings, finite, project_on_cone).
+
+// Entries of an island: N = 3k; W has N * N.
+const N: u32 = 3u * FIXED_K;
+const NN: u32 = N * N;
+
+// The island's data and vectors, private to the invocation (see the top).
+var<private> w: array<Scalar, NN>;
+var<private> q: array<Scalar, N>;
+var<private> mu: array<Scalar, FIXED_K>;
+// Sweeps: x and the steps eta; APGD: x, u(x), y, u(y), best.
+var<private> x: array<Scalar, N>;
+var<private> ux: array<Scalar, N>;
+var<private> y: array<Scalar, N>;
+var<private> uy: array<Scalar, N>;
+var<private> best: array<Scalar, N>;
+var<private> eta: array<Scalar, FIXED_K>;
+// APGD's trial iterate and its velocity; the sweeps' velocity u in `un`.
+var<private> xn: array<Scalar, N>;
+var<private> un: array<Scalar, N>;
+
+// Copies island `rec`'s W, q, mu and its first `vectors` vectors of N
+// (x, u(x), y, u(y), best in that order) into the private arrays; returns
+// where its vectors lie in `vectors`.
+fn load_island(rec: FrictionIsland, vectors_used: u32) -> u32 {
+{
+
+        w[0u] = values[rec.data + 0u];
+    }
+{
+
+        w[1u] = values[rec.data + 1u];
+    }
+{
+
+        w[2u] = values[rec.data + 2u];
+    }
+{
+
+        w[3u] = values[rec.data + 3u];
+    }
+{
+
+        w[4u] = values[rec.data + 4u];
+    }
+{
+
+        w[5u] = values[rec.data + 5u];
+    }
+{
+
+        w[6u] = values[rec.data + 6u];
+    }
+{
+
+        w[7u] = values[rec.data + 7u];
+    }
+{
+
+        w[8u] = values[rec.data + 8u];
+    }
+{
+
+        w[9u] = values[rec.data + 9u];
+    }
+{
+
+        w[10u] = values[rec.data + 10u];
+    }
+{
+
+        w[11u] = values[rec.data + 11u];
+    }
+{
+
+        w[12u] = values[rec.data + 12u];
+    }
+{
+
+        w[13u] = values[rec.data + 13u];
+    }
+{
+
+        w[14u] = values[rec.data + 14u];
+    }
+{
+
+        w[15u] = values[rec.data + 15u];
+    }
+{
+
+        w[16u] = values[rec.data + 16u];
+    }
+{
+
+        w[17u] = values[rec.data + 17u];
+    }
+{
+
+        w[18u] = values[rec.data + 18u];
+    }
+{
+
+        w[19u] = values[rec.data + 19u];
+    }
+{
+
+        w[20u] = values[rec.data + 20u];
+    }
+{
+
+        w[21u] = values[rec.data + 21u];
+    }
+{
+
+        w[22u] = values[rec.data + 22u];
+    }
+{
+
+        w[23u] = values[rec.data + 23u];
+    }
+{
+
+        w[24u] = values[rec.data + 24u];
+    }
+{
+
+        w[25u] = values[rec.data + 25u];
+    }
+{
+
+        w[26u] = values[rec.data + 26u];
+    }
+{
+
+        w[27u] = values[rec.data + 27u];
+    }
+{
+
+        w[28u] = values[rec.data + 28u];
+    }
+{
+
+        w[29u] = values[rec.data + 29u];
+    }
+{
+
+        w[30u] = values[rec.data + 30u];
+    }
+{
+
+        w[31u] = values[rec.data + 31u];
+    }
+{
+
+        w[32u] = values[rec.data + 32u];
+    }
+{
+
+        w[33u] = values[rec.data + 33u];
+    }
+{
+
+        w[34u] = values[rec.data + 34u];
+    }
+{
+
+        w[35u] = values[rec.data + 35u];
+    }
+{
+
+        w[36u] = values[rec.data + 36u];
+    }
+{
+
+        w[37u] = values[rec.data + 37u];
+    }
+{
+
+        w[38u] = values[rec.data + 38u];
+    }
+{
+
+        w[39u] = values[rec.data + 39u];
+    }
+{
+
+        w[40u] = values[rec.data + 40u];
+    }
+{
+
+        w[41u] = values[rec.data + 41u];
+    }
+{
+
+        w[42u] = values[rec.data + 42u];
+    }
+{
+
+        w[43u] = values[rec.data + 43u];
+    }
+{
+
+        w[44u] = values[rec.data + 44u];
+    }
+{
+
+        w[45u] = values[rec.data + 45u];
+    }
+{
+
+        w[46u] = values[rec.data + 46u];
+    }
+{
+
+        w[47u] = values[rec.data + 47u];
+    }
+{
+
+        w[48u] = values[rec.data + 48u];
+    }
+{
+
+        w[49u] = values[rec.data + 49u];
+    }
+{
+
+        w[50u] = values[rec.data + 50u];
+    }
+{
+
+        w[51u] = values[rec.data + 51u];
+    }
+{
+
+        w[52u] = values[rec.data + 52u];
+    }
+{
+
+        w[53u] = values[rec.data + 53u];
+    }
+{
+
+        w[54u] = values[rec.data + 54u];
+    }
+{
+
+        w[55u] = values[rec.data + 55u];
+    }
+{
+
+        w[56u] = values[rec.data + 56u];
+    }
+{
+
+        w[57u] = values[rec.data + 57u];
+    }
+{
+
+        w[58u] = values[rec.data + 58u];
+    }
+{
+
+        w[59u] = values[rec.data + 59u];
+    }
+{
+
+        w[60u] = values[rec.data + 60u];
+    }
+{
+
+        w[61u] = values[rec.data + 61u];
+    }
+{
+
+        w[62u] = values[rec.data + 62u];
+    }
+{
+
+        w[63u] = values[rec.data + 63u];
+    }
+{
+
+        w[64u] = values[rec.data + 64u];
+    }
+{
+
+        w[65u] = values[rec.data + 65u];
+    }
+{
+
+        w[66u] = values[rec.data + 66u];
+    }
+{
+
+        w[67u] = values[rec.data + 67u];
+    }
+{
+
+        w[68u] = values[rec.data + 68u];
+    }
+{
+
+        w[69u] = values[rec.data + 69u];
+    }
+{
+
+        w[70u] = values[rec.data + 70u];
+    }
+{
+
+        w[71u] = values[rec.data + 71u];
+    }
+{
+
+        w[72u] = values[rec.data + 72u];
+    }
+{
+
+        w[73u] = values[rec.data + 73u];
+    }
+{
+
+        w[74u] = values[rec.data + 74u];
+    }
+{
+
+        w[75u] = values[rec.data + 75u];
+    }
+{
+
+        w[76u] = values[rec.data + 76u];
+    }
+{
+
+        w[77u] = values[rec.data + 77u];
+    }
+{
+
+        w[78u] = values[rec.data + 78u];
+    }
+{
+
+        w[79u] = values[rec.data + 79u];
+    }
+{
+
+        w[80u] = values[rec.data + 80u];
+    }
+{
+
+        w[81u] = values[rec.data + 81u];
+    }
+{
+
+        w[82u] = values[rec.data + 82u];
+    }
+{
+
+        w[83u] = values[rec.data + 83u];
+    }
+{
+
+        w[84u] = values[rec.data + 84u];
+    }
+{
+
+        w[85u] = values[rec.data + 85u];
+    }
+{
+
+        w[86u] = values[rec.data + 86u];
+    }
+{
+
+        w[87u] = values[rec.data + 87u];
+    }
+{
+
+        w[88u] = values[rec.data + 88u];
+    }
+{
+
+        w[89u] = values[rec.data + 89u];
+    }
+{
+
+        w[90u] = values[rec.data + 90u];
+    }
+{
+
+        w[91u] = values[rec.data + 91u];
+    }
+{
+
+        w[92u] = values[rec.data + 92u];
+    }
+{
+
+        w[93u] = values[rec.data + 93u];
+    }
+{
+
+        w[94u] = values[rec.data + 94u];
+    }
+{
+
+        w[95u] = values[rec.data + 95u];
+    }
+{
+
+        w[96u] = values[rec.data + 96u];
+    }
+{
+
+        w[97u] = values[rec.data + 97u];
+    }
+{
+
+        w[98u] = values[rec.data + 98u];
+    }
+{
+
+        w[99u] = values[rec.data + 99u];
+    }
+{
+
+        w[100u] = values[rec.data + 100u];
+    }
+{
+
+        w[101u] = values[rec.data + 101u];
+    }
+{
+
+        w[102u] = values[rec.data + 102u];
+    }
+{
+
+        w[103u] = values[rec.data + 103u];
+    }
+{
+
+        w[104u] = values[rec.data + 104u];
+    }
+{
+
+        w[105u] = values[rec.data + 105u];
+    }
+{
+
+        w[106u] = values[rec.data + 106u];
+    }
+{
+
+        w[107u] = values[rec.data + 107u];
+    }
+{
+
+        w[108u] = values[rec.data + 108u];
+    }
+{
+
+        w[109u] = values[rec.data + 109u];
+    }
+{
+
+        w[110u] = values[rec.data + 110u];
+    }
+{
+
+        w[111u] = values[rec.data + 111u];
+    }
+{
+
+        w[112u] = values[rec.data + 112u];
+    }
+{
+
+        w[113u] = values[rec.data + 113u];
+    }
+{
+
+        w[114u] = values[rec.data + 114u];
+    }
+{
+
+        w[115u] = values[rec.data + 115u];
+    }
+{
+
+        w[116u] = values[rec.data + 116u];
+    }
+{
+
+        w[117u] = values[rec.data + 117u];
+    }
+{
+
+        w[118u] = values[rec.data + 118u];
+    }
+{
+
+        w[119u] = values[rec.data + 119u];
+    }
+{
+
+        w[120u] = values[rec.data + 120u];
+    }
+{
+
+        w[121u] = values[rec.data + 121u];
+    }
+{
+
+        w[122u] = values[rec.data + 122u];
+    }
+{
+
+        w[123u] = values[rec.data + 123u];
+    }
+{
+
+        w[124u] = values[rec.data + 124u];
+    }
+{
+
+        w[125u] = values[rec.data + 125u];
+    }
+{
+
+        w[126u] = values[rec.data + 126u];
+    }
+{
+
+        w[127u] = values[rec.data + 127u];
+    }
+{
+
+        w[128u] = values[rec.data + 128u];
+    }
+{
+
+        w[129u] = values[rec.data + 129u];
+    }
+{
+
+        w[130u] = values[rec.data + 130u];
+    }
+{
+
+        w[131u] = values[rec.data + 131u];
+    }
+{
+
+        w[132u] = values[rec.data + 132u];
+    }
+{
+
+        w[133u] = values[rec.data + 133u];
+    }
+{
+
+        w[134u] = values[rec.data + 134u];
+    }
+{
+
+        w[135u] = values[rec.data + 135u];
+    }
+{
+
+        w[136u] = values[rec.data + 136u];
+    }
+{
+
+        w[137u] = values[rec.data + 137u];
+    }
+{
+
+        w[138u] = values[rec.data + 138u];
+    }
+{
+
+        w[139u] = values[rec.data + 139u];
+    }
+{
+
+        w[140u] = values[rec.data + 140u];
+    }
+{
+
+        w[141u] = values[rec.data + 141u];
+    }
+{
+
+        w[142u] = values[rec.data + 142u];
+    }
+{
+
+        w[143u] = values[rec.data + 143u];
+    }
+
+{
+
+        q[0u] = values[rec.data + NN + 0u];
+    }
+{
+
+        q[1u] = values[rec.data + NN + 1u];
+    }
+{
+
+        q[2u] = values[rec.data + NN + 2u];
+    }
+{
+
+        q[3u] = values[rec.data + NN + 3u];
+    }
+{
+
+        q[4u] = values[rec.data + NN + 4u];
+    }
+{
+
+        q[5u] = values[rec.data + NN + 5u];
+    }
+{
+
+        q[6u] = values[rec.data + NN + 6u];
+    }
+{
+
+        q[7u] = values[rec.data + NN + 7u];
+    }
+{
+
+        q[8u] = values[rec.data + NN + 8u];
+    }
+{
+
+        q[9u] = values[rec.data + NN + 9u];
+    }
+{
+
+        q[10u] = values[rec.data + NN + 10u];
+    }
+{
+
+        q[11u] = values[rec.data + NN + 11u];
+    }
+
+{
+
+        mu[0u] = values[rec.data + NN + N + 0u];
+    }
+{
+
+        mu[1u] = values[rec.data + NN + N + 1u];
+    }
+{
+
+        mu[2u] = values[rec.data + NN + N + 2u];
+    }
+{
+
+        mu[3u] = values[rec.data + NN + N + 3u];
+    }
+
+    let v = rec.vectors;
+{
+
+        x[0u] = vectors[v + 0u];
+    }
+{
+
+        x[1u] = vectors[v + 1u];
+    }
+{
+
+        x[2u] = vectors[v + 2u];
+    }
+{
+
+        x[3u] = vectors[v + 3u];
+    }
+{
+
+        x[4u] = vectors[v + 4u];
+    }
+{
+
+        x[5u] = vectors[v + 5u];
+    }
+{
+
+        x[6u] = vectors[v + 6u];
+    }
+{
+
+        x[7u] = vectors[v + 7u];
+    }
+{
+
+        x[8u] = vectors[v + 8u];
+    }
+{
+
+        x[9u] = vectors[v + 9u];
+    }
+{
+
+        x[10u] = vectors[v + 10u];
+    }
+{
+
+        x[11u] = vectors[v + 11u];
+    }
+
+    if vectors_used > 1u {
+{
+
+            ux[0u] = vectors[v + N + 0u];
+            y[0u] = vectors[v + 2u * N + 0u];
+            uy[0u] = vectors[v + 3u * N + 0u];
+            best[0u] = vectors[v + 4u * N + 0u];
+        }
+{
+
+            ux[1u] = vectors[v + N + 1u];
+            y[1u] = vectors[v + 2u * N + 1u];
+            uy[1u] = vectors[v + 3u * N + 1u];
+            best[1u] = vectors[v + 4u * N + 1u];
+        }
+{
+
+            ux[2u] = vectors[v + N + 2u];
+            y[2u] = vectors[v + 2u * N + 2u];
+            uy[2u] = vectors[v + 3u * N + 2u];
+            best[2u] = vectors[v + 4u * N + 2u];
+        }
+{
+
+            ux[3u] = vectors[v + N + 3u];
+            y[3u] = vectors[v + 2u * N + 3u];
+            uy[3u] = vectors[v + 3u * N + 3u];
+            best[3u] = vectors[v + 4u * N + 3u];
+        }
+{
+
+            ux[4u] = vectors[v + N + 4u];
+            y[4u] = vectors[v + 2u * N + 4u];
+            uy[4u] = vectors[v + 3u * N + 4u];
+            best[4u] = vectors[v + 4u * N + 4u];
+        }
+{
+
+            ux[5u] = vectors[v + N + 5u];
+            y[5u] = vectors[v + 2u * N + 5u];
+            uy[5u] = vectors[v + 3u * N + 5u];
+            best[5u] = vectors[v + 4u * N + 5u];
+        }
+{
+
+            ux[6u] = vectors[v + N + 6u];
+            y[6u] = vectors[v + 2u * N + 6u];
+            uy[6u] = vectors[v + 3u * N + 6u];
+            best[6u] = vectors[v + 4u * N + 6u];
+        }
+{
+
+            ux[7u] = vectors[v + N + 7u];
+            y[7u] = vectors[v + 2u * N + 7u];
+            uy[7u] = vectors[v + 3u * N + 7u];
+            best[7u] = vectors[v + 4u * N + 7u];
+        }
+{
+
+            ux[8u] = vectors[v + N + 8u];
+            y[8u] = vectors[v + 2u * N + 8u];
+            uy[8u] = vectors[v + 3u * N + 8u];
+            best[8u] = vectors[v + 4u * N + 8u];
+        }
+{
+
+            ux[9u] = vectors[v + N + 9u];
+            y[9u] = vectors[v + 2u * N + 9u];
+            uy[9u] = vectors[v + 3u * N + 9u];
+            best[9u] = vectors[v + 4u * N + 9u];
+        }
+{
+
+            ux[10u] = vectors[v + N + 10u];
+            y[10u] = vectors[v + 2u * N + 10u];
+            uy[10u] = vectors[v + 3u * N + 10u];
+            best[10u] = vectors[v + 4u * N + 10u];
+        }
+{
+
+            ux[11u] = vectors[v + N + 11u];
+            y[11u] = vectors[v + 2u * N + 11u];
+            uy[11u] = vectors[v + 3u * N + 11u];
+            best[11u] = vectors[v + 4u * N + 11u];
+        }
+
+    }
+    return v;
+}
+
+// Row r of W x + q: s = sum_j W_rj x_j, then q_r + s.
+fn velocity_row(r: u32) -> Scalar {
     var s = Scalar(0.0);
-    let row = is.w + r * is.n;
-    for (var j = 0u; j < is.n; j++) {
-        s += values[row + j] * vectors[x0 + j];
+{
+
+        s += w[r * N + 0u] * x[0u];
     }
-    return values[is.q + r] + s;
+{
+
+        s += w[r * N + 1u] * x[1u];
+    }
+{
+
+        s += w[r * N + 2u] * x[2u];
+    }
+{
+
+        s += w[r * N + 3u] * x[3u];
+    }
+{
+
+        s += w[r * N + 4u] * x[4u];
+    }
+{
+
+        s += w[r * N + 5u] * x[5u];
+    }
+{
+
+        s += w[r * N + 6u] * x[6u];
+    }
+{
+
+        s += w[r * N + 7u] * x[7u];
+    }
+{
+
+        s += w[r * N + 8u] * x[8u];
+    }
+{
+
+        s += w[r * N + 9u] * x[9u];
+    }
+{
+
+        s += w[r * N + 10u] * x[10u];
+    }
+{
+
+        s += w[r * N + 11u] * x[11u];
+    }
+
+    return q[r] + s;
 }
 
-// un = W x + q for x = vectors[x0..x0 + n].
-fn velocity_of_stored(is: Island, x0: u32) {
-    for (var r = 0u; r < is.n; r++) {
-        un[r] = velocity_row(is, x0, r);
+// un = W x + q.
+fn velocity_of_x() {
+{
+
+        un[0u] = velocity_row(0u);
     }
+{
+
+        un[1u] = velocity_row(1u);
+    }
+{
+
+        un[2u] = velocity_row(2u);
+    }
+{
+
+        un[3u] = velocity_row(3u);
+    }
+{
+
+        un[4u] = velocity_row(4u);
+    }
+{
+
+        un[5u] = velocity_row(5u);
+    }
+{
+
+        un[6u] = velocity_row(6u);
+    }
+{
+
+        un[7u] = velocity_row(7u);
+    }
+{
+
+        un[8u] = velocity_row(8u);
+    }
+{
+
+        un[9u] = velocity_row(9u);
+    }
+{
+
+        un[10u] = velocity_row(10u);
+    }
+{
+
+        un[11u] = velocity_row(11u);
+    }
+
 }
 
 // un = W xn + q.
-fn velocity_of_trial(is: Island) {
-    for (var r = 0u; r < is.n; r++) {
+fn velocity_of_trial() {
+{
+
         var s = Scalar(0.0);
-        let row = is.w + r * is.n;
-        for (var j = 0u; j < is.n; j++) {
-            s += values[row + j] * xn[j];
+{
+
+            s += w[0u * N + 0u] * xn[0u];
         }
-        un[r] = values[is.q + r] + s;
+{
+
+            s += w[0u * N + 1u] * xn[1u];
+        }
+{
+
+            s += w[0u * N + 2u] * xn[2u];
+        }
+{
+
+            s += w[0u * N + 3u] * xn[3u];
+        }
+{
+
+            s += w[0u * N + 4u] * xn[4u];
+        }
+{
+
+            s += w[0u * N + 5u] * xn[5u];
+        }
+{
+
+            s += w[0u * N + 6u] * xn[6u];
+        }
+{
+
+            s += w[0u * N + 7u] * xn[7u];
+        }
+{
+
+            s += w[0u * N + 8u] * xn[8u];
+        }
+{
+
+            s += w[0u * N + 9u] * xn[9u];
+        }
+{
+
+            s += w[0u * N + 10u] * xn[10u];
+        }
+{
+
+            s += w[0u * N + 11u] * xn[11u];
+        }
+
+        un[0u] = q[0u] + s;
     }
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[1u * N + 0u] * xn[0u];
+        }
+{
+
+            s += w[1u * N + 1u] * xn[1u];
+        }
+{
+
+            s += w[1u * N + 2u] * xn[2u];
+        }
+{
+
+            s += w[1u * N + 3u] * xn[3u];
+        }
+{
+
+            s += w[1u * N + 4u] * xn[4u];
+        }
+{
+
+            s += w[1u * N + 5u] * xn[5u];
+        }
+{
+
+            s += w[1u * N + 6u] * xn[6u];
+        }
+{
+
+            s += w[1u * N + 7u] * xn[7u];
+        }
+{
+
+            s += w[1u * N + 8u] * xn[8u];
+        }
+{
+
+            s += w[1u * N + 9u] * xn[9u];
+        }
+{
+
+            s += w[1u * N + 10u] * xn[10u];
+        }
+{
+
+            s += w[1u * N + 11u] * xn[11u];
+        }
+
+        un[1u] = q[1u] + s;
+    }
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[2u * N + 0u] * xn[0u];
+        }
+{
+
+            s += w[2u * N + 1u] * xn[1u];
+        }
+{
+
+            s += w[2u * N + 2u] * xn[2u];
+        }
+{
+
+            s += w[2u * N + 3u] * xn[3u];
+        }
+{
+
+            s += w[2u * N + 4u] * xn[4u];
+        }
+{
+
+            s += w[2u * N + 5u] * xn[5u];
+        }
+{
+
+            s += w[2u * N + 6u] * xn[6u];
+        }
+{
+
+            s += w[2u * N + 7u] * xn[7u];
+        }
+{
+
+            s += w[2u * N + 8u] * xn[8u];
+        }
+{
+
+            s += w[2u * N + 9u] * xn[9u];
+        }
+{
+
+            s += w[2u * N + 10u] * xn[10u];
+        }
+{
+
+            s += w[2u * N + 11u] * xn[11u];
+        }
+
+        un[2u] = q[2u] + s;
+    }
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[3u * N + 0u] * xn[0u];
+        }
+{
+
+            s += w[3u * N + 1u] * xn[1u];
+        }
+{
+
+            s += w[3u * N + 2u] * xn[2u];
+        }
+{
+
+            s += w[3u * N + 3u] * xn[3u];
+        }
+{
+
+            s += w[3u * N + 4u] * xn[4u];
+        }
+{
+
+            s += w[3u * N + 5u] * xn[5u];
+        }
+{
+
+            s += w[3u * N + 6u] * xn[6u];
+        }
+{
+
+            s += w[3u * N + 7u] * xn[7u];
+        }
+{
+
+            s += w[3u * N + 8u] * xn[8u];
+        }
+{
+
+            s += w[3u * N + 9u] * xn[9u];
+        }
+{
+
+            s += w[3u * N + 10u] * xn[10u];
+        }
+{
+
+            s += w[3u * N + 11u] * xn[11u];
+        }
+
+        un[3u] = q[3u] + s;
+    }
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[4u * N + 0u] * xn[0u];
+        }
+{
+
+            s += w[4u * N + 1u] * xn[1u];
+        }
+{
+
+            s += w[4u * N + 2u] * xn[2u];
+        }
+{
+
+            s += w[4u * N + 3u] * xn[3u];
+        }
+{
+
+            s += w[4u * N + 4u] * xn[4u];
+        }
+{
+
+            s += w[4u * N + 5u] * xn[5u];
+        }
+{
+
+            s += w[4u * N + 6u] * xn[6u];
+        }
+{
+
+            s += w[4u * N + 7u] * xn[7u];
+        }
+{
+
+            s += w[4u * N + 8u] * xn[8u];
+        }
+{
+
+            s += w[4u * N + 9u] * xn[9u];
+        }
+{
+
+            s += w[4u * N + 10u] * xn[10u];
+        }
+{
+
+            s += w[4u * N + 11u] * xn[11u];
+        }
+
+        un[4u] = q[4u] + s;
+    }
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[5u * N + 0u] * xn[0u];
+        }
+{
+
+            s += w[5u * N + 1u] * xn[1u];
+        }
+{
+
+            s += w[5u * N + 2u] * xn[2u];
+        }
+{
+
+            s += w[5u * N + 3u] * xn[3u];
+        }
+{
+
+            s += w[5u * N + 4u] * xn[4u];
+        }
+{
+
+            s += w[5u * N + 5u] * xn[5u];
+        }
+{
+
+            s += w[5u * N + 6u] * xn[6u];
+        }
+{
+
+            s += w[5u * N + 7u] * xn[7u];
+        }
+{
+
+            s += w[5u * N + 8u] * xn[8u];
+        }
+{
+
+            s += w[5u * N + 9u] * xn[9u];
+        }
+{
+
+            s += w[5u * N + 10u] * xn[10u];
+        }
+{
+
+            s += w[5u * N + 11u] * xn[11u];
+        }
+
+        un[5u] = q[5u] + s;
+    }
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[6u * N + 0u] * xn[0u];
+        }
+{
+
+            s += w[6u * N + 1u] * xn[1u];
+        }
+{
+
+            s += w[6u * N + 2u] * xn[2u];
+        }
+{
+
+            s += w[6u * N + 3u] * xn[3u];
+        }
+{
+
+            s += w[6u * N + 4u] * xn[4u];
+        }
+{
+
+            s += w[6u * N + 5u] * xn[5u];
+        }
+{
+
+            s += w[6u * N + 6u] * xn[6u];
+        }
+{
+
+            s += w[6u * N + 7u] * xn[7u];
+        }
+{
+
+            s += w[6u * N + 8u] * xn[8u];
+        }
+{
+
+            s += w[6u * N + 9u] * xn[9u];
+        }
+{
+
+            s += w[6u * N + 10u] * xn[10u];
+        }
+{
+
+            s += w[6u * N + 11u] * xn[11u];
+        }
+
+        un[6u] = q[6u] + s;
+    }
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[7u * N + 0u] * xn[0u];
+        }
+{
+
+            s += w[7u * N + 1u] * xn[1u];
+        }
+{
+
+            s += w[7u * N + 2u] * xn[2u];
+        }
+{
+
+            s += w[7u * N + 3u] * xn[3u];
+        }
+{
+
+            s += w[7u * N + 4u] * xn[4u];
+        }
+{
+
+            s += w[7u * N + 5u] * xn[5u];
+        }
+{
+
+            s += w[7u * N + 6u] * xn[6u];
+        }
+{
+
+            s += w[7u * N + 7u] * xn[7u];
+        }
+{
+
+            s += w[7u * N + 8u] * xn[8u];
+        }
+{
+
+            s += w[7u * N + 9u] * xn[9u];
+        }
+{
+
+            s += w[7u * N + 10u] * xn[10u];
+        }
+{
+
+            s += w[7u * N + 11u] * xn[11u];
+        }
+
+        un[7u] = q[7u] + s;
+    }
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[8u * N + 0u] * xn[0u];
+        }
+{
+
+            s += w[8u * N + 1u] * xn[1u];
+        }
+{
+
+            s += w[8u * N + 2u] * xn[2u];
+        }
+{
+
+            s += w[8u * N + 3u] * xn[3u];
+        }
+{
+
+            s += w[8u * N + 4u] * xn[4u];
+        }
+{
+
+            s += w[8u * N + 5u] * xn[5u];
+        }
+{
+
+            s += w[8u * N + 6u] * xn[6u];
+        }
+{
+
+            s += w[8u * N + 7u] * xn[7u];
+        }
+{
+
+            s += w[8u * N + 8u] * xn[8u];
+        }
+{
+
+            s += w[8u * N + 9u] * xn[9u];
+        }
+{
+
+            s += w[8u * N + 10u] * xn[10u];
+        }
+{
+
+            s += w[8u * N + 11u] * xn[11u];
+        }
+
+        un[8u] = q[8u] + s;
+    }
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[9u * N + 0u] * xn[0u];
+        }
+{
+
+            s += w[9u * N + 1u] * xn[1u];
+        }
+{
+
+            s += w[9u * N + 2u] * xn[2u];
+        }
+{
+
+            s += w[9u * N + 3u] * xn[3u];
+        }
+{
+
+            s += w[9u * N + 4u] * xn[4u];
+        }
+{
+
+            s += w[9u * N + 5u] * xn[5u];
+        }
+{
+
+            s += w[9u * N + 6u] * xn[6u];
+        }
+{
+
+            s += w[9u * N + 7u] * xn[7u];
+        }
+{
+
+            s += w[9u * N + 8u] * xn[8u];
+        }
+{
+
+            s += w[9u * N + 9u] * xn[9u];
+        }
+{
+
+            s += w[9u * N + 10u] * xn[10u];
+        }
+{
+
+            s += w[9u * N + 11u] * xn[11u];
+        }
+
+        un[9u] = q[9u] + s;
+    }
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[10u * N + 0u] * xn[0u];
+        }
+{
+
+            s += w[10u * N + 1u] * xn[1u];
+        }
+{
+
+            s += w[10u * N + 2u] * xn[2u];
+        }
+{
+
+            s += w[10u * N + 3u] * xn[3u];
+        }
+{
+
+            s += w[10u * N + 4u] * xn[4u];
+        }
+{
+
+            s += w[10u * N + 5u] * xn[5u];
+        }
+{
+
+            s += w[10u * N + 6u] * xn[6u];
+        }
+{
+
+            s += w[10u * N + 7u] * xn[7u];
+        }
+{
+
+            s += w[10u * N + 8u] * xn[8u];
+        }
+{
+
+            s += w[10u * N + 9u] * xn[9u];
+        }
+{
+
+            s += w[10u * N + 10u] * xn[10u];
+        }
+{
+
+            s += w[10u * N + 11u] * xn[11u];
+        }
+
+        un[10u] = q[10u] + s;
+    }
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[11u * N + 0u] * xn[0u];
+        }
+{
+
+            s += w[11u * N + 1u] * xn[1u];
+        }
+{
+
+            s += w[11u * N + 2u] * xn[2u];
+        }
+{
+
+            s += w[11u * N + 3u] * xn[3u];
+        }
+{
+
+            s += w[11u * N + 4u] * xn[4u];
+        }
+{
+
+            s += w[11u * N + 5u] * xn[5u];
+        }
+{
+
+            s += w[11u * N + 6u] * xn[6u];
+        }
+{
+
+            s += w[11u * N + 7u] * xn[7u];
+        }
+{
+
+            s += w[11u * N + 8u] * xn[8u];
+        }
+{
+
+            s += w[11u * N + 9u] * xn[9u];
+        }
+{
+
+            s += w[11u * N + 10u] * xn[10u];
+        }
+{
+
+            s += w[11u * N + 11u] * xn[11u];
+        }
+
+        un[11u] = q[11u] + s;
+    }
+
 }
 
-fn q_squared(is: Island) -> Scalar {
+fn q_squared() -> Scalar {
     var s = Scalar(0.0);
-    for (var r = 0u; r < is.n; r++) {
-        s += values[is.q + r] * values[is.q + r];
+{
+
+        s += q[0u] * q[0u];
     }
+{
+
+        s += q[1u] * q[1u];
+    }
+{
+
+        s += q[2u] * q[2u];
+    }
+{
+
+        s += q[3u] * q[3u];
+    }
+{
+
+        s += q[4u] * q[4u];
+    }
+{
+
+        s += q[5u] * q[5u];
+    }
+{
+
+        s += q[6u] * q[6u];
+    }
+{
+
+        s += q[7u] * q[7u];
+    }
+{
+
+        s += q[8u] * q[8u];
+    }
+{
+
+        s += q[9u] * q[9u];
+    }
+{
+
+        s += q[10u] * q[10u];
+    }
+{
+
+        s += q[11u] * q[11u];
+    }
+
     return s;
 }
 
-// The stop measure (projected.rs stop_measure) of x with velocity u = un:
-// x = xn (trial) or vectors[x0..x0 + n].
-fn stop_measure(is: Island, x0: u32, trial: bool) -> Scalar {
+// The stop measure (projected.rs stop_measure) of x (trial: xn) with
+// velocity u = un.
+fn stop_measure(trial: bool) -> Scalar {
     var e2 = Scalar(0.0);
     var x2 = Scalar(0.0);
     var u2 = Scalar(0.0);
-    for (var i = 0u; i < is.k; i++) {
-        let c = 3u * i;
-        var x: vec3<Scalar>;
+{
+
+        let c = 3u * 0u;
+        var xi: vec3<Scalar>;
         if trial {
-            x = vec3<Scalar>(xn[c], xn[c + 1u], xn[c + 2u]);
+            xi = vec3<Scalar>(xn[c], xn[c + 1u], xn[c + 2u]);
         } else {
-            x = vec3<Scalar>(vectors[x0 + c], vectors[x0 + c + 1u], vectors[x0 + c + 2u]);
+            xi = vec3<Scalar>(x[c], x[c + 1u], x[c + 2u]);
         }
         let u = vec3<Scalar>(un[c], un[c + 1u], un[c + 2u]);
-        let p = project_on_cone(x - u, values[is.mu + i]);
-        let d = x - p;
+        let p = project_on_cone(xi - u, mu[0u]);
+        let d = xi - p;
         e2 += d.x * d.x;
         e2 += d.y * d.y;
         e2 += d.z * d.z;
-        x2 += x.x * x.x;
-        x2 += x.y * x.y;
-        x2 += x.z * x.z;
+        x2 += xi.x * xi.x;
+        x2 += xi.y * xi.y;
+        x2 += xi.z * xi.z;
         u2 += u.x * u.x;
         u2 += u.y * u.y;
         u2 += u.z * u.z;
     }
-    let scale = sqrt(max(max(q_squared(is), x2), u2));
+{
+
+        let c = 3u * 1u;
+        var xi: vec3<Scalar>;
+        if trial {
+            xi = vec3<Scalar>(xn[c], xn[c + 1u], xn[c + 2u]);
+        } else {
+            xi = vec3<Scalar>(x[c], x[c + 1u], x[c + 2u]);
+        }
+        let u = vec3<Scalar>(un[c], un[c + 1u], un[c + 2u]);
+        let p = project_on_cone(xi - u, mu[1u]);
+        let d = xi - p;
+        e2 += d.x * d.x;
+        e2 += d.y * d.y;
+        e2 += d.z * d.z;
+        x2 += xi.x * xi.x;
+        x2 += xi.y * xi.y;
+        x2 += xi.z * xi.z;
+        u2 += u.x * u.x;
+        u2 += u.y * u.y;
+        u2 += u.z * u.z;
+    }
+{
+
+        let c = 3u * 2u;
+        var xi: vec3<Scalar>;
+        if trial {
+            xi = vec3<Scalar>(xn[c], xn[c + 1u], xn[c + 2u]);
+        } else {
+            xi = vec3<Scalar>(x[c], x[c + 1u], x[c + 2u]);
+        }
+        let u = vec3<Scalar>(un[c], un[c + 1u], un[c + 2u]);
+        let p = project_on_cone(xi - u, mu[2u]);
+        let d = xi - p;
+        e2 += d.x * d.x;
+        e2 += d.y * d.y;
+        e2 += d.z * d.z;
+        x2 += xi.x * xi.x;
+        x2 += xi.y * xi.y;
+        x2 += xi.z * xi.z;
+        u2 += u.x * u.x;
+        u2 += u.y * u.y;
+        u2 += u.z * u.z;
+    }
+{
+
+        let c = 3u * 3u;
+        var xi: vec3<Scalar>;
+        if trial {
+            xi = vec3<Scalar>(xn[c], xn[c + 1u], xn[c + 2u]);
+        } else {
+            xi = vec3<Scalar>(x[c], x[c + 1u], x[c + 2u]);
+        }
+        let u = vec3<Scalar>(un[c], un[c + 1u], un[c + 2u]);
+        let p = project_on_cone(xi - u, mu[3u]);
+        let d = xi - p;
+        e2 += d.x * d.x;
+        e2 += d.y * d.y;
+        e2 += d.z * d.z;
+        x2 += xi.x * xi.x;
+        x2 += xi.y * xi.y;
+        x2 += xi.z * xi.z;
+        u2 += u.x * u.x;
+        u2 += u.y * u.y;
+        u2 += u.z * u.z;
+    }
+
+    let scale = sqrt(max(max(q_squared(), x2), u2));
     let e = sqrt(e2);
     if scale > SCALE_FLOOR {
         return e / scale;
@@ -207,77 +1862,1154 @@ fn stop_measure(is: Island, x0: u32, trial: bool) -> Scalar {
     return e;
 }
 
-// Every contact's reaction in vectors[x0..] projected on its cone.
-fn project_stored(is: Island, x0: u32) {
-    for (var i = 0u; i < is.k; i++) {
-        let c = x0 + 3u * i;
-        let p = project_on_cone(vec3<Scalar>(vectors[c], vectors[c + 1u], vectors[c + 2u]), values[is.mu + i]);
-        vectors[c] = p.x;
-        vectors[c + 1u] = p.y;
-        vectors[c + 2u] = p.z;
+// Every contact's reaction in x projected on its cone.
+fn project_x() {
+{
+
+        let c = 3u * 0u;
+        let p = project_on_cone(vec3<Scalar>(x[c], x[c + 1u], x[c + 2u]), mu[0u]);
+        x[c] = p.x;
+        x[c + 1u] = p.y;
+        x[c + 2u] = p.z;
     }
+{
+
+        let c = 3u * 1u;
+        let p = project_on_cone(vec3<Scalar>(x[c], x[c + 1u], x[c + 2u]), mu[1u]);
+        x[c] = p.x;
+        x[c + 1u] = p.y;
+        x[c + 2u] = p.z;
+    }
+{
+
+        let c = 3u * 2u;
+        let p = project_on_cone(vec3<Scalar>(x[c], x[c + 1u], x[c + 2u]), mu[2u]);
+        x[c] = p.x;
+        x[c + 1u] = p.y;
+        x[c + 2u] = p.z;
+    }
+{
+
+        let c = 3u * 3u;
+        let p = project_on_cone(vec3<Scalar>(x[c], x[c + 1u], x[c + 2u]), mu[3u]);
+        x[c] = p.x;
+        x[c + 1u] = p.y;
+        x[c + 2u] = p.z;
+    }
+
 }
 
 // One unit of loop work per inner iteration of W x.
-fn product_cost(is: Island) -> u32 {
-    return is.n * is.n + is.n;
+fn product_cost() -> u32 {
+    return N * N + N;
 }
 
 // Saves the state; a running island counts itself in unfinished[k]. (k is
-// passed in: indexing with min(islands[index].k, 16u) here counted every
-// island in unfinished[0] on lavapipe, measured.)
-fn finish_round(index: u32, k: u32, st: FrictionState) {
+// the constant: indexing with min(islands[index].k, 16u) here counted
+// every island in unfinished[0] on lavapipe, measured.)
+fn finish_round(index: u32, st: FrictionState) {
     states[index] = st;
     if st.status == RUNNING {
-        atomicAdd(&unfinished[k], 1u);
+        atomicAdd(&unfinished[FIXED_K], 1u);
     }
 }
 
-// The sweeps' steps (projected.rs contact_steps) into vectors[v + n..v + n + k].
-fn contact_steps(is: Island, gauss_seidel: bool) {
-    for (var i = 0u; i < is.k; i++) {
-        var lo = 0u;
-        var hi = is.n;
-        if gauss_seidel {
-            lo = 3u * i;
-            hi = 3u * i + 3u;
-        }
+// The sweeps' steps (projected.rs contact_steps) into eta: the sums run
+// over every column and skip those outside the contact's block for
+// Gauss-Seidel (the same additions in the same order as the twin's
+// loop over the block, with constant bounds for the unrolling).
+fn contact_steps(gauss_seidel: bool) {
+{
+
         var big = Scalar(0.0);
-        for (var r = 3u * i; r < 3u * i + 3u; r++) {
+{
+
             var s = Scalar(0.0);
-            for (var j = lo; j < hi; j++) {
-                s += abs(values[is.w + r * is.n + j]);
+{
+
+                if !gauss_seidel || (0u >= 3u * 0u && 0u < 3u * 0u + 3u) {
+                    s += abs(w[0u * N + 0u]);
+                }
             }
+{
+
+                if !gauss_seidel || (1u >= 3u * 0u && 1u < 3u * 0u + 3u) {
+                    s += abs(w[0u * N + 1u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (2u >= 3u * 0u && 2u < 3u * 0u + 3u) {
+                    s += abs(w[0u * N + 2u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (3u >= 3u * 0u && 3u < 3u * 0u + 3u) {
+                    s += abs(w[0u * N + 3u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (4u >= 3u * 0u && 4u < 3u * 0u + 3u) {
+                    s += abs(w[0u * N + 4u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (5u >= 3u * 0u && 5u < 3u * 0u + 3u) {
+                    s += abs(w[0u * N + 5u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (6u >= 3u * 0u && 6u < 3u * 0u + 3u) {
+                    s += abs(w[0u * N + 6u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (7u >= 3u * 0u && 7u < 3u * 0u + 3u) {
+                    s += abs(w[0u * N + 7u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (8u >= 3u * 0u && 8u < 3u * 0u + 3u) {
+                    s += abs(w[0u * N + 8u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (9u >= 3u * 0u && 9u < 3u * 0u + 3u) {
+                    s += abs(w[0u * N + 9u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (10u >= 3u * 0u && 10u < 3u * 0u + 3u) {
+                    s += abs(w[0u * N + 10u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (11u >= 3u * 0u && 11u < 3u * 0u + 3u) {
+                    s += abs(w[0u * N + 11u]);
+                }
+            }
+
             big = max(big, s);
         }
-        var eta = Scalar(1.0);
-        if big > Scalar(0.0) {
-            eta = Scalar(1.0) / big;
+{
+
+            var s = Scalar(0.0);
+{
+
+                if !gauss_seidel || (0u >= 3u * 0u && 0u < 3u * 0u + 3u) {
+                    s += abs(w[1u * N + 0u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (1u >= 3u * 0u && 1u < 3u * 0u + 3u) {
+                    s += abs(w[1u * N + 1u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (2u >= 3u * 0u && 2u < 3u * 0u + 3u) {
+                    s += abs(w[1u * N + 2u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (3u >= 3u * 0u && 3u < 3u * 0u + 3u) {
+                    s += abs(w[1u * N + 3u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (4u >= 3u * 0u && 4u < 3u * 0u + 3u) {
+                    s += abs(w[1u * N + 4u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (5u >= 3u * 0u && 5u < 3u * 0u + 3u) {
+                    s += abs(w[1u * N + 5u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (6u >= 3u * 0u && 6u < 3u * 0u + 3u) {
+                    s += abs(w[1u * N + 6u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (7u >= 3u * 0u && 7u < 3u * 0u + 3u) {
+                    s += abs(w[1u * N + 7u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (8u >= 3u * 0u && 8u < 3u * 0u + 3u) {
+                    s += abs(w[1u * N + 8u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (9u >= 3u * 0u && 9u < 3u * 0u + 3u) {
+                    s += abs(w[1u * N + 9u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (10u >= 3u * 0u && 10u < 3u * 0u + 3u) {
+                    s += abs(w[1u * N + 10u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (11u >= 3u * 0u && 11u < 3u * 0u + 3u) {
+                    s += abs(w[1u * N + 11u]);
+                }
+            }
+
+            big = max(big, s);
         }
-        vectors[is.v + is.n + i] = eta;
+{
+
+            var s = Scalar(0.0);
+{
+
+                if !gauss_seidel || (0u >= 3u * 0u && 0u < 3u * 0u + 3u) {
+                    s += abs(w[2u * N + 0u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (1u >= 3u * 0u && 1u < 3u * 0u + 3u) {
+                    s += abs(w[2u * N + 1u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (2u >= 3u * 0u && 2u < 3u * 0u + 3u) {
+                    s += abs(w[2u * N + 2u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (3u >= 3u * 0u && 3u < 3u * 0u + 3u) {
+                    s += abs(w[2u * N + 3u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (4u >= 3u * 0u && 4u < 3u * 0u + 3u) {
+                    s += abs(w[2u * N + 4u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (5u >= 3u * 0u && 5u < 3u * 0u + 3u) {
+                    s += abs(w[2u * N + 5u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (6u >= 3u * 0u && 6u < 3u * 0u + 3u) {
+                    s += abs(w[2u * N + 6u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (7u >= 3u * 0u && 7u < 3u * 0u + 3u) {
+                    s += abs(w[2u * N + 7u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (8u >= 3u * 0u && 8u < 3u * 0u + 3u) {
+                    s += abs(w[2u * N + 8u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (9u >= 3u * 0u && 9u < 3u * 0u + 3u) {
+                    s += abs(w[2u * N + 9u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (10u >= 3u * 0u && 10u < 3u * 0u + 3u) {
+                    s += abs(w[2u * N + 10u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (11u >= 3u * 0u && 11u < 3u * 0u + 3u) {
+                    s += abs(w[2u * N + 11u]);
+                }
+            }
+
+            big = max(big, s);
+        }
+
+        var e = Scalar(1.0);
+        if big > Scalar(0.0) {
+            e = Scalar(1.0) / big;
+        }
+        eta[0u] = e;
     }
+{
+
+        var big = Scalar(0.0);
+{
+
+            var s = Scalar(0.0);
+{
+
+                if !gauss_seidel || (0u >= 3u * 1u && 0u < 3u * 1u + 3u) {
+                    s += abs(w[3u * N + 0u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (1u >= 3u * 1u && 1u < 3u * 1u + 3u) {
+                    s += abs(w[3u * N + 1u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (2u >= 3u * 1u && 2u < 3u * 1u + 3u) {
+                    s += abs(w[3u * N + 2u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (3u >= 3u * 1u && 3u < 3u * 1u + 3u) {
+                    s += abs(w[3u * N + 3u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (4u >= 3u * 1u && 4u < 3u * 1u + 3u) {
+                    s += abs(w[3u * N + 4u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (5u >= 3u * 1u && 5u < 3u * 1u + 3u) {
+                    s += abs(w[3u * N + 5u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (6u >= 3u * 1u && 6u < 3u * 1u + 3u) {
+                    s += abs(w[3u * N + 6u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (7u >= 3u * 1u && 7u < 3u * 1u + 3u) {
+                    s += abs(w[3u * N + 7u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (8u >= 3u * 1u && 8u < 3u * 1u + 3u) {
+                    s += abs(w[3u * N + 8u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (9u >= 3u * 1u && 9u < 3u * 1u + 3u) {
+                    s += abs(w[3u * N + 9u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (10u >= 3u * 1u && 10u < 3u * 1u + 3u) {
+                    s += abs(w[3u * N + 10u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (11u >= 3u * 1u && 11u < 3u * 1u + 3u) {
+                    s += abs(w[3u * N + 11u]);
+                }
+            }
+
+            big = max(big, s);
+        }
+{
+
+            var s = Scalar(0.0);
+{
+
+                if !gauss_seidel || (0u >= 3u * 1u && 0u < 3u * 1u + 3u) {
+                    s += abs(w[4u * N + 0u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (1u >= 3u * 1u && 1u < 3u * 1u + 3u) {
+                    s += abs(w[4u * N + 1u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (2u >= 3u * 1u && 2u < 3u * 1u + 3u) {
+                    s += abs(w[4u * N + 2u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (3u >= 3u * 1u && 3u < 3u * 1u + 3u) {
+                    s += abs(w[4u * N + 3u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (4u >= 3u * 1u && 4u < 3u * 1u + 3u) {
+                    s += abs(w[4u * N + 4u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (5u >= 3u * 1u && 5u < 3u * 1u + 3u) {
+                    s += abs(w[4u * N + 5u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (6u >= 3u * 1u && 6u < 3u * 1u + 3u) {
+                    s += abs(w[4u * N + 6u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (7u >= 3u * 1u && 7u < 3u * 1u + 3u) {
+                    s += abs(w[4u * N + 7u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (8u >= 3u * 1u && 8u < 3u * 1u + 3u) {
+                    s += abs(w[4u * N + 8u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (9u >= 3u * 1u && 9u < 3u * 1u + 3u) {
+                    s += abs(w[4u * N + 9u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (10u >= 3u * 1u && 10u < 3u * 1u + 3u) {
+                    s += abs(w[4u * N + 10u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (11u >= 3u * 1u && 11u < 3u * 1u + 3u) {
+                    s += abs(w[4u * N + 11u]);
+                }
+            }
+
+            big = max(big, s);
+        }
+{
+
+            var s = Scalar(0.0);
+{
+
+                if !gauss_seidel || (0u >= 3u * 1u && 0u < 3u * 1u + 3u) {
+                    s += abs(w[5u * N + 0u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (1u >= 3u * 1u && 1u < 3u * 1u + 3u) {
+                    s += abs(w[5u * N + 1u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (2u >= 3u * 1u && 2u < 3u * 1u + 3u) {
+                    s += abs(w[5u * N + 2u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (3u >= 3u * 1u && 3u < 3u * 1u + 3u) {
+                    s += abs(w[5u * N + 3u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (4u >= 3u * 1u && 4u < 3u * 1u + 3u) {
+                    s += abs(w[5u * N + 4u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (5u >= 3u * 1u && 5u < 3u * 1u + 3u) {
+                    s += abs(w[5u * N + 5u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (6u >= 3u * 1u && 6u < 3u * 1u + 3u) {
+                    s += abs(w[5u * N + 6u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (7u >= 3u * 1u && 7u < 3u * 1u + 3u) {
+                    s += abs(w[5u * N + 7u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (8u >= 3u * 1u && 8u < 3u * 1u + 3u) {
+                    s += abs(w[5u * N + 8u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (9u >= 3u * 1u && 9u < 3u * 1u + 3u) {
+                    s += abs(w[5u * N + 9u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (10u >= 3u * 1u && 10u < 3u * 1u + 3u) {
+                    s += abs(w[5u * N + 10u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (11u >= 3u * 1u && 11u < 3u * 1u + 3u) {
+                    s += abs(w[5u * N + 11u]);
+                }
+            }
+
+            big = max(big, s);
+        }
+
+        var e = Scalar(1.0);
+        if big > Scalar(0.0) {
+            e = Scalar(1.0) / big;
+        }
+        eta[1u] = e;
+    }
+{
+
+        var big = Scalar(0.0);
+{
+
+            var s = Scalar(0.0);
+{
+
+                if !gauss_seidel || (0u >= 3u * 2u && 0u < 3u * 2u + 3u) {
+                    s += abs(w[6u * N + 0u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (1u >= 3u * 2u && 1u < 3u * 2u + 3u) {
+                    s += abs(w[6u * N + 1u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (2u >= 3u * 2u && 2u < 3u * 2u + 3u) {
+                    s += abs(w[6u * N + 2u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (3u >= 3u * 2u && 3u < 3u * 2u + 3u) {
+                    s += abs(w[6u * N + 3u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (4u >= 3u * 2u && 4u < 3u * 2u + 3u) {
+                    s += abs(w[6u * N + 4u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (5u >= 3u * 2u && 5u < 3u * 2u + 3u) {
+                    s += abs(w[6u * N + 5u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (6u >= 3u * 2u && 6u < 3u * 2u + 3u) {
+                    s += abs(w[6u * N + 6u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (7u >= 3u * 2u && 7u < 3u * 2u + 3u) {
+                    s += abs(w[6u * N + 7u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (8u >= 3u * 2u && 8u < 3u * 2u + 3u) {
+                    s += abs(w[6u * N + 8u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (9u >= 3u * 2u && 9u < 3u * 2u + 3u) {
+                    s += abs(w[6u * N + 9u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (10u >= 3u * 2u && 10u < 3u * 2u + 3u) {
+                    s += abs(w[6u * N + 10u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (11u >= 3u * 2u && 11u < 3u * 2u + 3u) {
+                    s += abs(w[6u * N + 11u]);
+                }
+            }
+
+            big = max(big, s);
+        }
+{
+
+            var s = Scalar(0.0);
+{
+
+                if !gauss_seidel || (0u >= 3u * 2u && 0u < 3u * 2u + 3u) {
+                    s += abs(w[7u * N + 0u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (1u >= 3u * 2u && 1u < 3u * 2u + 3u) {
+                    s += abs(w[7u * N + 1u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (2u >= 3u * 2u && 2u < 3u * 2u + 3u) {
+                    s += abs(w[7u * N + 2u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (3u >= 3u * 2u && 3u < 3u * 2u + 3u) {
+                    s += abs(w[7u * N + 3u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (4u >= 3u * 2u && 4u < 3u * 2u + 3u) {
+                    s += abs(w[7u * N + 4u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (5u >= 3u * 2u && 5u < 3u * 2u + 3u) {
+                    s += abs(w[7u * N + 5u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (6u >= 3u * 2u && 6u < 3u * 2u + 3u) {
+                    s += abs(w[7u * N + 6u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (7u >= 3u * 2u && 7u < 3u * 2u + 3u) {
+                    s += abs(w[7u * N + 7u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (8u >= 3u * 2u && 8u < 3u * 2u + 3u) {
+                    s += abs(w[7u * N + 8u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (9u >= 3u * 2u && 9u < 3u * 2u + 3u) {
+                    s += abs(w[7u * N + 9u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (10u >= 3u * 2u && 10u < 3u * 2u + 3u) {
+                    s += abs(w[7u * N + 10u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (11u >= 3u * 2u && 11u < 3u * 2u + 3u) {
+                    s += abs(w[7u * N + 11u]);
+                }
+            }
+
+            big = max(big, s);
+        }
+{
+
+            var s = Scalar(0.0);
+{
+
+                if !gauss_seidel || (0u >= 3u * 2u && 0u < 3u * 2u + 3u) {
+                    s += abs(w[8u * N + 0u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (1u >= 3u * 2u && 1u < 3u * 2u + 3u) {
+                    s += abs(w[8u * N + 1u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (2u >= 3u * 2u && 2u < 3u * 2u + 3u) {
+                    s += abs(w[8u * N + 2u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (3u >= 3u * 2u && 3u < 3u * 2u + 3u) {
+                    s += abs(w[8u * N + 3u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (4u >= 3u * 2u && 4u < 3u * 2u + 3u) {
+                    s += abs(w[8u * N + 4u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (5u >= 3u * 2u && 5u < 3u * 2u + 3u) {
+                    s += abs(w[8u * N + 5u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (6u >= 3u * 2u && 6u < 3u * 2u + 3u) {
+                    s += abs(w[8u * N + 6u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (7u >= 3u * 2u && 7u < 3u * 2u + 3u) {
+                    s += abs(w[8u * N + 7u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (8u >= 3u * 2u && 8u < 3u * 2u + 3u) {
+                    s += abs(w[8u * N + 8u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (9u >= 3u * 2u && 9u < 3u * 2u + 3u) {
+                    s += abs(w[8u * N + 9u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (10u >= 3u * 2u && 10u < 3u * 2u + 3u) {
+                    s += abs(w[8u * N + 10u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (11u >= 3u * 2u && 11u < 3u * 2u + 3u) {
+                    s += abs(w[8u * N + 11u]);
+                }
+            }
+
+            big = max(big, s);
+        }
+
+        var e = Scalar(1.0);
+        if big > Scalar(0.0) {
+            e = Scalar(1.0) / big;
+        }
+        eta[2u] = e;
+    }
+{
+
+        var big = Scalar(0.0);
+{
+
+            var s = Scalar(0.0);
+{
+
+                if !gauss_seidel || (0u >= 3u * 3u && 0u < 3u * 3u + 3u) {
+                    s += abs(w[9u * N + 0u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (1u >= 3u * 3u && 1u < 3u * 3u + 3u) {
+                    s += abs(w[9u * N + 1u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (2u >= 3u * 3u && 2u < 3u * 3u + 3u) {
+                    s += abs(w[9u * N + 2u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (3u >= 3u * 3u && 3u < 3u * 3u + 3u) {
+                    s += abs(w[9u * N + 3u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (4u >= 3u * 3u && 4u < 3u * 3u + 3u) {
+                    s += abs(w[9u * N + 4u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (5u >= 3u * 3u && 5u < 3u * 3u + 3u) {
+                    s += abs(w[9u * N + 5u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (6u >= 3u * 3u && 6u < 3u * 3u + 3u) {
+                    s += abs(w[9u * N + 6u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (7u >= 3u * 3u && 7u < 3u * 3u + 3u) {
+                    s += abs(w[9u * N + 7u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (8u >= 3u * 3u && 8u < 3u * 3u + 3u) {
+                    s += abs(w[9u * N + 8u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (9u >= 3u * 3u && 9u < 3u * 3u + 3u) {
+                    s += abs(w[9u * N + 9u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (10u >= 3u * 3u && 10u < 3u * 3u + 3u) {
+                    s += abs(w[9u * N + 10u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (11u >= 3u * 3u && 11u < 3u * 3u + 3u) {
+                    s += abs(w[9u * N + 11u]);
+                }
+            }
+
+            big = max(big, s);
+        }
+{
+
+            var s = Scalar(0.0);
+{
+
+                if !gauss_seidel || (0u >= 3u * 3u && 0u < 3u * 3u + 3u) {
+                    s += abs(w[10u * N + 0u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (1u >= 3u * 3u && 1u < 3u * 3u + 3u) {
+                    s += abs(w[10u * N + 1u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (2u >= 3u * 3u && 2u < 3u * 3u + 3u) {
+                    s += abs(w[10u * N + 2u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (3u >= 3u * 3u && 3u < 3u * 3u + 3u) {
+                    s += abs(w[10u * N + 3u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (4u >= 3u * 3u && 4u < 3u * 3u + 3u) {
+                    s += abs(w[10u * N + 4u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (5u >= 3u * 3u && 5u < 3u * 3u + 3u) {
+                    s += abs(w[10u * N + 5u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (6u >= 3u * 3u && 6u < 3u * 3u + 3u) {
+                    s += abs(w[10u * N + 6u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (7u >= 3u * 3u && 7u < 3u * 3u + 3u) {
+                    s += abs(w[10u * N + 7u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (8u >= 3u * 3u && 8u < 3u * 3u + 3u) {
+                    s += abs(w[10u * N + 8u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (9u >= 3u * 3u && 9u < 3u * 3u + 3u) {
+                    s += abs(w[10u * N + 9u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (10u >= 3u * 3u && 10u < 3u * 3u + 3u) {
+                    s += abs(w[10u * N + 10u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (11u >= 3u * 3u && 11u < 3u * 3u + 3u) {
+                    s += abs(w[10u * N + 11u]);
+                }
+            }
+
+            big = max(big, s);
+        }
+{
+
+            var s = Scalar(0.0);
+{
+
+                if !gauss_seidel || (0u >= 3u * 3u && 0u < 3u * 3u + 3u) {
+                    s += abs(w[11u * N + 0u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (1u >= 3u * 3u && 1u < 3u * 3u + 3u) {
+                    s += abs(w[11u * N + 1u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (2u >= 3u * 3u && 2u < 3u * 3u + 3u) {
+                    s += abs(w[11u * N + 2u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (3u >= 3u * 3u && 3u < 3u * 3u + 3u) {
+                    s += abs(w[11u * N + 3u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (4u >= 3u * 3u && 4u < 3u * 3u + 3u) {
+                    s += abs(w[11u * N + 4u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (5u >= 3u * 3u && 5u < 3u * 3u + 3u) {
+                    s += abs(w[11u * N + 5u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (6u >= 3u * 3u && 6u < 3u * 3u + 3u) {
+                    s += abs(w[11u * N + 6u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (7u >= 3u * 3u && 7u < 3u * 3u + 3u) {
+                    s += abs(w[11u * N + 7u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (8u >= 3u * 3u && 8u < 3u * 3u + 3u) {
+                    s += abs(w[11u * N + 8u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (9u >= 3u * 3u && 9u < 3u * 3u + 3u) {
+                    s += abs(w[11u * N + 9u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (10u >= 3u * 3u && 10u < 3u * 3u + 3u) {
+                    s += abs(w[11u * N + 10u]);
+                }
+            }
+{
+
+                if !gauss_seidel || (11u >= 3u * 3u && 11u < 3u * 3u + 3u) {
+                    s += abs(w[11u * N + 11u]);
+                }
+            }
+
+            big = max(big, s);
+        }
+
+        var e = Scalar(1.0);
+        if big > Scalar(0.0) {
+            e = Scalar(1.0) / big;
+        }
+        eta[3u] = e;
+    }
+
 }
 
 // One sweep over the contacts from u = un (Gauss-Seidel: each contact's
 // velocity recomputed from the reactions updated so far).
-fn sweep(is: Island, gauss_seidel: bool) {
-    for (var i = 0u; i < is.k; i++) {
-        let c = 3u * i;
+fn sweep(gauss_seidel: bool) {
+{
+
+        let c = 3u * 0u;
         if gauss_seidel {
-            for (var r = c; r < c + 3u; r++) {
-                un[r] = velocity_row(is, is.v, r);
+{
+
+                un[0u] = velocity_row(0u);
             }
+{
+
+                un[1u] = velocity_row(1u);
+            }
+{
+
+                un[2u] = velocity_row(2u);
+            }
+
         }
-        let h = controls.relaxation * vectors[is.v + is.n + i];
-        let x = vec3<Scalar>(vectors[is.v + c], vectors[is.v + c + 1u], vectors[is.v + c + 2u]);
+        let h = controls.relaxation * eta[0u];
         let p = project_on_cone(
-            vec3<Scalar>(x.x - h * un[c], x.y - h * un[c + 1u], x.z - h * un[c + 2u]),
-            values[is.mu + i]
+            vec3<Scalar>(x[c] - h * un[c], x[c + 1u] - h * un[c + 1u], x[c + 2u] - h * un[c + 2u]),
+            mu[0u]
         );
-        vectors[is.v + c] = p.x;
-        vectors[is.v + c + 1u] = p.y;
-        vectors[is.v + c + 2u] = p.z;
+        x[c] = p.x;
+        x[c + 1u] = p.y;
+        x[c + 2u] = p.z;
     }
+{
+
+        let c = 3u * 1u;
+        if gauss_seidel {
+{
+
+                un[3u] = velocity_row(3u);
+            }
+{
+
+                un[4u] = velocity_row(4u);
+            }
+{
+
+                un[5u] = velocity_row(5u);
+            }
+
+        }
+        let h = controls.relaxation * eta[1u];
+        let p = project_on_cone(
+            vec3<Scalar>(x[c] - h * un[c], x[c + 1u] - h * un[c + 1u], x[c + 2u] - h * un[c + 2u]),
+            mu[1u]
+        );
+        x[c] = p.x;
+        x[c + 1u] = p.y;
+        x[c + 2u] = p.z;
+    }
+{
+
+        let c = 3u * 2u;
+        if gauss_seidel {
+{
+
+                un[6u] = velocity_row(6u);
+            }
+{
+
+                un[7u] = velocity_row(7u);
+            }
+{
+
+                un[8u] = velocity_row(8u);
+            }
+
+        }
+        let h = controls.relaxation * eta[2u];
+        let p = project_on_cone(
+            vec3<Scalar>(x[c] - h * un[c], x[c + 1u] - h * un[c + 1u], x[c + 2u] - h * un[c + 2u]),
+            mu[2u]
+        );
+        x[c] = p.x;
+        x[c + 1u] = p.y;
+        x[c + 2u] = p.z;
+    }
+{
+
+        let c = 3u * 3u;
+        if gauss_seidel {
+{
+
+                un[9u] = velocity_row(9u);
+            }
+{
+
+                un[10u] = velocity_row(10u);
+            }
+{
+
+                un[11u] = velocity_row(11u);
+            }
+
+        }
+        let h = controls.relaxation * eta[3u];
+        let p = project_on_cone(
+            vec3<Scalar>(x[c] - h * un[c], x[c + 1u] - h * un[c + 1u], x[c + 2u] - h * un[c + 2u]),
+            mu[3u]
+        );
+        x[c] = p.x;
+        x[c + 1u] = p.y;
+        x[c + 2u] = p.z;
+    }
+
 }
 
 @compute @workgroup_size(64)
@@ -285,32 +3017,53 @@ fn sweeps(@builtin(global_invocation_id) gid: vec3<u32>) {
     if gid.x >= params.count {
         return;
     }
-    let index = params.first + gid.x;
+    let rec = islands[params.first + gid.x];
+    let index = rec.slot;
     var st = states[index];
     if st.status > RUNNING {
         return;
     }
-    let is = island_at(index);
+    let v = load_island(rec, 1u);
     let gauss_seidel = (params.flags & 1u) == 1u;
-    var spent = 0u;
+    var spent = NN + 4u * N;
     if st.status == NOT_STARTED {
-        project_stored(is, is.v);
-        contact_steps(is, gauss_seidel);
+        project_x();
+        contact_steps(gauss_seidel);
         st.status = RUNNING;
-        spent += product_cost(is);
+        spent += product_cost();
+    } else {
+{
+
+            eta[0u] = vectors[v + N + 0u];
+        }
+{
+
+            eta[1u] = vectors[v + N + 1u];
+        }
+{
+
+            eta[2u] = vectors[v + N + 2u];
+        }
+{
+
+            eta[3u] = vectors[v + N + 3u];
+        }
+
     }
-    var cost = product_cost(is) + 6u * is.n;
+    var cost = product_cost() + 6u * N;
     if gauss_seidel {
-        cost += product_cost(is);
+        cost += product_cost();
     }
+    var err = Scalar(0.0);
+    var tried = false;
     loop {
-        if spent > 0u && spent + cost > params.budget {
+        if tried && spent + cost > params.budget {
             break;
         }
+        tried = true;
         spent += cost;
-        velocity_of_stored(is, is.v);
-        let err = stop_measure(is, is.v, false);
-        scalars[4u * index + 3u] = err;
+        velocity_of_x();
+        err = stop_measure(false);
         if !finite(err) {
             st.status = FAILED;
             break;
@@ -323,51 +3076,886 @@ fn sweeps(@builtin(global_invocation_id) gid: vec3<u32>) {
             st.status = AT_CAP;
             break;
         }
-        sweep(is, gauss_seidel);
+        sweep(gauss_seidel);
         st.iterations++;
     }
-    finish_round(index, is.k, st);
+    scalars[4u * index + 3u] = err;
+{
+
+        vectors[v + 0u] = x[0u];
+    }
+{
+
+        vectors[v + 1u] = x[1u];
+    }
+{
+
+        vectors[v + 2u] = x[2u];
+    }
+{
+
+        vectors[v + 3u] = x[3u];
+    }
+{
+
+        vectors[v + 4u] = x[4u];
+    }
+{
+
+        vectors[v + 5u] = x[5u];
+    }
+{
+
+        vectors[v + 6u] = x[6u];
+    }
+{
+
+        vectors[v + 7u] = x[7u];
+    }
+{
+
+        vectors[v + 8u] = x[8u];
+    }
+{
+
+        vectors[v + 9u] = x[9u];
+    }
+{
+
+        vectors[v + 10u] = x[10u];
+    }
+{
+
+        vectors[v + 11u] = x[11u];
+    }
+
+{
+
+        vectors[v + N + 0u] = eta[0u];
+    }
+{
+
+        vectors[v + N + 1u] = eta[1u];
+    }
+{
+
+        vectors[v + N + 2u] = eta[2u];
+    }
+{
+
+        vectors[v + N + 3u] = eta[3u];
+    }
+
+    finish_round(index, st);
 }
 
-// APGD's start (apgd.rs apgd): x projected, u(x), its error, y = x,
-// u(y) = u(x), best = x, theta = 1, L from first_lipschitz.
-fn apgd_start(is: Island, index: u32) -> bool {
-    project_stored(is, is.v);
-    velocity_of_stored(is, is.v);
-    let err = stop_measure(is, is.v, false);
-    for (var r = 0u; r < is.n; r++) {
-        let x = vectors[is.v + r];
-        vectors[is.v + is.n + r] = un[r];
-        vectors[is.v + 2u * is.n + r] = x;
-        vectors[is.v + 3u * is.n + r] = un[r];
-        vectors[is.v + 4u * is.n + r] = x;
+// Writes APGD's vectors back to `vectors` from v.
+fn store_apgd(v: u32) {
+{
+
+        vectors[v + 0u] = x[0u];
+        vectors[v + N + 0u] = ux[0u];
+        vectors[v + 2u * N + 0u] = y[0u];
+        vectors[v + 3u * N + 0u] = uy[0u];
+        vectors[v + 4u * N + 0u] = best[0u];
     }
-    let s = 4u * index;
-    scalars[s] = Scalar(1.0);
-    scalars[s + 1u] = first_lipschitz(is);
-    scalars[s + 2u] = err;
-    scalars[s + 3u] = err;
-    return finite(err);
+{
+
+        vectors[v + 1u] = x[1u];
+        vectors[v + N + 1u] = ux[1u];
+        vectors[v + 2u * N + 1u] = y[1u];
+        vectors[v + 3u * N + 1u] = uy[1u];
+        vectors[v + 4u * N + 1u] = best[1u];
+    }
+{
+
+        vectors[v + 2u] = x[2u];
+        vectors[v + N + 2u] = ux[2u];
+        vectors[v + 2u * N + 2u] = y[2u];
+        vectors[v + 3u * N + 2u] = uy[2u];
+        vectors[v + 4u * N + 2u] = best[2u];
+    }
+{
+
+        vectors[v + 3u] = x[3u];
+        vectors[v + N + 3u] = ux[3u];
+        vectors[v + 2u * N + 3u] = y[3u];
+        vectors[v + 3u * N + 3u] = uy[3u];
+        vectors[v + 4u * N + 3u] = best[3u];
+    }
+{
+
+        vectors[v + 4u] = x[4u];
+        vectors[v + N + 4u] = ux[4u];
+        vectors[v + 2u * N + 4u] = y[4u];
+        vectors[v + 3u * N + 4u] = uy[4u];
+        vectors[v + 4u * N + 4u] = best[4u];
+    }
+{
+
+        vectors[v + 5u] = x[5u];
+        vectors[v + N + 5u] = ux[5u];
+        vectors[v + 2u * N + 5u] = y[5u];
+        vectors[v + 3u * N + 5u] = uy[5u];
+        vectors[v + 4u * N + 5u] = best[5u];
+    }
+{
+
+        vectors[v + 6u] = x[6u];
+        vectors[v + N + 6u] = ux[6u];
+        vectors[v + 2u * N + 6u] = y[6u];
+        vectors[v + 3u * N + 6u] = uy[6u];
+        vectors[v + 4u * N + 6u] = best[6u];
+    }
+{
+
+        vectors[v + 7u] = x[7u];
+        vectors[v + N + 7u] = ux[7u];
+        vectors[v + 2u * N + 7u] = y[7u];
+        vectors[v + 3u * N + 7u] = uy[7u];
+        vectors[v + 4u * N + 7u] = best[7u];
+    }
+{
+
+        vectors[v + 8u] = x[8u];
+        vectors[v + N + 8u] = ux[8u];
+        vectors[v + 2u * N + 8u] = y[8u];
+        vectors[v + 3u * N + 8u] = uy[8u];
+        vectors[v + 4u * N + 8u] = best[8u];
+    }
+{
+
+        vectors[v + 9u] = x[9u];
+        vectors[v + N + 9u] = ux[9u];
+        vectors[v + 2u * N + 9u] = y[9u];
+        vectors[v + 3u * N + 9u] = uy[9u];
+        vectors[v + 4u * N + 9u] = best[9u];
+    }
+{
+
+        vectors[v + 10u] = x[10u];
+        vectors[v + N + 10u] = ux[10u];
+        vectors[v + 2u * N + 10u] = y[10u];
+        vectors[v + 3u * N + 10u] = uy[10u];
+        vectors[v + 4u * N + 10u] = best[10u];
+    }
+{
+
+        vectors[v + 11u] = x[11u];
+        vectors[v + N + 11u] = ux[11u];
+        vectors[v + 2u * N + 11u] = y[11u];
+        vectors[v + 3u * N + 11u] = uy[11u];
+        vectors[v + 4u * N + 11u] = best[11u];
+    }
+
 }
 
 // ||W e|| / ||e|| for e = (1, ..., 1), else the largest |W_rr|, else 1.
-fn first_lipschitz(is: Island) -> Scalar {
+fn first_lipschitz() -> Scalar {
     var s2 = Scalar(0.0);
-    for (var r = 0u; r < is.n; r++) {
+{
+
         var s = Scalar(0.0);
-        for (var j = 0u; j < is.n; j++) {
-            s += values[is.w + r * is.n + j];
+{
+
+            s += w[0u * N + 0u];
         }
+{
+
+            s += w[0u * N + 1u];
+        }
+{
+
+            s += w[0u * N + 2u];
+        }
+{
+
+            s += w[0u * N + 3u];
+        }
+{
+
+            s += w[0u * N + 4u];
+        }
+{
+
+            s += w[0u * N + 5u];
+        }
+{
+
+            s += w[0u * N + 6u];
+        }
+{
+
+            s += w[0u * N + 7u];
+        }
+{
+
+            s += w[0u * N + 8u];
+        }
+{
+
+            s += w[0u * N + 9u];
+        }
+{
+
+            s += w[0u * N + 10u];
+        }
+{
+
+            s += w[0u * N + 11u];
+        }
+
         s2 += s * s;
     }
-    let l = sqrt(s2 / Scalar(is.n));
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[1u * N + 0u];
+        }
+{
+
+            s += w[1u * N + 1u];
+        }
+{
+
+            s += w[1u * N + 2u];
+        }
+{
+
+            s += w[1u * N + 3u];
+        }
+{
+
+            s += w[1u * N + 4u];
+        }
+{
+
+            s += w[1u * N + 5u];
+        }
+{
+
+            s += w[1u * N + 6u];
+        }
+{
+
+            s += w[1u * N + 7u];
+        }
+{
+
+            s += w[1u * N + 8u];
+        }
+{
+
+            s += w[1u * N + 9u];
+        }
+{
+
+            s += w[1u * N + 10u];
+        }
+{
+
+            s += w[1u * N + 11u];
+        }
+
+        s2 += s * s;
+    }
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[2u * N + 0u];
+        }
+{
+
+            s += w[2u * N + 1u];
+        }
+{
+
+            s += w[2u * N + 2u];
+        }
+{
+
+            s += w[2u * N + 3u];
+        }
+{
+
+            s += w[2u * N + 4u];
+        }
+{
+
+            s += w[2u * N + 5u];
+        }
+{
+
+            s += w[2u * N + 6u];
+        }
+{
+
+            s += w[2u * N + 7u];
+        }
+{
+
+            s += w[2u * N + 8u];
+        }
+{
+
+            s += w[2u * N + 9u];
+        }
+{
+
+            s += w[2u * N + 10u];
+        }
+{
+
+            s += w[2u * N + 11u];
+        }
+
+        s2 += s * s;
+    }
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[3u * N + 0u];
+        }
+{
+
+            s += w[3u * N + 1u];
+        }
+{
+
+            s += w[3u * N + 2u];
+        }
+{
+
+            s += w[3u * N + 3u];
+        }
+{
+
+            s += w[3u * N + 4u];
+        }
+{
+
+            s += w[3u * N + 5u];
+        }
+{
+
+            s += w[3u * N + 6u];
+        }
+{
+
+            s += w[3u * N + 7u];
+        }
+{
+
+            s += w[3u * N + 8u];
+        }
+{
+
+            s += w[3u * N + 9u];
+        }
+{
+
+            s += w[3u * N + 10u];
+        }
+{
+
+            s += w[3u * N + 11u];
+        }
+
+        s2 += s * s;
+    }
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[4u * N + 0u];
+        }
+{
+
+            s += w[4u * N + 1u];
+        }
+{
+
+            s += w[4u * N + 2u];
+        }
+{
+
+            s += w[4u * N + 3u];
+        }
+{
+
+            s += w[4u * N + 4u];
+        }
+{
+
+            s += w[4u * N + 5u];
+        }
+{
+
+            s += w[4u * N + 6u];
+        }
+{
+
+            s += w[4u * N + 7u];
+        }
+{
+
+            s += w[4u * N + 8u];
+        }
+{
+
+            s += w[4u * N + 9u];
+        }
+{
+
+            s += w[4u * N + 10u];
+        }
+{
+
+            s += w[4u * N + 11u];
+        }
+
+        s2 += s * s;
+    }
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[5u * N + 0u];
+        }
+{
+
+            s += w[5u * N + 1u];
+        }
+{
+
+            s += w[5u * N + 2u];
+        }
+{
+
+            s += w[5u * N + 3u];
+        }
+{
+
+            s += w[5u * N + 4u];
+        }
+{
+
+            s += w[5u * N + 5u];
+        }
+{
+
+            s += w[5u * N + 6u];
+        }
+{
+
+            s += w[5u * N + 7u];
+        }
+{
+
+            s += w[5u * N + 8u];
+        }
+{
+
+            s += w[5u * N + 9u];
+        }
+{
+
+            s += w[5u * N + 10u];
+        }
+{
+
+            s += w[5u * N + 11u];
+        }
+
+        s2 += s * s;
+    }
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[6u * N + 0u];
+        }
+{
+
+            s += w[6u * N + 1u];
+        }
+{
+
+            s += w[6u * N + 2u];
+        }
+{
+
+            s += w[6u * N + 3u];
+        }
+{
+
+            s += w[6u * N + 4u];
+        }
+{
+
+            s += w[6u * N + 5u];
+        }
+{
+
+            s += w[6u * N + 6u];
+        }
+{
+
+            s += w[6u * N + 7u];
+        }
+{
+
+            s += w[6u * N + 8u];
+        }
+{
+
+            s += w[6u * N + 9u];
+        }
+{
+
+            s += w[6u * N + 10u];
+        }
+{
+
+            s += w[6u * N + 11u];
+        }
+
+        s2 += s * s;
+    }
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[7u * N + 0u];
+        }
+{
+
+            s += w[7u * N + 1u];
+        }
+{
+
+            s += w[7u * N + 2u];
+        }
+{
+
+            s += w[7u * N + 3u];
+        }
+{
+
+            s += w[7u * N + 4u];
+        }
+{
+
+            s += w[7u * N + 5u];
+        }
+{
+
+            s += w[7u * N + 6u];
+        }
+{
+
+            s += w[7u * N + 7u];
+        }
+{
+
+            s += w[7u * N + 8u];
+        }
+{
+
+            s += w[7u * N + 9u];
+        }
+{
+
+            s += w[7u * N + 10u];
+        }
+{
+
+            s += w[7u * N + 11u];
+        }
+
+        s2 += s * s;
+    }
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[8u * N + 0u];
+        }
+{
+
+            s += w[8u * N + 1u];
+        }
+{
+
+            s += w[8u * N + 2u];
+        }
+{
+
+            s += w[8u * N + 3u];
+        }
+{
+
+            s += w[8u * N + 4u];
+        }
+{
+
+            s += w[8u * N + 5u];
+        }
+{
+
+            s += w[8u * N + 6u];
+        }
+{
+
+            s += w[8u * N + 7u];
+        }
+{
+
+            s += w[8u * N + 8u];
+        }
+{
+
+            s += w[8u * N + 9u];
+        }
+{
+
+            s += w[8u * N + 10u];
+        }
+{
+
+            s += w[8u * N + 11u];
+        }
+
+        s2 += s * s;
+    }
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[9u * N + 0u];
+        }
+{
+
+            s += w[9u * N + 1u];
+        }
+{
+
+            s += w[9u * N + 2u];
+        }
+{
+
+            s += w[9u * N + 3u];
+        }
+{
+
+            s += w[9u * N + 4u];
+        }
+{
+
+            s += w[9u * N + 5u];
+        }
+{
+
+            s += w[9u * N + 6u];
+        }
+{
+
+            s += w[9u * N + 7u];
+        }
+{
+
+            s += w[9u * N + 8u];
+        }
+{
+
+            s += w[9u * N + 9u];
+        }
+{
+
+            s += w[9u * N + 10u];
+        }
+{
+
+            s += w[9u * N + 11u];
+        }
+
+        s2 += s * s;
+    }
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[10u * N + 0u];
+        }
+{
+
+            s += w[10u * N + 1u];
+        }
+{
+
+            s += w[10u * N + 2u];
+        }
+{
+
+            s += w[10u * N + 3u];
+        }
+{
+
+            s += w[10u * N + 4u];
+        }
+{
+
+            s += w[10u * N + 5u];
+        }
+{
+
+            s += w[10u * N + 6u];
+        }
+{
+
+            s += w[10u * N + 7u];
+        }
+{
+
+            s += w[10u * N + 8u];
+        }
+{
+
+            s += w[10u * N + 9u];
+        }
+{
+
+            s += w[10u * N + 10u];
+        }
+{
+
+            s += w[10u * N + 11u];
+        }
+
+        s2 += s * s;
+    }
+{
+
+        var s = Scalar(0.0);
+{
+
+            s += w[11u * N + 0u];
+        }
+{
+
+            s += w[11u * N + 1u];
+        }
+{
+
+            s += w[11u * N + 2u];
+        }
+{
+
+            s += w[11u * N + 3u];
+        }
+{
+
+            s += w[11u * N + 4u];
+        }
+{
+
+            s += w[11u * N + 5u];
+        }
+{
+
+            s += w[11u * N + 6u];
+        }
+{
+
+            s += w[11u * N + 7u];
+        }
+{
+
+            s += w[11u * N + 8u];
+        }
+{
+
+            s += w[11u * N + 9u];
+        }
+{
+
+            s += w[11u * N + 10u];
+        }
+{
+
+            s += w[11u * N + 11u];
+        }
+
+        s2 += s * s;
+    }
+
+    let l = sqrt(s2 / Scalar(N));
     if l > Scalar(0.0) && finite(l) {
         return l;
     }
     var d = Scalar(0.0);
-    for (var r = 0u; r < is.n; r++) {
-        d = max(d, abs(values[is.w + r * is.n + r]));
+{
+
+        d = max(d, abs(w[0u * N + 0u]));
     }
+{
+
+        d = max(d, abs(w[1u * N + 1u]));
+    }
+{
+
+        d = max(d, abs(w[2u * N + 2u]));
+    }
+{
+
+        d = max(d, abs(w[3u * N + 3u]));
+    }
+{
+
+        d = max(d, abs(w[4u * N + 4u]));
+    }
+{
+
+        d = max(d, abs(w[5u * N + 5u]));
+    }
+{
+
+        d = max(d, abs(w[6u * N + 6u]));
+    }
+{
+
+        d = max(d, abs(w[7u * N + 7u]));
+    }
+{
+
+        d = max(d, abs(w[8u * N + 8u]));
+    }
+{
+
+        d = max(d, abs(w[9u * N + 9u]));
+    }
+{
+
+        d = max(d, abs(w[10u * N + 10u]));
+    }
+{
+
+        d = max(d, abs(w[11u * N + 11u]));
+    }
+
     if d > Scalar(0.0) && finite(d) {
         return d;
     }
@@ -376,88 +3964,521 @@ fn first_lipschitz(is: Island) -> Scalar {
 
 // One backtracking try from y with step 1/L: xn = P_K(y - u(y) / L),
 // un = u(xn); true when d^T W d <= L |d|^2, d = xn - y.
-fn apgd_try(is: Island, lipschitz: Scalar) -> bool {
-    let y0 = is.v + 2u * is.n;
-    let uy0 = is.v + 3u * is.n;
+fn apgd_try(lipschitz: Scalar) -> bool {
     let t = Scalar(1.0) / lipschitz;
-    for (var i = 0u; i < is.k; i++) {
-        let c = 3u * i;
+{
+
+        let c = 3u * 0u;
         let p = project_on_cone(
-            vec3<Scalar>(
-                vectors[y0 + c] - t * vectors[uy0 + c],
-                vectors[y0 + c + 1u] - t * vectors[uy0 + c + 1u],
-                vectors[y0 + c + 2u] - t * vectors[uy0 + c + 2u]
-            ),
-            values[is.mu + i]
+            vec3<Scalar>(y[c] - t * uy[c], y[c + 1u] - t * uy[c + 1u], y[c + 2u] - t * uy[c + 2u]),
+            mu[0u]
         );
         xn[c] = p.x;
         xn[c + 1u] = p.y;
         xn[c + 2u] = p.z;
     }
-    velocity_of_trial(is);
+{
+
+        let c = 3u * 1u;
+        let p = project_on_cone(
+            vec3<Scalar>(y[c] - t * uy[c], y[c + 1u] - t * uy[c + 1u], y[c + 2u] - t * uy[c + 2u]),
+            mu[1u]
+        );
+        xn[c] = p.x;
+        xn[c + 1u] = p.y;
+        xn[c + 2u] = p.z;
+    }
+{
+
+        let c = 3u * 2u;
+        let p = project_on_cone(
+            vec3<Scalar>(y[c] - t * uy[c], y[c + 1u] - t * uy[c + 1u], y[c + 2u] - t * uy[c + 2u]),
+            mu[2u]
+        );
+        xn[c] = p.x;
+        xn[c + 1u] = p.y;
+        xn[c + 2u] = p.z;
+    }
+{
+
+        let c = 3u * 3u;
+        let p = project_on_cone(
+            vec3<Scalar>(y[c] - t * uy[c], y[c + 1u] - t * uy[c + 1u], y[c + 2u] - t * uy[c + 2u]),
+            mu[3u]
+        );
+        xn[c] = p.x;
+        xn[c + 1u] = p.y;
+        xn[c + 2u] = p.z;
+    }
+
+    velocity_of_trial();
     var curvature = Scalar(0.0);
     var d2 = Scalar(0.0);
     var g2 = Scalar(0.0);
-    for (var r = 0u; r < is.n; r++) {
-        let d = xn[r] - vectors[y0 + r];
-        curvature += d * (un[r] - vectors[uy0 + r]);
+{
+
+        let d = xn[0u] - y[0u];
+        curvature += d * (un[0u] - uy[0u]);
         d2 += d * d;
-        g2 += vectors[uy0 + r] * vectors[uy0 + r];
+        g2 += uy[0u] * uy[0u];
     }
+{
+
+        let d = xn[1u] - y[1u];
+        curvature += d * (un[1u] - uy[1u]);
+        d2 += d * d;
+        g2 += uy[1u] * uy[1u];
+    }
+{
+
+        let d = xn[2u] - y[2u];
+        curvature += d * (un[2u] - uy[2u]);
+        d2 += d * d;
+        g2 += uy[2u] * uy[2u];
+    }
+{
+
+        let d = xn[3u] - y[3u];
+        curvature += d * (un[3u] - uy[3u]);
+        d2 += d * d;
+        g2 += uy[3u] * uy[3u];
+    }
+{
+
+        let d = xn[4u] - y[4u];
+        curvature += d * (un[4u] - uy[4u]);
+        d2 += d * d;
+        g2 += uy[4u] * uy[4u];
+    }
+{
+
+        let d = xn[5u] - y[5u];
+        curvature += d * (un[5u] - uy[5u]);
+        d2 += d * d;
+        g2 += uy[5u] * uy[5u];
+    }
+{
+
+        let d = xn[6u] - y[6u];
+        curvature += d * (un[6u] - uy[6u]);
+        d2 += d * d;
+        g2 += uy[6u] * uy[6u];
+    }
+{
+
+        let d = xn[7u] - y[7u];
+        curvature += d * (un[7u] - uy[7u]);
+        d2 += d * d;
+        g2 += uy[7u] * uy[7u];
+    }
+{
+
+        let d = xn[8u] - y[8u];
+        curvature += d * (un[8u] - uy[8u]);
+        d2 += d * d;
+        g2 += uy[8u] * uy[8u];
+    }
+{
+
+        let d = xn[9u] - y[9u];
+        curvature += d * (un[9u] - uy[9u]);
+        d2 += d * d;
+        g2 += uy[9u] * uy[9u];
+    }
+{
+
+        let d = xn[10u] - y[10u];
+        curvature += d * (un[10u] - uy[10u]);
+        d2 += d * d;
+        g2 += uy[10u] * uy[10u];
+    }
+{
+
+        let d = xn[11u] - y[11u];
+        curvature += d * (un[11u] - uy[11u]);
+        d2 += d * d;
+        g2 += uy[11u] * uy[11u];
+    }
+
     // Or a step that rounding decides (apgd.rs accept_step).
     let noise = Scalar(16.0) * SCALAR_EPSILON;
     return curvature <= lipschitz * d2 || lipschitz * lipschitz * d2 <= noise * noise * g2;
 }
 
+// APGD's scalars of one island: theta, L, best error, last error.
+struct ApgdScalars {
+    theta: Scalar,
+    lipschitz: Scalar,
+    best: Scalar,
+    last: Scalar,
+}
+
 // After an accepted try: the best iterate, the momentum, the gradient
 // restart, x = xn (apgd.rs apgd_iteration); counts the iteration and a
 // restart in st, or writes FAILED into it.
-fn apgd_accept(is: Island, index: u32, st: ptr<function, FrictionState>) {
-    let s = 4u * index;
-    let err = stop_measure(is, 0u, true);
-    scalars[s + 3u] = err;
+fn apgd_accept(a: ptr<function, ApgdScalars>, st: ptr<function, FrictionState>) {
+    let err = stop_measure(true);
+    (*a).last = err;
     if !finite(err) {
         (*st).status = FAILED;
         return;
     }
-    if err < scalars[s + 2u] {
-        scalars[s + 2u] = err;
-        for (var r = 0u; r < is.n; r++) {
-            vectors[is.v + 4u * is.n + r] = xn[r];
+    if err < (*a).best {
+        (*a).best = err;
+{
+
+            best[0u] = xn[0u];
         }
+{
+
+            best[1u] = xn[1u];
+        }
+{
+
+            best[2u] = xn[2u];
+        }
+{
+
+            best[3u] = xn[3u];
+        }
+{
+
+            best[4u] = xn[4u];
+        }
+{
+
+            best[5u] = xn[5u];
+        }
+{
+
+            best[6u] = xn[6u];
+        }
+{
+
+            best[7u] = xn[7u];
+        }
+{
+
+            best[8u] = xn[8u];
+        }
+{
+
+            best[9u] = xn[9u];
+        }
+{
+
+            best[10u] = xn[10u];
+        }
+{
+
+            best[11u] = xn[11u];
+        }
+
     }
-    let th = scalars[s];
+    let th = (*a).theta;
     let th_new = Scalar(0.5) * (th * sqrt(th * th + Scalar(4.0)) - th * th);
     let beta = th * (Scalar(1.0) - th) / (th * th + th_new);
-    let x0 = is.v;
-    let ux0 = is.v + is.n;
-    let y0 = is.v + 2u * is.n;
-    let uy0 = is.v + 3u * is.n;
     var g_dot = Scalar(0.0);
-    for (var r = 0u; r < is.n; r++) {
-        g_dot += vectors[uy0 + r] * (xn[r] - vectors[x0 + r]);
+{
+
+        g_dot += uy[0u] * (xn[0u] - x[0u]);
     }
+{
+
+        g_dot += uy[1u] * (xn[1u] - x[1u]);
+    }
+{
+
+        g_dot += uy[2u] * (xn[2u] - x[2u]);
+    }
+{
+
+        g_dot += uy[3u] * (xn[3u] - x[3u]);
+    }
+{
+
+        g_dot += uy[4u] * (xn[4u] - x[4u]);
+    }
+{
+
+        g_dot += uy[5u] * (xn[5u] - x[5u]);
+    }
+{
+
+        g_dot += uy[6u] * (xn[6u] - x[6u]);
+    }
+{
+
+        g_dot += uy[7u] * (xn[7u] - x[7u]);
+    }
+{
+
+        g_dot += uy[8u] * (xn[8u] - x[8u]);
+    }
+{
+
+        g_dot += uy[9u] * (xn[9u] - x[9u]);
+    }
+{
+
+        g_dot += uy[10u] * (xn[10u] - x[10u]);
+    }
+{
+
+        g_dot += uy[11u] * (xn[11u] - x[11u]);
+    }
+
     let restart = g_dot > Scalar(0.0);
-    for (var r = 0u; r < is.n; r++) {
+{
+
         if restart {
-            vectors[y0 + r] = xn[r];
-            vectors[uy0 + r] = un[r];
+            y[0u] = xn[0u];
+            uy[0u] = un[0u];
         } else {
-            vectors[y0 + r] = xn[r] + beta * (xn[r] - vectors[x0 + r]);
-            vectors[uy0 + r] = un[r] + beta * (un[r] - vectors[ux0 + r]);
+            y[0u] = xn[0u] + beta * (xn[0u] - x[0u]);
+            uy[0u] = un[0u] + beta * (un[0u] - ux[0u]);
         }
-        vectors[x0 + r] = xn[r];
-        vectors[ux0 + r] = un[r];
+        x[0u] = xn[0u];
+        ux[0u] = un[0u];
     }
+{
+
+        if restart {
+            y[1u] = xn[1u];
+            uy[1u] = un[1u];
+        } else {
+            y[1u] = xn[1u] + beta * (xn[1u] - x[1u]);
+            uy[1u] = un[1u] + beta * (un[1u] - ux[1u]);
+        }
+        x[1u] = xn[1u];
+        ux[1u] = un[1u];
+    }
+{
+
+        if restart {
+            y[2u] = xn[2u];
+            uy[2u] = un[2u];
+        } else {
+            y[2u] = xn[2u] + beta * (xn[2u] - x[2u]);
+            uy[2u] = un[2u] + beta * (un[2u] - ux[2u]);
+        }
+        x[2u] = xn[2u];
+        ux[2u] = un[2u];
+    }
+{
+
+        if restart {
+            y[3u] = xn[3u];
+            uy[3u] = un[3u];
+        } else {
+            y[3u] = xn[3u] + beta * (xn[3u] - x[3u]);
+            uy[3u] = un[3u] + beta * (un[3u] - ux[3u]);
+        }
+        x[3u] = xn[3u];
+        ux[3u] = un[3u];
+    }
+{
+
+        if restart {
+            y[4u] = xn[4u];
+            uy[4u] = un[4u];
+        } else {
+            y[4u] = xn[4u] + beta * (xn[4u] - x[4u]);
+            uy[4u] = un[4u] + beta * (un[4u] - ux[4u]);
+        }
+        x[4u] = xn[4u];
+        ux[4u] = un[4u];
+    }
+{
+
+        if restart {
+            y[5u] = xn[5u];
+            uy[5u] = un[5u];
+        } else {
+            y[5u] = xn[5u] + beta * (xn[5u] - x[5u]);
+            uy[5u] = un[5u] + beta * (un[5u] - ux[5u]);
+        }
+        x[5u] = xn[5u];
+        ux[5u] = un[5u];
+    }
+{
+
+        if restart {
+            y[6u] = xn[6u];
+            uy[6u] = un[6u];
+        } else {
+            y[6u] = xn[6u] + beta * (xn[6u] - x[6u]);
+            uy[6u] = un[6u] + beta * (un[6u] - ux[6u]);
+        }
+        x[6u] = xn[6u];
+        ux[6u] = un[6u];
+    }
+{
+
+        if restart {
+            y[7u] = xn[7u];
+            uy[7u] = un[7u];
+        } else {
+            y[7u] = xn[7u] + beta * (xn[7u] - x[7u]);
+            uy[7u] = un[7u] + beta * (un[7u] - ux[7u]);
+        }
+        x[7u] = xn[7u];
+        ux[7u] = un[7u];
+    }
+{
+
+        if restart {
+            y[8u] = xn[8u];
+            uy[8u] = un[8u];
+        } else {
+            y[8u] = xn[8u] + beta * (xn[8u] - x[8u]);
+            uy[8u] = un[8u] + beta * (un[8u] - ux[8u]);
+        }
+        x[8u] = xn[8u];
+        ux[8u] = un[8u];
+    }
+{
+
+        if restart {
+            y[9u] = xn[9u];
+            uy[9u] = un[9u];
+        } else {
+            y[9u] = xn[9u] + beta * (xn[9u] - x[9u]);
+            uy[9u] = un[9u] + beta * (un[9u] - ux[9u]);
+        }
+        x[9u] = xn[9u];
+        ux[9u] = un[9u];
+    }
+{
+
+        if restart {
+            y[10u] = xn[10u];
+            uy[10u] = un[10u];
+        } else {
+            y[10u] = xn[10u] + beta * (xn[10u] - x[10u]);
+            uy[10u] = un[10u] + beta * (un[10u] - ux[10u]);
+        }
+        x[10u] = xn[10u];
+        ux[10u] = un[10u];
+    }
+{
+
+        if restart {
+            y[11u] = xn[11u];
+            uy[11u] = un[11u];
+        } else {
+            y[11u] = xn[11u] + beta * (xn[11u] - x[11u]);
+            uy[11u] = un[11u] + beta * (un[11u] - ux[11u]);
+        }
+        x[11u] = xn[11u];
+        ux[11u] = un[11u];
+    }
+
     if restart {
-        scalars[s] = Scalar(1.0);
+        (*a).theta = Scalar(1.0);
         (*st).restarts++;
     } else {
-        scalars[s] = th_new;
+        (*a).theta = th_new;
     }
-    scalars[s + 1u] = scalars[s + 1u] * Scalar(0.9);
+    (*a).lipschitz = (*a).lipschitz * Scalar(0.9);
     (*st).iterations++;
     (*st).doublings = 0u;
+}
+
+// APGD's start (apgd.rs apgd): x projected, u(x), its error, y = x,
+// u(y) = u(x), best = x, theta = 1, L from first_lipschitz; false when the
+// error is not finite.
+fn apgd_start(a: ptr<function, ApgdScalars>) -> bool {
+    project_x();
+    velocity_of_x();
+    let err = stop_measure(false);
+{
+
+        ux[0u] = un[0u];
+        y[0u] = x[0u];
+        uy[0u] = un[0u];
+        best[0u] = x[0u];
+    }
+{
+
+        ux[1u] = un[1u];
+        y[1u] = x[1u];
+        uy[1u] = un[1u];
+        best[1u] = x[1u];
+    }
+{
+
+        ux[2u] = un[2u];
+        y[2u] = x[2u];
+        uy[2u] = un[2u];
+        best[2u] = x[2u];
+    }
+{
+
+        ux[3u] = un[3u];
+        y[3u] = x[3u];
+        uy[3u] = un[3u];
+        best[3u] = x[3u];
+    }
+{
+
+        ux[4u] = un[4u];
+        y[4u] = x[4u];
+        uy[4u] = un[4u];
+        best[4u] = x[4u];
+    }
+{
+
+        ux[5u] = un[5u];
+        y[5u] = x[5u];
+        uy[5u] = un[5u];
+        best[5u] = x[5u];
+    }
+{
+
+        ux[6u] = un[6u];
+        y[6u] = x[6u];
+        uy[6u] = un[6u];
+        best[6u] = x[6u];
+    }
+{
+
+        ux[7u] = un[7u];
+        y[7u] = x[7u];
+        uy[7u] = un[7u];
+        best[7u] = x[7u];
+    }
+{
+
+        ux[8u] = un[8u];
+        y[8u] = x[8u];
+        uy[8u] = un[8u];
+        best[8u] = x[8u];
+    }
+{
+
+        ux[9u] = un[9u];
+        y[9u] = x[9u];
+        uy[9u] = un[9u];
+        best[9u] = x[9u];
+    }
+{
+
+        ux[10u] = un[10u];
+        y[10u] = x[10u];
+        uy[10u] = un[10u];
+        best[10u] = x[10u];
+    }
+{
+
+        ux[11u] = un[11u];
+        y[11u] = x[11u];
+        uy[11u] = un[11u];
+        best[11u] = x[11u];
+    }
+
+    *a = ApgdScalars(Scalar(1.0), first_lipschitz(), err, err);
+    return finite(err);
 }
 
 @compute @workgroup_size(64)
@@ -465,27 +4486,34 @@ fn apgd(@builtin(global_invocation_id) gid: vec3<u32>) {
     if gid.x >= params.count {
         return;
     }
-    let index = params.first + gid.x;
+    let rec = islands[params.first + gid.x];
+    let index = rec.slot;
     var st = states[index];
     if st.status > RUNNING {
         return;
     }
-    let is = island_at(index);
     let s = 4u * index;
-    var spent = 0u;
+    var spent = NN + 6u * N;
+    var a: ApgdScalars;
+    var v: u32;
     if st.status == NOT_STARTED {
+        v = load_island(rec, 1u);
         st.status = RUNNING;
-        if !apgd_start(is, index) {
+        if !apgd_start(&a) {
             st.status = FAILED;
         }
-        spent += 2u * product_cost(is) + 8u * is.n;
+        spent += 2u * product_cost() + 8u * N;
+    } else {
+        v = load_island(rec, 5u);
+        a = ApgdScalars(scalars[s], scalars[s + 1u], scalars[s + 2u], scalars[s + 3u]);
     }
-    let cost = product_cost(is) + 10u * is.n;
+    let cost = product_cost() + 10u * N;
+    var tried = false;
     loop {
         if st.status != RUNNING {
             break;
         }
-        if scalars[s + 2u] <= controls.tolerance {
+        if a.best <= controls.tolerance {
             st.status = CONVERGED;
             break;
         }
@@ -493,21 +4521,27 @@ fn apgd(@builtin(global_invocation_id) gid: vec3<u32>) {
             st.status = AT_CAP;
             break;
         }
-        if spent > 0u && spent + cost > params.budget {
+        if tried && spent + cost > params.budget {
             break;
         }
+        tried = true;
         spent += cost;
-        let lipschitz = scalars[s + 1u];
-        if apgd_try(is, lipschitz) {
-            apgd_accept(is, index, &st);
+        let lipschitz = a.lipschitz;
+        if apgd_try(lipschitz) {
+            apgd_accept(&a, &st);
         } else {
             let doubled = Scalar(2.0) * lipschitz;
-            scalars[s + 1u] = doubled;
+            a.lipschitz = doubled;
             st.doublings++;
             if st.doublings >= MAX_BACKTRACKS || !finite(doubled) {
                 st.status = FAILED;
             }
         }
     }
-    finish_round(index, is.k, st);
+    scalars[s] = a.theta;
+    scalars[s + 1u] = a.lipschitz;
+    scalars[s + 2u] = a.best;
+    scalars[s + 3u] = a.last;
+    store_apgd(v);
+    finish_round(index, st);
 }

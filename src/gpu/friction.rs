@@ -111,7 +111,32 @@ pub fn solve_projected_on_gpu(
     settings: &ProjectedSettings,
     gpu: &GpuSettings,
 ) -> Result<(Vec<ProjectedSolution>, ProjectedGpuFigures), Error> {
+    solve_projected_on_gpu_against(ctx, problems, problems, warm, settings, gpu)
+}
+
+/// [`solve_projected_on_gpu`] where the shader iterates on `on_gpu[i]`
+/// (the same island as `problems[i]`, assembled elsewhere: on the GPU, in
+/// the shader's precision) while every answer is judged, polished and
+/// repaired against `problems[i]`, the f64 oracle. Shapes (k, μ) must
+/// match: a mismatch is an [`Error::Gpu`].
+pub(crate) fn solve_projected_on_gpu_against(
+    ctx: &GpuContext,
+    on_gpu: &[FrictionProblem],
+    problems: &[FrictionProblem],
+    warm: Option<&[Vec<f64>]>,
+    settings: &ProjectedSettings,
+    gpu: &GpuSettings,
+) -> Result<(Vec<ProjectedSolution>, ProjectedGpuFigures), Error> {
     settings.validate()?;
+    let same_shape = |(a, b): (&FrictionProblem, &FrictionProblem)| {
+        let mu_bits = |p: &FrictionProblem| p.mu.iter().map(|m| m.to_bits()).collect::<Vec<_>>();
+        mu_bits(a) == mu_bits(b) && a.q.len() == b.q.len() && a.w.len() == b.w.len()
+    };
+    if on_gpu.len() != problems.len() || !on_gpu.iter().zip(problems).all(same_shape) {
+        return Err(Error::Gpu(
+            "the GPU's frictional islands differ in shape from the CPU's".into(),
+        ));
+    }
     let r0 = |i: usize| warm.and_then(|w| w.get(i)).map(Vec::as_slice);
     let valid: Vec<bool> = problems
         .iter()
@@ -122,11 +147,13 @@ pub fn solve_projected_on_gpu(
             check_warm(&format!("problem {i}"), p, r0(i))?;
         }
     }
+    let gpu_problems = on_gpu;
     let on_gpu: Vec<usize> = (0..problems.len())
-        .filter(|&i| valid[i] && problems[i].contacts() <= MAX_GPU_CONTACTS)
+        .filter(|&i| valid[i] && gpu_problems[i].validate("problem").is_ok())
+        .filter(|&i| problems[i].contacts() <= MAX_GPU_CONTACTS)
         .collect();
     let t_gpu = Instant::now();
-    let (runs, mut figures) = run_on_gpu(ctx, problems, &on_gpu, warm, settings, gpu)?;
+    let (runs, mut figures) = run_on_gpu(ctx, gpu_problems, &on_gpu, warm, settings, gpu)?;
     figures.gpu_seconds = t_gpu.elapsed().as_secs_f64();
 
     let t_check = Instant::now();

@@ -24,7 +24,9 @@ pub(crate) struct PackedFrictionIsland {
     pub data: u32,
     /// Offset of the island's vectors in `vectors`.
     pub vectors: u32,
-    pub _pad: u32,
+    /// The island's place in the chunk: its entry in `states` and
+    /// `scalars` (the table the rounds see holds only running islands).
+    pub slot: u32,
 }
 
 /// WGSL `FrictionState`: where one island's iteration stands.
@@ -43,7 +45,6 @@ pub(crate) struct FrictionState {
 #[allow(dead_code, reason = "the shader's value, named for the record")]
 pub(crate) const NOT_STARTED: u32 = 0;
 /// Still iterating.
-#[allow(dead_code, reason = "the shader's value, named for the record")]
 pub(crate) const RUNNING: u32 = 1;
 /// The shader's stop measure met the tolerance.
 #[cfg_attr(not(test), allow(dead_code))]
@@ -128,7 +129,7 @@ pub(crate) fn pack_friction_chunks(
                 k: k as u32,
                 data: chunk.values.len() as u32,
                 vectors: chunk.vectors.len() as u32,
-                _pad: 0,
+                slot: chunk.table.len() as u32,
             });
             chunk.values.extend_from_slice(&p.w);
             chunk.values.extend_from_slice(&p.q);
@@ -197,9 +198,9 @@ pub(crate) fn controls_buffer(
         })
 }
 
-/// The chunk's device buffers (bindings 1-6).
+/// The chunk's device buffers (bindings 2-6; the table of binding 1 is
+/// made per submission from the islands still running).
 struct ChunkBuffers {
-    islands: wgpu::Buffer,
     values: wgpu::Buffer,
     vectors: wgpu::Buffer,
     vectors_size: u64,
@@ -224,8 +225,7 @@ impl RoundsJob<'_> {
         let vectors = scalars_to_bytes(&chunk.vectors, p);
         let states_size = count * std::mem::size_of::<FrictionState>() as u64;
         let scalars_size = count * SCALARS as u64 * p.bytes();
-        let b = ChunkBuffers {
-            islands: ctx.storage("friction islands", bytemuck::cast_slice(&chunk.table)),
+        ChunkBuffers {
             values: ctx.storage("friction values", &scalars_to_bytes(&chunk.values, p)),
             vectors_size: vectors.len() as u64,
             vectors: ctx.storage("friction vectors", &vectors),
@@ -234,24 +234,27 @@ impl RoundsJob<'_> {
             states: ctx.storage_zeroed("friction states", states_size),
             states_size,
             unfinished: ctx.storage_zeroed("friction unfinished", UNFINISHED_BYTES),
-        };
-        b
+        }
     }
 
-    /// One dispatch range per island size k, through its kernel (a lane
-    /// never waits on a larger island): (k, ranges).
+    /// One dispatch range per island size k over `table` (sorted by k;
+    /// uploaded here as binding 1), through its kernel (a lane never waits
+    /// on a larger island): (k, ranges).
     fn buckets(
         &self,
-        chunk: &FrictionChunk,
+        table: &[PackedFrictionIsland],
         b: &ChunkBuffers,
     ) -> Result<Vec<(u32, Ranges)>, Error> {
         let gauss_seidel = (self.method == ProjectedMethod::GaussSeidel) as u32;
+        let islands = self
+            .ctx
+            .storage("friction islands", bytemuck::cast_slice(table));
         let mut out = Vec::new();
         let mut first = 0;
-        while first < chunk.table.len() {
-            let k = chunk.table[first].k;
+        while first < table.len() {
+            let k = table[first].k;
             let stage = self.stage(k)?;
-            let last = first + chunk.table[first..].iter().take_while(|r| r.k == k).count();
+            let last = first + table[first..].iter().take_while(|r| r.k == k).count();
             let span = Span {
                 budget: self.budget,
                 flags: gauss_seidel,
@@ -262,7 +265,7 @@ impl RoundsJob<'_> {
                     self.ctx,
                     &[
                         params,
-                        &b.islands,
+                        &islands,
                         &b.values,
                         &b.vectors,
                         &b.scalars,
@@ -279,11 +282,15 @@ impl RoundsJob<'_> {
     }
 
     /// Runs the chunk's rounds (doubling the rounds per submission up to
-    /// 256) until no island runs, and reads the answers back.
+    /// 256) until no island runs, and reads the answers back. After each
+    /// submission the islands' states come back and the next one
+    /// dispatches only the islands still running (on lavapipe every
+    /// invocation of a finished island still cost about 1.5 µs a round,
+    /// measured: a batch's few slow islands made its rounds cost as much as
+    /// all of it).
     pub(crate) fn run(&self, chunk: &FrictionChunk) -> Result<ChunkRun, Error> {
         let ctx = self.ctx;
         let b = self.upload(chunk);
-        let buckets = self.buckets(chunk, &b)?;
         let mut run = ChunkRun {
             islands: Vec::new(),
             dispatches: 0,
@@ -292,24 +299,26 @@ impl RoundsJob<'_> {
         // Every round makes each running island try at least one step; a
         // step is accepted after at most 64 doublings of L.
         let cap = (self.max_iterations as usize + 1) * 65 + 1;
-        let mut active: Vec<usize> = (0..buckets.len()).collect();
+        let mut running = chunk.table.clone();
         let mut per_submit = 1usize;
-        while !active.is_empty() {
+        while !running.is_empty() {
+            let buckets = self.buckets(&running, &b)?;
             let mut encoder = ctx.encoder("friction rounds");
-            for r in 0..per_submit {
-                if r + 1 == per_submit {
-                    encoder.clear_buffer(&b.unfinished, 0, None);
-                }
-                for &a in &active {
-                    ctx.record(&mut encoder, self.stage(buckets[a].0)?, &buckets[a].1);
-                    run.dispatches += buckets[a].1.len();
+            for _ in 0..per_submit {
+                for (k, ranges) in &buckets {
+                    ctx.record(&mut encoder, self.stage(*k)?, ranges);
+                    run.dispatches += ranges.len();
                 }
             }
             run.rounds += per_submit;
-            let counts = ctx.submit_and_read(encoder, &[(&b.unfinished, UNFINISHED_BYTES)])?;
-            let counts: &[u32] = bytemuck::try_cast_slice(&counts[0])
-                .map_err(|e| Error::Gpu(format!("unfinished counts: {e}")))?;
-            active.retain(|&a| counts.get(buckets[a].0 as usize).copied().unwrap_or(0) > 0);
+            let states = ctx.submit_and_read(encoder, &[(&b.states, b.states_size)])?;
+            let states: &[FrictionState] = bytemuck::try_cast_slice(&states[0])
+                .map_err(|e| Error::Gpu(format!("friction states: {e}")))?;
+            running.retain(|rec| {
+                states
+                    .get(rec.slot as usize)
+                    .is_some_and(|st| st.status <= RUNNING)
+            });
             if run.rounds > cap {
                 return Err(Error::Gpu(format!(
                     "friction iterations made no progress ({} rounds)",

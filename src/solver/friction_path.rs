@@ -1,7 +1,9 @@
 //! The friction path of the [`Solver`]: batches of [`FrictionProblem`]s and
 //! the islands of scenes with friction, solved on the CPU in f64 over every
-//! core by the exact Coulomb solvers of [`crate::friction`], with warm start
-//! from the last call's impulses keyed by contact ids.
+//! core by the solvers of [`crate::friction`], or, for the projected
+//! methods with a GPU open (see `Solver::friction_on_gpu`), assembled and
+//! iterated on the GPU with every answer checked in f64 on the CPU; warm
+//! start from the last call's impulses keyed by contact ids.
 
 use std::collections::HashMap;
 use std::time::Instant;
@@ -13,7 +15,13 @@ use crate::friction::assembly::{
     FrictionContactRows,
 };
 use crate::friction::solve::from_projected;
-use crate::friction::{solve_friction_problem, solve_projected_on_gpu, FrictionProblem};
+use crate::friction::{
+    solve_friction_problem, solve_projected_on_gpu, FrictionMethod, FrictionProblem,
+    FrictionSolution, ProjectedGpuFigures,
+};
+use crate::gpu::friction::solve_projected_on_gpu_against;
+use crate::gpu::friction_assembly::assemble_friction_on_gpu;
+use crate::gpu::GpuContext;
 use crate::islands::{find_islands, Island};
 use crate::report::{ContactImpulse, FrictionIslandReport, Report, SceneFriction, SceneReport};
 use crate::scene::Scene;
@@ -123,8 +131,9 @@ impl Solver {
         // The projected methods run on the GPU where one is open (every
         // answer checked in f64 there); the exact Coulomb methods on the CPU.
         let mut figures = None;
-        let solved = match (self.gpu.clone(), s.method.projected()) {
-            (Some(ctx), Some(_)) => {
+        let (use_gpu, went) = self.friction_on_gpu(s.method);
+        let solved = match self.gpu.clone().filter(|_| use_gpu) {
+            Some(ctx) => {
                 // The GPU takes a warm start for all problems or none.
                 let all_warm: Option<Vec<Vec<f64>>> = warm.iter().cloned().collect();
                 let ps = s.projected_settings();
@@ -151,7 +160,7 @@ impl Solver {
                     Err(e) => return Err(e),
                 }
             }
-            _ => cpu(&warm),
+            None => cpu(&warm),
         };
         let islands: Vec<FrictionIslandReport> = solved
             .into_iter()
@@ -173,21 +182,16 @@ impl Solver {
             Some(_) => self.device(),
             None => self.cpu_device(),
         };
-        let mut report = Report::new(Vec::new(), Vec::new(), device, self.choice.clone());
+        let choice = match (&figures, self.fallback.is_some() && use_gpu) {
+            (Some(f), _) => format!("{}; friction: {went}, {}", self.choice, origin_counts(f)),
+            (None, true) => format!("{}; friction: on the CPU (the GPU failed)", self.choice),
+            (None, false) => format!("{}; friction: {went}", self.choice),
+        };
+        let mut report = Report::new(Vec::new(), Vec::new(), device, choice);
         report.fallback = self.fallback.clone();
         report.timings.solve = start.elapsed().as_secs_f64();
         if let Some(f) = figures {
-            report.counts.polished = f.polished;
-            report.counts.repaired = f.repaired;
-            report.counts.cpu_fallback = f.cpu_fallback;
-            report.timings.gpu = f.gpu_seconds;
-            report.timings.validation = f.validation_seconds;
-            report.gpu = Some(crate::report::GpuFigures {
-                chunks: f.chunks,
-                dispatches: f.dispatches,
-                rounds: f.rounds,
-                ..Default::default()
-            });
+            add_gpu_figures(&mut report, &f);
         }
         report.set_friction(islands);
         report.timings.total = start.elapsed().as_secs_f64();
@@ -212,8 +216,7 @@ impl Solver {
             isl.scene = isl.scene.map(|s| without[s]);
         }
         let frictional: Vec<&Scene> = with.iter().map(|&i| &scenes[i]).collect();
-        let (mut scene_reports, mut islands) =
-            self.friction_scenes_on_cpu(&frictional, &mut report);
+        let (mut scene_reports, mut islands) = self.friction_scenes(&frictional, &mut report)?;
         for isl in &mut islands {
             isl.scene = isl.scene.map(|s| with[s]);
         }
@@ -254,16 +257,46 @@ impl Solver {
         Ok(report)
     }
 
+    /// Whether this call's frictional islands go to the GPU, and where
+    /// they go in words for the report: a projected method asked (the exact
+    /// Coulomb methods run on the CPU only) and a GPU open without
+    /// `Backend::Auto`'s cost model (explicit `Backend::Gpu` or
+    /// [`Solver::with_device`]). The cost model has no figures of the
+    /// friction iterations (it is calibrated on LCPs), so `Auto` keeps them
+    /// on the CPU, where they also run faster on this machine's software
+    /// adapter (BENCHMARKS.md, "GPU: cone projection iterations").
+    fn friction_on_gpu(&self, method: FrictionMethod) -> (bool, String) {
+        let name = method.name();
+        match (&self.gpu, method.projected(), &self.cost) {
+            (None, _, _) => (false, format!("{name} on the CPU (no GPU open)")),
+            (Some(_), None, _) => (
+                false,
+                format!("{name} on the CPU (the exact Coulomb methods run on the CPU only)"),
+            ),
+            (Some(_), Some(_), Some(_)) => (
+                false,
+                format!(
+                    "{name} on the CPU (backend auto: the cost model has no figures of the friction iterations)"
+                ),
+            ),
+            (Some(_), Some(_), None) => (true, format!("{name} on the GPU")),
+        }
+    }
+
     /// The friction path for checked scenes with friction, in phases (added
-    /// to `report.timings`): build (islands and assembly), solve (every
-    /// island over the cores), impulses. Scene indices are into `scenes`.
-    fn friction_scenes_on_cpu(
-        &self,
+    /// to `report.timings`): build (islands and the f64 assembly on the
+    /// CPU, the oracle), solve (on the GPU where [`Self::friction_on_gpu`]
+    /// says so, see [`Self::friction_islands_on_gpu`]; else every island
+    /// over the cores), impulses. Scene indices are into `scenes`;
+    /// `report.choice` gains where the friction went, its counts and GPU
+    /// figures what the GPU did.
+    fn friction_scenes(
+        &mut self,
         scenes: &[&Scene],
         report: &mut Report,
-    ) -> (Vec<SceneReport>, Vec<FrictionIslandReport>) {
+    ) -> Result<(Vec<SceneReport>, Vec<FrictionIslandReport>), Error> {
         let t = Instant::now();
-        let built: Vec<(Vec<Island>, Vec<FrictionContactRows>, Vec<FrictionProblem>)> =
+        let mut built: Vec<(Vec<Island>, Vec<FrictionContactRows>, Vec<FrictionProblem>)> =
             parallel_map(scenes.len(), self.threads, |i| {
                 let s = scenes[i];
                 let islands = find_islands(s);
@@ -276,37 +309,137 @@ impl Solver {
             });
         report.timings.build += t.elapsed().as_secs_f64();
         let t = Instant::now();
-        let index: Vec<(usize, usize)> = built
-            .iter()
-            .enumerate()
-            .flat_map(|(s, b)| (0..b.2.len()).map(move |k| (s, k)))
-            .collect();
-        let settings = self.settings.friction();
-        let solved = parallel_map(index.len(), self.threads, |j| {
-            let (s, k) = index[j];
-            let warm = self.settings.warm_start.then(|| {
-                let ids: Vec<Option<u64>> = built[s].0[k]
+        let mut problems = Vec::new();
+        let mut warm = Vec::new();
+        for (s, b) in built.iter_mut().enumerate() {
+            for island in &b.0 {
+                let ids: Vec<Option<u64>> = island
                     .contacts
                     .iter()
                     .map(|&c| scenes[s].contacts[c].id)
                     .collect();
-                self.friction_warm.start(&ids)
+                warm.push(
+                    self.settings
+                        .warm_start
+                        .then(|| self.friction_warm.start(&ids))
+                        .flatten(),
+                );
+            }
+            problems.append(&mut b.2);
+        }
+        let settings = self.settings.friction();
+        let (use_gpu, mut went) = self.friction_on_gpu(settings.method);
+        let mut solved = None;
+        if let Some(ctx) = self.gpu.clone().filter(|_| use_gpu && !problems.is_empty()) {
+            let on_gpu = super::gpu_path::guarded(|| {
+                self.friction_islands_on_gpu(&ctx, scenes, &problems, &warm)
             });
-            let warm = warm.flatten();
-            let solution = solve_friction_problem(&built[s].2[k], warm.as_deref(), &settings);
-            (warm.is_some(), solution)
+            match on_gpu {
+                Ok((solutions, figures, assembly)) => {
+                    went = format!("{went}, {assembly}, {}", origin_counts(&figures));
+                    add_gpu_figures(report, &figures);
+                    report.device = self.device();
+                    solved = Some(solutions);
+                }
+                Err(Error::Gpu(why)) => {
+                    self.fall_back(why);
+                    report.fallback = self.fallback.clone();
+                    went = format!("{} on the CPU (the GPU failed)", settings.method.name());
+                }
+                Err(e) => return Err(e),
+            }
+        }
+        let solved = solved.unwrap_or_else(|| {
+            parallel_map(problems.len(), self.threads, |j| {
+                solve_friction_problem(&problems[j], warm[j].as_deref(), &settings)
+            })
         });
+        report.choice = format!("{}; friction: {went}", report.choice);
         report.timings.solve += t.elapsed().as_secs_f64();
         let t = Instant::now();
-        let mut islands = Vec::with_capacity(index.len());
+        let out = self.friction_scene_reports(scenes, built, solved, &warm);
+        report.timings.impulses += t.elapsed().as_secs_f64();
+        Ok(out)
+    }
+
+    /// The frictional islands of `scenes` (in order, `problems` their f64
+    /// assembly, `warm` their starts) on the GPU: assembled there
+    /// ([`assemble_friction_on_gpu`]; a scene too large for one buffer
+    /// makes the CPU's assembly the shader's input), iterated there by the
+    /// projected method, every answer judged in f64 against `problems` and
+    /// polished or repaired on the CPU where it misses the tolerance.
+    /// Returns the solutions, the GPU's figures, and where the assembly ran
+    /// in words (with the largest |W_gpu − W_cpu| / (1 + |W_cpu|)).
+    fn friction_islands_on_gpu(
+        &self,
+        ctx: &GpuContext,
+        scenes: &[&Scene],
+        problems: &[FrictionProblem],
+        warm: &[Option<Vec<f64>>],
+    ) -> Result<(Vec<FrictionSolution>, ProjectedGpuFigures, String), Error> {
+        let owned: Vec<Scene> = scenes.iter().map(|s| (*s).clone()).collect();
+        let (on_gpu, assembly) = match assemble_friction_on_gpu(ctx, &owned, &self.settings.gpu) {
+            Ok(per_scene) => {
+                let on_gpu: Vec<FrictionProblem> =
+                    per_scene.into_iter().flatten().map(|f| f.problem).collect();
+                let deviation = on_gpu
+                    .iter()
+                    .zip(problems)
+                    .flat_map(|(g, c)| g.w.iter().zip(&c.w).chain(g.q.iter().zip(&c.q)))
+                    .map(|(g, c)| (g - c).abs() / (1.0 + c.abs()))
+                    .fold(0.0, f64::max);
+                let how = format!(
+                    "assembled on the GPU (largest deviation from the f64 twin {deviation:.1e})"
+                );
+                (on_gpu, how)
+            }
+            Err(Error::Unsupported(why)) => {
+                (problems.to_vec(), format!("assembled on the CPU ({why})"))
+            }
+            Err(e) => return Err(e),
+        };
+        // The GPU takes a start for every island or none: zero (the
+        // default start) where an island has none.
+        let all_warm: Option<Vec<Vec<f64>>> = warm.iter().any(Option::is_some).then(|| {
+            warm.iter()
+                .zip(problems)
+                .map(|(w, p)| w.clone().unwrap_or_else(|| vec![0.0; p.dim()]))
+                .collect()
+        });
+        let s = self.settings.friction();
+        let (solutions, figures) = solve_projected_on_gpu_against(
+            ctx,
+            &on_gpu,
+            problems,
+            all_warm.as_deref(),
+            &s.projected_settings(),
+            &self.settings.gpu,
+        )?;
+        let solutions = solutions
+            .into_iter()
+            .map(|x| from_projected(x, s.method))
+            .collect();
+        Ok((solutions, figures, assembly))
+    }
+
+    /// Per scene its report (impulses, velocities after, contacts' parts)
+    /// and per island its report, from the islands' solutions in order.
+    fn friction_scene_reports(
+        &self,
+        scenes: &[&Scene],
+        built: Vec<(Vec<Island>, Vec<FrictionContactRows>, Vec<FrictionProblem>)>,
+        solved: Vec<FrictionSolution>,
+        warm: &[Option<Vec<f64>>],
+    ) -> (Vec<SceneReport>, Vec<FrictionIslandReport>) {
+        let mut islands = Vec::with_capacity(solved.len());
         let mut out = Vec::with_capacity(scenes.len());
-        let mut solved = solved.into_iter();
+        let mut solved = solved.into_iter().zip(warm);
         for (s, (scene, (isl, rows, _))) in scenes.iter().zip(built).enumerate() {
             let first = islands.len();
             let mut r = vec![[0.0; 3]; scene.contacts.len()];
             let mut u = vec![[0.0; 3]; scene.contacts.len()];
             for island in isl {
-                let (warm_started, solution) = solved.next().expect("one result per island");
+                let (solution, w) = solved.next().expect("one result per island");
                 for (i, &c) in island.contacts.iter().enumerate() {
                     r[c].copy_from_slice(&solution.r[3 * i..3 * i + 3]);
                     u[c].copy_from_slice(&solution.u[3 * i..3 * i + 3]);
@@ -314,7 +447,7 @@ impl Solver {
                 islands.push(FrictionIslandReport {
                     scene: Some(s),
                     contacts: island.contacts,
-                    warm_started,
+                    warm_started: w.is_some(),
                     solution,
                 });
             }
@@ -330,9 +463,29 @@ impl Solver {
                 }),
             });
         }
-        report.timings.impulses += t.elapsed().as_secs_f64();
         (out, islands)
     }
+}
+
+/// The GPU's counts, seconds and figures added into `report`.
+fn add_gpu_figures(report: &mut Report, f: &ProjectedGpuFigures) {
+    report.counts.polished += f.polished;
+    report.counts.repaired += f.repaired;
+    report.counts.cpu_fallback += f.cpu_fallback;
+    report.timings.gpu += f.gpu_seconds;
+    report.timings.validation += f.validation_seconds;
+    let g = report.gpu.get_or_insert_with(Default::default);
+    g.chunks += f.chunks;
+    g.dispatches += f.dispatches;
+    g.rounds += f.rounds;
+}
+
+/// Where the GPU batch's answers came from, in words.
+fn origin_counts(f: &ProjectedGpuFigures) -> String {
+    format!(
+        "{} kept from the GPU, {} polished and {} repaired on the CPU, {} on the CPU for their size",
+        f.gpu, f.polished, f.repaired, f.cpu_fallback
+    )
 }
 
 /// A contact's impulse with its parts, from its rows and local reaction.

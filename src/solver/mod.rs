@@ -385,9 +385,11 @@ impl Solver {
     /// scene is checked first (an error names the scene, the item and the
     /// field). Islands above the enumeration's limit go to Lemke. Scenes
     /// with friction (any contact with μ > 0) go, every island of them, to
-    /// the friction path on the CPU ([`Report::friction`],
-    /// [`SceneReport::friction`](crate::SceneReport::friction)); the others
-    /// are solved as without friction.
+    /// the friction path ([`Report::friction`],
+    /// [`SceneReport::friction`](crate::SceneReport::friction); on the GPU
+    /// for a projected `friction_method` with `Backend::Gpu`, else on the
+    /// CPU; `Report::choice` says which); the others are solved as without
+    /// friction.
     pub fn solve_scenes(&mut self, scenes: &[Scene]) -> Result<Report, Error> {
         let start = Instant::now();
         for (i, s) in scenes.iter().enumerate() {

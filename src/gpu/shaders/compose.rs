@@ -10,6 +10,7 @@
 //! Every step that cannot find what it replaces is an [`Error::Gpu`].
 
 use super::tree::tree_pass_source;
+use super::unroll_loops::unroll_marked_loops;
 use super::unrolled::straight_line_solver;
 use super::{Shader, FIXED_MAX_N, FRICTION_MAX_K};
 use crate::cpu::enumeration_tree::{TreeSettings, TREE_MAX_N};
@@ -25,6 +26,17 @@ const ENUMERATION_ALL_WGSL: &str = include_str!("../../../shaders/enumeration_al
 const ASSEMBLY_WGSL: &str = include_str!("../../../shaders/assembly.wgsl");
 const IMPULSES_WGSL: &str = include_str!("../../../shaders/impulses.wgsl");
 const FRICTION_PROJECTED_WGSL: &str = include_str!("../../../shaders/friction_projected.wgsl");
+const FRICTION_COMMON_WGSL: &str = include_str!("../../../shaders/friction_common.wgsl");
+const FRICTION_PROJECTED_GLOBAL_WGSL: &str =
+    include_str!("../../../shaders/friction_projected_global.wgsl");
+
+/// Largest island (contacts) whose friction kernels come from
+/// `shaders/friction_projected.wgsl` (private copies, marked loops unrolled
+/// by [`unroll_marked_loops`]); larger ones from
+/// `shaders/friction_projected_global.wgsl` (loops over the buffers: their
+/// unrolled code compiles too slowly on lavapipe: 52 s for the k = 8 APGD
+/// kernel against about 5 s at k = 4, measured).
+const FRICTION_UNROLL_MAX_K: usize = 4;
 
 /// Environment variable that makes `generated_shaders_are_committed`
 /// rewrite the committed files instead of failing.
@@ -40,13 +52,19 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         Shader::AllBases => ("enumeration_all", ENUMERATION_ALL_WGSL),
         Shader::Assembly => ("assembly", ASSEMBLY_WGSL),
         Shader::Impulses => ("impulses", IMPULSES_WGSL),
-        Shader::FrictionProjected(_) => ("friction_projected", FRICTION_PROJECTED_WGSL),
+        Shader::FrictionProjected(k) if k <= FRICTION_UNROLL_MAX_K => {
+            ("friction_projected", FRICTION_PROJECTED_WGSL)
+        }
+        Shader::FrictionProjected(_) => {
+            ("friction_projected_global", FRICTION_PROJECTED_GLOBAL_WGSL)
+        }
     };
     let standalone = matches!(
         shader,
         Shader::Assembly | Shader::Impulses | Shader::FrictionProjected(_)
     );
     let src = match shader {
+        Shader::FrictionProjected(_) => format!("{FRICTION_COMMON_WGSL}\n{body}"),
         _ if standalone => body.to_string(),
         _ => format!("{ENUMERATION_BASIS_WGSL}\n{body}"),
     };
@@ -69,11 +87,14 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
                 "scalar_max",
                 &format!("const SCALAR_MAX: Scalar = {max};"),
             )?;
-            replace_host_line(
+            let s = replace_host_line(
                 &s,
                 "scalar_epsilon",
                 &format!("const SCALAR_EPSILON: Scalar = {eps};"),
-            )?
+            )?;
+            let n = 3 * k as u64;
+            let constants = [("N", n), ("NN", n * n), ("FIXED_K", k as u64)];
+            unroll_marked_loops(&s, &constants, true)?
         }
         Shader::Unrolled(n) | Shader::Tree(n) | Shader::FrictionProjected(n) => {
             return Err(Error::Gpu(format!(
@@ -84,6 +105,9 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         _ => s,
     };
     let from = match shader {
+        Shader::FrictionProjected(_) => {
+            format!("shaders/friction_common.wgsl + shaders/{file}.wgsl")
+        }
         _ if standalone => format!("shaders/{file}.wgsl"),
         _ => format!("shaders/enumeration_basis.wgsl + shaders/{file}.wgsl"),
     };

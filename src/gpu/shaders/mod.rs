@@ -19,6 +19,8 @@ mod compose;
 #[cfg(test)]
 mod tree;
 #[cfg(test)]
+mod unroll_loops;
+#[cfg(test)]
 mod unrolled;
 
 use super::Precision;
