@@ -23,7 +23,7 @@
 //! ½‖Φ‖² decides the step length (Armijo, halving).
 
 use super::problem::FrictionProblem;
-use super::workspace::Workspace;
+use super::workspace::{dot, Workspace};
 use crate::linalg::{solve_in_place, PIVOT_TOL};
 
 /// Φ(r) (3k) into `phi`, given u = W r + q, and when `jacobian` is Some its
@@ -134,37 +134,93 @@ fn step(ws: &mut Workspace, n: usize) -> Option<f64> {
         }
         ws.singular = true;
     }
-    let (jac, normal) = (&ws.jac, &mut ws.matrix);
-    // ∂Φᵀ∂Φ, symmetric: the upper triangle, mirrored.
-    for i in 0..n {
-        for j in i..n {
-            let v: f64 = (0..n).map(|k| jac[k * n + i] * jac[k * n + j]).sum();
-            normal[i * n + j] = v;
-            normal[j * n + i] = v;
-        }
-    }
+    normal_matrix(&ws.jac, n, &mut ws.matrix);
+    let normal = &mut ws.matrix;
     let mean = (0..n).map(|i| normal[i * n + i]).sum::<f64>() / n as f64;
     let lambda = 1e-10 * mean + f64::MIN_POSITIVE;
     for i in 0..n {
         normal[i * n + i] += lambda;
     }
-    for (j, d) in ws.delta.iter_mut().enumerate() {
-        *d = -(0..n).map(|k| jac[k * n + j] * ws.phi[k]).sum::<f64>();
+    // −∂ΦᵀΦ, row by row of ∂Φ (contiguous).
+    ws.delta.fill(0.0);
+    for (k, &f) in ws.phi.iter().enumerate() {
+        if f != 0.0 {
+            let row = &ws.jac[k * n..(k + 1) * n];
+            for (d, a) in ws.delta.iter_mut().zip(row) {
+                *d -= a * f;
+            }
+        }
     }
-    if !solve_in_place(normal, &mut ws.delta, n, 0.0) || ws.delta.iter().any(|d| !d.is_finite()) {
+    if !cholesky_solve(normal, &mut ws.delta, n) || ws.delta.iter().any(|d| !d.is_finite()) {
         return None;
     }
     let s = slope(&ws.jac, &ws.phi, &ws.delta, n);
     (s < 0.0).then_some(s)
 }
 
+/// ∂Φᵀ∂Φ into `out` (n × n): the sum over the rows a of ∂Φ of a aᵀ, the
+/// upper triangle accumulated row by row (contiguous, skipping zeros: the
+/// rows of W are zero between contacts that share no body), then mirrored.
+fn normal_matrix(jac: &[f64], n: usize, out: &mut [f64]) {
+    out.fill(0.0);
+    for row in jac.chunks_exact(n) {
+        for (i, &a) in row.iter().enumerate() {
+            if a == 0.0 {
+                continue;
+            }
+            let target = &mut out[i * n + i..(i + 1) * n];
+            for (o, b) in target.iter_mut().zip(&row[i..]) {
+                *o += a * b;
+            }
+        }
+    }
+    for i in 0..n {
+        for j in 0..i {
+            out[i * n + j] = out[j * n + i];
+        }
+    }
+}
+
+/// Solves A x = b for a symmetric positive definite A (n × n, row-major,
+/// overwritten by its Cholesky factor L in the lower triangle) by
+/// A = L Lᵀ: n³/6 multiply-adds, half of LU's. `x` holds b on entry.
+/// False when a pivot is not positive (A not positive definite to rounding).
+fn cholesky_solve(a: &mut [f64], x: &mut [f64], n: usize) -> bool {
+    for j in 0..n {
+        let row_j = &a[j * n..j * n + j];
+        let d = a[j * n + j] - dot(row_j, row_j);
+        if !(d > 0.0) {
+            return false;
+        }
+        let d = d.sqrt();
+        a[j * n + j] = d;
+        let inv = 1.0 / d;
+        for i in j + 1..n {
+            let (upper, lower) = a.split_at_mut(i * n);
+            let lj = &upper[j * n..j * n + j];
+            let li = &mut lower[..n];
+            li[j] = (li[j] - dot(&li[..j], lj)) * inv;
+        }
+    }
+    // L y = b, then Lᵀ x = y.
+    for i in 0..n {
+        let d = dot(&a[i * n..i * n + i], &x[..i]);
+        x[i] = (x[i] - d) / a[i * n + i];
+    }
+    for i in (0..n).rev() {
+        let mut v = x[i];
+        for k in i + 1..n {
+            v -= a[k * n + i] * x[k];
+        }
+        x[i] = v / a[i * n + i];
+    }
+    true
+}
+
 /// The merit's slope along Δ: (∂ΦᵀΦ)·Δ = Φ·(∂Φ Δ).
 fn slope(jac: &[f64], phi: &[f64], delta: &[f64], n: usize) -> f64 {
     (0..n)
-        .map(|i| {
-            let row = &jac[i * n..(i + 1) * n];
-            phi[i] * row.iter().zip(delta).map(|(a, b)| a * b).sum::<f64>()
-        })
+        .map(|i| phi[i] * dot(&jac[i * n..(i + 1) * n], delta))
         .sum()
 }
 

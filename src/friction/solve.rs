@@ -7,7 +7,7 @@ use super::nsgs::{nsgs_in, Patience};
 use super::problem::FrictionProblem;
 use super::projected::{solve_checked, ProjectedMethod, ProjectedSettings, ProjectedSolution};
 use super::residual::FrictionResiduals;
-use super::workspace::{with_workspace, Workspace};
+use super::workspace::{velocity_into, with_workspace, Workspace};
 use crate::lcp::Status;
 
 /// The algorithm that solves an island's frictional problem. Each is judged
@@ -278,7 +278,8 @@ fn finish(
     s: &FrictionSettings,
 ) -> FrictionSolution {
     project_on_cones(p, &mut r);
-    let u = p.velocity(&r);
+    let mut u = vec![0.0; p.dim()];
+    velocity_into(p, &r, &mut u);
     let residuals = FrictionResiduals::of_velocity(p, &r, &u);
     let finite = r.iter().chain(&u).all(|v| v.is_finite()) && residuals.coulomb_error.is_finite();
     let status = if !finite {

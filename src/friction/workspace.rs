@@ -121,21 +121,39 @@ pub fn diagonal_block(p: &FrictionProblem, i: usize) -> Block {
     std::array::from_fn(|a| std::array::from_fn(|b| p.at(3 * i + a, 3 * i + b)))
 }
 
-/// u = W r + q into `u` (the same sums, in the same order, as
-/// [`FrictionProblem::velocity`]).
+/// u = W r + q into `u` (rows by [`dot`]; the solvers' final u and error
+/// are computed by it too, so that their checks and the reported status
+/// agree bit for bit).
 pub fn velocity_into(p: &FrictionProblem, r: &[f64], u: &mut [f64]) {
     let n = p.dim();
     for (i, ui) in u.iter_mut().enumerate() {
-        let row = &p.w[i * n..(i + 1) * n];
-        *ui = p.q[i] + row.iter().zip(r).map(|(a, b)| a * b).sum::<f64>();
+        *ui = p.q[i] + dot(&p.w[i * n..(i + 1) * n], r);
     }
+}
+
+/// a · b (over the shorter length) with four running sums, which the
+/// compiler keeps in vector registers (a single running sum is one long
+/// chain of dependent additions).
+#[inline]
+pub fn dot(a: &[f64], b: &[f64]) -> f64 {
+    let len = a.len().min(b.len());
+    let (a, b) = (&a[..len], &b[..len]);
+    let mut s = [0.0f64; 4];
+    let (ca, cb) = (a.chunks_exact(4), b.chunks_exact(4));
+    let (ta, tb) = (ca.remainder(), cb.remainder());
+    for (x, y) in ca.zip(cb) {
+        for k in 0..4 {
+            s[k] += x[k] * y[k];
+        }
+    }
+    let tail: f64 = ta.iter().zip(tb).map(|(x, y)| x * y).sum();
+    (s[0] + s[1]) + (s[2] + s[3]) + tail
 }
 
 /// W x into `out` (the change of u = W r + q when r moves by x).
 pub fn velocity_into_linear(p: &FrictionProblem, x: &[f64], out: &mut [f64]) {
     let n = p.dim();
     for (i, o) in out.iter_mut().enumerate() {
-        let row = &p.w[i * n..(i + 1) * n];
-        *o = row.iter().zip(x).map(|(a, b)| a * b).sum::<f64>();
+        *o = dot(&p.w[i * n..(i + 1) * n], x);
     }
 }
