@@ -134,25 +134,34 @@ fn step(ws: &mut Workspace, n: usize) -> Option<f64> {
         }
         ws.singular = true;
     }
-    normal_matrix(&ws.jac, n, &mut ws.matrix);
-    let normal = &mut ws.matrix;
-    let mean = (0..n).map(|i| normal[i * n + i]).sum::<f64>() / n as f64;
-    let lambda = 1e-10 * mean + f64::MIN_POSITIVE;
-    for i in 0..n {
-        normal[i * n + i] += lambda;
-    }
-    // −∂ΦᵀΦ, row by row of ∂Φ (contiguous).
-    ws.delta.fill(0.0);
-    for (k, &f) in ws.phi.iter().enumerate() {
-        if f != 0.0 {
-            let row = &ws.jac[k * n..(k + 1) * n];
-            for (d, a) in ws.delta.iter_mut().zip(row) {
-                *d -= a * f;
+    // λ = 1e-10 of the mean diagonal; where rounding leaves the damped
+    // matrix not positive definite to Cholesky, λ grows a thousandfold.
+    let mut damping = 1e-10;
+    loop {
+        normal_matrix(&ws.jac, n, &mut ws.matrix);
+        let normal = &mut ws.matrix;
+        let mean = (0..n).map(|i| normal[i * n + i]).sum::<f64>() / n as f64;
+        let lambda = damping * mean + f64::MIN_POSITIVE;
+        for i in 0..n {
+            normal[i * n + i] += lambda;
+        }
+        // −∂ΦᵀΦ, row by row of ∂Φ (contiguous).
+        ws.delta.fill(0.0);
+        for (k, &f) in ws.phi.iter().enumerate() {
+            if f != 0.0 {
+                let row = &ws.jac[k * n..(k + 1) * n];
+                for (d, a) in ws.delta.iter_mut().zip(row) {
+                    *d -= a * f;
+                }
             }
         }
-    }
-    if !cholesky_solve(normal, &mut ws.delta, n) || ws.delta.iter().any(|d| !d.is_finite()) {
-        return None;
+        if cholesky_solve(normal, &mut ws.delta, n) && ws.delta.iter().all(|d| d.is_finite()) {
+            break;
+        }
+        damping *= 1e3;
+        if damping > 1e-1 {
+            return None;
+        }
     }
     let s = slope(&ws.jac, &ws.phi, &ws.delta, n);
     (s < 0.0).then_some(s)

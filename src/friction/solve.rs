@@ -205,7 +205,8 @@ impl FrictionSettings {
 /// [`FrictionMethod::Auto`]), with `ws` prepared for `p` and r. NSGS gives
 /// way to Newton once its linear rate predicts more than 4 + 3k/2 further
 /// sweeps (about a Newton step's cost at k ≤ 4); after a Newton round that
-/// made no step, the sweeps run without that patience, doubling per round.
+/// did not converge, the sweeps run without that patience (Newton can leave
+/// r where the sweeps first diverge), doubling per round.
 /// A Newton iterate is projected on the cones and checked again before it
 /// is accepted. Keeps the r of smallest error when the cap is reached.
 fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tolerance: f64) -> u64 {
@@ -250,7 +251,7 @@ fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tole
         if k == 0 && sweeps_per_round >= cap {
             break;
         }
-        patient = k > 0;
+        patient = false;
         sweeps_per_round *= 2;
     }
     if !(error <= tolerance) && best < error {
