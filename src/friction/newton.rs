@@ -43,7 +43,7 @@ fn alart_curnier(
         let xn = r[kn] - rh * u[kn];
         let xt = [r[k1] - rh * u[k1], r[k2] - rh * u[k2]];
         let lambda = mu * xn.max(0.0);
-        let s = xt[0].hypot(xt[1]);
+        let s = (xt[0] * xt[0] + xt[1] * xt[1]).sqrt();
         phi[kn] = r[kn] - xn.max(0.0);
         let sticks = s <= lambda;
         let pt = if sticks {
@@ -68,7 +68,7 @@ fn jacobian_rows(p: &FrictionProblem, i: usize, x: [f64; 3], rh: f64, j: &mut [f
     let (kn, k1, k2) = (3 * i, 3 * i + 1, 3 * i + 2);
     let (xn, xt) = (x[0], [x[1], x[2]]);
     let lambda = mu * xn.max(0.0);
-    let s = xt[0].hypot(xt[1]);
+    let s = (xt[0] * xt[0] + xt[1] * xt[1]).sqrt();
     let sticks = s <= lambda;
     let (wn, w1, w2) = (
         &p.w[kn * n..kn * n + n],

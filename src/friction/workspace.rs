@@ -7,8 +7,7 @@ use std::cell::RefCell;
 
 use super::local::Block;
 use super::problem::FrictionProblem;
-use super::residual::coulomb_error_into;
-use crate::lcp::norm2;
+use super::residual::{coulomb_error_into, norm};
 
 /// Per-island state and scratch of the exact solvers. [`Workspace::prepare`]
 /// sizes it for a problem; every buffer then has the problem's dimension.
@@ -99,7 +98,7 @@ impl Workspace {
                 1.0
             }
         }));
-        self.q_norm = norm2(p.q.iter().copied());
+        self.q_norm = norm(&p.q);
         self.singular = false;
         self.refresh(p, r);
     }
