@@ -9,13 +9,29 @@
 //! it prints, per set, the largest Coulomb error reached and the statuses,
 //! so that islands/s can be read against the error. Throughput is in
 //! islands per second. Groups are small (10 samples, 1 s).
+//!
+//! `friction_warm_stack`: the 16-contact islands of 4-box stack worlds
+//! (μ = 0.5, Δt = 0.01, boxes offset by up to 2 cm, after 30 steps), solved
+//! by `solve_friction_problem` on one thread from the previous step's
+//! reactions (by contact id) and from zero; `world_stack4`: 200 such
+//! worlds stepped by `Solver::step_worlds` with warm start, one thread
+//! (world-steps per second).
 
 use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use std::collections::HashMap;
+
+use lcpbatch::friction::assembly::friction_islands;
+use lcpbatch::friction::solve_friction_problem;
 use lcpbatch::generate::friction::{friction_batch, FrictionFamily};
-use lcpbatch::{Backend, FrictionMethod, FrictionProblem, Settings, Solver, Status};
+use lcpbatch::generate::Rng;
+use lcpbatch::world::generate::{standard_world, WorldKind};
+use lcpbatch::world::step::prepare;
+use lcpbatch::{
+    Backend, FrictionMethod, FrictionProblem, FrictionSettings, Settings, Solver, Status, World,
+};
 
 const ISLANDS: usize = 1000;
 const SIZES: [usize; 7] = [1, 2, 3, 4, 8, 12, 16];
@@ -80,5 +96,142 @@ fn bench_friction(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, bench_friction);
+const DT: f64 = 0.01;
+
+/// `count` 4-box stack worlds, each box offset in x and z by up to 2 cm
+/// (seeded), stepped `settle` times on one thread with warm start.
+fn stack_worlds(count: usize, settle: usize) -> (Vec<World>, Solver) {
+    let mut rng = Rng::new(0x57AC);
+    let mut worlds: Vec<World> = (0..count)
+        .map(|_| {
+            let mut w = standard_world(WorldKind::Stack, 4, 0);
+            for b in w.bodies.iter_mut().filter(|b| !b.fixed) {
+                b.position[0] += rng.range(-0.02, 0.02);
+                b.position[2] += rng.range(-0.02, 0.02);
+            }
+            w
+        })
+        .collect();
+    let mut solver = Solver::new(Settings {
+        threads: 1,
+        warm_start: true,
+        ..Settings::new(Backend::Cpu, lcpbatch::Method::Auto)
+    })
+    .expect("valid settings");
+    for _ in 0..settle {
+        solver.step_worlds(&mut worlds, DT).expect("valid worlds");
+    }
+    (worlds, solver)
+}
+
+/// Each world's frictional islands this step with the contact ids.
+fn islands_of(worlds: &[World]) -> Vec<(FrictionProblem, Vec<u64>)> {
+    let mut out = Vec::new();
+    for (i, w) in worlds.iter().enumerate() {
+        let scene = prepare(w, i, DT).scene;
+        for isl in friction_islands(&scene) {
+            let ids = isl
+                .contacts
+                .iter()
+                .map(|&c| scene.contacts[c].id.expect("world ids"))
+                .collect();
+            out.push((isl.problem, ids));
+        }
+    }
+    out
+}
+
+/// The islands of the step after `settle` steps, each with its warm start:
+/// the previous step's reactions (solved to the default tolerance) by
+/// contact id, zero for a new contact.
+fn warm_stack_islands(count: usize, settle: usize) -> Vec<(FrictionProblem, Vec<f64>)> {
+    let (mut worlds, mut solver) = stack_worlds(count, settle);
+    let s = FrictionSettings::default();
+    let mut last: HashMap<u64, [f64; 3]> = HashMap::new();
+    for (p, ids) in islands_of(&worlds) {
+        let r = solve_friction_problem(&p, None, &s).r;
+        for (i, id) in ids.iter().enumerate() {
+            last.insert(*id, [r[3 * i], r[3 * i + 1], r[3 * i + 2]]);
+        }
+    }
+    solver.step_worlds(&mut worlds, DT).expect("valid worlds");
+    islands_of(&worlds)
+        .into_iter()
+        .map(|(p, ids)| {
+            let warm = ids
+                .iter()
+                .flat_map(|id| last.get(id).copied().unwrap_or([0.0; 3]))
+                .collect();
+            (p, warm)
+        })
+        .collect()
+}
+
+fn bench_warm_stack(c: &mut Criterion) {
+    let islands = warm_stack_islands(200, 30);
+    let mut start: Vec<f64> = islands
+        .iter()
+        .map(|(p, w)| lcpbatch::friction::coulomb_error(p, w))
+        .collect();
+    start.sort_by(f64::total_cmp);
+    eprintln!(
+        "friction_warm_stack: Coulomb error of the warm starts: median {:.2e}, 90 % {:.2e}, max {:.2e}",
+        start[start.len() / 2],
+        start[start.len() * 9 / 10],
+        start[start.len() - 1]
+    );
+    let mut group = c.benchmark_group("friction_warm_stack");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(1))
+        .throughput(Throughput::Elements(islands.len() as u64));
+    for (label, method, tolerance, warm) in [
+        ("auto_warm", FrictionMethod::Auto, 1e-8, true),
+        ("auto_cold", FrictionMethod::Auto, 1e-8, false),
+        ("auto_warm_tol1e-12", FrictionMethod::Auto, 1e-12, true),
+        ("nsgs_warm", FrictionMethod::Nsgs, 1e-8, true),
+    ] {
+        let s = FrictionSettings {
+            method,
+            tolerance,
+            ..FrictionSettings::default()
+        };
+        let run = || {
+            islands
+                .iter()
+                .map(|(p, w)| solve_friction_problem(p, warm.then_some(w.as_slice()), &s))
+                .collect::<Vec<_>>()
+        };
+        let out = run();
+        let solved = out.iter().filter(|o| o.status == Status::Solved).count();
+        let max_error = out
+            .iter()
+            .map(|o| o.residuals.coulomb_error)
+            .fold(0.0, f64::max);
+        let none = out.iter().filter(|o| o.iterations == 0).count();
+        let iterations: u64 = out.iter().map(|o| o.iterations).sum();
+        eprintln!(
+            "friction_warm_stack {label}: k = {}, solved {solved}/{}, max Coulomb error {max_error:.2e}, start accepted {none}, mean iterations {:.1}",
+            islands[0].0.contacts(),
+            out.len(),
+            iterations as f64 / out.len() as f64
+        );
+        group.bench_function(label, |b| b.iter(|| black_box(run())));
+    }
+    group.finish();
+    let (mut worlds, mut solver) = stack_worlds(200, 30);
+    let mut group = c.benchmark_group("world_stack4");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(1))
+        .throughput(Throughput::Elements(worlds.len() as u64));
+    group.bench_function("step_worlds_warm_1_thread", |b| {
+        b.iter(|| black_box(solver.step_worlds(&mut worlds, DT).expect("valid")))
+    });
+    group.finish();
+}
+
+criterion_group!(benches, bench_warm_stack, bench_friction);
 criterion_main!(benches);

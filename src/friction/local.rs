@@ -43,7 +43,7 @@ pub fn solve_contact(w: &Block, q: [f64; 3], mu: f64, current: [f64; 3]) -> [f64
     }
     let stuck = stick(w, q);
     if let Some(r) = stuck {
-        if r[0] >= 0.0 && r[1].hypot(r[2]) <= mu * r[0] {
+        if r[0] >= 0.0 && (r[1] * r[1] + r[2] * r[2]).sqrt() <= mu * r[0] {
             return r;
         }
     }
@@ -51,7 +51,7 @@ pub fn solve_contact(w: &Block, q: [f64; 3], mu: f64, current: [f64; 3]) -> [f64
     // stick solution's (both oppose the slide).
     let guess = [current, stuck.unwrap_or([0.0; 3])]
         .into_iter()
-        .find(|r| r[0] > 0.0 && r[1].hypot(r[2]) > 0.0)
+        .find(|r| r[0] > 0.0 && (r[1] != 0.0 || r[2] != 0.0))
         .map(|r| (-r[2]).atan2(-r[1]));
     guess
         .and_then(|theta| slide_near(w, q, mu, theta))

@@ -26,6 +26,7 @@ pub mod projected;
 pub mod random;
 pub mod residual;
 pub mod solve;
+pub mod workspace;
 
 pub use crate::gpu::friction::{
     solve_projected_on_gpu, FrictionOrigin, ProjectedGpuFigures, MAX_GPU_CONTACTS,

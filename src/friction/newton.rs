@@ -23,20 +23,19 @@
 //! ½‖Φ‖² decides the step length (Armijo, halving).
 
 use super::problem::FrictionProblem;
-use super::residual::coulomb_error;
+use super::workspace::{dot, Workspace};
 use crate::linalg::{solve_in_place, PIVOT_TOL};
 
-/// Φ(r) (3k) and, when `jacobian` is Some, its generalized Jacobian
-/// (3k × 3k, row-major) written there.
+/// Φ(r) (3k) into `phi`, given u = W r + q, and when `jacobian` is Some its
+/// generalized Jacobian (3k × 3k, row-major) written there.
 fn alart_curnier(
     p: &FrictionProblem,
     r: &[f64],
+    u: &[f64],
     rho: &[f64],
+    phi: &mut [f64],
     jacobian: Option<&mut [f64]>,
-) -> Vec<f64> {
-    let n = p.dim();
-    let u = p.velocity(r);
-    let mut phi = vec![0.0; n];
+) {
     let mut jac = jacobian;
     for (i, &mu) in p.mu.iter().enumerate() {
         let (kn, k1, k2) = (3 * i, 3 * i + 1, 3 * i + 2);
@@ -44,7 +43,7 @@ fn alart_curnier(
         let xn = r[kn] - rh * u[kn];
         let xt = [r[k1] - rh * u[k1], r[k2] - rh * u[k2]];
         let lambda = mu * xn.max(0.0);
-        let s = xt[0].hypot(xt[1]);
+        let s = (xt[0] * xt[0] + xt[1] * xt[1]).sqrt();
         phi[kn] = r[kn] - xn.max(0.0);
         let sticks = s <= lambda;
         let pt = if sticks {
@@ -57,33 +56,51 @@ fn alart_curnier(
         let Some(j) = jac.as_deref_mut() else {
             continue;
         };
-        // Row helpers: ∂x_d = e_d − ρ W_d.
-        let dx = |d: usize, col: usize| (if d == col { 1.0 } else { 0.0 }) - rh * p.w[d * n + col];
-        for col in 0..n {
-            j[kn * n + col] = if xn > 0.0 {
-                rh * p.w[kn * n + col]
-            } else if col == kn {
-                1.0
-            } else {
-                0.0
-            };
-            if sticks {
-                j[k1 * n + col] = rh * p.w[k1 * n + col];
-                j[k2 * n + col] = rh * p.w[k2 * n + col];
-            } else {
-                let z = [xt[0] / s, xt[1] / s];
-                let dl = if xn > 0.0 { mu * dx(kn, col) } else { 0.0 };
-                let d1 = dx(k1, col);
-                let d2 = dx(k2, col);
-                let c = lambda / s;
-                let zd = z[0] * d1 + z[1] * d2;
-                let e = |d: usize| if d == col { 1.0 } else { 0.0 };
-                j[k1 * n + col] = e(k1) - z[0] * dl - c * (d1 - z[0] * zd);
-                j[k2 * n + col] = e(k2) - z[1] * dl - c * (d2 - z[1] * zd);
-            }
-        }
+        jacobian_rows(p, i, [xn, xt[0], xt[1]], rh, j);
     }
-    phi
+}
+
+/// Contact i's three rows of ∂Φ (module docs) at x = (x_n, x_t) with
+/// scaling ρ, into the 3k × 3k row-major `j`.
+fn jacobian_rows(p: &FrictionProblem, i: usize, x: [f64; 3], rh: f64, j: &mut [f64]) {
+    let n = p.dim();
+    let mu = p.mu[i];
+    let (kn, k1, k2) = (3 * i, 3 * i + 1, 3 * i + 2);
+    let (xn, xt) = (x[0], [x[1], x[2]]);
+    let lambda = mu * xn.max(0.0);
+    let s = (xt[0] * xt[0] + xt[1] * xt[1]).sqrt();
+    let sticks = s <= lambda;
+    let (wn, w1, w2) = (
+        &p.w[kn * n..kn * n + n],
+        &p.w[k1 * n..k1 * n + n],
+        &p.w[k2 * n..k2 * n + n],
+    );
+    let e = |d: usize, col: usize| if d == col { 1.0 } else { 0.0 };
+    for col in 0..n {
+        j[kn * n + col] = if xn > 0.0 { rh * wn[col] } else { e(kn, col) };
+    }
+    if sticks {
+        for col in 0..n {
+            j[k1 * n + col] = rh * w1[col];
+            j[k2 * n + col] = rh * w2[col];
+        }
+        return;
+    }
+    // Slide: ∂x_d = e_d − ρ W_d, ∂λ = μ ∂x_n (x_n > 0).
+    let z = [xt[0] / s, xt[1] / s];
+    let c = lambda / s;
+    for col in 0..n {
+        let dl = if xn > 0.0 {
+            mu * (e(kn, col) - rh * wn[col])
+        } else {
+            0.0
+        };
+        let d1 = e(k1, col) - rh * w1[col];
+        let d2 = e(k2, col) - rh * w2[col];
+        let zd = z[0] * d1 + z[1] * d2;
+        j[k1 * n + col] = e(k1, col) - z[0] * dl - c * (d1 - z[0] * zd);
+        j[k2 * n + col] = e(k2, col) - z[1] * dl - c * (d2 - z[1] * zd);
+    }
 }
 
 fn half_squared(v: &[f64]) -> f64 {
@@ -92,82 +109,160 @@ fn half_squared(v: &[f64]) -> f64 {
 
 /// The Newton scalings ρ_i = 1 / W_ii,nn (1 when not positive).
 pub fn scalings(p: &FrictionProblem) -> Vec<f64> {
-    (0..p.contacts())
-        .map(|i| {
-            let d = p.at(3 * i, 3 * i);
-            if d > 0.0 && d.is_finite() {
-                1.0 / d
-            } else {
-                1.0
-            }
-        })
-        .collect()
+    let mut ws = Workspace::default();
+    ws.prepare(p, &vec![0.0; p.dim()]);
+    ws.rho
 }
 
-/// The step from r: the Newton step ∂Φ Δ = −Φ, or where ∂Φ is singular
-/// (W rank-deficient: a box on four coplanar contacts) the
-/// Levenberg–Marquardt step ((∂Φᵀ∂Φ + λ I) Δ = −∂ΦᵀΦ, λ = 1e-10 of
-/// the mean diagonal, a descent direction of the merit). Returns the step
-/// and the merit's slope along it, (∂ΦᵀΦ)·Δ; None when neither solves.
-fn step(jac: &[f64], phi: &[f64], n: usize) -> Option<(Vec<f64>, f64)> {
-    let slope = |delta: &[f64]| -> f64 {
-        // (∂ΦᵀΦ)·Δ = Φ·(∂Φ Δ).
-        (0..n)
-            .map(|i| phi[i] * (0..n).map(|j| jac[i * n + j] * delta[j]).sum::<f64>())
-            .sum()
-    };
-    let mut a = jac.to_vec();
-    let mut delta: Vec<f64> = phi.iter().map(|v| -v).collect();
-    if solve_in_place(&mut a, &mut delta, n, PIVOT_TOL) && delta.iter().all(|d| d.is_finite()) {
-        let s = slope(&delta);
-        return Some((delta, s));
+/// The step from r into `ws.delta`: the Newton step ∂Φ Δ = −Φ, or where ∂Φ
+/// is singular (W rank-deficient: a box on four coplanar contacts) the
+/// Levenberg–Marquardt step ((∂Φᵀ∂Φ + λ I) Δ = −∂ΦᵀΦ, λ = 1e-10 of the
+/// mean diagonal, a descent direction of the merit). Once the LU of ∂Φ
+/// failed on an island (`ws.singular`), its later steps are LM directly.
+/// Returns the merit's slope along the step, (∂ΦᵀΦ)·Δ; None when neither
+/// solves.
+fn step(ws: &mut Workspace, n: usize) -> Option<f64> {
+    if !ws.singular {
+        ws.matrix.copy_from_slice(&ws.jac);
+        for (d, f) in ws.delta.iter_mut().zip(&ws.phi) {
+            *d = -f;
+        }
+        if solve_in_place(&mut ws.matrix, &mut ws.delta, n, PIVOT_TOL)
+            && ws.delta.iter().all(|d| d.is_finite())
+        {
+            return Some(slope(&ws.jac, &ws.phi, &ws.delta, n));
+        }
+        ws.singular = true;
     }
-    let mut normal = vec![0.0; n * n];
-    for i in 0..n {
-        for j in 0..n {
-            normal[i * n + j] = (0..n).map(|k| jac[k * n + i] * jac[k * n + j]).sum();
+    // λ = 1e-10 of the mean diagonal; where rounding leaves the damped
+    // matrix not positive definite to Cholesky, λ grows a thousandfold.
+    let mut damping = 1e-10;
+    loop {
+        normal_matrix(&ws.jac, n, &mut ws.matrix);
+        let normal = &mut ws.matrix;
+        let mean = (0..n).map(|i| normal[i * n + i]).sum::<f64>() / n as f64;
+        let lambda = damping * mean + f64::MIN_POSITIVE;
+        for i in 0..n {
+            normal[i * n + i] += lambda;
+        }
+        // −∂ΦᵀΦ, row by row of ∂Φ (contiguous).
+        ws.delta.fill(0.0);
+        for (k, &f) in ws.phi.iter().enumerate() {
+            if f != 0.0 {
+                let row = &ws.jac[k * n..(k + 1) * n];
+                for (d, a) in ws.delta.iter_mut().zip(row) {
+                    *d -= a * f;
+                }
+            }
+        }
+        if cholesky_solve(normal, &mut ws.delta, n) && ws.delta.iter().all(|d| d.is_finite()) {
+            break;
+        }
+        damping *= 1e3;
+        if damping > 1e-1 {
+            return None;
         }
     }
-    let mean = (0..n).map(|i| normal[i * n + i]).sum::<f64>() / n as f64;
-    let lambda = 1e-10 * mean + f64::MIN_POSITIVE;
-    for i in 0..n {
-        normal[i * n + i] += lambda;
-    }
-    let mut delta: Vec<f64> = (0..n)
-        .map(|j| -(0..n).map(|k| jac[k * n + j] * phi[k]).sum::<f64>())
-        .collect();
-    if !solve_in_place(&mut normal, &mut delta, n, 0.0) || delta.iter().any(|d| !d.is_finite()) {
-        return None;
-    }
-    let s = slope(&delta);
-    (s < 0.0).then_some((delta, s))
+    let s = slope(&ws.jac, &ws.phi, &ws.delta, n);
+    (s < 0.0).then_some(s)
 }
 
-/// Newton from `r` until the Coulomb error is at most `tolerance`, a step
-/// fails (no step, or no decrease of the merit along it), or `max_steps`
-/// steps ran: (steps, error of the last r). `r` only ever moves to points
-/// of smaller merit.
-pub fn newton(p: &FrictionProblem, r: &mut [f64], max_steps: u64, tolerance: f64) -> (u64, f64) {
+/// ∂Φᵀ∂Φ into `out` (n × n): the sum over the rows a of ∂Φ of a aᵀ, the
+/// upper triangle accumulated row by row (contiguous, skipping zeros: the
+/// rows of W are zero between contacts that share no body), then mirrored.
+fn normal_matrix(jac: &[f64], n: usize, out: &mut [f64]) {
+    out.fill(0.0);
+    for row in jac.chunks_exact(n) {
+        for (i, &a) in row.iter().enumerate() {
+            if a == 0.0 {
+                continue;
+            }
+            let target = &mut out[i * n + i..(i + 1) * n];
+            for (o, b) in target.iter_mut().zip(&row[i..]) {
+                *o += a * b;
+            }
+        }
+    }
+    for i in 0..n {
+        for j in 0..i {
+            out[i * n + j] = out[j * n + i];
+        }
+    }
+}
+
+/// Solves A x = b for a symmetric positive definite A (n × n, row-major,
+/// overwritten by its Cholesky factor L in the lower triangle) by
+/// A = L Lᵀ: n³/6 multiply-adds, half of LU's. `x` holds b on entry.
+/// False when a pivot is not positive (A not positive definite to rounding).
+fn cholesky_solve(a: &mut [f64], x: &mut [f64], n: usize) -> bool {
+    for j in 0..n {
+        let row_j = &a[j * n..j * n + j];
+        let d = a[j * n + j] - dot(row_j, row_j);
+        if !(d > 0.0) {
+            return false;
+        }
+        let d = d.sqrt();
+        a[j * n + j] = d;
+        let inv = 1.0 / d;
+        for i in j + 1..n {
+            let (upper, lower) = a.split_at_mut(i * n);
+            let lj = &upper[j * n..j * n + j];
+            let li = &mut lower[..n];
+            li[j] = (li[j] - dot(&li[..j], lj)) * inv;
+        }
+    }
+    // L y = b, then Lᵀ x = y.
+    for i in 0..n {
+        let d = dot(&a[i * n..i * n + i], &x[..i]);
+        x[i] = (x[i] - d) / a[i * n + i];
+    }
+    for i in (0..n).rev() {
+        let mut v = x[i];
+        for k in i + 1..n {
+            v -= a[k * n + i] * x[k];
+        }
+        x[i] = v / a[i * n + i];
+    }
+    true
+}
+
+/// The merit's slope along Δ: (∂ΦᵀΦ)·Δ = Φ·(∂Φ Δ).
+fn slope(jac: &[f64], phi: &[f64], delta: &[f64], n: usize) -> f64 {
+    (0..n)
+        .map(|i| phi[i] * dot(&jac[i * n..(i + 1) * n], delta))
+        .sum()
+}
+
+/// Newton from `r` with `ws` prepared for `p` and `ws.u` = W r + q (see
+/// [`newton`]); `ws.u` is exact for the final r.
+pub(crate) fn newton_in(
+    p: &FrictionProblem,
+    ws: &mut Workspace,
+    r: &mut [f64],
+    max_steps: u64,
+    tolerance: f64,
+) -> (u64, f64) {
     let n = p.dim();
-    let rho = scalings(p);
-    let mut jac = vec![0.0; n * n];
-    let mut phi = alart_curnier(p, r, &rho, Some(&mut jac));
-    let mut merit = half_squared(&phi);
-    let mut error = coulomb_error(p, r);
+    alart_curnier(p, r, &ws.u, &ws.rho, &mut ws.phi, Some(&mut ws.jac));
+    let mut merit = half_squared(&ws.phi);
+    let mut error = ws.error(p, r);
     let mut steps = 0;
-    let mut trial = vec![0.0; n];
     while steps < max_steps && !(error <= tolerance) && merit > 0.0 {
-        let Some((delta, slope)) = step(&jac, &phi, n) else {
+        let Some(slope) = step(ws, n) else {
             break;
         };
         steps += 1;
+        // W Δ once: each trial's u is then u + t W Δ, O(k).
+        super::workspace::velocity_into_linear(p, &ws.delta, &mut ws.w_delta);
         let mut t = 1.0;
         let mut accepted = false;
         while t > 1e-10 {
             for k in 0..n {
-                trial[k] = r[k] + t * delta[k];
+                ws.trial[k] = r[k] + t * ws.delta[k];
+                ws.trial_u[k] = ws.u[k] + t * ws.w_delta[k];
             }
-            let m = half_squared(&alart_curnier(p, &trial, &rho, None));
+            alart_curnier(p, &ws.trial, &ws.trial_u, &ws.rho, &mut ws.trial_phi, None);
+            let m = half_squared(&ws.trial_phi);
             // Armijo on ½‖Φ‖² (slope −2·merit for a Newton step).
             if m <= merit + 1e-4 * t * slope {
                 accepted = true;
@@ -178,12 +273,32 @@ pub fn newton(p: &FrictionProblem, r: &mut [f64], max_steps: u64, tolerance: f64
         if !accepted {
             break;
         }
-        r.copy_from_slice(&trial);
-        phi = alart_curnier(p, r, &rho, Some(&mut jac));
-        merit = half_squared(&phi);
-        error = coulomb_error(p, r);
+        r.copy_from_slice(&ws.trial);
+        ws.u.copy_from_slice(&ws.trial_u);
+        error = ws.error(p, r);
+        if error <= tolerance {
+            // Converged with the updated u: check with the exact one.
+            ws.refresh(p, r);
+            error = ws.error(p, r);
+        }
+        alart_curnier(p, r, &ws.u, &ws.rho, &mut ws.phi, Some(&mut ws.jac));
+        merit = half_squared(&ws.phi);
+    }
+    if !(error <= tolerance) {
+        ws.refresh(p, r);
+        error = ws.error(p, r);
     }
     (steps, error)
+}
+
+/// Newton from `r` until the Coulomb error is at most `tolerance`, a step
+/// fails (no step, or no decrease of the merit along it), or `max_steps`
+/// steps ran: (steps, error of the last r). `r` only ever moves to points
+/// of smaller merit.
+pub fn newton(p: &FrictionProblem, r: &mut [f64], max_steps: u64, tolerance: f64) -> (u64, f64) {
+    let mut ws = Workspace::default();
+    ws.prepare(p, r);
+    newton_in(p, &mut ws, r, max_steps, tolerance)
 }
 
 #[cfg(test)]
@@ -211,15 +326,20 @@ mod tests {
             let r: Vec<f64> = (0..n).map(|_| rng.range(-1.0, 1.0)).collect();
             let rho = scalings(&p);
             let mut jac = vec![0.0; n * n];
-            let phi = alart_curnier(&p, &r, &rho, Some(&mut jac));
+            let phi_of = |r: &[f64], jac: Option<&mut [f64]>| {
+                let mut phi = vec![0.0; n];
+                alart_curnier(&p, r, &p.velocity(r), &rho, &mut phi, jac);
+                phi
+            };
+            let phi = phi_of(&r, Some(&mut jac));
             let h = 1e-7;
             for col in 0..n {
                 let mut rp = r.clone();
                 rp[col] += h;
-                let fp = alart_curnier(&p, &rp, &rho, None);
+                let fp = phi_of(&rp, None);
                 let mut rm = r.clone();
                 rm[col] -= h;
-                let fm = alart_curnier(&p, &rm, &rho, None);
+                let fm = phi_of(&rm, None);
                 for row in 0..n {
                     let fd = (fp[row] - fm[row]) / (2.0 * h);
                     let one_sided = (fp[row] - phi[row]) / h;

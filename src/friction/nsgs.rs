@@ -2,17 +2,22 @@
 //! the contacts, each solved exactly ([`solve_contact`]) with the others'
 //! reactions frozen at their latest values. A Coulomb iteration: judged by
 //! the Coulomb error, not the cone complementarity residual.
+//!
+//! The sweep keeps u = W r + q current: contact i's local free velocity is
+//! u_i − W_ii r_i, and its new reaction moves u by W_{·i} Δr_i (3k × 3
+//! multiply-adds), so that the error after each sweep needs no product
+//! with W. Before a sweep count is reported as converged, u is recomputed
+//! exactly and the error checked again (the updates' rounding drifts).
 
 use super::local::{solve_contact, Block};
 use super::problem::FrictionProblem;
-use super::residual::coulomb_error;
+use super::workspace::Workspace;
 
-/// Contact i's 3×3 diagonal block of W.
-pub fn diagonal_block(p: &FrictionProblem, i: usize) -> Block {
-    std::array::from_fn(|a| std::array::from_fn(|b| p.at(3 * i + a, 3 * i + b)))
-}
+pub use super::workspace::diagonal_block;
 
-/// One sweep over the contacts in order, updating `r` in place.
+/// One sweep over the contacts in order, updating `r` in place, u = W r + q
+/// recomputed for each contact (the reference sweep; the solvers use the
+/// incremental one of the module docs).
 pub fn nsgs_sweep(p: &FrictionProblem, blocks: &[Block], r: &mut [f64]) {
     let n = p.dim();
     for (i, block) in blocks.iter().enumerate() {
@@ -31,20 +36,83 @@ pub fn nsgs_sweep(p: &FrictionProblem, blocks: &[Block], r: &mut [f64]) {
     }
 }
 
+/// One sweep with `ws.u` = W r + q kept current (see the module docs).
+fn sweep(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64]) {
+    let n = p.dim();
+    let u = &mut ws.u;
+    for (i, block) in ws.blocks.iter().enumerate() {
+        let current = [r[3 * i], r[3 * i + 1], r[3 * i + 2]];
+        let local: [f64; 3] = std::array::from_fn(|a| {
+            u[3 * i + a]
+                - (block[a][0] * current[0] + block[a][1] * current[1] + block[a][2] * current[2])
+        });
+        let ri = solve_contact(block, local, p.mu[i], current);
+        let d = [ri[0] - current[0], ri[1] - current[1], ri[2] - current[2]];
+        if d != [0.0; 3] {
+            for (row, ur) in u.iter_mut().enumerate() {
+                let w = &p.w[row * n + 3 * i..row * n + 3 * i + 3];
+                *ur += w[0] * d[0] + w[1] * d[1] + w[2] * d[2];
+            }
+        }
+        r[3 * i..3 * i + 3].copy_from_slice(&ri);
+    }
+}
+
+/// When NSGS gives way to Newton: after two sweeps, once the linear rate
+/// e_k / e_{k−1} predicts more than `budget` further sweeps to reach the
+/// tolerance (or the error does not decrease).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Patience {
+    /// The most further sweeps worth running at the observed rate.
+    pub budget: f64,
+}
+
+/// NSGS from `r` with `ws` prepared for `p` and `ws.u` = W r + q: sweeps
+/// until the Coulomb error is at most `tolerance`, `max_sweeps` ran, or
+/// (with `patience`) convergence is too slow. Returns (sweeps, error of the
+/// final r); `ws.u` is then exact for r.
+pub(crate) fn nsgs_in(
+    p: &FrictionProblem,
+    ws: &mut Workspace,
+    r: &mut [f64],
+    max_sweeps: u64,
+    tolerance: f64,
+    patience: Option<Patience>,
+) -> (u64, f64) {
+    let mut error = ws.error(p, r);
+    let mut sweeps = 0;
+    while sweeps < max_sweeps && !(error <= tolerance) {
+        sweep(p, ws, r);
+        sweeps += 1;
+        let before = error;
+        error = ws.error(p, r);
+        if error <= tolerance {
+            ws.refresh(p, r);
+            error = ws.error(p, r);
+        }
+        if !error.is_finite() {
+            break;
+        }
+        if let Some(pat) = patience {
+            let rate = error / before;
+            let needed = (tolerance / error).ln() / rate.ln();
+            if sweeps >= 2 && error > tolerance && !(rate < 1.0 && needed <= pat.budget) {
+                break;
+            }
+        }
+    }
+    if !(error <= tolerance) {
+        ws.refresh(p, r);
+        error = ws.error(p, r);
+    }
+    (sweeps, error)
+}
+
 /// NSGS from `r` (a warm start or zeros) until the Coulomb error is at most
 /// `tolerance` or `max_sweeps` sweeps ran: (sweeps, error of the last r).
 /// One contact is exact after one sweep.
 pub fn nsgs(p: &FrictionProblem, r: &mut [f64], max_sweeps: u64, tolerance: f64) -> (u64, f64) {
-    let blocks: Vec<Block> = (0..p.contacts()).map(|i| diagonal_block(p, i)).collect();
-    let mut error = coulomb_error(p, r);
-    let mut sweeps = 0;
-    while sweeps < max_sweeps && !(error <= tolerance) {
-        nsgs_sweep(p, &blocks, r);
-        sweeps += 1;
-        error = coulomb_error(p, r);
-        if !error.is_finite() {
-            break;
-        }
-    }
-    (sweeps, error)
+    let mut ws = Workspace::default();
+    ws.prepare(p, r);
+    nsgs_in(p, &mut ws, r, max_sweeps, tolerance, None)
 }

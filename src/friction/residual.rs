@@ -38,35 +38,72 @@ impl FrictionResiduals {
 
     /// The residuals of r given u = W r + q (the caller computed it).
     pub fn of_velocity(problem: &FrictionProblem, r: &[f64], u: &[f64]) -> Self {
-        let scale = norm2(problem.q.iter().copied())
-            .max(norm2(r.iter().copied()))
-            .max(norm2(u.iter().copied()));
+        let q_norm = norm(&problem.q);
+        let scale = q_norm.max(norm(r)).max(norm(u));
         let divide = |x: f64| if scale > f64::EPSILON { x / scale } else { x };
-        let mut coulomb = Vec::with_capacity(u.len());
+        let mut coulomb = vec![0.0; u.len()];
+        let coulomb_error = coulomb_error_into(problem, r, u, q_norm, &mut coulomb);
         let mut cone = Vec::with_capacity(u.len());
         let (mut violation, mut gap, mut dual) = (0.0f64, 0.0f64, 0.0f64);
         for (i, &mu) in problem.mu.iter().enumerate() {
             let ri = [r[3 * i], r[3 * i + 1], r[3 * i + 2]];
             let ui = [u[3 * i], u[3 * i + 1], u[3 * i + 2]];
-            let slide = ui[1].hypot(ui[2]);
-            let un_tilde = ui[0] + mu * slide;
-            let pc = project_on_cone([ri[0] - un_tilde, ri[1] - ui[1], ri[2] - ui[2]], mu);
+            let un_tilde = ui[0] + mu * (ui[1] * ui[1] + ui[2] * ui[2]).sqrt();
             let pa = project_on_cone([ri[0] - ui[0], ri[1] - ui[1], ri[2] - ui[2]], mu);
-            for j in 0..3 {
-                coulomb.push(ri[j] - pc[j]);
-                cone.push(ri[j] - pa[j]);
-            }
+            cone.extend((0..3).map(|j| ri[j] - pa[j]));
             violation = violation.max(ri[1].hypot(ri[2]) - mu * ri[0]);
             gap = gap.max((ri[0] * un_tilde + ri[1] * ui[1] + ri[2] * ui[2]).abs());
             dual = dual.max(-ui[0]);
         }
         FrictionResiduals {
-            coulomb_error: divide(norm2(coulomb.into_iter())),
+            coulomb_error,
             cone_error: divide(norm2(cone.into_iter())),
             cone_violation: violation.max(0.0),
             complementarity: gap,
             dual_cone_violation: dual.max(0.0),
         }
+    }
+}
+
+/// The Coulomb error of r given u = W r + q and ‖q‖ (see
+/// [`FrictionResiduals::coulomb_error`]), with `diff` (3k) as scratch for
+/// the vector r − P_K(r − ũ): no allocation, for the solvers' checks; the
+/// same number, bit for bit, as [`FrictionResiduals::of_velocity`] gives.
+pub(crate) fn coulomb_error_into(
+    problem: &FrictionProblem,
+    r: &[f64],
+    u: &[f64],
+    q_norm: f64,
+    diff: &mut [f64],
+) -> f64 {
+    for (i, &mu) in problem.mu.iter().enumerate() {
+        let ri = [r[3 * i], r[3 * i + 1], r[3 * i + 2]];
+        let ui = [u[3 * i], u[3 * i + 1], u[3 * i + 2]];
+        let un_tilde = ui[0] + mu * (ui[1] * ui[1] + ui[2] * ui[2]).sqrt();
+        let pc = project_on_cone([ri[0] - un_tilde, ri[1] - ui[1], ri[2] - ui[2]], mu);
+        for j in 0..3 {
+            diff[3 * i + j] = ri[j] - pc[j];
+        }
+    }
+    let scale = q_norm.max(norm(r)).max(norm(u));
+    let e = norm(diff);
+    if scale > f64::EPSILON {
+        e / scale
+    } else {
+        e
+    }
+}
+
+/// The Euclidean norm of v: √(Σ v²) in one pass where the sum neither
+/// overflows nor underflows (every f64 in ±[1e-140, 1e140] squared), else
+/// [`norm2`]'s scaled two passes (no division per entry on the fast path:
+/// the solvers evaluate it after every sweep).
+pub(crate) fn norm(v: &[f64]) -> f64 {
+    let sum: f64 = v.iter().map(|x| x * x).sum();
+    if sum.is_finite() && (sum > 1e-280 || sum == 0.0 && v.iter().all(|x| *x == 0.0)) {
+        sum.sqrt()
+    } else {
+        norm2(v.iter().copied())
     }
 }
 

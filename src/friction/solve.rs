@@ -2,11 +2,12 @@
 //! and what they report.
 
 use super::cone::project_on_cone;
-use super::newton::newton;
-use super::nsgs::nsgs;
+use super::newton::newton_in;
+use super::nsgs::{nsgs_in, Patience};
 use super::problem::FrictionProblem;
 use super::projected::{solve_checked, ProjectedMethod, ProjectedSettings, ProjectedSolution};
 use super::residual::FrictionResiduals;
+use super::workspace::{velocity_into, with_workspace, Workspace};
 use crate::lcp::Status;
 
 /// The algorithm that solves an island's frictional problem. Each is judged
@@ -16,17 +17,22 @@ use crate::lcp::Status;
 )]
 #[serde(rename_all = "snake_case")]
 pub enum FrictionMethod {
-    /// The exact path (default): NSGS sweeps (one contact: exact after one
-    /// sweep), then Alart–Curnier Newton polishing to an error of
-    /// min(tolerance, 1e-12), alternating with more NSGS sweeps where
-    /// Newton stalls, within the iteration cap.
+    /// The exact path (default): a start already within the tolerance is
+    /// returned as it is (0 iterations: the warm start of a time-stepping
+    /// world at rest); else NSGS sweeps (one contact: exact after one sweep)
+    /// while they converge fast enough, then Alart–Curnier Newton, each
+    /// stopping as soon as the Coulomb error is at most the tolerance
+    /// (ask for a smaller `tolerance` to polish further: Newton converges
+    /// quadratically, so 1e-12 costs a step or two more than 1e-8),
+    /// alternating with more NSGS sweeps where Newton stalls, within the
+    /// iteration cap.
     #[default]
     Auto,
     /// Non-smooth block Gauss–Seidel with exact local Coulomb solves, until
     /// the error is at most the tolerance.
     Nsgs,
     /// Alart–Curnier semismooth Newton with line search alone, from the warm
-    /// start or r = 0.
+    /// start or r = 0, until the error is at most the tolerance.
     Newton,
     /// Projected Jacobi sweeps over contacts on the cone complementarity
     /// model of Anitescu–Tasora ([`super::projected`]; on the GPU too),
@@ -84,7 +90,12 @@ impl FrictionMethod {
 pub struct FrictionSettings {
     /// The algorithm.
     pub method: FrictionMethod,
-    /// `solved` only when the Coulomb error is at most this.
+    /// `solved` only when the solver's error is at most this, and where
+    /// each method stops: `auto`, `nsgs` and `newton` return as soon as the
+    /// Coulomb error (Siconos' fc3d error, De Saxcé) is at most this, a
+    /// start already there included (no polishing beyond it); the
+    /// projected methods judge their own residual `cone_error` by it (see
+    /// [`FrictionMethod::Jacobi`]).
     pub tolerance: f64,
     /// Cap on NSGS sweeps plus Newton steps (the projected methods: on
     /// their iterations).
@@ -123,11 +134,11 @@ pub struct FrictionSolution {
     pub method: FrictionMethod,
 }
 
-/// The Newton target: the rounding of f64, or the tolerance where tighter.
-const POLISH: f64 = 1e-12;
-
 /// Solves one island from `warm` (3k reactions of the last call; ignored
-/// when absent or of another length) with `s.method`.
+/// when absent, of another length or not finite) with `s.method`. The exact
+/// methods start from the warm start projected on the cones, check its
+/// Coulomb error first and return it unchanged (0 iterations) when it is
+/// within the tolerance. They reuse one workspace per thread across calls.
 pub fn solve_friction_problem(
     p: &FrictionProblem,
     warm: Option<&[f64]>,
@@ -137,18 +148,30 @@ pub fn solve_friction_problem(
         Some(w) if w.len() == p.dim() && w.iter().all(|v| v.is_finite()) => w.to_vec(),
         _ => vec![0.0; p.dim()],
     };
-    let cap = s.max_iterations;
-    let iterations = match s.method {
-        FrictionMethod::Nsgs => nsgs(p, &mut r, cap, s.tolerance).0,
-        FrictionMethod::Newton => newton(p, &mut r, cap, s.tolerance.min(POLISH)).0,
-        FrictionMethod::Auto => hybrid(p, &mut r, cap, s.tolerance),
-        FrictionMethod::Jacobi | FrictionMethod::Pgs | FrictionMethod::Apgd => {
-            let ps = s.projected_settings();
-            let sol = solve_checked(p, Some(&r), &ps, ps.f64_tolerance());
-            return from_projected(sol, s.method);
+    if s.method.projected().is_some() {
+        let ps = s.projected_settings();
+        let sol = solve_checked(p, Some(&r), &ps, ps.f64_tolerance());
+        return from_projected(sol, s.method);
+    }
+    project_on_cones(p, &mut r);
+    let (cap, tolerance) = (s.max_iterations, s.tolerance);
+    let iterations = with_workspace(|ws| {
+        ws.prepare(p, &r);
+        match s.method {
+            FrictionMethod::Nsgs => nsgs_in(p, ws, &mut r, cap, tolerance, None).0,
+            FrictionMethod::Newton => newton_in(p, ws, &mut r, cap, tolerance).0,
+            _ => hybrid(p, ws, &mut r, cap, tolerance),
         }
-    };
+    });
     finish(p, r, iterations, s)
+}
+
+/// Each contact's reaction projected on its cone, in place.
+fn project_on_cones(p: &FrictionProblem, r: &mut [f64]) {
+    for (i, &mu) in p.mu.iter().enumerate() {
+        let ri = project_on_cone([r[3 * i], r[3 * i + 1], r[3 * i + 2]], mu);
+        r[3 * i..3 * i + 3].copy_from_slice(&ri);
+    }
 }
 
 /// A projected iteration's answer as a [`FrictionSolution`] (its status
@@ -179,35 +202,70 @@ impl FrictionSettings {
 }
 
 /// NSGS then Newton, alternating while Newton stalls (see
-/// [`FrictionMethod::Auto`]); keeps the r of smallest error.
-fn hybrid(p: &FrictionProblem, r: &mut Vec<f64>, cap: u64, tolerance: f64) -> u64 {
-    let target = tolerance.min(POLISH);
+/// [`FrictionMethod::Auto`]), with `ws` prepared for `p` and r. NSGS gives
+/// way to Newton once its linear rate predicts more than 4 + 3k/2 further
+/// sweeps (about a Newton step's cost at k ≤ 4); after a Newton round that
+/// did not converge, the sweeps run without that patience (Newton can leave
+/// r where the sweeps first diverge), doubling per round.
+/// A Newton iterate is projected on the cones and checked again before it
+/// is accepted. Keeps the r of smallest error when the cap is reached.
+fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tolerance: f64) -> u64 {
+    let mut error = ws.error(p, r);
+    if error <= tolerance {
+        return 0;
+    }
+    let budget = 4.0 + p.dim() as f64 / 2.0;
+    let mut sweeps_per_round = 2 * budget as u64;
     let mut used = 0;
-    let mut sweeps_per_round = if p.contacts() == 1 { 1 } else { 2 };
-    let mut best = (f64::INFINITY, r.clone());
+    let mut best = error;
+    ws.best.copy_from_slice(r);
+    let mut patient = true;
     while used < cap {
-        let (k, e) = nsgs(p, r, sweeps_per_round.min(cap - used), target);
+        let patience = patient.then_some(Patience { budget });
+        let (k, e) = nsgs_in(
+            p,
+            ws,
+            r,
+            sweeps_per_round.min(cap - used),
+            tolerance,
+            patience,
+        );
         used += k;
-        if e < best.0 {
-            best = (e, r.clone());
-        }
-        if e <= target || used >= cap {
+        error = e;
+        if error <= tolerance || used >= cap {
             break;
         }
-        let (k, e) = newton(p, r, 50.min(cap - used), target);
+        keep_best(ws, r, error, &mut best);
+        let (k, e) = newton_in(p, ws, r, 50.min(cap - used), tolerance);
         used += k;
-        if e < best.0 {
-            best = (e, r.clone());
+        error = e;
+        if error <= tolerance {
+            project_on_cones(p, r);
+            ws.refresh(p, r);
+            error = ws.error(p, r);
+            if error <= tolerance {
+                break;
+            }
         }
-        if e <= target || (k == 0 && sweeps_per_round >= cap) {
+        keep_best(ws, r, error, &mut best);
+        if k == 0 && sweeps_per_round >= cap {
             break;
         }
+        patient = false;
         sweeps_per_round *= 2;
     }
-    if best.0.is_finite() {
-        *r = best.1;
+    if !(error <= tolerance) && best < error {
+        r.copy_from_slice(&ws.best);
     }
     used
+}
+
+/// Records r in `ws.best` when its error beats `best`.
+fn keep_best(ws: &mut Workspace, r: &[f64], error: f64, best: &mut f64) {
+    if error < *best {
+        *best = error;
+        ws.best.copy_from_slice(r);
+    }
 }
 
 /// The status and residuals of the final r, first projected on its cones
@@ -220,11 +278,9 @@ fn finish(
     iterations: u64,
     s: &FrictionSettings,
 ) -> FrictionSolution {
-    for (i, &mu) in p.mu.iter().enumerate() {
-        let ri = project_on_cone([r[3 * i], r[3 * i + 1], r[3 * i + 2]], mu);
-        r[3 * i..3 * i + 3].copy_from_slice(&ri);
-    }
-    let u = p.velocity(&r);
+    project_on_cones(p, &mut r);
+    let mut u = vec![0.0; p.dim()];
+    velocity_into(p, &r, &mut u);
     let residuals = FrictionResiduals::of_velocity(p, &r, &u);
     let finite = r.iter().chain(&u).all(|v| v.is_finite()) && residuals.coulomb_error.is_finite();
     let status = if !finite {

@@ -13,9 +13,13 @@ use crate::{
     Status,
 };
 
+/// The CPU solver with friction tolerance 1e-12: these tests compare
+/// impulses and velocities to 1e-9, finer than the default tolerance 1e-8
+/// at which the exact path stops.
 fn cpu() -> Solver {
     Solver::new(Settings {
         backend: Backend::Cpu,
+        friction_tolerance: 1e-12,
         ..Settings::default()
     })
     .unwrap()

@@ -9,9 +9,14 @@ use crate::settings::{Backend, Method, Settings};
 use crate::world::generate::{incline, standard_world, WorldKind};
 use crate::Solver;
 
+/// The CPU solver, warm-started, with friction tolerance 1e-12: these tests
+/// bound velocities to 1e-9 m/s and energies to 1e-9 J on 1000 kg boxes,
+/// finer than the default tolerance 1e-8 gives (the Coulomb error is
+/// normalised by ‖r‖, here hundreds of N·s), at which the exact path stops.
 fn cpu() -> Solver {
     Solver::new(Settings {
         warm_start: true,
+        friction_tolerance: 1e-12,
         ..Settings::new(Backend::Cpu, Method::Auto)
     })
     .unwrap()

@@ -1,0 +1,158 @@
+//! The buffers of the exact Coulomb solvers ([`super::nsgs`],
+//! [`super::newton`]), sized once per island and reused across the islands
+//! one thread solves, so that no sweep or Newton step allocates; and the
+//! velocity u = W r + q they keep current instead of recomputing it.
+
+use std::cell::RefCell;
+
+use super::local::Block;
+use super::problem::FrictionProblem;
+use super::residual::{coulomb_error_into, norm};
+
+/// Per-island state and scratch of the exact solvers. [`Workspace::prepare`]
+/// sizes it for a problem; every buffer then has the problem's dimension.
+#[derive(Debug, Default)]
+pub struct Workspace {
+    /// u = W r + q of the current r (kept current by the solvers).
+    pub(crate) u: Vec<f64>,
+    /// The Coulomb error's vector r − P_K(r − ũ), 3k.
+    pub(crate) diff: Vec<f64>,
+    /// The contacts' 3×3 diagonal blocks of W.
+    pub(crate) blocks: Vec<Block>,
+    /// The Newton scalings ρ_i = 1 / W_ii,nn.
+    pub(crate) rho: Vec<f64>,
+    /// ‖q‖ (a term of the error's normalisation).
+    pub(crate) q_norm: f64,
+    /// Φ(r) of the Alart–Curnier equation, 3k.
+    pub(crate) phi: Vec<f64>,
+    /// Its generalized Jacobian, 3k × 3k.
+    pub(crate) jac: Vec<f64>,
+    /// The Newton step Δ, 3k.
+    pub(crate) delta: Vec<f64>,
+    /// W Δ, 3k: the velocity's change along the step (line search in O(k)).
+    pub(crate) w_delta: Vec<f64>,
+    /// A trial r and its u and Φ, 3k each.
+    pub(crate) trial: Vec<f64>,
+    pub(crate) trial_u: Vec<f64>,
+    pub(crate) trial_phi: Vec<f64>,
+    /// The matrix of a linear solve (destroyed by it), 3k × 3k.
+    pub(crate) matrix: Vec<f64>,
+    /// The best r seen (hybrid rounds), 3k.
+    pub(crate) best: Vec<f64>,
+    /// The LU of ∂Φ failed on this island (W rank-deficient, as for a box on
+    /// four coplanar corners): later steps go to Levenberg–Marquardt directly.
+    pub(crate) singular: bool,
+}
+
+thread_local! {
+    static WORKSPACE: RefCell<Workspace> = RefCell::new(Workspace::default());
+}
+
+/// Runs `f` with this thread's workspace (a fresh one when it is in use
+/// already, as by a local solve's fallback inside a sweep).
+pub fn with_workspace<T>(f: impl FnOnce(&mut Workspace) -> T) -> T {
+    let mut f = Some(f);
+    let out = WORKSPACE.with(|cell| {
+        cell.try_borrow_mut()
+            .ok()
+            .map(|mut ws| (f.take().expect("called once"))(&mut ws))
+    });
+    match out {
+        Some(v) => v,
+        None => (f.take().expect("not called yet"))(&mut Workspace::default()),
+    }
+}
+
+impl Workspace {
+    /// Sizes every buffer for `p`, computes its blocks, scalings and ‖q‖,
+    /// and u = W r + q for the start `r`.
+    pub fn prepare(&mut self, p: &FrictionProblem, r: &[f64]) {
+        let n = p.dim();
+        for v in [
+            &mut self.u,
+            &mut self.diff,
+            &mut self.phi,
+            &mut self.delta,
+            &mut self.w_delta,
+            &mut self.trial,
+            &mut self.trial_u,
+            &mut self.trial_phi,
+            &mut self.best,
+        ] {
+            v.clear();
+            v.resize(n, 0.0);
+        }
+        for v in [&mut self.jac, &mut self.matrix] {
+            v.clear();
+            v.resize(n * n, 0.0);
+        }
+        self.blocks.clear();
+        self.blocks
+            .extend((0..p.contacts()).map(|i| diagonal_block(p, i)));
+        self.rho.clear();
+        self.rho.extend((0..p.contacts()).map(|i| {
+            let d = p.at(3 * i, 3 * i);
+            if d > 0.0 && d.is_finite() {
+                1.0 / d
+            } else {
+                1.0
+            }
+        }));
+        self.q_norm = norm(&p.q);
+        self.singular = false;
+        self.refresh(p, r);
+    }
+
+    /// u = W r + q recomputed exactly (the sweeps update it incrementally).
+    pub fn refresh(&mut self, p: &FrictionProblem, r: &[f64]) {
+        velocity_into(p, r, &mut self.u);
+    }
+
+    /// The Coulomb error of r with the current u (the same number as
+    /// [`super::coulomb_error`] when u is exact).
+    pub fn error(&mut self, p: &FrictionProblem, r: &[f64]) -> f64 {
+        coulomb_error_into(p, r, &self.u, self.q_norm, &mut self.diff)
+    }
+}
+
+/// Contact i's 3×3 diagonal block of W.
+pub fn diagonal_block(p: &FrictionProblem, i: usize) -> Block {
+    std::array::from_fn(|a| std::array::from_fn(|b| p.at(3 * i + a, 3 * i + b)))
+}
+
+/// u = W r + q into `u` (rows by [`dot`]; the solvers' final u and error
+/// are computed by it too, so that their checks and the reported status
+/// agree bit for bit).
+pub fn velocity_into(p: &FrictionProblem, r: &[f64], u: &mut [f64]) {
+    let n = p.dim();
+    for (i, ui) in u.iter_mut().enumerate() {
+        *ui = p.q[i] + dot(&p.w[i * n..(i + 1) * n], r);
+    }
+}
+
+/// a · b (over the shorter length) with four running sums, which the
+/// compiler keeps in vector registers (a single running sum is one long
+/// chain of dependent additions).
+#[inline]
+pub fn dot(a: &[f64], b: &[f64]) -> f64 {
+    let len = a.len().min(b.len());
+    let (a, b) = (&a[..len], &b[..len]);
+    let mut s = [0.0f64; 4];
+    let (ca, cb) = (a.chunks_exact(4), b.chunks_exact(4));
+    let (ta, tb) = (ca.remainder(), cb.remainder());
+    for (x, y) in ca.zip(cb) {
+        for k in 0..4 {
+            s[k] += x[k] * y[k];
+        }
+    }
+    let tail: f64 = ta.iter().zip(tb).map(|(x, y)| x * y).sum();
+    (s[0] + s[1]) + (s[2] + s[3]) + tail
+}
+
+/// W x into `out` (the change of u = W r + q when r moves by x).
+pub fn velocity_into_linear(p: &FrictionProblem, x: &[f64], out: &mut [f64]) {
+    let n = p.dim();
+    for (i, o) in out.iter_mut().enumerate() {
+        *o = dot(&p.w[i * n..(i + 1) * n], x);
+    }
+}
