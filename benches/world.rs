@@ -98,6 +98,9 @@ fn solver(threads: usize) -> Solver {
     Solver::new(Settings {
         threads,
         warm_start: true,
+        // What `lcpbatch simulate` uses: keeps heavy stacks at rest and a
+        // sliding box on the ground (the tests' bounds).
+        friction_tolerance: 1e-12,
         ..Settings::new(Backend::Cpu, Method::Auto)
     })
     .expect("valid settings")

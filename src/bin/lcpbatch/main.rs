@@ -382,6 +382,7 @@ fn demo_in_time(
         gpu,
         Settings {
             warm_start: true,
+            friction_tolerance: simulate::WORLD_FRICTION_TOLERANCE,
             ..Settings::default()
         },
     )?;
