@@ -217,7 +217,29 @@ fn lemke_checked(lcp: &Lcp, s: &Settings) -> Result<LcpSolution, u64> {
     let (Status::Solved, Some(mask)) = (l.status, l.basis) else {
         return Err(pivots);
     };
-    checked_basis(lcp, mask, pivots, &e).ok_or(pivots)
+    checked_basis(lcp, mask, pivots, &e)
+        .or_else(|| checked_basis(lcp, support(&l.z, 0.0), pivots, &e))
+        .or_else(|| checked_basis(lcp, support(&l.z, SUPPORT_DROP), pivots, &e))
+        .ok_or(pivots)
+}
+
+/// Impulses at or below this fraction of the largest are left out of the
+/// second support tried (see [`support`]).
+const SUPPORT_DROP: f64 = 1e-9;
+
+/// The contacts whose impulse exceeds `drop` × the largest, as a basis mask.
+/// On a degenerate problem (a resting 4-box stack: 16 contacts, M of rank 12)
+/// Lemke can end on a basis that holds some z_i = 0, or z_i ≈ 1e-10 beside
+/// impulses of 200, whose M_SS is singular, which the check refuses. The
+/// same answer on its (large) support is usually a regular basis; it is
+/// re-solved and checked like any other (an infeasible one is refused), for
+/// far less than enumerating 2^16 bases.
+fn support(z: &[f64], drop: f64) -> u32 {
+    let floor = drop * z.iter().fold(0.0_f64, |m, &zi| m.max(zi));
+    z.iter()
+        .enumerate()
+        .filter(|(_, &zi)| zi > floor)
+        .fold(0, |m, (i, _)| m | 1 << i)
 }
 
 /// The error at or below which the textbook run's checked basis is the
