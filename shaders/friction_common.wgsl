@@ -76,6 +76,21 @@ fn finite(v: Scalar) -> bool {
     return v == v && abs(v) <= SCALAR_MAX;
 }
 
+// A sweep's status after measuring `err` at `iterations`, in the CPU twin's
+// order (not finite, within tolerance, at the cap); RUNNING: sweep again.
+fn sweep_status(err: Scalar, iterations: u32) -> u32 {
+    if !finite(err) {
+        return FAILED;
+    }
+    if err <= controls.tolerance {
+        return CONVERGED;
+    }
+    if iterations >= controls.max_iterations {
+        return AT_CAP;
+    }
+    return RUNNING;
+}
+
 // Siconos' fc3d projection on {|x_t| <= mu x_n} (cone.rs project_on_cone).
 fn project_on_cone(v: vec3<Scalar>, m: Scalar) -> vec3<Scalar> {
     let t = sqrt(v.y * v.y + v.z * v.z);

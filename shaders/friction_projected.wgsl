@@ -269,16 +269,8 @@ fn sweeps(@builtin(global_invocation_id) gid: vec3<u32>) {
         spent += cost;
         velocity_of_x();
         err = stop_measure(false);
-        if !finite(err) {
-            st.status = FAILED;
-            break;
-        }
-        if err <= controls.tolerance {
-            st.status = CONVERGED;
-            break;
-        }
-        if st.iterations >= controls.max_iterations {
-            st.status = AT_CAP;
+        st.status = sweep_status(err, st.iterations);
+        if st.status != RUNNING {
             break;
         }
         sweep(gauss_seidel);

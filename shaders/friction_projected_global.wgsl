@@ -235,16 +235,8 @@ fn sweeps(@builtin(global_invocation_id) gid: vec3<u32>) {
         velocity_of_stored(is, is.v);
         let err = stop_measure(is, is.v, false);
         scalars[4u * index + 3u] = err;
-        if !finite(err) {
-            st.status = FAILED;
-            break;
-        }
-        if err <= controls.tolerance {
-            st.status = CONVERGED;
-            break;
-        }
-        if st.iterations >= controls.max_iterations {
-            st.status = AT_CAP;
+        st.status = sweep_status(err, st.iterations);
+        if st.status != RUNNING {
             break;
         }
         sweep(is, gauss_seidel);

@@ -79,6 +79,21 @@ fn finite(v: Scalar) -> bool {
     return v == v && abs(v) <= SCALAR_MAX;
 }
 
+// A sweep's status after measuring `err` at `iterations`, in the CPU twin's
+// order (not finite, within tolerance, at the cap); RUNNING: sweep again.
+fn sweep_status(err: Scalar, iterations: u32) -> u32 {
+    if !finite(err) {
+        return FAILED;
+    }
+    if err <= controls.tolerance {
+        return CONVERGED;
+    }
+    if iterations >= controls.max_iterations {
+        return AT_CAP;
+    }
+    return RUNNING;
+}
+
 // Siconos' fc3d projection on {|x_t| <= mu x_n} (cone.rs project_on_cone).
 fn project_on_cone(v: vec3<Scalar>, m: Scalar) -> vec3<Scalar> {
     let t = sqrt(v.y * v.y + v.z * v.z);
@@ -330,16 +345,8 @@ fn sweeps(@builtin(global_invocation_id) gid: vec3<u32>) {
         velocity_of_stored(is, is.v);
         let err = stop_measure(is, is.v, false);
         scalars[4u * index + 3u] = err;
-        if !finite(err) {
-            st.status = FAILED;
-            break;
-        }
-        if err <= controls.tolerance {
-            st.status = CONVERGED;
-            break;
-        }
-        if st.iterations >= controls.max_iterations {
-            st.status = AT_CAP;
+        st.status = sweep_status(err, st.iterations);
+        if st.status != RUNNING {
             break;
         }
         sweep(is, gauss_seidel);
