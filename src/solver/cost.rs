@@ -16,8 +16,8 @@
 //!
 //! Calibration ([`Solver::calibrate`]): physical islands of each size in
 //! [`CALIBRATION_SIZES`] solved by the CPU path (every core) and by the GPU
-//! path at two batch sizes (after an untimed call that compiles the size's
-//! kernels), so that the GPU's per-batch cost separates from its per-island
+//! path at two batch sizes (each after an untimed call that warms the CPU's
+//! workers or compiles the size's kernels), so that the GPU's per-batch cost separates from its per-island
 //! cost; each figure is the fastest of three runs. It runs when `Backend::Auto` has a GPU open and no model is cached
 //! for this device, precision and thread count; the model is written to
 //! [`cache_dir`] and read by later processes.
@@ -216,6 +216,8 @@ impl Solver {
         let mut per_batch = Vec::new();
         for n in CALIBRATION_SIZES {
             let lcps = islands_of_size(n, CALIBRATION_ISLANDS, 0xC0FFEE);
+            // Untimed: starts the workers and sizes their workspaces.
+            self.lcps_on_cpu(&lcps[..16], None)?;
             let cpu = fastest_of(TIMINGS, || self.lcps_on_cpu(&lcps, None))?;
             m.cpu_per_island.push(cpu / lcps.len() as f64);
             // Untimed: compiles this size's kernels.
