@@ -31,13 +31,13 @@
 use glam::DVec3;
 
 use super::problem::FrictionProblem;
-use crate::cpu::assembly::{assemble_contact, dynamic_sides, matrix_entry, ContactRow};
+use crate::cpu::assembly::{assemble_contact, dynamic_sides, ContactRow};
 use crate::cpu::impulses::{velocities_after, BodyVelocity};
 use crate::islands::Island;
 use crate::scene::{Body, Contact, Scene};
 
 #[cfg(doc)]
-use crate::cpu::assembly::normal_q;
+use crate::cpu::assembly::{matrix_entry, normal_q};
 
 /// The three rows of one contact: normal, t₁, t₂. `rows[0]` is exactly the
 /// frictionless path's row (q with restitution); the tangents' q is the
@@ -82,6 +82,15 @@ pub fn assemble_friction_contacts(scene: &Scene) -> Vec<FrictionContactRows> {
 /// Assembles one island's frictional problem (stage
 /// `assemble_friction_island`): W (3k × 3k, interleaved), q (3k) and μ (k),
 /// over the island's contacts in order.
+///
+/// W's entries are those of [`matrix_entry`] over the rows, bit for bit,
+/// but only the pairs of contacts that share a dynamic body are visited
+/// (W's block sparsity: a contact couples only with those): per dynamic
+/// body, the contacts touching it (a side each), and per pair of them the
+/// 3 × 3 block's body term J_iα · M⁻¹ J_jβᵀ added to W, which starts at
+/// zero. A pair shares at most two bodies, so each entry is `0 + x` or
+/// `0 + x + y` in some order, the same number as `matrix_entry` gives
+/// (two terms add commutatively in IEEE arithmetic).
 pub fn assemble_friction_island(
     scene: &Scene,
     rows: &[FrictionContactRows],
@@ -89,18 +98,32 @@ pub fn assemble_friction_island(
 ) -> FrictionProblem {
     let k = island.len();
     let n = 3 * k;
-    let sides: Vec<_> = island
-        .contacts
-        .iter()
-        .map(|&c| dynamic_sides(scene, &scene.contacts[c]))
-        .collect();
+    // (body, contact in the island, side) for every dynamic side, grouped
+    // by body.
+    let mut touches: Vec<(usize, usize, usize)> = Vec::with_capacity(2 * k);
+    for (i, &c) in island.contacts.iter().enumerate() {
+        for (side, body) in dynamic_sides(scene, &scene.contacts[c])
+            .into_iter()
+            .enumerate()
+        {
+            if let Some(body) = body {
+                touches.push((body, i, side));
+            }
+        }
+    }
+    touches.sort_unstable();
     let mut w = vec![0.0; n * n];
-    for (i, &ci) in island.contacts.iter().enumerate() {
-        for (j, &cj) in island.contacts.iter().enumerate() {
-            for a in 0..3 {
-                for b in 0..3 {
-                    w[(3 * i + a) * n + 3 * j + b] =
-                        matrix_entry(sides[i], &rows[ci].rows[a], sides[j], &rows[cj].rows[b]);
+    for group in touches.chunk_by(|x, y| x.0 == y.0) {
+        for &(_, i, si) in group {
+            let row_i = &rows[island.contacts[i]].rows;
+            for &(_, j, sj) in group {
+                let row_j = &rows[island.contacts[j]].rows;
+                for (a, ra) in row_i.iter().enumerate() {
+                    let jac = &ra.jacobian[6 * si..6 * si + 6];
+                    let at = (3 * i + a) * n + 3 * j;
+                    for (entry, rb) in w[at..at + 3].iter_mut().zip(row_j) {
+                        *entry += body_term(jac, &rb.response[6 * sj..6 * sj + 6]);
+                    }
                 }
             }
         }
@@ -116,6 +139,13 @@ pub fn assemble_friction_island(
         .map(|&c| scene.contacts[c].friction)
         .collect();
     FrictionProblem { w, q, mu }
+}
+
+/// One body's term of a W entry: J · (M⁻¹ Jᵀ) over that body's 6 entries,
+/// summed as [`matrix_entry`] sums them.
+#[inline]
+fn body_term(jacobian: &[f64], response: &[f64]) -> f64 {
+    jacobian.iter().zip(response).map(|(a, b)| a * b).sum()
 }
 
 /// One island of a scene and its frictional problem.
@@ -206,6 +236,44 @@ mod tests {
     use crate::cpu::assembly::{assemble_contacts, assemble_island};
     use crate::generate::{random_island, Rng};
     use crate::islands::find_islands;
+
+    #[test]
+    fn w_is_matrix_entry_of_the_rows_bit_for_bit() {
+        // Random islands (one or two dynamic bodies per contact) and a
+        // world's 4-box stack (contacts shared by two dynamic boxes).
+        let mut rng = Rng::new(19);
+        let mut scenes: Vec<Scene> = (1..9).map(|n| random_island(&mut rng, n, 10.0)).collect();
+        let world =
+            crate::world::generate::standard_world(crate::world::generate::WorldKind::Stack, 4, 1);
+        scenes.push(crate::world::step::prepare(&world, 0, 0.01).scene);
+        for scene in &scenes {
+            let rows = assemble_friction_contacts(scene);
+            for isl in find_islands(scene) {
+                let p = assemble_friction_island(scene, &rows, &isl);
+                let n = 3 * isl.len();
+                for (i, &ci) in isl.contacts.iter().enumerate() {
+                    for (j, &cj) in isl.contacts.iter().enumerate() {
+                        let (si, sj) = (
+                            dynamic_sides(scene, &scene.contacts[ci]),
+                            dynamic_sides(scene, &scene.contacts[cj]),
+                        );
+                        for a in 0..3 {
+                            for b in 0..3 {
+                                let want = crate::cpu::assembly::matrix_entry(
+                                    si,
+                                    &rows[ci].rows[a],
+                                    sj,
+                                    &rows[cj].rows[b],
+                                );
+                                let got = p.w[(3 * i + a) * n + 3 * j + b];
+                                assert_eq!(got.to_bits(), want.to_bits(), "{i} {j} {a} {b}");
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
 
     #[test]
     fn the_normal_block_is_the_lcp_and_w_is_symmetric_and_consistent() {
