@@ -201,12 +201,21 @@ impl FrictionSettings {
     }
 }
 
+/// A start with a Coulomb error at most this goes to Newton first (see
+/// [`hybrid`]).
+const NEAR: f64 = 1e-6;
+
+/// Newton steps tried first from a start within [`NEAR`].
+const NEAR_STEPS: u64 = 3;
+
 /// NSGS then Newton, alternating while Newton stalls (see
 /// [`FrictionMethod::Auto`]), with `ws` prepared for `p` and r. NSGS gives
 /// way to Newton once its linear rate predicts more than 4 + 3k/2 further
 /// sweeps (about a Newton step's cost at k ≤ 4); after a Newton round that
 /// did not converge, the sweeps run without that patience (Newton can leave
 /// r where the sweeps first diverge), doubling per round.
+/// A start within [`NEAR`] (a time step's warm start) gets up to
+/// [`NEAR_STEPS`] Newton steps before any sweep.
 /// A Newton iterate is projected on the cones and checked again before it
 /// is accepted. Keeps the r of smallest error when the cap is reached.
 fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tolerance: f64) -> u64 {
@@ -219,6 +228,22 @@ fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tole
     let mut used = 0;
     let mut best = error;
     ws.best.copy_from_slice(r);
+    if error <= NEAR {
+        // A start this close (a time step's warm start): Newton first, whose
+        // convergence is quadratic from here, where NSGS creeps (stacks).
+        let (k, e) = newton_in(p, ws, r, NEAR_STEPS.min(cap), tolerance);
+        used += k;
+        error = e;
+        if error <= tolerance {
+            project_on_cones(p, r);
+            ws.refresh(p, r);
+            error = ws.error(p, r);
+            if error <= tolerance {
+                return used;
+            }
+        }
+        keep_best(ws, r, error, &mut best);
+    }
     let mut patient = true;
     while used < cap {
         let patience = patient.then_some(Patience { budget });

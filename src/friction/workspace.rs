@@ -37,6 +37,8 @@ pub struct Workspace {
     pub(crate) trial_phi: Vec<f64>,
     /// The matrix of a linear solve (destroyed by it), 3k × 3k.
     pub(crate) matrix: Vec<f64>,
+    /// The sticking contacts of a Newton step (`newton::stick_step`).
+    pub(crate) stuck: Vec<usize>,
     /// The best r seen (hybrid rounds), 3k.
     pub(crate) best: Vec<f64>,
     /// The LU of ∂Φ failed on this island (W rank-deficient, as for a box on
