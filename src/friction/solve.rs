@@ -231,16 +231,11 @@ fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tole
     if error <= NEAR {
         // A start this close (a time step's warm start): Newton first, whose
         // convergence is quadratic from here, where NSGS creeps (stacks).
-        let (k, e) = newton_in(p, ws, r, NEAR_STEPS.min(cap), tolerance);
+        let (k, e) = newton_checked(p, ws, r, NEAR_STEPS.min(cap), tolerance);
         used += k;
         error = e;
         if error <= tolerance {
-            project_on_cones(p, r);
-            ws.refresh(p, r);
-            error = ws.error(p, r);
-            if error <= tolerance {
-                return used;
-            }
+            return used;
         }
         keep_best(ws, r, error, &mut best);
     }
@@ -261,16 +256,11 @@ fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tole
             break;
         }
         keep_best(ws, r, error, &mut best);
-        let (k, e) = newton_in(p, ws, r, 50.min(cap - used), tolerance);
+        let (k, e) = newton_checked(p, ws, r, 50.min(cap - used), tolerance);
         used += k;
         error = e;
         if error <= tolerance {
-            project_on_cones(p, r);
-            ws.refresh(p, r);
-            error = ws.error(p, r);
-            if error <= tolerance {
-                break;
-            }
+            break;
         }
         keep_best(ws, r, error, &mut best);
         if k == 0 && sweeps_per_round >= cap {
@@ -283,6 +273,24 @@ fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tole
         r.copy_from_slice(&ws.best);
     }
     used
+}
+
+/// Newton ([`newton_in`]) whose converged iterate is projected on the
+/// cones and checked again with u recomputed: (steps, error of r).
+fn newton_checked(
+    p: &FrictionProblem,
+    ws: &mut Workspace,
+    r: &mut [f64],
+    max_steps: u64,
+    tolerance: f64,
+) -> (u64, f64) {
+    let (k, mut error) = newton_in(p, ws, r, max_steps, tolerance);
+    if error <= tolerance {
+        project_on_cones(p, r);
+        ws.refresh(p, r);
+        error = ws.error(p, r);
+    }
+    (k, error)
 }
 
 /// Records r in `ws.best` when its error beats `best`.
