@@ -215,7 +215,8 @@ const NEAR_STEPS: u64 = 3;
 /// did not converge, the sweeps run without that patience (Newton can leave
 /// r where the sweeps first diverge), doubling per round.
 /// A start within [`NEAR`] (a time step's warm start) gets up to
-/// [`NEAR_STEPS`] Newton steps before any sweep.
+/// [`NEAR_STEPS`] Newton steps before any sweep; else, after the first
+/// Newton round that stalls, Newton runs once from the start itself.
 /// A Newton iterate is projected on the cones and checked again before it
 /// is accepted. Keeps the r of smallest error when the cap is reached.
 fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tolerance: f64) -> u64 {
@@ -228,7 +229,10 @@ fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tole
     let mut used = 0;
     let mut best = error;
     ws.best.copy_from_slice(r);
-    if error <= NEAR {
+    ws.start.copy_from_slice(r);
+    // Newton from the start is tried once in all (first when it is near).
+    let mut from_start = error <= NEAR;
+    if from_start {
         // A start this close (a time step's warm start): Newton first, whose
         // convergence is quadratic from here, where NSGS creeps (stacks).
         let (k, e) = newton_checked(p, ws, r, NEAR_STEPS.min(cap), tolerance);
@@ -263,6 +267,22 @@ fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tole
             break;
         }
         keep_best(ws, r, error, &mut best);
+        if !from_start && used < cap {
+            // Newton stalled from the sweeps' iterate (where ½‖Φ‖² has a
+            // local minimum that is no solution, or no descent: the sweeps
+            // can cycle there, random spheres k = 3): once, Newton from
+            // the start instead, which takes another path.
+            from_start = true;
+            r.copy_from_slice(&ws.start);
+            ws.refresh(p, r);
+            let (k, e) = newton_checked(p, ws, r, 50.min(cap - used), tolerance);
+            used += k;
+            error = e;
+            if error <= tolerance {
+                break;
+            }
+            keep_best(ws, r, error, &mut best);
+        }
         if k == 0 && sweeps_per_round >= cap {
             break;
         }

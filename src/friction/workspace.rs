@@ -41,6 +41,8 @@ pub struct Workspace {
     pub(crate) stuck: Vec<usize>,
     /// The best r seen (hybrid rounds), 3k.
     pub(crate) best: Vec<f64>,
+    /// The start r (hybrid's Newton restart), 3k.
+    pub(crate) start: Vec<f64>,
     /// The LU of ∂Φ failed on this island (W rank-deficient, as for a box on
     /// four coplanar corners): later steps go to Levenberg–Marquardt directly.
     pub(crate) singular: bool,
@@ -80,6 +82,7 @@ impl Workspace {
             &mut self.trial_u,
             &mut self.trial_phi,
             &mut self.best,
+            &mut self.start,
         ] {
             v.clear();
             v.resize(n, 0.0);
