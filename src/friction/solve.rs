@@ -260,13 +260,11 @@ fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tole
             break;
         }
         keep_best(ws, r, error, &mut best);
-        let (k, e) = newton_checked(p, ws, r, 50.min(cap - used), tolerance);
-        used += k;
+        let (k, e) = newton_round(p, ws, r, (&mut used, cap), tolerance, &mut best);
         error = e;
         if error <= tolerance {
             break;
         }
-        keep_best(ws, r, error, &mut best);
         if !from_start && used < cap {
             // Newton stalled from the sweeps' iterate (where ½‖Φ‖² has a
             // local minimum that is no solution, or no descent: the sweeps
@@ -275,13 +273,10 @@ fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tole
             from_start = true;
             r.copy_from_slice(&ws.start);
             ws.refresh(p, r);
-            let (k, e) = newton_checked(p, ws, r, 50.min(cap - used), tolerance);
-            used += k;
-            error = e;
+            error = newton_round(p, ws, r, (&mut used, cap), tolerance, &mut best).1;
             if error <= tolerance {
                 break;
             }
-            keep_best(ws, r, error, &mut best);
         }
         if k == 0 && sweeps_per_round >= cap {
             break;
@@ -310,6 +305,24 @@ fn newton_checked(
         ws.refresh(p, r);
         error = ws.error(p, r);
     }
+    (k, error)
+}
+
+/// One of [`hybrid`]'s Newton rounds: [`newton_checked`] for at most 50
+/// steps within the cap (`budget` = (steps used so far, cap), the steps
+/// added), r recorded as the best when it is. Returns (steps, error).
+fn newton_round(
+    p: &FrictionProblem,
+    ws: &mut Workspace,
+    r: &mut [f64],
+    budget: (&mut u64, u64),
+    tolerance: f64,
+    best: &mut f64,
+) -> (u64, f64) {
+    let (used, cap) = budget;
+    let (k, error) = newton_checked(p, ws, r, 50.min(cap - *used), tolerance);
+    *used += k;
+    keep_best(ws, r, error, best);
     (k, error)
 }
 
