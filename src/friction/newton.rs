@@ -156,26 +156,28 @@ fn step(p: &FrictionProblem, r: &[f64], ws: &mut Workspace) -> Option<f64> {
     }
     // λ = 1e-10 of the mean diagonal; where rounding leaves the damped
     // matrix not positive definite to Cholesky, λ grows a thousandfold.
-    let mut damping = 1e-10;
-    loop {
-        normal_matrix(&ws.jac, n, &mut ws.matrix);
-        let normal = &mut ws.matrix;
-        let mean = (0..n).map(|i| normal[i * n + i]).sum::<f64>() / n as f64;
-        let lambda = damping * mean + f64::MIN_POSITIVE;
-        for i in 0..n {
-            normal[i * n + i] += lambda;
-        }
-        // −∂ΦᵀΦ, row by row of ∂Φ (contiguous).
-        ws.delta.fill(0.0);
-        for (k, &f) in ws.phi.iter().enumerate() {
-            if f != 0.0 {
-                let row = &ws.jac[k * n..(k + 1) * n];
-                for (d, a) in ws.delta.iter_mut().zip(row) {
-                    *d -= a * f;
-                }
+    // ∂Φᵀ∂Φ and −∂ΦᵀΦ once (row by row of ∂Φ, contiguous); each damping
+    // tried solves a copy.
+    normal_matrix(&ws.jac, n, &mut ws.normal);
+    let mean = (0..n).map(|i| ws.normal[i * n + i]).sum::<f64>() / n as f64;
+    ws.trial.fill(0.0);
+    for (k, &f) in ws.phi.iter().enumerate() {
+        if f != 0.0 {
+            let row = &ws.jac[k * n..(k + 1) * n];
+            for (d, a) in ws.trial.iter_mut().zip(row) {
+                *d -= a * f;
             }
         }
-        if cholesky_solve(normal, &mut ws.delta, n, None).is_some()
+    }
+    let mut damping = 1e-10;
+    loop {
+        ws.matrix.copy_from_slice(&ws.normal);
+        let lambda = damping * mean + f64::MIN_POSITIVE;
+        for i in 0..n {
+            ws.matrix[i * n + i] += lambda;
+        }
+        ws.delta.copy_from_slice(&ws.trial);
+        if cholesky_solve(&mut ws.matrix, &mut ws.delta, n, None).is_some()
             && ws.delta.iter().all(|d| d.is_finite())
         {
             break;

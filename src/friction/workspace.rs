@@ -37,6 +37,8 @@ pub struct Workspace {
     pub(crate) trial_phi: Vec<f64>,
     /// The matrix of a linear solve (destroyed by it), 3k × 3k.
     pub(crate) matrix: Vec<f64>,
+    /// ∂Φᵀ∂Φ of a Levenberg–Marquardt step, 3k × 3k.
+    pub(crate) normal: Vec<f64>,
     /// The sticking contacts of a Newton step (`newton::stick_step`).
     pub(crate) stuck: Vec<usize>,
     /// The rows of ∂Φ that are ρ_i W's rows (`newton::classify`).
@@ -89,8 +91,8 @@ impl Workspace {
             v.clear();
             v.resize(n, 0.0);
         }
-        for v in [&mut self.jac, &mut self.matrix] {
-            v.clear();
+        // Written in full before they are read: sized, not cleared.
+        for v in [&mut self.jac, &mut self.matrix, &mut self.normal] {
             v.resize(n * n, 0.0);
         }
         self.blocks.clear();
