@@ -191,6 +191,10 @@ fn step(p: &FrictionProblem, r: &[f64], ws: &mut Workspace) -> Option<f64> {
     (s < 0.0).then_some(s)
 }
 
+/// How far (relative) beyond the disc of radius λ a sliding x_t may lie and
+/// still be taken as sticking by [`stick_step`].
+const STICK_BAND: f64 = 1e-9;
+
 /// Sorts the contacts at r by their rows of ∂Φ (x as `alart_curnier`
 /// computes it, so that the kinds are its rows'): `ws.stuck` gets those that
 /// stick with x_n > 0, `ws.w_rows` every row of ∂Φ that is ρ_i times W's
@@ -215,7 +219,11 @@ fn classify(p: &FrictionProblem, r: &[f64], ws: &mut Workspace) -> bool {
         if s <= lambda {
             ws.w_rows.extend([3 * i + 1, 3 * i + 2]);
         }
-        if xn > 0.0 && s <= lambda {
+        // A slide within rounding of the cone's edge (u_t ≈ 0 with r on the
+        // boundary: a resting contact whose friction is saturated) counts
+        // as sticking here; the step is then checked against the true ∂Φ
+        // (its slope) and by the line search.
+        if xn > 0.0 && s <= lambda * (1.0 + STICK_BAND) {
             ws.stuck.push(i);
         } else if !(xn <= 0.0 && s > 0.0) {
             simple = false;
