@@ -155,23 +155,31 @@ pub fn solve_friction_problem(
     }
     project_on_cones(p, &mut r);
     let (cap, tolerance) = (s.max_iterations, s.tolerance);
-    let iterations = with_workspace(|ws| {
+    let (iterations, u) = with_workspace(|ws| {
         ws.prepare(p, &r);
-        match s.method {
+        let iterations = match s.method {
             FrictionMethod::Nsgs => nsgs_in(p, ws, &mut r, cap, tolerance, None).0,
             FrictionMethod::Newton => newton_in(p, ws, &mut r, cap, tolerance).0,
             _ => hybrid(p, ws, &mut r, cap, tolerance),
-        }
+        };
+        // No iteration: r is the start and `ws.u` its exact W r + q (the
+        // warm start of a time step, accepted as it is).
+        (iterations, (iterations == 0).then(|| ws.u.clone()))
     });
-    finish(p, r, iterations, s)
+    finish(p, r, iterations, u, s)
 }
 
-/// Each contact's reaction projected on its cone, in place.
-fn project_on_cones(p: &FrictionProblem, r: &mut [f64]) {
+/// Each contact's reaction projected on its cone, in place; whether any
+/// entry changed.
+fn project_on_cones(p: &FrictionProblem, r: &mut [f64]) -> bool {
+    let mut changed = false;
     for (i, &mu) in p.mu.iter().enumerate() {
-        let ri = project_on_cone([r[3 * i], r[3 * i + 1], r[3 * i + 2]], mu);
+        let old = [r[3 * i], r[3 * i + 1], r[3 * i + 2]];
+        let ri = project_on_cone(old, mu);
+        changed |= ri.map(f64::to_bits) != old.map(f64::to_bits);
         r[3 * i..3 * i + 3].copy_from_slice(&ri);
     }
+    changed
 }
 
 /// A projected iteration's answer as a [`FrictionSolution`] (its status
@@ -342,11 +350,19 @@ fn finish(
     p: &FrictionProblem,
     mut r: Vec<f64>,
     iterations: u64,
+    u_of_r: Option<Vec<f64>>,
     s: &FrictionSettings,
 ) -> FrictionSolution {
-    project_on_cones(p, &mut r);
-    let mut u = vec![0.0; p.dim()];
-    velocity_into(p, &r, &mut u);
+    // `u_of_r`: W r + q of r as given, where known; kept when the
+    // projection leaves r as it is.
+    let u = match (project_on_cones(p, &mut r), u_of_r) {
+        (false, Some(u)) => u,
+        _ => {
+            let mut u = vec![0.0; p.dim()];
+            velocity_into(p, &r, &mut u);
+            u
+        }
+    };
     let residuals = FrictionResiduals::of_velocity(p, &r, &u);
     let finite = r.iter().chain(&u).all(|v| v.is_finite()) && residuals.coulomb_error.is_finite();
     let status = if !finite {

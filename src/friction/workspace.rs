@@ -126,7 +126,11 @@ impl Workspace {
 
 /// Contact i's 3×3 diagonal block of W.
 pub fn diagonal_block(p: &FrictionProblem, i: usize) -> Block {
-    std::array::from_fn(|a| std::array::from_fn(|b| p.at(3 * i + a, 3 * i + b)))
+    let (n, at) = (p.dim(), 3 * i);
+    std::array::from_fn(|a| {
+        let row = &p.w[(at + a) * n + at..(at + a) * n + at + 3];
+        [row[0], row[1], row[2]]
+    })
 }
 
 /// u = W r + q into `u` (rows by [`dot`]; the solvers' final u and error

@@ -6,6 +6,7 @@
 //! start from the last call's impulses keyed by contact ids.
 
 use std::collections::HashMap;
+use std::hash::{BuildHasherDefault, Hasher};
 use std::time::Instant;
 
 use super::Solver;
@@ -30,7 +31,30 @@ use crate::Error;
 /// The reactions (r_n, r_t₁, r_t₂) of the last call's solved frictional
 /// islands, by contact id.
 #[derive(Clone, Debug, Default)]
-pub(super) struct FrictionWarm(HashMap<u64, [f64; 3]>);
+pub(super) struct FrictionWarm(HashMap<u64, [f64; 3], BuildHasherDefault<IdHasher>>);
+
+/// A hasher for contact ids (u64 keys the caller chose, not an adversary's
+/// input): one multiplication by a large odd constant, the high bits
+/// folded down (SipHash, the default, cost 2 % of a world step for the
+/// warm-start lookups and records).
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct IdHasher(u64);
+
+impl Hasher for IdHasher {
+    fn finish(&self) -> u64 {
+        self.0 ^ (self.0 >> 29)
+    }
+
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.write_u64(u64::from(b));
+        }
+    }
+
+    fn write_u64(&mut self, v: u64) {
+        self.0 = (self.0.rotate_left(5) ^ v).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    }
+}
 
 impl FrictionWarm {
     /// The warm start of contacts `ids` (one per contact; None for a contact
