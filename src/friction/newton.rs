@@ -301,11 +301,21 @@ fn stick_step(p: &FrictionProblem, ws: &mut Workspace) -> bool {
                 free_delta(w_row, &ws.delta, &ws.stuck)
             };
             ws.trial[3 * a + d] = -ws.phi[row] / ws.rho[i] - coupling;
+            if all_stick {
+                continue;
+            }
             for (b, &j) in ws.stuck.iter().enumerate() {
                 let at = (3 * a + d) * m + 3 * b;
-                ws.matrix[at..at + 3].copy_from_slice(&w_row[3 * j..3 * j + 3]);
+                let (to, from) = (&mut ws.matrix[at..at + 3], &w_row[3 * j..3 * j + 3]);
+                to[0] = from[0];
+                to[1] = from[1];
+                to[2] = from[2];
             }
         }
+    }
+    if all_stick {
+        // W_SS is W (`ws.stuck` is every contact, in order).
+        ws.matrix.copy_from_slice(&p.w);
     }
     if cholesky_solve(&mut ws.matrix[..m * m], &mut ws.trial[..m], m, Some(1e-10)).is_none() {
         return false;
