@@ -177,7 +177,7 @@ fn step(p: &FrictionProblem, r: &[f64], ws: &mut Workspace) -> Option<f64> {
             ws.matrix[i * n + i] += lambda;
         }
         ws.delta.copy_from_slice(&ws.trial);
-        if cholesky_solve(&mut ws.matrix, &mut ws.delta, n, None).is_some()
+        if cholesky_solve(&mut ws.matrix, &mut ws.delta, n, None, &mut ws.first).is_some()
             && ws.delta.iter().all(|d| d.is_finite())
         {
             break;
@@ -251,7 +251,13 @@ fn w_rows_dependent(p: &FrictionProblem, ws: &mut Workspace) -> bool {
     }
     ws.trial[..m].fill(0.0);
     matches!(
-        cholesky_solve(&mut ws.matrix[..m * m], &mut ws.trial[..m], m, Some(1e-10)),
+        cholesky_solve(
+            &mut ws.matrix[..m * m],
+            &mut ws.trial[..m],
+            m,
+            Some(1e-10),
+            &mut ws.first
+        ),
         Some(dropped) if dropped > 0
     )
 }
@@ -317,7 +323,8 @@ fn stick_step(p: &FrictionProblem, ws: &mut Workspace) -> bool {
         // W_SS is W (`ws.stuck` is every contact, in order).
         ws.matrix.copy_from_slice(&p.w);
     }
-    if cholesky_solve(&mut ws.matrix[..m * m], &mut ws.trial[..m], m, Some(1e-10)).is_none() {
+    let (matrix, trial) = (&mut ws.matrix[..m * m], &mut ws.trial[..m]);
+    if cholesky_solve(matrix, trial, m, Some(1e-10), &mut ws.first).is_none() {
         return false;
     }
     for (a, &i) in ws.stuck.iter().enumerate() {
@@ -351,7 +358,8 @@ fn normal_matrix(jac: &[f64], n: usize, out: &mut [f64]) {
 
 /// Solves A x = b for a symmetric positive definite A (n × n, row-major,
 /// overwritten by its Cholesky factor L in the lower triangle) by
-/// A = L Lᵀ: n³/6 multiply-adds, half of LU's. `x` holds b on entry.
+/// A = L Lᵀ: n³/6 multiply-adds, half of LU's, fewer within A's envelope
+/// (`first`: scratch). `x` holds b on entry.
 /// None when a pivot is not positive (A not positive definite to
 /// rounding); else the number of pivots dropped (below).
 ///
@@ -359,10 +367,22 @@ fn normal_matrix(jac: &[f64], n: usize, out: &mut [f64]) {
 /// ρ times its diagonal entry (a column dependent on the ones before, to
 /// rounding) is dropped, its unknown set to 0 and its column of L zeroed,
 /// which gives a solution of A x = b when b is in A's range.
-fn cholesky_solve(a: &mut [f64], x: &mut [f64], n: usize, drop: Option<f64>) -> Option<usize> {
+fn cholesky_solve(
+    a: &mut [f64],
+    x: &mut [f64],
+    n: usize,
+    drop: Option<f64>,
+    first: &mut Vec<usize>,
+) -> Option<usize> {
+    // The envelope: row i's first nonzero in the lower triangle. L has no
+    // entry before it (no fill there), so every product skips the zeros
+    // ahead of it: W of a stack is block-tridiagonal by level.
+    first.clear();
+    first.extend((0..n).map(|i| (0..i).find(|&j| a[i * n + j] != 0.0).unwrap_or(i)));
     let mut dropped = 0;
     for j in 0..n {
-        let row_j = &a[j * n..j * n + j];
+        let fj = first[j];
+        let row_j = &a[j * n + fj..j * n + j];
         let diagonal = a[j * n + j];
         let d = diagonal - dot(row_j, row_j);
         let drops = match drop {
@@ -382,15 +402,20 @@ fn cholesky_solve(a: &mut [f64], x: &mut [f64], n: usize, drop: Option<f64>) -> 
         a[j * n + j] = d;
         let inv = 1.0 / d;
         for i in j + 1..n {
+            if first[i] > j {
+                continue; // L_ij = A_ij = 0
+            }
+            let s = first[i].max(fj);
             let (upper, lower) = a.split_at_mut(i * n);
-            let lj = &upper[j * n..j * n + j];
+            let lj = &upper[j * n + s..j * n + j];
             let li = &mut lower[..n];
-            li[j] = (li[j] - dot(&li[..j], lj)) * inv;
+            li[j] = (li[j] - dot(&li[s..j], lj)) * inv;
         }
     }
     // L y = b, then Lᵀ x = y (a dropped unknown is 0).
     for i in 0..n {
-        let d = dot(&a[i * n..i * n + i], &x[..i]);
+        let fi = first[i];
+        let d = dot(&a[i * n + fi..i * n + i], &x[fi..i]);
         let p = a[i * n + i];
         x[i] = if p == 0.0 { 0.0 } else { (x[i] - d) / p };
     }
@@ -402,7 +427,9 @@ fn cholesky_solve(a: &mut [f64], x: &mut [f64], n: usize, drop: Option<f64>) -> 
         }
         let mut v = x[i];
         for k in i + 1..n {
-            v -= a[k * n + i] * x[k];
+            if first[k] <= i {
+                v -= a[k * n + i] * x[k];
+            }
         }
         x[i] = v / p;
     }
