@@ -8,7 +8,9 @@
 //! batch). Before each group
 //! it prints, per set, the largest Coulomb error reached and the statuses,
 //! so that islands/s can be read against the error. Throughput is in
-//! islands per second. Groups are small (10 samples, 1 s).
+//! islands per second. Groups are small (10 samples, 1 s). One thread is
+//! timed by its CPU time (as `benches/world.rs` does: other processes on a
+//! shared machine slow it less), every core by the wall clock.
 //!
 //! `friction_warm_stack`: the 16-contact islands of 4-box stack worlds
 //! (μ = 0.5, Δt = 0.01, boxes offset by up to 2 cm, after 30 steps), solved
@@ -19,6 +21,10 @@
 
 use std::hint::black_box;
 use std::time::Duration;
+
+#[path = "common/cpu_time.rs"]
+mod cpu_time;
+use cpu_time::time_steps;
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use std::collections::HashMap;
@@ -89,7 +95,11 @@ fn bench_friction(c: &mut Criterion) {
         for (name, batch) in sets {
             group.throughput(Throughput::Elements(batch.len() as u64));
             group.bench_with_input(BenchmarkId::from_parameter(name), batch, |b, batch| {
-                b.iter(|| black_box(solver.solve_friction(black_box(batch)).expect("valid")))
+                b.iter_custom(|iters| {
+                    time_steps(iters, threads == 1, || {
+                        black_box(solver.solve_friction(black_box(batch)).expect("valid"));
+                    })
+                })
             });
         }
         group.finish();

@@ -17,7 +17,11 @@
 //! wall time. Compare ratios within one run.
 
 use std::hint::black_box;
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+#[path = "common/cpu_time.rs"]
+mod cpu_time;
+use cpu_time::time_steps;
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use lcpbatch::world::generate::{standard_world, WorldKind};
@@ -72,26 +76,6 @@ fn worlds(case: &Case, count: usize) -> Vec<World> {
             w
         })
         .collect()
-}
-
-/// This thread's CPU time so far (None where the kernel does not say).
-fn thread_cpu_time() -> Option<Duration> {
-    let text = std::fs::read_to_string("/proc/thread-self/schedstat").ok()?;
-    let ns: u64 = text.split_whitespace().next()?.parse().ok()?;
-    Some(Duration::from_nanos(ns))
-}
-
-/// Time of `iters` steps: CPU time of this thread when `cpu`, else wall.
-fn time_steps(iters: u64, cpu: bool, mut step: impl FnMut()) -> Duration {
-    let wall = Instant::now();
-    let start = thread_cpu_time().filter(|_| cpu);
-    for _ in 0..iters {
-        step();
-    }
-    match (start, thread_cpu_time()) {
-        (Some(a), Some(b)) => b.saturating_sub(a),
-        _ => wall.elapsed(),
-    }
 }
 
 fn solver(threads: usize) -> Solver {

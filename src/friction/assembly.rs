@@ -28,16 +28,16 @@
 //! two more buffers at offsets `Σ 3k` and `Σ k`. Per contact the rows are
 //! three [`ContactRow`]s (jacobian 12, response 12, q 1) in the order n, t₁, t₂.
 
-use glam::DVec3;
+use glam::{DMat3, DVec3};
 
 use super::problem::FrictionProblem;
-use crate::cpu::assembly::{assemble_contact, dynamic_sides, matrix_entry, ContactRow};
+use crate::cpu::assembly::{assemble_contact, dynamic_sides, normal_q, ContactRow};
 use crate::cpu::impulses::{velocities_after, BodyVelocity};
 use crate::islands::Island;
 use crate::scene::{Body, Contact, Scene};
 
 #[cfg(doc)]
-use crate::cpu::assembly::normal_q;
+use crate::cpu::assembly::matrix_entry;
 
 /// The three rows of one contact: normal, t₁, t₂. `rows[0]` is exactly the
 /// frictionless path's row (q with restitution); the tangents' q is the
@@ -51,22 +51,81 @@ pub struct FrictionContactRows {
 }
 
 /// Assembles one contact's three rows (stage `assemble_friction_contacts`,
-/// one invocation per contact).
+/// one invocation per contact): the normal row is `assemble_contact`'s;
+/// each tangent's is that of the same contact with normal t, no
+/// restitution and no bias (q = t·(ṗ_a − ṗ_b): every normal-only term of q
+/// switched off, so that tangents keep the bare sliding velocity), built by
+/// [`tangent_row`] from what the three directions share.
 pub fn assemble_friction_contact(bodies: &[Body], c: &Contact) -> FrictionContactRows {
     let (t1, t2) = c.tangents();
-    let along = |d: DVec3| {
-        // The same contact with normal d, no restitution and no bias:
-        // q = d·(ṗ_a − ṗ_b). Every normal-only term of q must be switched
-        // off here, so that tangents keep the bare sliding velocity.
-        let mut dc = c.clone();
-        dc.normal = d.to_array();
-        dc.restitution = 0.0;
-        dc.bias = 0.0;
-        assemble_contact(bodies, &dc)
-    };
+    let normal = assemble_contact(bodies, c);
+    let shared = Lever::of(bodies, c);
     FrictionContactRows {
-        rows: [assemble_contact(bodies, c), along(t1), along(t2)],
+        rows: [
+            normal,
+            tangent_row(&normal, &shared, t1),
+            tangent_row(&normal, &shared, t2),
+        ],
         frame: [c.normal(), t1, t2],
+    }
+}
+
+/// What a contact's rows share whatever their direction: each body's lever
+/// arm r, I⁻¹ and 1/m, and the relative point velocity ṗ_a − ṗ_b.
+struct Lever {
+    a: (DVec3, DMat3, f64),
+    b: Option<(DVec3, DMat3, f64)>,
+    pdot: DVec3,
+}
+
+impl Lever {
+    /// The same quantities, in the same operations, as `assemble_contact`.
+    fn of(bodies: &[Body], c: &Contact) -> Lever {
+        let p = c.point();
+        let body = |i: usize| {
+            let b = &bodies[i];
+            let r = p - b.position();
+            (
+                (r, b.inv_inertia_mat(), b.inv_mass),
+                b.velocity() + b.angular_velocity().cross(r),
+            )
+        };
+        let (a, mut pdot) = body(c.a);
+        let b = c.b.map(|i| {
+            let (side, v) = body(i);
+            pdot -= v;
+            side
+        });
+        Lever { a, b, pdot }
+    }
+}
+
+/// The row of direction d as `assemble_contact` builds it for the contact
+/// with normal d, restitution 0 and bias 0, bit for bit: K is the normal
+/// row's (it does not depend on the direction), the rest from `shared`.
+fn tangent_row(normal: &ContactRow, shared: &Lever, d: DVec3) -> ContactRow {
+    let mut jacobian = [0.0; 12];
+    let mut response = [0.0; 12];
+    let (ra, ia, ma) = shared.a;
+    let ra_d = ra.cross(d);
+    jacobian[0..3].copy_from_slice(&d.to_array());
+    jacobian[3..6].copy_from_slice(&ra_d.to_array());
+    response[0..3].copy_from_slice(&(d * ma).to_array());
+    response[3..6].copy_from_slice(&(ia * ra_d).to_array());
+    if let Some((rb, ib, mb)) = shared.b {
+        let rb_d = rb.cross(d);
+        jacobian[6..9].copy_from_slice(&(-d).to_array());
+        jacobian[9..12].copy_from_slice(&(-rb_d).to_array());
+        response[6..9].copy_from_slice(&(-d * mb).to_array());
+        response[9..12].copy_from_slice(&(-(ib * rb_d)).to_array());
+    }
+    let v_rel = shared.pdot.dot(d);
+    ContactRow {
+        k: normal.k,
+        jacobian,
+        response,
+        v_rel,
+        q: normal_q(v_rel, 0.0, 0.0),
     }
 }
 
@@ -82,6 +141,15 @@ pub fn assemble_friction_contacts(scene: &Scene) -> Vec<FrictionContactRows> {
 /// Assembles one island's frictional problem (stage
 /// `assemble_friction_island`): W (3k × 3k, interleaved), q (3k) and μ (k),
 /// over the island's contacts in order.
+///
+/// W's entries are those of [`matrix_entry`] over the rows, bit for bit,
+/// but only the pairs of contacts that share a dynamic body are visited
+/// (W's block sparsity: a contact couples only with those): per dynamic
+/// body, the contacts touching it (a side each), and per pair of them the
+/// 3 × 3 block's body term J_iα · M⁻¹ J_jβᵀ added to W, which starts at
+/// zero. A pair shares at most two bodies, so each entry is `0 + x` or
+/// `0 + x + y` in some order, the same number as `matrix_entry` gives
+/// (two terms add commutatively in IEEE arithmetic).
 pub fn assemble_friction_island(
     scene: &Scene,
     rows: &[FrictionContactRows],
@@ -89,18 +157,32 @@ pub fn assemble_friction_island(
 ) -> FrictionProblem {
     let k = island.len();
     let n = 3 * k;
-    let sides: Vec<_> = island
-        .contacts
-        .iter()
-        .map(|&c| dynamic_sides(scene, &scene.contacts[c]))
-        .collect();
+    // (body, contact in the island, side) for every dynamic side, grouped
+    // by body.
+    let mut touches: Vec<(usize, usize, usize)> = Vec::with_capacity(2 * k);
+    for (i, &c) in island.contacts.iter().enumerate() {
+        for (side, body) in dynamic_sides(scene, &scene.contacts[c])
+            .into_iter()
+            .enumerate()
+        {
+            if let Some(body) = body {
+                touches.push((body, i, side));
+            }
+        }
+    }
+    touches.sort_unstable();
     let mut w = vec![0.0; n * n];
-    for (i, &ci) in island.contacts.iter().enumerate() {
-        for (j, &cj) in island.contacts.iter().enumerate() {
-            for a in 0..3 {
-                for b in 0..3 {
-                    w[(3 * i + a) * n + 3 * j + b] =
-                        matrix_entry(sides[i], &rows[ci].rows[a], sides[j], &rows[cj].rows[b]);
+    for group in touches.chunk_by(|x, y| x.0 == y.0) {
+        for &(_, i, si) in group {
+            let row_i = &rows[island.contacts[i]].rows;
+            for &(_, j, sj) in group {
+                let row_j = &rows[island.contacts[j]].rows;
+                for (a, ra) in row_i.iter().enumerate() {
+                    let jac = &ra.jacobian[6 * si..6 * si + 6];
+                    let at = (3 * i + a) * n + 3 * j;
+                    for (entry, rb) in w[at..at + 3].iter_mut().zip(row_j) {
+                        *entry += body_term(jac, &rb.response[6 * sj..6 * sj + 6]);
+                    }
                 }
             }
         }
@@ -116,6 +198,13 @@ pub fn assemble_friction_island(
         .map(|&c| scene.contacts[c].friction)
         .collect();
     FrictionProblem { w, q, mu }
+}
+
+/// One body's term of a W entry: J · (M⁻¹ Jᵀ) over that body's 6 entries,
+/// summed as [`matrix_entry`] sums them.
+#[inline]
+fn body_term(jacobian: &[f64], response: &[f64]) -> f64 {
+    jacobian.iter().zip(response).map(|(a, b)| a * b).sum()
 }
 
 /// One island of a scene and its frictional problem.
@@ -206,6 +295,79 @@ mod tests {
     use crate::cpu::assembly::{assemble_contacts, assemble_island};
     use crate::generate::{random_island, Rng};
     use crate::islands::find_islands;
+
+    /// Random islands of 1 to 8 contacts (one or two dynamic bodies per
+    /// contact) and a world's 4-box stack (contacts shared by two dynamic
+    /// boxes).
+    fn scenes(seed: u64) -> Vec<Scene> {
+        let mut rng = Rng::new(seed);
+        let mut scenes: Vec<Scene> = (1..9).map(|n| random_island(&mut rng, n, 10.0)).collect();
+        let world =
+            crate::world::generate::standard_world(crate::world::generate::WorldKind::Stack, 4, 1);
+        scenes.push(crate::world::step::prepare(&world, 0, 0.01).scene);
+        scenes
+    }
+
+    #[test]
+    fn tangent_rows_are_assemble_contact_along_the_tangent_bit_for_bit() {
+        let bits = |r: &ContactRow| {
+            let k = r.k.to_cols_array();
+            k.iter()
+                .chain(&r.jacobian)
+                .chain(&r.response)
+                .chain([&r.v_rel, &r.q])
+                .map(|v| v.to_bits())
+                .collect::<Vec<u64>>()
+        };
+        for scene in &scenes(23) {
+            for c in &scene.contacts {
+                let rows = assemble_friction_contact(&scene.bodies, c);
+                let (t1, t2) = c.tangents();
+                for (row, d) in rows.rows[1..].iter().zip([t1, t2]) {
+                    let mut dc = c.clone();
+                    dc.normal = d.to_array();
+                    dc.restitution = 0.0;
+                    dc.bias = 0.0;
+                    assert_eq!(bits(row), bits(&assemble_contact(&scene.bodies, &dc)));
+                }
+                assert_eq!(
+                    bits(&rows.rows[0]),
+                    bits(&assemble_contact(&scene.bodies, c))
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn w_is_matrix_entry_of_the_rows_bit_for_bit() {
+        for scene in &scenes(19) {
+            let rows = assemble_friction_contacts(scene);
+            for isl in find_islands(scene) {
+                let p = assemble_friction_island(scene, &rows, &isl);
+                let n = 3 * isl.len();
+                for (i, &ci) in isl.contacts.iter().enumerate() {
+                    for (j, &cj) in isl.contacts.iter().enumerate() {
+                        let (si, sj) = (
+                            dynamic_sides(scene, &scene.contacts[ci]),
+                            dynamic_sides(scene, &scene.contacts[cj]),
+                        );
+                        for a in 0..3 {
+                            for b in 0..3 {
+                                let want = crate::cpu::assembly::matrix_entry(
+                                    si,
+                                    &rows[ci].rows[a],
+                                    sj,
+                                    &rows[cj].rows[b],
+                                );
+                                let got = p.w[(3 * i + a) * n + 3 * j + b];
+                                assert_eq!(got.to_bits(), want.to_bits(), "{i} {j} {a} {b}");
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
 
     #[test]
     fn the_normal_block_is_the_lcp_and_w_is_symmetric_and_consistent() {

@@ -13,7 +13,11 @@
 //!   d: f(θ) = d⊥·g(θ) = 0 with g·d > 0. f is a trigonometric polynomial of
 //!   degree 2 (at most four roots); they are bracketed on a grid of
 //!   [`SLIDE_SAMPLES`] angles (close pairs through the extrema of f) and
-//!   refined by the Illinois method to machine precision.
+//!   refined by the Illinois method to machine precision. First, though,
+//!   Newton's method on f (f' from the same sine and cosine) from a guess
+//!   of the direction (the current reaction's, the stick solution's or the
+//!   free tangential velocity's) finds the slide in a few steps; the grid
+//!   decides where it does not converge to a valid slide.
 //!
 //! Where several slide directions are valid (an anisotropic block), the one
 //! closest to the current reaction is taken. When no case holds to rounding
@@ -48,11 +52,14 @@ pub fn solve_contact(w: &Block, q: [f64; 3], mu: f64, current: [f64; 3]) -> [f64
         }
     }
     // A guess of the slide direction: the current reaction's, else the
-    // stick solution's (both oppose the slide).
+    // stick solution's (both oppose the slide), else the free tangential
+    // velocity's (the slide's direction when W_tn and μ W_tt are small:
+    // a cold start whose stick solution pulls).
     let guess = [current, stuck.unwrap_or([0.0; 3])]
         .into_iter()
         .find(|r| r[0] > 0.0 && (r[1] != 0.0 || r[2] != 0.0))
-        .map(|r| (-r[2]).atan2(-r[1]));
+        .map(|r| (-r[2]).atan2(-r[1]))
+        .or_else(|| (q[1] != 0.0 || q[2] != 0.0).then(|| q[2].atan2(q[1])));
     guess
         .and_then(|theta| slide_near(w, q, mu, theta))
         .or_else(|| slide(w, q, mu, current))
@@ -114,33 +121,42 @@ fn slide_reaction(w: &Block, q: [f64; 3], mu: f64, theta: f64) -> [f64; 3] {
     [rn, -mu * rn * c, -mu * rn * s]
 }
 
-/// A valid slide found by the secant method on f from the angle `theta`
-/// (the fast path: a guess near the answer converges in a few steps);
-/// None when it does not converge to a valid slide, and the grid decides.
+/// A valid slide found by Newton's method on f from the angle `theta` (the
+/// fast path: from a guess near the answer, quadratic convergence in a few
+/// steps, one `sin_cos` each, f' from the same sine and cosine); None when
+/// it does not converge to a valid slide, and the grid decides. The answer
+/// is the last angle evaluated, once the step it gives is at rounding
+/// level (no evaluation beyond it).
 fn slide_near(w: &Block, q: [f64; 3], mu: f64, theta: f64) -> Option<[f64; 3]> {
-    let f = |t: f64| slide_condition(w, q, mu, t).0;
-    let (mut x0, mut x1) = (theta, theta + 1e-4);
-    let (mut f0, mut f1) = (f(x0), f(x1));
+    let wmax = w.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
+    let mut x = theta;
     for _ in 0..30 {
-        if f1 == 0.0 || f1 == f0 {
-            break;
-        }
-        let x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
-        if !x2.is_finite() || (x2 - x1).abs() > 1.0 {
+        let (s, c) = x.sin_cos();
+        // f = d⊥·g and its derivative (module docs), d = (c, s).
+        let a = w[0][0] - mu * (w[0][1] * c + w[0][2] * s);
+        let da = -mu * (w[0][2] * c - w[0][1] * s);
+        let g1 = -q[0] * (w[1][0] - mu * (w[1][1] * c + w[1][2] * s)) + a * q[1];
+        let g2 = -q[0] * (w[2][0] - mu * (w[2][1] * c + w[2][2] * s)) + a * q[2];
+        let dg1 = q[0] * mu * (w[1][2] * c - w[1][1] * s) + da * q[1];
+        let dg2 = q[0] * mu * (w[2][2] * c - w[2][1] * s) + da * q[2];
+        let f = -s * g1 + c * g2;
+        let df = -c * g1 - s * dg1 - s * g2 + c * dg2;
+        let step = f / df;
+        if !step.is_finite() || step.abs() > 1.0 {
             return None;
         }
-        (x0, f0) = (x1, f1);
-        x1 = x2;
-        f1 = f(x1);
-        if (x1 - x0).abs() <= 1e-15 * x1.abs().max(1.0) {
-            break;
+        if step.abs() <= 4.0 * f64::EPSILON * x.abs().max(1.0) {
+            // Converged: |f| at rounding level of its terms (q_n W and a q_t).
+            let along = c * g1 + s * g2;
+            let size = (q[0].abs() * wmax * (1.0 + mu) + a.abs() * q[1].hypot(q[2]))
+                .max(f64::MIN_POSITIVE);
+            let valid = a > 0.0 && along > 0.0 && f.abs() <= 1e-13 * size;
+            let rn = -q[0] / a;
+            return valid.then_some([rn, -mu * rn * c, -mu * rn * s]);
         }
+        x -= step;
     }
-    let (fx, a, along) = slide_condition(w, q, mu, x1);
-    // Converged: |f| at rounding level of its terms (q_n W and a q_t).
-    let wmax = w.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
-    let size = (q[0].abs() * wmax * (1.0 + mu) + a.abs() * q[1].hypot(q[2])).max(f64::MIN_POSITIVE);
-    (a > 0.0 && along > 0.0 && fx.abs() <= 1e-13 * size).then(|| slide_reaction(w, q, mu, x1))
+    None
 }
 
 /// The valid slide closest to `current`, None when none is found.

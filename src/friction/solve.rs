@@ -155,23 +155,31 @@ pub fn solve_friction_problem(
     }
     project_on_cones(p, &mut r);
     let (cap, tolerance) = (s.max_iterations, s.tolerance);
-    let iterations = with_workspace(|ws| {
+    let (iterations, u) = with_workspace(|ws| {
         ws.prepare(p, &r);
-        match s.method {
+        let iterations = match s.method {
             FrictionMethod::Nsgs => nsgs_in(p, ws, &mut r, cap, tolerance, None).0,
             FrictionMethod::Newton => newton_in(p, ws, &mut r, cap, tolerance).0,
             _ => hybrid(p, ws, &mut r, cap, tolerance),
-        }
+        };
+        // No iteration: r is the start and `ws.u` its exact W r + q (the
+        // warm start of a time step, accepted as it is).
+        (iterations, (iterations == 0).then(|| ws.u.clone()))
     });
-    finish(p, r, iterations, s)
+    finish(p, r, iterations, u, s)
 }
 
-/// Each contact's reaction projected on its cone, in place.
-fn project_on_cones(p: &FrictionProblem, r: &mut [f64]) {
+/// Each contact's reaction projected on its cone, in place; whether any
+/// entry changed.
+fn project_on_cones(p: &FrictionProblem, r: &mut [f64]) -> bool {
+    let mut changed = false;
     for (i, &mu) in p.mu.iter().enumerate() {
-        let ri = project_on_cone([r[3 * i], r[3 * i + 1], r[3 * i + 2]], mu);
+        let old = [r[3 * i], r[3 * i + 1], r[3 * i + 2]];
+        let ri = project_on_cone(old, mu);
+        changed |= ri.map(f64::to_bits) != old.map(f64::to_bits);
         r[3 * i..3 * i + 3].copy_from_slice(&ri);
     }
+    changed
 }
 
 /// A projected iteration's answer as a [`FrictionSolution`] (its status
@@ -201,12 +209,22 @@ impl FrictionSettings {
     }
 }
 
+/// A start with a Coulomb error at most this goes to Newton first (see
+/// [`hybrid`]).
+const NEAR: f64 = 1e-6;
+
+/// Newton steps tried first from a start within [`NEAR`].
+const NEAR_STEPS: u64 = 3;
+
 /// NSGS then Newton, alternating while Newton stalls (see
 /// [`FrictionMethod::Auto`]), with `ws` prepared for `p` and r. NSGS gives
 /// way to Newton once its linear rate predicts more than 4 + 3k/2 further
 /// sweeps (about a Newton step's cost at k ≤ 4); after a Newton round that
 /// did not converge, the sweeps run without that patience (Newton can leave
 /// r where the sweeps first diverge), doubling per round.
+/// A start within [`NEAR`] (a time step's warm start) gets up to
+/// [`NEAR_STEPS`] Newton steps before any sweep; else, after the first
+/// Newton round that stalls, Newton runs once from the start itself.
 /// A Newton iterate is projected on the cones and checked again before it
 /// is accepted. Keeps the r of smallest error when the cap is reached.
 fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tolerance: f64) -> u64 {
@@ -219,6 +237,20 @@ fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tole
     let mut used = 0;
     let mut best = error;
     ws.best.copy_from_slice(r);
+    ws.start.copy_from_slice(r);
+    // Newton from the start is tried once in all (first when it is near).
+    let mut from_start = error <= NEAR;
+    if from_start {
+        // A start this close (a time step's warm start): Newton first, whose
+        // convergence is quadratic from here, where NSGS creeps (stacks).
+        let (k, e) = newton_checked(p, ws, r, NEAR_STEPS.min(cap), tolerance);
+        used += k;
+        error = e;
+        if error <= tolerance {
+            return used;
+        }
+        keep_best(ws, r, error, &mut best);
+    }
     let mut patient = true;
     while used < cap {
         let patience = patient.then_some(Patience { budget });
@@ -236,18 +268,24 @@ fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tole
             break;
         }
         keep_best(ws, r, error, &mut best);
-        let (k, e) = newton_in(p, ws, r, 50.min(cap - used), tolerance);
-        used += k;
+        let (k, e) = newton_round(p, ws, r, (&mut used, cap), tolerance, &mut best);
         error = e;
         if error <= tolerance {
-            project_on_cones(p, r);
+            break;
+        }
+        if !from_start && used < cap {
+            // Newton stalled from the sweeps' iterate (where ½‖Φ‖² has a
+            // local minimum that is no solution, or no descent: the sweeps
+            // can cycle there, random spheres k = 3): once, Newton from
+            // the start instead, which takes another path.
+            from_start = true;
+            r.copy_from_slice(&ws.start);
             ws.refresh(p, r);
-            error = ws.error(p, r);
+            error = newton_round(p, ws, r, (&mut used, cap), tolerance, &mut best).1;
             if error <= tolerance {
                 break;
             }
         }
-        keep_best(ws, r, error, &mut best);
         if k == 0 && sweeps_per_round >= cap {
             break;
         }
@@ -258,6 +296,42 @@ fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tole
         r.copy_from_slice(&ws.best);
     }
     used
+}
+
+/// Newton ([`newton_in`]) whose converged iterate is projected on the
+/// cones and checked again with u recomputed: (steps, error of r).
+fn newton_checked(
+    p: &FrictionProblem,
+    ws: &mut Workspace,
+    r: &mut [f64],
+    max_steps: u64,
+    tolerance: f64,
+) -> (u64, f64) {
+    let (k, mut error) = newton_in(p, ws, r, max_steps, tolerance);
+    if error <= tolerance {
+        project_on_cones(p, r);
+        ws.refresh(p, r);
+        error = ws.error(p, r);
+    }
+    (k, error)
+}
+
+/// One of [`hybrid`]'s Newton rounds: [`newton_checked`] for at most 50
+/// steps within the cap (`budget` = (steps used so far, cap), the steps
+/// added), r recorded as the best when it is. Returns (steps, error).
+fn newton_round(
+    p: &FrictionProblem,
+    ws: &mut Workspace,
+    r: &mut [f64],
+    budget: (&mut u64, u64),
+    tolerance: f64,
+    best: &mut f64,
+) -> (u64, f64) {
+    let (used, cap) = budget;
+    let (k, error) = newton_checked(p, ws, r, 50.min(cap - *used), tolerance);
+    *used += k;
+    keep_best(ws, r, error, best);
+    (k, error)
 }
 
 /// Records r in `ws.best` when its error beats `best`.
@@ -276,11 +350,19 @@ fn finish(
     p: &FrictionProblem,
     mut r: Vec<f64>,
     iterations: u64,
+    u_of_r: Option<Vec<f64>>,
     s: &FrictionSettings,
 ) -> FrictionSolution {
-    project_on_cones(p, &mut r);
-    let mut u = vec![0.0; p.dim()];
-    velocity_into(p, &r, &mut u);
+    // `u_of_r`: W r + q of r as given, where known; kept when the
+    // projection leaves r as it is.
+    let u = match (project_on_cones(p, &mut r), u_of_r) {
+        (false, Some(u)) => u,
+        _ => {
+            let mut u = vec![0.0; p.dim()];
+            velocity_into(p, &r, &mut u);
+            u
+        }
+    };
     let residuals = FrictionResiduals::of_velocity(p, &r, &u);
     let finite = r.iter().chain(&u).all(|v| v.is_finite()) && residuals.coulomb_error.is_finite();
     let status = if !finite {

@@ -37,8 +37,18 @@ pub struct Workspace {
     pub(crate) trial_phi: Vec<f64>,
     /// The matrix of a linear solve (destroyed by it), 3k × 3k.
     pub(crate) matrix: Vec<f64>,
+    /// ∂Φᵀ∂Φ of a Levenberg–Marquardt step, 3k × 3k.
+    pub(crate) normal: Vec<f64>,
+    /// The sticking contacts of a Newton step (`newton::stick_step`).
+    pub(crate) stuck: Vec<usize>,
+    /// The rows of ∂Φ that are ρ_i W's rows (`newton::classify`).
+    pub(crate) w_rows: Vec<usize>,
+    /// A Cholesky factor's envelope (`newton::cholesky_solve`).
+    pub(crate) first: Vec<usize>,
     /// The best r seen (hybrid rounds), 3k.
     pub(crate) best: Vec<f64>,
+    /// The start r (hybrid's Newton restart), 3k.
+    pub(crate) start: Vec<f64>,
     /// The LU of ∂Φ failed on this island (W rank-deficient, as for a box on
     /// four coplanar corners): later steps go to Levenberg–Marquardt directly.
     pub(crate) singular: bool,
@@ -78,12 +88,13 @@ impl Workspace {
             &mut self.trial_u,
             &mut self.trial_phi,
             &mut self.best,
+            &mut self.start,
         ] {
             v.clear();
             v.resize(n, 0.0);
         }
-        for v in [&mut self.jac, &mut self.matrix] {
-            v.clear();
+        // Written in full before they are read: sized, not cleared.
+        for v in [&mut self.jac, &mut self.matrix, &mut self.normal] {
             v.resize(n * n, 0.0);
         }
         self.blocks.clear();
@@ -117,7 +128,11 @@ impl Workspace {
 
 /// Contact i's 3×3 diagonal block of W.
 pub fn diagonal_block(p: &FrictionProblem, i: usize) -> Block {
-    std::array::from_fn(|a| std::array::from_fn(|b| p.at(3 * i + a, 3 * i + b)))
+    let (n, at) = (p.dim(), 3 * i);
+    std::array::from_fn(|a| {
+        let row = &p.w[(at + a) * n + at..(at + a) * n + at + 3];
+        [row[0], row[1], row[2]]
+    })
 }
 
 /// u = W r + q into `u` (rows by [`dot`]; the solvers' final u and error

@@ -6,6 +6,7 @@
 //! start from the last call's impulses keyed by contact ids.
 
 use std::collections::HashMap;
+use std::hash::{BuildHasherDefault, Hasher};
 use std::time::Instant;
 
 use super::Solver;
@@ -30,7 +31,30 @@ use crate::Error;
 /// The reactions (r_n, r_t₁, r_t₂) of the last call's solved frictional
 /// islands, by contact id.
 #[derive(Clone, Debug, Default)]
-pub(super) struct FrictionWarm(HashMap<u64, [f64; 3]>);
+pub(super) struct FrictionWarm(HashMap<u64, [f64; 3], BuildHasherDefault<IdHasher>>);
+
+/// A hasher for contact ids (u64 keys the caller chose, not an adversary's
+/// input): one multiplication by a large odd constant, the high bits
+/// folded down (SipHash, the default, cost 2 % of a world step for the
+/// warm-start lookups and records).
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct IdHasher(u64);
+
+impl Hasher for IdHasher {
+    fn finish(&self) -> u64 {
+        self.0 ^ (self.0 >> 29)
+    }
+
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.write_u64(u64::from(b));
+        }
+    }
+
+    fn write_u64(&mut self, v: u64) {
+        self.0 = (self.0.rotate_left(5) ^ v).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    }
+}
 
 impl FrictionWarm {
     /// The warm start of contacts `ids` (one per contact; None for a contact
@@ -432,13 +456,16 @@ impl Solver {
         warm: &[Option<Vec<f64>>],
     ) -> (Vec<SceneReport>, Vec<FrictionIslandReport>) {
         let mut islands = Vec::with_capacity(solved.len());
-        let mut out = Vec::with_capacity(scenes.len());
+        // Per scene the contacts' r and u and its islands' range (in order),
+        // then the scenes' reports over the cores.
+        let mut local = Vec::with_capacity(scenes.len());
         let mut solved = solved.into_iter().zip(warm);
-        for (s, (scene, (isl, rows, _))) in scenes.iter().zip(built).enumerate() {
+        let mut built = built;
+        for (s, (scene, (isl, _, _))) in scenes.iter().zip(&mut built).enumerate() {
             let first = islands.len();
             let mut r = vec![[0.0; 3]; scene.contacts.len()];
             let mut u = vec![[0.0; 3]; scene.contacts.len()];
-            for island in isl {
+            for island in isl.iter_mut() {
                 let (solution, w) = solved.next().expect("one result per island");
                 for (i, &c) in island.contacts.iter().enumerate() {
                     r[c].copy_from_slice(&solution.r[3 * i..3 * i + 3]);
@@ -446,23 +473,27 @@ impl Solver {
                 }
                 islands.push(FrictionIslandReport {
                     scene: Some(s),
-                    contacts: island.contacts,
+                    contacts: std::mem::take(&mut island.contacts),
                     warm_started: w.is_some(),
                     solution,
                 });
             }
-            out.push(SceneReport {
+            local.push((r, u, first..islands.len()));
+        }
+        let out = parallel_map(scenes.len(), self.threads, |s| {
+            let (scene, rows, (r, u, range)) = (scenes[s], &built[s].1, &local[s]);
+            SceneReport {
                 impulses: r.iter().map(|ri| ri[0]).collect(),
-                bodies: apply_friction_impulses(scene, &rows, &r),
+                bodies: apply_friction_impulses(scene, rows, r),
                 islands: 0..0,
                 friction: Some(SceneFriction {
                     contacts: (0..r.len())
                         .map(|c| contact_impulse(&rows[c], r[c], u[c]))
                         .collect(),
-                    islands: first..islands.len(),
+                    islands: range.clone(),
                 }),
-            });
-        }
+            }
+        });
         (out, islands)
     }
 }
