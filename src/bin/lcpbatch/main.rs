@@ -653,7 +653,20 @@ fn run(cli: Cli) -> Result<(), Error> {
     }
 }
 
+/// Output into a pipe whose reader has gone (`lcpbatch solve … | head`)
+/// ends the process quietly, as it does other Unix tools: Rust ignores
+/// SIGPIPE, so `println!` would panic on the closed pipe instead.
+fn exit_quietly_on_a_closed_pipe() {
+    #[cfg(unix)]
+    // SAFETY: restoring the default disposition of one signal at start-up,
+    // before any other thread exists.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
+}
+
 fn main() -> ExitCode {
+    exit_quietly_on_a_closed_pipe();
     match run(Cli::parse()) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
