@@ -442,3 +442,17 @@ fn a_closed_pipe_ends_the_tool_quietly() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(!err.contains("panicked"), "{err}");
 }
+
+/// Without XDG_RUNTIME_DIR (a headless machine as root), listing the
+/// adapters prints no display-probe errors.
+#[test]
+fn no_display_probe_errors_without_xdg_runtime_dir() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_lcpbatch"))
+        .arg("info")
+        .env_remove("XDG_RUNTIME_DIR")
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!err.contains("XDG_RUNTIME_DIR"), "{err}");
+}

@@ -665,8 +665,20 @@ fn exit_quietly_on_a_closed_pipe() {
     }
 }
 
+/// Where XDG_RUNTIME_DIR is not set (a headless machine, root, a
+/// container), Mesa's Wayland probe prints "error: XDG_RUNTIME_DIR is
+/// invalid or not set" at every adapter enumeration; the tool then points
+/// it at the temporary folder, which only quiets that probe (no Wayland
+/// display is found there, as before).
+fn quiet_the_headless_display_probe() {
+    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
+        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
+    }
+}
+
 fn main() -> ExitCode {
     exit_quietly_on_a_closed_pipe();
+    quiet_the_headless_display_probe();
     match run(Cli::parse()) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
