@@ -182,18 +182,21 @@ fn a_resting_stack_is_warm_started_and_stays_exact() {
     assert!(warm >= 450, "{warm} of 500 steps warm-started");
 }
 
-/// Over 2,000 steps the resting 4-box stack's island (16 contacts, M of
-/// rank 12) now and then defeats the warm start and its block pivots, and
-/// Lemke ends on a basis with z_i ≈ 1e-10 whose M_SS is singular. The
-/// default path then re-solves Lemke's answer on its support before it
-/// enumerates 2^16 bases (~10 ms each): without that, 40 of these 2,000
-/// steps were enumerated; with it, 15. The stack stays exact throughout.
+/// Over thousands of steps the resting 4-box stack's island (16 contacts,
+/// M of rank 12) now and then defeats the warm start and its block pivots,
+/// and Lemke ends on a basis whose M_SS is singular or ill-conditioned to
+/// the basis check (z_i ≈ 1e-10 beside 200, or a box held on two diagonal
+/// corners). The default path then re-solves Lemke's answer on its
+/// support, and takes Lemke's answer itself where the door's final check
+/// passes it, before it enumerates 2^16 bases (~70 ms each). Measured over
+/// these 6,000 steps: 459 enumerated with the support re-solve alone, 2
+/// with Lemke's checked answer. The stack stays exact throughout.
 #[test]
 fn a_resting_stack_is_seldom_enumerated() {
     let mut worlds = vec![frictionless(standard_world(WorldKind::Stack, 4, 0))];
     let mut solver = cpu();
     let (mut enumerated, mut lemke) = (0, 0);
-    for step in 0..2000 {
+    for step in 0..6000 {
         let r = solver.step_worlds(&mut worlds, 0.01).unwrap();
         assert_eq!(r.unsolved, 0, "step {step}");
         assert!(r.worlds[0].max_penetration < 1e-9, "step {step}");
@@ -201,8 +204,8 @@ fn a_resting_stack_is_seldom_enumerated() {
         lemke += r.solve.counts.lemke;
     }
     assert!(
-        enumerated <= 25,
-        "{enumerated} of 2000 steps enumerated ({lemke} by Lemke)"
+        enumerated <= 20,
+        "{enumerated} of 6000 steps enumerated ({lemke} by Lemke)"
     );
 }
 

@@ -421,3 +421,38 @@ fn bad_input_is_refused_and_named() {
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("lcpbatch-input.json"));
 }
+
+/// A reader that stops early (`lcpbatch generate … | head -c 100`) ends the
+/// tool quietly: no panic about a broken pipe.
+#[cfg(unix)]
+#[test]
+fn a_closed_pipe_ends_the_tool_quietly() {
+    use std::io::Read;
+    use std::process::{Command, Stdio};
+    let mut child = Command::new(env!("CARGO_BIN_EXE_lcpbatch"))
+        .args(["generate", "--kind", "stress-lcps", "--count", "2000"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut head = [0u8; 100];
+    child.stdout.take().unwrap().read_exact(&mut head).unwrap();
+    // The reader's end is dropped here: the pipe is closed.
+    let out = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!err.contains("panicked"), "{err}");
+}
+
+/// Without XDG_RUNTIME_DIR (a headless machine as root), listing the
+/// adapters prints no display-probe errors.
+#[test]
+fn no_display_probe_errors_without_xdg_runtime_dir() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_lcpbatch"))
+        .arg("info")
+        .env_remove("XDG_RUNTIME_DIR")
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!err.contains("XDG_RUNTIME_DIR"), "{err}");
+}

@@ -2,6 +2,7 @@
 //! (`Solver`, `Settings`, `Report`, the formats in `lcpbatch::io`).
 
 mod bench;
+mod bench_friction;
 mod devices;
 mod generate;
 mod plots;
@@ -170,7 +171,9 @@ enum Command {
     /// Every solver on the same fixed-seed batches (well conditioned, mass
     /// ratio 1e4, resting stacks, mixed n, warm-started resting): a table of
     /// islands/s against error, bench.json and SVG plots of time against
-    /// error, against n and against batch size.
+    /// error, against n and against batch size. With --friction: the
+    /// friction solvers on frictional islands, islands/s against the
+    /// Coulomb error.
     Bench(BenchArgs),
     /// Stress families (mass ratios to 1e8, length and velocity scales to
     /// 1e±3, near-parallel normals, resting stacks, chains to n = 16,
@@ -240,9 +243,19 @@ struct GenerateArgs {
 
 #[derive(clap::Args)]
 struct BenchArgs {
-    /// Islands per family.
-    #[arg(long, default_value_t = 20_000)]
-    islands: usize,
+    /// Islands per family (default 20,000); with --friction, per set of
+    /// k ≤ 4 contacts, a fifth of it above (default 2,000).
+    #[arg(long)]
+    islands: Option<usize>,
+    /// The friction solvers instead of the LCP ones: boxes resting and
+    /// sliding, stacks and random spheres of --sizes contacts, every method
+    /// on the CPU and the projected ones on the GPU too; friction.json and
+    /// friction_time_vs_error.svg.
+    #[arg(long)]
+    friction: bool,
+    /// With --friction: contacts per island, one set per family that has them.
+    #[arg(long, value_delimiter = ',', default_value = "1,2,4,8,16")]
+    sizes: Vec<usize>,
     /// Islands per n for the time-against-n curves.
     #[arg(long, default_value_t = 500)]
     per_n: usize,
@@ -456,6 +469,8 @@ fn generate_command(args: GenerateArgs) -> Result<(), Error> {
 fn bench_command(args: BenchArgs) -> Result<(), Error> {
     let BenchArgs {
         islands,
+        friction,
+        sizes,
         per_n,
         batch_sizes,
         seed,
@@ -464,6 +479,29 @@ fn bench_command(args: BenchArgs) -> Result<(), Error> {
         gpu,
     } = args;
 
+    let gpu = if cpu_only {
+        None
+    } else {
+        Some(gpu.settings()?)
+    };
+    if friction {
+        let islands = islands.unwrap_or(2_000);
+        if islands == 0 || sizes.is_empty() || sizes.contains(&0) {
+            return Err(Error::invalid(
+                "bench --friction",
+                "--islands/--sizes",
+                "must be positive",
+            ));
+        }
+        return bench_friction::run(&bench_friction::FrictionBenchOptions {
+            islands,
+            sizes,
+            seed,
+            out_dir: out,
+            gpu,
+        });
+    }
+    let islands = islands.unwrap_or(20_000);
     if islands == 0 || per_n == 0 || batch_sizes.contains(&0) {
         return Err(Error::invalid(
             "bench",
@@ -475,11 +513,7 @@ fn bench_command(args: BenchArgs) -> Result<(), Error> {
         islands,
         seed,
         out_dir: out,
-        gpu: if cpu_only {
-            None
-        } else {
-            Some(gpu.settings()?)
-        },
+        gpu,
         per_n,
         batch_sizes,
     };
@@ -619,7 +653,32 @@ fn run(cli: Cli) -> Result<(), Error> {
     }
 }
 
+/// Output into a pipe whose reader has gone (`lcpbatch solve … | head`)
+/// ends the process quietly, as it does other Unix tools: Rust ignores
+/// SIGPIPE, so `println!` would panic on the closed pipe instead.
+fn exit_quietly_on_a_closed_pipe() {
+    #[cfg(unix)]
+    // SAFETY: restoring the default disposition of one signal at start-up,
+    // before any other thread exists.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
+}
+
+/// Where XDG_RUNTIME_DIR is not set (a headless machine, root, a
+/// container), Mesa's Wayland probe prints "error: XDG_RUNTIME_DIR is
+/// invalid or not set" at every adapter enumeration; the tool then points
+/// it at the temporary folder, which only quiets that probe (no Wayland
+/// display is found there, as before).
+fn quiet_the_headless_display_probe() {
+    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
+        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
+    }
+}
+
 fn main() -> ExitCode {
+    exit_quietly_on_a_closed_pipe();
+    quiet_the_headless_display_probe();
     match run(Cli::parse()) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {

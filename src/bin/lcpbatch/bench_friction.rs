@@ -1,0 +1,338 @@
+//! `lcpbatch bench --friction`: every friction solver on the same
+//! fixed-seed frictional islands (boxes resting and sliding, stacks, random
+//! spheres and boxes; k contacts each), in one process, timed and measured:
+//! islands per second against the Coulomb error. Every row goes through the
+//! library's one door (`Solver::solve_friction`, checks and report
+//! included).
+//!
+//! The exact Coulomb methods (`auto`, `nsgs`, `newton`) run on the CPU on
+//! every core; the cone projection iterations (`jacobi`, `pgs`, `apgd`) on
+//! the CPU and, where an adapter is open, on the GPU in f32 and f64 (every
+//! answer judged in f64 on the CPU there). The projected methods solve the
+//! convex cone complementarity model, so they are judged by its residual
+//! (`cone_error`) and their Coulomb error is the model's distance from
+//! Coulomb where contacts slide.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use serde::Serialize;
+
+use lcpbatch::generate::friction::{friction_batch, FrictionFamily};
+use lcpbatch::io::write_atomically;
+use lcpbatch::{
+    Backend, Error, FrictionMethod, FrictionProblem, GpuSettings, Method, Report, Settings, Solver,
+};
+
+use crate::devices::{gpu_solvers, machine_description};
+use crate::plots;
+
+/// What `lcpbatch bench --friction` runs.
+#[derive(Clone, Debug)]
+pub struct FrictionBenchOptions {
+    /// Islands per set of k ≤ 4 contacts (a fifth of it above).
+    pub islands: usize,
+    /// Contacts per island, one set per family that has islands of k.
+    pub sizes: Vec<usize>,
+    pub seed: u64,
+    pub out_dir: PathBuf,
+    /// None: CPU rows only.
+    pub gpu: Option<GpuSettings>,
+}
+
+/// Every friction method, in the table's order.
+const METHODS: [FrictionMethod; 6] = [
+    FrictionMethod::Auto,
+    FrictionMethod::Nsgs,
+    FrictionMethod::Newton,
+    FrictionMethod::Jacobi,
+    FrictionMethod::Pgs,
+    FrictionMethod::Apgd,
+];
+
+/// One line of the table: one method on one backend on one set of islands.
+#[derive(Clone, Debug, Serialize)]
+pub struct FrictionRow {
+    pub family: String,
+    /// Contacts per island.
+    pub k: usize,
+    pub solver: String,
+    pub backend: String,
+    /// The device in words (`cpu (N threads)` or the adapter, with its precision).
+    pub device: String,
+    pub islands: usize,
+    pub seconds: f64,
+    pub islands_per_second: f64,
+    /// Largest Coulomb error (Siconos fc3d, De Saxcé) over every island.
+    pub max_coulomb_error: f64,
+    pub median_coulomb_error: f64,
+    /// Largest cone complementarity residual (what the projected methods
+    /// are judged by).
+    pub max_cone_error: f64,
+    /// Mean NSGS sweeps + Newton steps, or projected iterations.
+    pub mean_iterations: f64,
+    /// Islands per status name.
+    pub statuses: BTreeMap<String, usize>,
+    /// What the GPU's answers needed on the CPU (kept, polished, repaired).
+    pub note: String,
+}
+
+impl FrictionRow {
+    fn of(set: &Set, solver: &str, report: &Report, seconds: f64) -> Self {
+        let isl = &report.friction;
+        let mut coulomb: Vec<f64> = isl.iter().map(|i| i.error()).collect();
+        coulomb.sort_by(f64::total_cmp);
+        let cone = isl
+            .iter()
+            .map(|i| i.solution.residuals.cone_error)
+            .fold(0.0, f64::max);
+        let iterations = isl
+            .iter()
+            .map(|i| i.solution.iterations as f64)
+            .sum::<f64>();
+        let mut statuses = BTreeMap::new();
+        for i in isl {
+            *statuses.entry(i.status().name().to_string()).or_insert(0) += 1;
+        }
+        let on_gpu = report.on_gpu();
+        let note = if on_gpu {
+            let c = &report.counts;
+            format!(
+                "polished={} repaired={} cpu_fallback={}",
+                c.polished, c.repaired, c.cpu_fallback
+            )
+        } else {
+            String::new()
+        };
+        FrictionRow {
+            family: set.family.name().into(),
+            k: set.k,
+            solver: solver.into(),
+            backend: if on_gpu { "gpu" } else { "cpu" }.into(),
+            device: report.device.name.clone(),
+            islands: isl.len(),
+            seconds,
+            islands_per_second: isl.len() as f64 / seconds.max(1e-12),
+            max_coulomb_error: coulomb.last().copied().unwrap_or(0.0),
+            median_coulomb_error: coulomb.get(coulomb.len() / 2).copied().unwrap_or(0.0),
+            max_cone_error: cone,
+            mean_iterations: iterations / isl.len().max(1) as f64,
+            statuses,
+            note,
+        }
+    }
+}
+
+/// One set of islands: a family at one k.
+struct Set {
+    family: FrictionFamily,
+    k: usize,
+    problems: Vec<FrictionProblem>,
+}
+
+fn sets(opts: &FrictionBenchOptions) -> Vec<Set> {
+    let mut out = Vec::new();
+    for family in FrictionFamily::ALL {
+        for &k in &opts.sizes {
+            let count = if k <= 4 {
+                opts.islands
+            } else {
+                (opts.islands / 5).max(1)
+            };
+            if let Some(problems) = friction_batch(family, k, opts.seed, count) {
+                out.push(Set {
+                    family,
+                    k,
+                    problems,
+                });
+            }
+        }
+    }
+    out
+}
+
+/// Solves the set once with `solver` and times the call.
+fn timed_row(solver: &mut Solver, set: &Set, name: &str) -> Result<FrictionRow, Error> {
+    let t = Instant::now();
+    let report = solver.solve_friction(&set.problems)?;
+    let seconds = t.elapsed().as_secs_f64();
+    Ok(FrictionRow::of(set, name, &report, seconds))
+}
+
+/// The settings of one method (the default tolerance 1e-8 and cap).
+fn method_settings(base: &Settings, method: FrictionMethod) -> Settings {
+    Settings {
+        friction_method: method,
+        ..base.clone()
+    }
+}
+
+/// The CPU rows of one set: every method on every core.
+fn cpu_rows(set: &Set) -> Result<Vec<FrictionRow>, Error> {
+    METHODS
+        .iter()
+        .map(|&m| {
+            let base = Settings::new(Backend::Cpu, Method::Auto);
+            let mut s = Solver::new(method_settings(&base, m))?;
+            timed_row(&mut s, set, m.name())
+        })
+        .collect()
+}
+
+/// The GPU rows of one set on one adapter and precision (`gpu` a GPU
+/// solver of `devices::gpu_solvers`): the projected methods, each first
+/// run untimed on a few islands so that its kernel compiles stay out of the
+/// figure.
+fn gpu_rows(gpu: &Solver, set: &Set) -> Result<Vec<FrictionRow>, Error> {
+    let precision = gpu.device().precision.name();
+    let mut rows = Vec::new();
+    for m in METHODS.into_iter().filter(|m| m.projected().is_some()) {
+        let mut s = Solver::new(method_settings(gpu.settings(), m))?;
+        let head = &set.problems[..set.problems.len().min(16)];
+        s.solve_friction(head)?;
+        let row = timed_row(&mut s, set, &format!("gpu {} {precision}", m.name()))?;
+        rows.push(row);
+    }
+    Ok(rows)
+}
+
+fn print_table(rows: &[FrictionRow]) {
+    println!(
+        "{:<15} {:>3} {:<15} {:>7} {:>11} {:>11} {:>11} {:>9}  statuses / notes",
+        "family", "k", "solver", "islands", "islands/s", "max Coulomb", "max cone", "mean it"
+    );
+    for r in rows {
+        let st: Vec<String> = r.statuses.iter().map(|(k, v)| format!("{k}={v}")).collect();
+        println!(
+            "{:<15} {:>3} {:<15} {:>7} {:>11.0} {:>11.1e} {:>11.1e} {:>9.1}  {} {}",
+            r.family,
+            r.k,
+            r.solver,
+            r.islands,
+            r.islands_per_second,
+            r.max_coulomb_error,
+            r.max_cone_error,
+            r.mean_iterations,
+            st.join(" "),
+            r.note
+        );
+    }
+}
+
+/// The plot: microseconds per island against the largest Coulomb error,
+/// one colour per solver (and backend), one point per set.
+fn plot(rows: &[FrictionRow], machine: &str, path: &Path) -> Result<(), Error> {
+    let points: Vec<(f64, f64, String)> = rows
+        .iter()
+        .map(|r| {
+            (
+                1e6 / r.islands_per_second,
+                r.max_coulomb_error.max(1e-17),
+                r.solver.clone(),
+            )
+        })
+        .collect();
+    plots::scatter(
+        &points,
+        path,
+        &format!("lcpbatch bench --friction: time against Coulomb error ({machine})"),
+        (
+            "microseconds per island",
+            "largest Coulomb error (Siconos fc3d, De Saxcé)",
+        ),
+        false,
+    )
+}
+
+/// Runs every set through every row, prints the table, writes
+/// `friction.json` and `friction_time_vs_error.svg` into `opts.out_dir`.
+pub fn run(opts: &FrictionBenchOptions) -> Result<(), Error> {
+    std::fs::create_dir_all(&opts.out_dir).map_err(|source| Error::Io {
+        path: opts.out_dir.clone(),
+        source,
+    })?;
+    let gpus = gpu_solvers(&opts.gpu, &Settings::default());
+    let machine = machine_description(&gpus);
+    println!("machine: {machine}");
+    let sets = sets(opts);
+    let bar = indicatif::ProgressBar::new(sets.len() as u64);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("{elapsed_precise} [{bar:30}] {pos}/{len} {msg}")
+            .expect("valid template"),
+    );
+    let mut rows = Vec::new();
+    for set in &sets {
+        bar.set_message(format!("{} k = {}", set.family.name(), set.k));
+        rows.extend(cpu_rows(set)?);
+        for g in &gpus {
+            rows.extend(gpu_rows(g, set)?);
+        }
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    print_table(&rows);
+    #[derive(Serialize)]
+    struct File<'a> {
+        machine: &'a str,
+        rows: &'a [FrictionRow],
+    }
+    let dir = &opts.out_dir;
+    write_atomically(
+        &dir.join("friction.json"),
+        &serde_json::to_string_pretty(&File {
+            machine: &machine,
+            rows: &rows,
+        })
+        .expect("serialisable"),
+    )?;
+    plot(&rows, &machine, &dir.join("friction_time_vs_error.svg"))?;
+    println!(
+        "wrote {}/{{friction.json, friction_time_vs_error.svg}}",
+        dir.display()
+    );
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every set of a small bench has a row per method; the exact methods
+    /// reach the default tolerance on the boxes and stacks, every row's
+    /// figures are finite, and the plot is written.
+    #[test]
+    fn every_method_runs_on_every_set_and_the_plot_is_written() {
+        let dir = std::env::temp_dir().join(format!("lcpbatch-fbench-{}", std::process::id()));
+        let opts = FrictionBenchOptions {
+            islands: 20,
+            sizes: vec![1, 4, 8],
+            seed: 3,
+            out_dir: dir.clone(),
+            gpu: None,
+        };
+        let sets = sets(&opts);
+        // Random spheres at 1, 4, 8; stacks at 4, 8; resting and sliding boxes at 4.
+        assert_eq!(sets.len(), 7);
+        let mut rows = Vec::new();
+        for set in &sets {
+            let r = cpu_rows(set).unwrap();
+            assert_eq!(r.len(), METHODS.len());
+            for row in &r {
+                assert_eq!(row.islands, set.problems.len());
+                assert!(row.islands_per_second.is_finite() && row.islands_per_second > 0.0);
+                assert!(row.max_coulomb_error.is_finite(), "{row:?}");
+                if row.solver == "auto" && set.family != FrictionFamily::RandomSpheres {
+                    assert!(row.max_coulomb_error <= 1e-8, "{row:?}");
+                    assert_eq!(row.statuses.get("solved"), Some(&set.problems.len()));
+                }
+            }
+            rows.extend(r);
+        }
+        std::fs::create_dir_all(&dir).unwrap();
+        plot(&rows, "test", &dir.join("f.svg")).unwrap();
+        let svg = std::fs::read_to_string(dir.join("f.svg")).unwrap();
+        assert!(svg.contains("<svg") && svg.contains("apgd") && svg.contains("newton"));
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
