@@ -331,6 +331,21 @@ impl LcpSolution {
         }
     }
 
+    /// A result for a problem of `n` rows that failed its checks: status
+    /// `InvalidInput`, z = w = 0.
+    pub(crate) fn invalid(n: usize) -> Self {
+        LcpSolution {
+            status: Status::InvalidInput,
+            z: vec![0.0; n],
+            w: vec![0.0; n],
+            residuals: Residuals::default(),
+            counters: Counters::default(),
+            basis: None,
+            all_bases: Vec::new(),
+            solution_set: None,
+        }
+    }
+
     /// Number of distinct solutions when known (None for a continuum or when
     /// not all bases were visited).
     pub fn solution_count(&self) -> Option<usize> {

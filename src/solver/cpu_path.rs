@@ -1,15 +1,16 @@
 //! The CPU path of the [`Solver`]: f64, every core.
 
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
-use super::Solver;
+use super::{check_solution, warm_basis, Solver};
 use crate::cpu::assembly::{assemble_contacts, assemble_island};
 use crate::cpu::batch::parallel_map;
 use crate::cpu::enumeration::{enumerate, feasible_basis, MAX_ENUMERATION_N};
 use crate::cpu::impulses::apply_impulses;
 use crate::islands::find_islands;
 use crate::lcp::{Lcp, LcpSolution, Status};
-use crate::prediction::{self, prediction};
+use crate::prediction::{self, predict};
 use crate::report::{IslandReport, Report, SceneReport, SolvePath};
 use crate::scene::Scene;
 use crate::settings::{Backend, Method, Settings};
@@ -18,35 +19,66 @@ use crate::solvers::pgs::pgs;
 use crate::Error;
 
 impl Solver {
-    /// Checked LCPs on the CPU. `warm[i]`: problem i's warm basis, if any.
+    /// LCPs on the CPU, each checked (`Lcp::validate`) in the parallel pass
+    /// that solves it: an error names the first bad problem. `keys[i]`:
+    /// problem i's contact ids, whose warm basis (with
+    /// `settings.warm_start`) is looked up in that pass too. Everything per
+    /// problem (check, warm basis, solve, the final check of the answer, its
+    /// report) runs on the threads; only the batch's counts are serial.
     /// Enumeration (and all_solutions) on the CPU backend refuses n > 20;
     /// after device trouble (or with backend Auto) such problems go to
     /// Lemke, as on the GPU path.
     pub(super) fn lcps_on_cpu(
         &self,
         lcps: &[Lcp],
-        warm: Option<&[Option<u32>]>,
+        keys: Option<&[&[u64]]>,
     ) -> Result<Report, Error> {
         let big_to_lemke = self.settings.backend != Backend::Cpu;
         let enumerates = self.settings.method == Method::Enumeration || self.settings.all_solutions;
-        if !big_to_lemke && enumerates {
-            if let Some((i, l)) = lcps
-                .iter()
-                .enumerate()
-                .find(|(_, l)| l.n() > MAX_ENUMERATION_N)
+        let t = Instant::now();
+        let invalid = AtomicBool::new(false);
+        let (settings, memory) = (&self.settings, &self.warm);
+        let islands = parallel_map(lcps.len(), self.threads, |i| {
+            let lcp = &lcps[i];
+            let n = lcp.n();
+            // The item's name is formatted only for the error, below.
+            if lcp.validate("problem").is_err()
+                || (!big_to_lemke && enumerates && n > MAX_ENUMERATION_N)
             {
-                return Err(Error::Unsupported(format!(
-                    "problem {i}: enumeration visits 2^n bases and is limited to n ≤ {MAX_ENUMERATION_N} (this problem has n = {}); use Lemke",
-                    l.n()
-                )));
+                invalid.store(true, Ordering::Relaxed);
+                return IslandReport {
+                    scene: None,
+                    contacts: Vec::new(),
+                    method: settings.method,
+                    path: SolvePath::Invalid,
+                    solution: LcpSolution::invalid(n),
+                };
+            }
+            let warm = keys.and_then(|k| warm_basis(settings, memory, k[i]));
+            let (method, path, mut solution) = solve_on_cpu(lcp, warm, settings);
+            check_solution(&mut solution, settings.tolerance);
+            IslandReport {
+                scene: None,
+                contacts: (0..n).collect(),
+                method,
+                path,
+                solution,
+            }
+        });
+        if invalid.load(Ordering::Relaxed) {
+            for (i, l) in lcps.iter().enumerate() {
+                l.validate(&format!("problem {i}"))?;
+            }
+            for (i, l) in lcps.iter().enumerate() {
+                if !big_to_lemke && enumerates && l.n() > MAX_ENUMERATION_N {
+                    return Err(Error::Unsupported(format!(
+                        "problem {i}: enumeration visits 2^n bases and is limited to n ≤ {MAX_ENUMERATION_N} (this problem has n = {}); use Lemke",
+                        l.n()
+                    )));
+                }
             }
         }
-        let t = Instant::now();
-        let solved = parallel_map(lcps.len(), self.threads, |i| {
-            let w = warm.and_then(|w| w[i]);
-            solve_on_cpu(&lcps[i], w, &self.settings)
-        });
-        let mut r = self.cpu_report(lcp_islands(lcps, solved), Vec::new());
+        let mut r = self.checked_report(islands, Vec::new());
         r.timings.solve = t.elapsed().as_secs_f64();
         Ok(r)
     }
@@ -135,6 +167,11 @@ impl Solver {
 
     fn cpu_report(&self, mut islands: Vec<IslandReport>, scenes: Vec<SceneReport>) -> Report {
         self.check(&mut islands);
+        self.checked_report(islands, scenes)
+    }
+
+    /// The report of islands already through [`check_solution`].
+    fn checked_report(&self, islands: Vec<IslandReport>, scenes: Vec<SceneReport>) -> Report {
         let mut r = Report::new(islands, scenes, self.cpu_device(), self.choice.clone());
         r.fallback = self.fallback.clone();
         r
@@ -174,7 +211,7 @@ pub(super) fn solve_on_cpu(lcp: &Lcp, warm: Option<u32>, s: &Settings) -> Solved
         Method::Auto | Method::Enumeration => {
             let e = s.enumeration();
             if s.predict && !s.all_solutions {
-                if let Ok((path, solution)) = prediction(lcp, warm, &e) {
+                if let Some((path, solution)) = predict(lcp, warm, &e) {
                     return (Method::Enumeration, prediction_path(path), solution);
                 }
             }
