@@ -20,12 +20,14 @@
 //! when the solution is not unique (w is the same whenever M is positive
 //! semidefinite).
 
-// `predict` and `WarmStart`'s counters serve the tests.
+// `WarmStart`'s counters serve the tests.
 #![cfg_attr(not(test), allow(dead_code))]
 
 use serde::Serialize;
 
-use crate::cpu::enumeration::{feasible_basis, EnumerationSettings, MAX_ENUMERATION_N};
+use crate::cpu::enumeration::{
+    feasible_basis, feasible_basis_if, EnumerationSettings, MAX_ENUMERATION_N,
+};
 use crate::lcp::{Counters, Lcp, LcpSolution, Status};
 
 /// How an island was settled; every batch reports a count of each.
@@ -163,12 +165,17 @@ pub fn is_positive_semidefinite(lcp: &Lcp) -> bool {
 
 /// Tries the cheap paths on one island. `warm_basis` is the caller's basis
 /// from the previous frame, if any. None: the island needs enumeration.
+///
+/// The same answers as [`prediction`]; since nothing learnt is returned,
+/// step 4 tests M's definiteness only where the predicted basis is
+/// feasible (the CPU path's order: the Cholesky test is the dearer of the
+/// two at n ≤ 8, and the basis is infeasible on a third of the islands).
 pub fn predict(
     lcp: &Lcp,
     warm_basis: Option<u32>,
     settings: &EnumerationSettings,
 ) -> Option<(SolvePath, LcpSolution)> {
-    prediction(lcp, warm_basis, settings).ok()
+    steps(lcp, warm_basis, settings, false).ok()
 }
 
 /// An island prediction could not settle, and what it learnt of M on the
@@ -184,6 +191,18 @@ pub fn prediction(
     lcp: &Lcp,
     warm_basis: Option<u32>,
     settings: &EnumerationSettings,
+) -> Result<(SolvePath, LcpSolution), Unsettled> {
+    steps(lcp, warm_basis, settings, true)
+}
+
+/// The steps of [`prediction`]; `learn`: test M's definiteness on every
+/// island that reaches step 4 (else only where the predicted basis is
+/// feasible, and `Unsettled::definite` may stay None).
+fn steps(
+    lcp: &Lcp,
+    warm_basis: Option<u32>,
+    settings: &EnumerationSettings,
+    learn: bool,
 ) -> Result<(SolvePath, LcpSolution), Unsettled> {
     let n = lcp.n();
     let unknown = Unsettled { definite: None };
@@ -229,6 +248,17 @@ pub fn prediction(
     let approaching = (0..n)
         .filter(|&i| lcp.q[i] < 0.0)
         .fold(0u32, |m, i| m | 1 << i);
+    if !learn {
+        let counters = Counters {
+            bases_visited: 1,
+            ..Counters::default()
+        };
+        return feasible_basis_if(lcp, approaching, settings, counters, || {
+            is_positive_definite(lcp)
+        })
+        .map(|sol| (SolvePath::PredictedBasis, sol))
+        .ok_or(unknown);
+    }
     let definite = is_positive_definite(lcp);
     if definite {
         if let Some(found) = settle(SolvePath::PredictedBasis, approaching, 1) {

@@ -229,14 +229,27 @@ pub fn feasible_basis(
     settings: &EnumerationSettings,
     counters: Counters,
 ) -> Option<LcpSolution> {
+    feasible_basis_if(lcp, mask, settings, counters, || true)
+}
+
+/// [`feasible_basis`] where a feasible basis is kept only if `keep()` says
+/// so too (asked only of a feasible basis: prediction tests M's
+/// definiteness only where the predicted basis is feasible).
+pub fn feasible_basis_if(
+    lcp: &Lcp,
+    mask: u32,
+    settings: &EnumerationSettings,
+    counters: Counters,
+    keep: impl FnOnce() -> bool,
+) -> Option<LcpSolution> {
     let n = lcp.n();
     assert!(
         n <= MAX_ENUMERATION_N,
         "feasible_basis: n = {n} > {MAX_ENUMERATION_N}"
     );
     let z = SCRATCH.with(|s| match s.try_borrow_mut() {
-        Ok(mut s) => feasible_z(&mut s, lcp, mask, settings),
-        Err(_) => feasible_z(&mut Scratch::new(), lcp, mask, settings),
+        Ok(mut s) => feasible_z(&mut s, lcp, mask, settings, keep),
+        Err(_) => feasible_z(&mut Scratch::new(), lcp, mask, settings, keep),
     })?;
     let w = lcp.w(&z);
     Some(LcpSolution {
@@ -252,15 +265,16 @@ pub fn feasible_basis(
 }
 
 /// z of basis `mask` (negative entries clamped to 0) when it is feasible
-/// to the strict tolerance.
+/// to the strict tolerance and `keep()`.
 fn feasible_z(
     s: &mut Scratch,
     lcp: &Lcp,
     mask: u32,
     settings: &EnumerationSettings,
+    keep: impl FnOnce() -> bool,
 ) -> Option<Vec<f64>> {
     let infeasibility = s.solve(lcp, mask, settings)?;
-    (infeasibility <= settings.feasibility_tol)
+    (infeasibility <= settings.feasibility_tol && keep())
         .then(|| s.z[..lcp.n()].iter().map(|v| v.max(0.0)).collect())
 }
 
