@@ -117,6 +117,11 @@ impl Lcp {
     /// Is M symmetric to a relative tolerance of 1e-12 of its largest entry?
     pub fn is_symmetric(&self) -> bool {
         let n = self.n();
+        // Exactly symmetric (assembled J M⁻¹ Jᵀ often is): no scale needed,
+        // 0 is within any tolerance (a NaN or infinite pair goes on).
+        if (0..n).all(|i| (0..i).all(|j| self.at(i, j) - self.at(j, i) == 0.0)) {
+            return true;
+        }
         let scale = self.m.iter().fold(0.0f64, |a, v| a.max(v.abs()));
         (0..n).all(|i| (0..i).all(|j| (self.at(i, j) - self.at(j, i)).abs() <= 1e-12 * scale))
     }

@@ -82,12 +82,47 @@ pub fn is_positive_definite(lcp: &Lcp) -> bool {
     }
     // The factor lives on the stack, no larger than n needs: zeroing 20×20
     // entries for a 4×4 island would cost more than the factorisation.
+    // n ≤ 6 is compiled for its size (the same operations in the same
+    // order: the same verdict).
     match n {
+        2 => cholesky_fixed::<2, 4>(&lcp.m),
+        3 => cholesky_fixed::<3, 9>(&lcp.m),
+        4 => cholesky_fixed::<4, 16>(&lcp.m),
+        5 => cholesky_fixed::<5, 25>(&lcp.m),
+        6 => cholesky_fixed::<6, 36>(&lcp.m),
         0..=4 => cholesky_succeeds::<16>(lcp),
         5..=8 => cholesky_succeeds::<64>(lcp),
         9..=12 => cholesky_succeeds::<144>(lcp),
         _ => cholesky_succeeds::<{ MAX_ENUMERATION_N * MAX_ENUMERATION_N }>(lcp),
     }
+}
+
+/// [`cholesky_succeeds`] for n = `N` (`L` = N² entries of the factor), on
+/// M's entries `m`.
+fn cholesky_fixed<const N: usize, const L: usize>(m: &[f64]) -> bool {
+    let m = &m[..N * N];
+    let mut l = [0.0f64; L];
+    let dmax = (0..N).map(|i| m[i * N + i]).fold(0.0f64, f64::max);
+    let threshold = N as f64 * f64::EPSILON * 16.0 * dmax;
+    for j in 0..N {
+        let mut d = m[j * N + j];
+        for k in 0..j {
+            d -= l[j * N + k] * l[j * N + k];
+        }
+        if !(d > threshold) {
+            return false;
+        }
+        let d = d.sqrt();
+        l[j * N + j] = d;
+        for i in j + 1..N {
+            let mut s = 0.5 * (m[i * N + j] + m[j * N + i]);
+            for k in 0..j {
+                s -= l[i * N + k] * l[j * N + k];
+            }
+            l[i * N + j] = s / d;
+        }
+    }
+    true
 }
 
 /// The Cholesky factorisation of [`is_positive_definite`], with an L of
