@@ -210,7 +210,19 @@ pub fn predict(
     warm_basis: Option<u32>,
     settings: &EnumerationSettings,
 ) -> Option<(SolvePath, LcpSolution)> {
-    steps(lcp, warm_basis, settings, false).ok()
+    let mut path = SolvePath::Separating;
+    predict_solution(lcp, warm_basis, settings, &mut path).map(|s| (path, s))
+}
+
+/// [`predict`] with the path written to `path` (the CPU path's form: the
+/// solution is returned as built, not moved into a pair).
+pub fn predict_solution(
+    lcp: &Lcp,
+    warm_basis: Option<u32>,
+    settings: &EnumerationSettings,
+    path: &mut SolvePath,
+) -> Option<LcpSolution> {
+    steps(lcp, warm_basis, settings, path, None)
 }
 
 /// An island prediction could not settle, and what it learnt of M on the
@@ -227,82 +239,70 @@ pub fn prediction(
     warm_basis: Option<u32>,
     settings: &EnumerationSettings,
 ) -> Result<(SolvePath, LcpSolution), Unsettled> {
-    steps(lcp, warm_basis, settings, true)
+    let mut path = SolvePath::Separating;
+    let mut definite = None;
+    match steps(lcp, warm_basis, settings, &mut path, Some(&mut definite)) {
+        Some(solution) => Ok((path, solution)),
+        None => Err(Unsettled { definite }),
+    }
 }
 
-/// The steps of [`prediction`]; `learn`: test M's definiteness on every
-/// island that reaches step 4 (else only where the predicted basis is
-/// feasible, and `Unsettled::definite` may stay None).
+/// The steps of [`prediction`]: the solution, and in `path` the step that
+/// gave it. With `learn`, M's definiteness is tested on every island that
+/// reaches step 4 and written there; without, only where the predicted
+/// basis is feasible.
 fn steps(
     lcp: &Lcp,
     warm_basis: Option<u32>,
     settings: &EnumerationSettings,
-    learn: bool,
-) -> Result<(SolvePath, LcpSolution), Unsettled> {
+    path: &mut SolvePath,
+    learn: Option<&mut Option<bool>>,
+) -> Option<LcpSolution> {
     let n = lcp.n();
-    let unknown = Unsettled { definite: None };
     if n > MAX_ENUMERATION_N {
-        return Err(unknown);
+        return None;
     }
-    let settle = |path: SolvePath, mask: u32, bases: u64| {
-        let counters = Counters {
-            bases_visited: bases,
-            ..Counters::default()
-        };
-        feasible_basis(lcp, mask, settings, counters).map(|sol| (path, sol))
+    let counters = |bases: u64| Counters {
+        bases_visited: bases,
+        ..Counters::default()
     };
     // 1. Separating: the empty basis, feasible iff q ≥ 0.
     if lcp.q.iter().all(|&v| v >= 0.0) {
-        return settle(SolvePath::Separating, 0, 1).ok_or(unknown);
+        *path = SolvePath::Separating;
+        return feasible_basis(lcp, 0, settings, counters(1));
     }
     // 2. One approaching contact: z = −q/M when M > 0, else no solution.
     if n == 1 {
-        return settle(SolvePath::SingleContact, 1, 2)
-            .or_else(|| {
-                let mut sol = LcpSolution::from_z(
-                    lcp,
-                    Status::NoSolution,
-                    vec![0.0],
-                    Counters {
-                        bases_visited: 2,
-                        ..Counters::default()
-                    },
-                );
-                sol.basis = None;
-                Some((SolvePath::SingleContact, sol))
-            })
-            .ok_or(unknown);
+        *path = SolvePath::SingleContact;
+        return feasible_basis(lcp, 1, settings, counters(2)).or_else(|| {
+            let mut sol = LcpSolution::from_z(lcp, Status::NoSolution, vec![0.0], counters(2));
+            sol.basis = None;
+            Some(sol)
+        });
     }
     // 3. Last frame's basis.
     if let Some(mask) = warm_basis.filter(|&m| m >> n == 0) {
-        if let Some(found) = settle(SolvePath::WarmStart, mask, 1) {
-            return Ok(found);
+        let found = feasible_basis(lcp, mask, settings, counters(1));
+        if found.is_some() {
+            *path = SolvePath::WarmStart;
+            return found;
         }
     }
     // 4. The approaching contacts, when the solution is unique.
     let approaching = (0..n)
         .filter(|&i| lcp.q[i] < 0.0)
         .fold(0u32, |m, i| m | 1 << i);
-    if !learn {
-        let counters = Counters {
-            bases_visited: 1,
-            ..Counters::default()
-        };
-        return feasible_basis_if(lcp, approaching, settings, counters, || {
+    *path = SolvePath::PredictedBasis;
+    let Some(definite) = learn else {
+        return feasible_basis_if(lcp, approaching, settings, counters(1), || {
             is_positive_definite(lcp)
-        })
-        .map(|sol| (SolvePath::PredictedBasis, sol))
-        .ok_or(unknown);
+        });
+    };
+    *definite = Some(is_positive_definite(lcp));
+    if *definite == Some(true) {
+        return feasible_basis(lcp, approaching, settings, counters(1));
     }
-    let definite = is_positive_definite(lcp);
-    if definite {
-        if let Some(found) = settle(SolvePath::PredictedBasis, approaching, 1) {
-            return Ok(found);
-        }
-    }
-    Err(Unsettled {
-        definite: Some(definite),
-    })
+    None
 }
 
 #[cfg(test)]

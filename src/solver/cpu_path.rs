@@ -10,7 +10,7 @@ use crate::cpu::enumeration::{enumerate, feasible_basis, MAX_ENUMERATION_N};
 use crate::cpu::impulses::apply_impulses;
 use crate::islands::find_islands;
 use crate::lcp::{Lcp, LcpSolution, Status};
-use crate::prediction::{self, predict};
+use crate::prediction::{self, predict_solution};
 use crate::report::{IslandReport, Report, SceneReport, SolvePath};
 use crate::scene::Scene;
 use crate::settings::{Backend, Method, Settings};
@@ -55,15 +55,18 @@ impl Solver {
                 };
             }
             let warm = keys.and_then(|k| warm_basis(settings, memory, k[i]));
-            let (method, path, mut solution) = solve_on_cpu(lcp, warm, settings);
-            check_solution(&mut solution, settings.tolerance);
-            IslandReport {
+            let (mut method, mut path) = (Method::Lemke, SolvePath::Lemke);
+            // The solution is built in its place in the report.
+            let mut island = IslandReport {
                 scene: None,
                 contacts: (0..n).collect(),
                 method,
                 path,
-                solution,
-            }
+                solution: solve_island(lcp, warm, settings, &mut method, &mut path),
+            };
+            (island.method, island.path) = (method, path);
+            check_solution(&mut island.solution, settings.tolerance);
+            island
         });
         if invalid.load(Ordering::Relaxed) {
             for (i, l) in lcps.iter().enumerate() {
@@ -203,61 +206,84 @@ pub(super) type Solved = (Method, SolvePath, LcpSolution);
 /// islands above n = 20 go to Lemke (the LCP path refuses them on the CPU
 /// backend with Enumeration before it gets here).
 pub(super) fn solve_on_cpu(lcp: &Lcp, warm: Option<u32>, s: &Settings) -> Solved {
-    let lemke_path = || (Method::Lemke, SolvePath::Lemke, lemke(lcp, &s.lemke()));
+    let (mut method, mut path) = (Method::Lemke, SolvePath::Lemke);
+    let solution = solve_island(lcp, warm, s, &mut method, &mut path);
+    (method, path, solution)
+}
+
+/// [`solve_on_cpu`] with the method and path written to `method` and
+/// `path` (both as they come in where Lemke answers): the solution is
+/// returned as its step built it, not moved through a tuple at each step.
+pub(super) fn solve_island(
+    lcp: &Lcp,
+    warm: Option<u32>,
+    s: &Settings,
+    method: &mut Method,
+    path: &mut SolvePath,
+) -> LcpSolution {
     match s.method {
-        Method::Lemke => lemke_path(),
-        Method::Pgs => (Method::Pgs, SolvePath::Pgs, pgs(lcp, &s.pgs())),
-        Method::Auto | Method::Enumeration if lcp.n() > MAX_ENUMERATION_N => lemke_path(),
+        Method::Lemke => lemke(lcp, &s.lemke()),
+        Method::Pgs => {
+            (*method, *path) = (Method::Pgs, SolvePath::Pgs);
+            pgs(lcp, &s.pgs())
+        }
+        Method::Auto | Method::Enumeration if lcp.n() > MAX_ENUMERATION_N => lemke(lcp, &s.lemke()),
         Method::Auto | Method::Enumeration => {
             let e = s.enumeration();
             if s.predict && !s.all_solutions {
-                if let Some((path, solution)) = predict(lcp, warm, &e) {
-                    return (Method::Enumeration, prediction_path(path), solution);
+                let mut how = prediction::SolvePath::Separating;
+                let found = predict_solution(lcp, warm, &e, &mut how);
+                if let Some(solution) = found {
+                    (*method, *path) = (Method::Enumeration, prediction_path(how));
+                    return solution;
                 }
             }
             let mut pivots = 0;
             if s.method == Method::Auto && !s.all_solutions {
-                match lemke_checked(lcp, s) {
-                    Ok(solution) => return (Method::Lemke, SolvePath::Lemke, solution),
-                    Err(p) => pivots = p,
+                if let Some(solution) = lemke_checked(lcp, s, &mut pivots) {
+                    return solution;
                 }
             }
+            (*method, *path) = (Method::Enumeration, SolvePath::EnumeratedCpu);
             let mut solution =
                 enumerate(lcp, &e).expect("n ≤ 20 and settings validated in Solver::new");
             solution.counters.pivots += pivots;
-            (Method::Enumeration, SolvePath::EnumeratedCpu, solution)
+            solution
         }
     }
 }
 
 /// Lemke, its final basis re-solved in f64 and checked with enumeration's
 /// tolerances (the check every GPU answer goes through: feasible, M_SS not
-/// singular); the solution is the re-solve's. Err(pivots spent) when Lemke
-/// did not end on a solution or its basis fails the check.
+/// singular); the solution is the re-solve's. None when Lemke did not end
+/// on a solution or its basis fails the check; `pivots`: the pivots spent.
 ///
 /// The textbook run's basis is checked first ([`lemke_textbook_basis`]:
 /// no tableau read-back, no polish, since the re-solve here is the answer);
 /// where it does not give a checked solution with an error of at most 1e-12,
 /// the whole of [`lemke`] (its scaled and covering-vector retries) runs.
-fn lemke_checked(lcp: &Lcp, s: &Settings) -> Result<LcpSolution, u64> {
+fn lemke_checked(lcp: &Lcp, s: &Settings, pivots: &mut u64) -> Option<LcpSolution> {
     let e = s.enumeration();
     let (mask, first_pivots) = lemke_textbook_basis(lcp, &s.lemke());
+    *pivots = first_pivots;
     if let Some(mask) = mask {
-        if let Some(solution) = checked_basis(lcp, mask, first_pivots, &e) {
-            if solution.residuals.error <= TEXTBOOK_ACCEPT {
-                return Ok(solution);
-            }
+        let found = checked_basis(lcp, mask, first_pivots, &e);
+        if found
+            .as_ref()
+            .is_some_and(|sol| sol.residuals.error <= TEXTBOOK_ACCEPT)
+        {
+            return found;
         }
     }
     let l = lemke(lcp, &s.lemke());
-    let pivots = l.counters.pivots;
+    *pivots = l.counters.pivots;
     let (Status::Solved, Some(mask)) = (l.status, l.basis) else {
-        return Err(pivots);
+        return None;
     };
-    checked_basis(lcp, mask, pivots, &e)
-        .or_else(|| checked_basis(lcp, support(&l.z, 0.0), pivots, &e))
-        .or_else(|| checked_basis(lcp, support(&l.z, SUPPORT_DROP), pivots, &e))
-        .ok_or(pivots)
+    let p = *pivots;
+    checked_basis(lcp, mask, p, &e)
+        .or_else(|| checked_basis(lcp, support(&l.z, 0.0), p, &e))
+        .or_else(|| checked_basis(lcp, support(&l.z, SUPPORT_DROP), p, &e))
 }
 
 /// Impulses at or below this fraction of the largest are left out of the
