@@ -502,13 +502,11 @@ impl Solver {
         if !self.settings.warm_start {
             return;
         }
-        for (ids, isl) in islands {
-            if let (Some(basis), false) = (isl.solution.basis, ids.is_empty()) {
-                if isl.solution.status.is_solution() {
-                    self.warm.record(ids, basis);
-                }
-            }
-        }
+        let records: Vec<(&[u64], u32)> = islands
+            .filter(|(ids, isl)| !ids.is_empty() && isl.solution.status.is_solution())
+            .filter_map(|(ids, isl)| Some((ids, isl.solution.basis?)))
+            .collect();
+        self.warm.record_all(&records, self.threads);
     }
 }
 
