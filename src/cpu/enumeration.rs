@@ -139,9 +139,40 @@ impl Scratch {
     /// Returns None when M_SS is singular, else the basis' relative
     /// infeasibility (see [`infeasibility`]); 0 means feasible.
     fn solve(&mut self, lcp: &Lcp, mask: u32, s: &EnumerationSettings) -> Option<f64> {
-        let n = lcp.n();
-        let m = &lcp.m;
-        let q = &lcp.q;
+        // Islands of n ≤ 8 are compiled for their size (the same
+        // operations in the same order: the same bits).
+        match lcp.n() {
+            2 => self.solve_fixed::<2>(lcp, mask, s),
+            3 => self.solve_fixed::<3>(lcp, mask, s),
+            4 => self.solve_fixed::<4>(lcp, mask, s),
+            5 => self.solve_fixed::<5>(lcp, mask, s),
+            6 => self.solve_fixed::<6>(lcp, mask, s),
+            7 => self.solve_fixed::<7>(lcp, mask, s),
+            8 => self.solve_fixed::<8>(lcp, mask, s),
+            n => self.solve_sized(n, &lcp.m, &lcp.q, mask, s),
+        }
+    }
+
+    /// [`Scratch::solve`] for n = `N`.
+    fn solve_fixed<const N: usize>(
+        &mut self,
+        lcp: &Lcp,
+        mask: u32,
+        s: &EnumerationSettings,
+    ) -> Option<f64> {
+        self.solve_sized(N, &lcp.m[..N * N], &lcp.q[..N], mask, s)
+    }
+
+    /// [`Scratch::solve`] on M (n×n) and q.
+    #[inline(always)]
+    fn solve_sized(
+        &mut self,
+        n: usize,
+        m: &[f64],
+        q: &[f64],
+        mask: u32,
+        s: &EnumerationSettings,
+    ) -> Option<f64> {
         let mut k = 0;
         for i in 0..n {
             if mask >> i & 1 == 1 {
