@@ -45,13 +45,14 @@ impl Solver {
             if lcp.validate("problem").is_err()
                 || (!big_to_lemke && enumerates && n > MAX_ENUMERATION_N)
             {
+                // A placeholder that never leaves: the call returns the error.
                 invalid.store(true, Ordering::Relaxed);
                 return IslandReport {
                     scene: None,
                     contacts: Vec::new(),
                     method: settings.method,
                     path: SolvePath::Invalid,
-                    solution: LcpSolution::invalid(n),
+                    solution: LcpSolution::invalid(0),
                 };
             }
             let warm = keys.and_then(|k| warm_basis(settings, memory, k[i]));

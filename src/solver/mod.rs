@@ -653,8 +653,23 @@ mod tests {
             q: vec![1.0, -1.0],
         };
         let good = Lcp::new(vec![1.0], vec![-1.0]).unwrap();
-        let e = cpu(Method::Lemke).solve_lcps(&[good, bad]).unwrap_err();
+        let e = cpu(Method::Lemke)
+            .solve_lcps(&[good.clone(), bad.clone()])
+            .unwrap_err();
         assert!(e.to_string().contains("problem 1"), "{e}");
+        // Checks come before the size limit, whatever the order in the batch.
+        let big = Lcp::new(vec![0.0; 21 * 21], vec![1.0; 21]).unwrap();
+        let e = cpu(Method::Enumeration)
+            .solve_lcps(&[big.clone(), bad])
+            .unwrap_err();
+        assert!(e.to_string().contains("problem 1: field `M[0][1]`"), "{e}");
+        let e = cpu(Method::Enumeration)
+            .solve_lcps(&[good, big])
+            .unwrap_err();
+        assert!(
+            e.to_string().contains("problem 1: enumeration visits"),
+            "{e}"
+        );
         let scene = crate::Scene {
             bodies: vec![Body::new(1.0, [1.0; 3], [0.0; 3])],
             contacts: vec![Contact::new(3, None, [0.0; 3], [0.0, 1.0, 0.0], 0.5)],
