@@ -117,6 +117,11 @@ impl Lcp {
     /// Is M symmetric to a relative tolerance of 1e-12 of its largest entry?
     pub fn is_symmetric(&self) -> bool {
         let n = self.n();
+        // Exactly symmetric (assembled J M⁻¹ Jᵀ often is): no scale needed,
+        // 0 is within any tolerance (a NaN or infinite pair goes on).
+        if (0..n).all(|i| (0..i).all(|j| self.at(i, j) - self.at(j, i) == 0.0)) {
+            return true;
+        }
         let scale = self.m.iter().fold(0.0f64, |a, v| a.max(v.abs()));
         (0..n).all(|i| (0..i).all(|j| (self.at(i, j) - self.at(j, i)).abs() <= 1e-12 * scale))
     }
@@ -325,6 +330,29 @@ impl LcpSolution {
             w,
             residuals,
             counters,
+            basis: None,
+            all_bases: Vec::new(),
+            solution_set: None,
+        }
+    }
+
+    /// The door's final check of an answer: z, w and the error measure
+    /// finite, the error at most `tolerance` (its status aside).
+    pub fn passes_check(&self, tolerance: f64) -> bool {
+        self.z.iter().chain(&self.w).all(|v| v.is_finite())
+            && self.residuals.error.is_finite()
+            && self.residuals.error <= tolerance
+    }
+
+    /// A result for a problem of `n` rows that failed its checks: status
+    /// `InvalidInput`, z = w = 0.
+    pub(crate) fn invalid(n: usize) -> Self {
+        LcpSolution {
+            status: Status::InvalidInput,
+            z: vec![0.0; n],
+            w: vec![0.0; n],
+            residuals: Residuals::default(),
+            counters: Counters::default(),
             basis: None,
             all_bases: Vec::new(),
             solution_set: None,

@@ -18,12 +18,41 @@ pub const PIVOT_TOL: f64 = 1e-13;
 /// largest entry before elimination). Never divides by such a pivot.
 pub fn solve_in_place(a: &mut [f64], x: &mut [f64], k: usize, pivot_tol: f64) -> bool {
     debug_assert!(a.len() >= k * k && x.len() >= k);
-    let mut colmax = [0.0f64; 64];
-    let colmax = if k <= 64 {
-        &mut colmax[..k]
-    } else {
-        return solve_large(a, x, k, pivot_tol);
-    };
+    // The column maxima on the stack, no larger than k needs: zeroing 64
+    // entries for a 4×4 basis costs as much as the columns' scan.
+    // Contact islands' bases are small: k ≤ 6 is compiled for its size
+    // (loops of known length, no bounds checks; the same operations in the
+    // same order, so the same bits).
+    match k {
+        0 => true,
+        1 => solve_fixed::<1>(a, x, pivot_tol),
+        2 => solve_fixed::<2>(a, x, pivot_tol),
+        3 => solve_fixed::<3>(a, x, pivot_tol),
+        4 => solve_fixed::<4>(a, x, pivot_tol),
+        5 => solve_fixed::<5>(a, x, pivot_tol),
+        6 => solve_fixed::<6>(a, x, pivot_tol),
+        7..=20 => solve_with::<20>(a, x, k, pivot_tol),
+        21..=64 => solve_with::<64>(a, x, k, pivot_tol),
+        _ => solve_large(a, x, k, pivot_tol),
+    }
+}
+
+/// [`solve_in_place`] for k = `K`.
+fn solve_fixed<const K: usize>(a: &mut [f64], x: &mut [f64], pivot_tol: f64) -> bool {
+    let (a, x) = (&mut a[..K * K], &mut x[..K]);
+    let mut colmax = [0.0f64; K];
+    for r in 0..K {
+        for c in 0..K {
+            colmax[c] = colmax[c].max(a[r * K + c].abs());
+        }
+    }
+    eliminate(a, x, K, pivot_tol, &colmax)
+}
+
+/// [`solve_in_place`] with the column maxima in `K` ≥ k entries.
+fn solve_with<const K: usize>(a: &mut [f64], x: &mut [f64], k: usize, pivot_tol: f64) -> bool {
+    let mut colmax = [0.0f64; K];
+    let colmax = &mut colmax[..k];
     for r in 0..k {
         for c in 0..k {
             colmax[c] = colmax[c].max(a[r * k + c].abs());

@@ -20,12 +20,17 @@
 //! when the solution is not unique (w is the same whenever M is positive
 //! semidefinite).
 
-// `predict` and `WarmStart`'s counters serve the tests.
+// `WarmStart`'s counters serve the tests.
 #![cfg_attr(not(test), allow(dead_code))]
+
+use std::collections::HashMap;
+use std::hash::{BuildHasher, Hasher, RandomState};
 
 use serde::Serialize;
 
-use crate::cpu::enumeration::{feasible_basis, EnumerationSettings, MAX_ENUMERATION_N};
+use crate::cpu::enumeration::{
+    feasible_basis, feasible_basis_if, EnumerationSettings, MAX_ENUMERATION_N,
+};
 use crate::lcp::{Counters, Lcp, LcpSolution, Status};
 
 /// How an island was settled; every batch reports a count of each.
@@ -80,12 +85,47 @@ pub fn is_positive_definite(lcp: &Lcp) -> bool {
     }
     // The factor lives on the stack, no larger than n needs: zeroing 20×20
     // entries for a 4×4 island would cost more than the factorisation.
+    // n ≤ 6 is compiled for its size (the same operations in the same
+    // order: the same verdict).
     match n {
+        2 => cholesky_fixed::<2, 4>(&lcp.m),
+        3 => cholesky_fixed::<3, 9>(&lcp.m),
+        4 => cholesky_fixed::<4, 16>(&lcp.m),
+        5 => cholesky_fixed::<5, 25>(&lcp.m),
+        6 => cholesky_fixed::<6, 36>(&lcp.m),
         0..=4 => cholesky_succeeds::<16>(lcp),
         5..=8 => cholesky_succeeds::<64>(lcp),
         9..=12 => cholesky_succeeds::<144>(lcp),
         _ => cholesky_succeeds::<{ MAX_ENUMERATION_N * MAX_ENUMERATION_N }>(lcp),
     }
+}
+
+/// [`cholesky_succeeds`] for n = `N` (`L` = N² entries of the factor), on
+/// M's entries `m`.
+fn cholesky_fixed<const N: usize, const L: usize>(m: &[f64]) -> bool {
+    let m = &m[..N * N];
+    let mut l = [0.0f64; L];
+    let dmax = (0..N).map(|i| m[i * N + i]).fold(0.0f64, f64::max);
+    let threshold = N as f64 * f64::EPSILON * 16.0 * dmax;
+    for j in 0..N {
+        let mut d = m[j * N + j];
+        for k in 0..j {
+            d -= l[j * N + k] * l[j * N + k];
+        }
+        if !(d > threshold) {
+            return false;
+        }
+        let d = d.sqrt();
+        l[j * N + j] = d;
+        for i in j + 1..N {
+            let mut s = 0.5 * (m[i * N + j] + m[j * N + i]);
+            for k in 0..j {
+                s -= l[i * N + k] * l[j * N + k];
+            }
+            l[i * N + j] = s / d;
+        }
+    }
+    true
 }
 
 /// The Cholesky factorisation of [`is_positive_definite`], with an L of
@@ -163,12 +203,29 @@ pub fn is_positive_semidefinite(lcp: &Lcp) -> bool {
 
 /// Tries the cheap paths on one island. `warm_basis` is the caller's basis
 /// from the previous frame, if any. None: the island needs enumeration.
+///
+/// The same answers as [`prediction`]; since nothing learnt is returned,
+/// step 4 tests M's definiteness only where the predicted basis is
+/// feasible (the CPU path's order: the Cholesky test is the dearer of the
+/// two at n ≤ 8, and the basis is infeasible on a third of the islands).
 pub fn predict(
     lcp: &Lcp,
     warm_basis: Option<u32>,
     settings: &EnumerationSettings,
 ) -> Option<(SolvePath, LcpSolution)> {
-    prediction(lcp, warm_basis, settings).ok()
+    let mut path = SolvePath::Separating;
+    predict_solution(lcp, warm_basis, settings, &mut path).map(|s| (path, s))
+}
+
+/// [`predict`] with the path written to `path` (the CPU path's form: the
+/// solution is returned as built, not moved into a pair).
+pub fn predict_solution(
+    lcp: &Lcp,
+    warm_basis: Option<u32>,
+    settings: &EnumerationSettings,
+    path: &mut SolvePath,
+) -> Option<LcpSolution> {
+    steps(lcp, warm_basis, settings, path, None)
 }
 
 /// An island prediction could not settle, and what it learnt of M on the
@@ -185,59 +242,70 @@ pub fn prediction(
     warm_basis: Option<u32>,
     settings: &EnumerationSettings,
 ) -> Result<(SolvePath, LcpSolution), Unsettled> {
-    let n = lcp.n();
-    let unknown = Unsettled { definite: None };
-    if n > MAX_ENUMERATION_N {
-        return Err(unknown);
+    let mut path = SolvePath::Separating;
+    let mut definite = None;
+    match steps(lcp, warm_basis, settings, &mut path, Some(&mut definite)) {
+        Some(solution) => Ok((path, solution)),
+        None => Err(Unsettled { definite }),
     }
-    let settle = |path: SolvePath, mask: u32, bases: u64| {
-        let counters = Counters {
-            bases_visited: bases,
-            ..Counters::default()
-        };
-        feasible_basis(lcp, mask, settings, counters).map(|sol| (path, sol))
+}
+
+/// The steps of [`prediction`]: the solution, and in `path` the step that
+/// gave it. With `learn`, M's definiteness is tested on every island that
+/// reaches step 4 and written there; without, only where the predicted
+/// basis is feasible.
+fn steps(
+    lcp: &Lcp,
+    warm_basis: Option<u32>,
+    settings: &EnumerationSettings,
+    path: &mut SolvePath,
+    learn: Option<&mut Option<bool>>,
+) -> Option<LcpSolution> {
+    let n = lcp.n();
+    if n > MAX_ENUMERATION_N {
+        return None;
+    }
+    let counters = |bases: u64| Counters {
+        bases_visited: bases,
+        ..Counters::default()
     };
     // 1. Separating: the empty basis, feasible iff q ≥ 0.
     if lcp.q.iter().all(|&v| v >= 0.0) {
-        return settle(SolvePath::Separating, 0, 1).ok_or(unknown);
+        *path = SolvePath::Separating;
+        return feasible_basis(lcp, 0, settings, counters(1));
     }
     // 2. One approaching contact: z = −q/M when M > 0, else no solution.
     if n == 1 {
-        return settle(SolvePath::SingleContact, 1, 2)
-            .or_else(|| {
-                let mut sol = LcpSolution::from_z(
-                    lcp,
-                    Status::NoSolution,
-                    vec![0.0],
-                    Counters {
-                        bases_visited: 2,
-                        ..Counters::default()
-                    },
-                );
-                sol.basis = None;
-                Some((SolvePath::SingleContact, sol))
-            })
-            .ok_or(unknown);
+        *path = SolvePath::SingleContact;
+        return feasible_basis(lcp, 1, settings, counters(2)).or_else(|| {
+            let mut sol = LcpSolution::from_z(lcp, Status::NoSolution, vec![0.0], counters(2));
+            sol.basis = None;
+            Some(sol)
+        });
     }
     // 3. Last frame's basis.
     if let Some(mask) = warm_basis.filter(|&m| m >> n == 0) {
-        if let Some(found) = settle(SolvePath::WarmStart, mask, 1) {
-            return Ok(found);
+        let found = feasible_basis(lcp, mask, settings, counters(1));
+        if found.is_some() {
+            *path = SolvePath::WarmStart;
+            return found;
         }
     }
     // 4. The approaching contacts, when the solution is unique.
     let approaching = (0..n)
         .filter(|&i| lcp.q[i] < 0.0)
         .fold(0u32, |m, i| m | 1 << i);
-    let definite = is_positive_definite(lcp);
-    if definite {
-        if let Some(found) = settle(SolvePath::PredictedBasis, approaching, 1) {
-            return Ok(found);
-        }
+    *path = SolvePath::PredictedBasis;
+    let Some(definite) = learn else {
+        return feasible_basis_if(lcp, approaching, settings, counters(1), || {
+            is_positive_definite(lcp)
+        });
+    };
+    *definite = Some(is_positive_definite(lcp));
+    if *definite == Some(true) {
+        return feasible_basis(lcp, approaching, settings, counters(1));
     }
-    Err(Unsettled {
-        definite: Some(definite),
-    })
+    None
 }
 
 #[cfg(test)]
@@ -300,6 +368,33 @@ mod tests {
     }
 
     #[test]
+    fn records_on_several_threads_are_the_records_of_one() {
+        // 3,000 islands of 4 ids (above the parallel threshold); every id
+        // also appears in a later island, whose basis must win as on one
+        // thread, and some ids are never recorded.
+        let ids: Vec<Vec<u64>> = (0..3000u64)
+            .map(|i| (0..4).map(|k| (i * 4 + k) % 10_000).collect())
+            .collect();
+        let records: Vec<(&[u64], u32)> = ids
+            .iter()
+            .enumerate()
+            .map(|(i, k)| (k.as_slice(), (i as u32 * 7) % 16))
+            .collect();
+        let mut one = WarmStart::default();
+        for &(k, basis) in &records {
+            one.record(k, basis);
+        }
+        for threads in [2, 3, 16, 64] {
+            let mut many = WarmStart::default();
+            many.record_all(&records, threads);
+            for k in &ids {
+                assert_eq!(many.basis(k), one.basis(k), "{threads} threads, ids {k:?}");
+            }
+            assert_eq!(many.basis(&[10_001, 10_002]), None);
+        }
+    }
+
+    #[test]
     fn warm_start_is_kept_only_while_valid() {
         let settings = EnumerationSettings::default();
         // Rank one M, solutions z1 + z2 = 1: the warm basis {1} is valid.
@@ -317,25 +412,93 @@ mod tests {
 /// (stable across frames, e.g. a feature pair from collision detection).
 /// An island's warm basis is the set of its contacts that carried impulse
 /// last frame; islands none of whose contacts were seen get none.
-#[derive(Clone, Debug, Default)]
+///
+/// The ids are spread over [`SHARDS`] maps by a hash of the id, so that a
+/// batch's records can be written on several threads, one shard each at a
+/// time, every shard in the batch's order ([`WarmStart::record_all`]);
+/// the maps hash an id by one seeded multiplication ([`IdHasher`]).
+#[derive(Clone, Debug)]
 pub struct WarmStart {
-    active: std::collections::HashMap<u64, bool>,
+    shards: Vec<HashMap<u64, bool, IdHash>>,
+    /// Picks an id's shard (independent of the maps' own hash).
+    seed: u64,
+}
+
+/// Shards of [`WarmStart`].
+const SHARDS: usize = 16;
+
+/// Records (of every shard's ids) below which [`WarmStart::record_all`]
+/// stays on the calling thread: starting a thread costs more.
+const PARALLEL_RECORDS: usize = 4096;
+
+impl Default for WarmStart {
+    fn default() -> Self {
+        let hash = IdHash::default();
+        WarmStart {
+            shards: (0..SHARDS)
+                .map(|_| HashMap::with_hasher(hash.clone()))
+                .collect(),
+            seed: IdHash::default().seed,
+        }
+    }
 }
 
 impl WarmStart {
+    fn shard(&self, id: u64) -> usize {
+        (fold_multiply(id, self.seed) >> 60) as usize % SHARDS
+    }
+
     /// Records an island's basis: `contact_ids[i]` was active iff bit i of `basis`.
     pub fn record(&mut self, contact_ids: &[u64], basis: u32) {
         for (i, &id) in contact_ids.iter().enumerate() {
-            self.active.insert(id, i < 32 && basis >> i & 1 == 1);
+            let k = self.shard(id);
+            self.shards[k].insert(id, i < 32 && basis >> i & 1 == 1);
         }
+    }
+
+    /// [`WarmStart::record`] of every (ids, basis) in order, on up to
+    /// `threads` threads (shards split between them; each thread reads every
+    /// record and writes its shards' ids, in the records' order, so that an
+    /// id recorded twice keeps the later basis, as one thread would).
+    pub fn record_all(&mut self, records: &[(&[u64], u32)], threads: usize) {
+        let ids: usize = records.iter().map(|(k, _)| k.len()).sum();
+        let threads = threads.clamp(1, SHARDS);
+        if threads == 1 || ids < PARALLEL_RECORDS {
+            for &(k, basis) in records {
+                self.record(k, basis);
+            }
+            return;
+        }
+        let seed = self.seed;
+        let per = SHARDS.div_ceil(threads);
+        let write = |first: usize, shards: &mut [HashMap<u64, bool, IdHash>]| {
+            for &(k, basis) in records {
+                for (i, &id) in k.iter().enumerate() {
+                    let s = (fold_multiply(id, seed) >> 60) as usize % SHARDS;
+                    if let Some(map) = s.checked_sub(first).and_then(|j| shards.get_mut(j)) {
+                        map.insert(id, i < 32 && basis >> i & 1 == 1);
+                    }
+                }
+            }
+        };
+        std::thread::scope(|scope| {
+            let mut parts = self.shards.chunks_mut(per).enumerate();
+            let mine = parts.next();
+            for (c, part) in parts {
+                scope.spawn(move || write(c * per, part));
+            }
+            if let Some((_, part)) = mine {
+                write(0, part);
+            }
+        });
     }
 
     /// The warm basis for an island with these contacts, if any was seen.
     pub fn basis(&self, contact_ids: &[u64]) -> Option<u32> {
         let mut seen = false;
         let mut mask = 0u32;
-        for (i, id) in contact_ids.iter().enumerate().take(32) {
-            if let Some(&a) = self.active.get(id) {
+        for (i, &id) in contact_ids.iter().enumerate().take(32) {
+            if let Some(&a) = self.shards[self.shard(id)].get(&id) {
                 seen = true;
                 if a {
                     mask |= 1 << i;
@@ -343,5 +506,60 @@ impl WarmStart {
             }
         }
         seen.then_some(mask)
+    }
+}
+
+/// The 128-bit product of `x ^ seed` and an odd constant, folded to 64 bits:
+/// every bit of the id reaches the high bits (the shard) and the low ones.
+fn fold_multiply(x: u64, seed: u64) -> u64 {
+    let p = u128::from(x ^ seed) * 0x9e37_79b9_7f4a_7c15_u128;
+    (p as u64) ^ (p >> 64) as u64
+}
+
+/// The maps' hash of a contact id: [`fold_multiply`] with a seed drawn per
+/// memory from the standard library's random keys (std's SipHash would
+/// cost more than the rest of a warm-started island's bookkeeping).
+#[derive(Clone, Debug)]
+struct IdHash {
+    seed: u64,
+}
+
+impl Default for IdHash {
+    fn default() -> Self {
+        IdHash {
+            seed: RandomState::new().hash_one(0x5eed_u64),
+        }
+    }
+}
+
+impl BuildHasher for IdHash {
+    type Hasher = IdHasher;
+    fn build_hasher(&self) -> IdHasher {
+        IdHasher {
+            seed: self.seed,
+            state: 0,
+        }
+    }
+}
+
+/// See [`IdHash`]; ids are u64 (`write_u64`), other keys are hashed byte by byte.
+struct IdHasher {
+    seed: u64,
+    state: u64,
+}
+
+impl Hasher for IdHasher {
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.state = fold_multiply(self.state ^ u64::from(b), self.seed);
+        }
+    }
+
+    fn write_u64(&mut self, x: u64) {
+        self.state = fold_multiply(self.state ^ x, self.seed);
+    }
+
+    fn finish(&self) -> u64 {
+        self.state
     }
 }

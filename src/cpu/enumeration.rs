@@ -139,9 +139,40 @@ impl Scratch {
     /// Returns None when M_SS is singular, else the basis' relative
     /// infeasibility (see [`infeasibility`]); 0 means feasible.
     fn solve(&mut self, lcp: &Lcp, mask: u32, s: &EnumerationSettings) -> Option<f64> {
-        let n = lcp.n();
-        let m = &lcp.m;
-        let q = &lcp.q;
+        // Islands of n ≤ 8 are compiled for their size (the same
+        // operations in the same order: the same bits).
+        match lcp.n() {
+            2 => self.solve_fixed::<2>(lcp, mask, s),
+            3 => self.solve_fixed::<3>(lcp, mask, s),
+            4 => self.solve_fixed::<4>(lcp, mask, s),
+            5 => self.solve_fixed::<5>(lcp, mask, s),
+            6 => self.solve_fixed::<6>(lcp, mask, s),
+            7 => self.solve_fixed::<7>(lcp, mask, s),
+            8 => self.solve_fixed::<8>(lcp, mask, s),
+            n => self.solve_sized(n, &lcp.m, &lcp.q, mask, s),
+        }
+    }
+
+    /// [`Scratch::solve`] for n = `N`.
+    fn solve_fixed<const N: usize>(
+        &mut self,
+        lcp: &Lcp,
+        mask: u32,
+        s: &EnumerationSettings,
+    ) -> Option<f64> {
+        self.solve_sized(N, &lcp.m[..N * N], &lcp.q[..N], mask, s)
+    }
+
+    /// [`Scratch::solve`] on M (n×n) and q.
+    #[inline(always)]
+    fn solve_sized(
+        &mut self,
+        n: usize,
+        m: &[f64],
+        q: &[f64],
+        mask: u32,
+        s: &EnumerationSettings,
+    ) -> Option<f64> {
         let mut k = 0;
         for i in 0..n {
             if mask >> i & 1 == 1 {
@@ -229,14 +260,27 @@ pub fn feasible_basis(
     settings: &EnumerationSettings,
     counters: Counters,
 ) -> Option<LcpSolution> {
+    feasible_basis_if(lcp, mask, settings, counters, || true)
+}
+
+/// [`feasible_basis`] where a feasible basis is kept only if `keep()` says
+/// so too (asked only of a feasible basis: prediction tests M's
+/// definiteness only where the predicted basis is feasible).
+pub fn feasible_basis_if(
+    lcp: &Lcp,
+    mask: u32,
+    settings: &EnumerationSettings,
+    counters: Counters,
+    keep: impl FnOnce() -> bool,
+) -> Option<LcpSolution> {
     let n = lcp.n();
     assert!(
         n <= MAX_ENUMERATION_N,
         "feasible_basis: n = {n} > {MAX_ENUMERATION_N}"
     );
     let z = SCRATCH.with(|s| match s.try_borrow_mut() {
-        Ok(mut s) => feasible_z(&mut s, lcp, mask, settings),
-        Err(_) => feasible_z(&mut Scratch::new(), lcp, mask, settings),
+        Ok(mut s) => feasible_z(&mut s, lcp, mask, settings, keep),
+        Err(_) => feasible_z(&mut Scratch::new(), lcp, mask, settings, keep),
     })?;
     let w = lcp.w(&z);
     Some(LcpSolution {
@@ -252,15 +296,16 @@ pub fn feasible_basis(
 }
 
 /// z of basis `mask` (negative entries clamped to 0) when it is feasible
-/// to the strict tolerance.
+/// to the strict tolerance and `keep()`.
 fn feasible_z(
     s: &mut Scratch,
     lcp: &Lcp,
     mask: u32,
     settings: &EnumerationSettings,
+    keep: impl FnOnce() -> bool,
 ) -> Option<Vec<f64>> {
     let infeasibility = s.solve(lcp, mask, settings)?;
-    (infeasibility <= settings.feasibility_tol)
+    (infeasibility <= settings.feasibility_tol && keep())
         .then(|| s.z[..lcp.n()].iter().map(|v| v.max(0.0)).collect())
 }
 

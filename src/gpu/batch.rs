@@ -24,7 +24,7 @@ use super::pipelines::Tolerances;
 use super::{GpuContext, Precision, MAX_GPU_N};
 use crate::cpu::enumeration::EnumerationSettings;
 use crate::cpu::enumeration_tree::TREE_MAX_N;
-use crate::lcp::{Counters, Lcp, LcpSolution, Residuals, Status};
+use crate::lcp::{Lcp, LcpSolution};
 use crate::prediction::{prediction, SolvePath, Unsettled};
 use crate::solvers::lemke::{lemke, LemkeSettings};
 use crate::solvers::Solver;
@@ -285,21 +285,6 @@ fn check_gpu_sizes(lcps: &[&Lcp]) -> Result<(), Error> {
     Ok(())
 }
 
-/// A result for a problem that failed its checks.
-fn invalid_solution(lcp: &Lcp) -> LcpSolution {
-    let n = lcp.q.len();
-    LcpSolution {
-        status: Status::InvalidInput,
-        z: vec![0.0; n],
-        w: vec![0.0; n],
-        residuals: Residuals::default(),
-        counters: Counters::default(),
-        basis: None,
-        all_bases: Vec::new(),
-        solution_set: None,
-    }
-}
-
 /// Problem i settled on the CPU: invalid, n > [`MAX_GPU_N`] (Lemke), or
 /// by prediction (with `settings.predict`); else what prediction learnt.
 fn settle_on_cpu(
@@ -317,7 +302,7 @@ fn settle_on_cpu(
         gpu_z: Vec::new(),
     };
     if lcp.validate(&format!("problem {i}")).is_err() {
-        let s = invalid_solution(lcp);
+        let s = LcpSolution::invalid(lcp.q.len());
         return Ok(outcome(s, SolvedOn::Invalid, None, Solver::Enum));
     }
     if lcp.n() > MAX_GPU_N {

@@ -1,15 +1,16 @@
 //! The CPU path of the [`Solver`]: f64, every core.
 
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
-use super::Solver;
+use super::{check_solution, warm_basis, Solver};
 use crate::cpu::assembly::{assemble_contacts, assemble_island};
 use crate::cpu::batch::parallel_map;
 use crate::cpu::enumeration::{enumerate, feasible_basis, MAX_ENUMERATION_N};
 use crate::cpu::impulses::apply_impulses;
 use crate::islands::find_islands;
 use crate::lcp::{Lcp, LcpSolution, Status};
-use crate::prediction::{self, prediction};
+use crate::prediction::{self, predict_solution};
 use crate::report::{IslandReport, Report, SceneReport, SolvePath};
 use crate::scene::Scene;
 use crate::settings::{Backend, Method, Settings};
@@ -18,35 +19,70 @@ use crate::solvers::pgs::pgs;
 use crate::Error;
 
 impl Solver {
-    /// Checked LCPs on the CPU. `warm[i]`: problem i's warm basis, if any.
+    /// LCPs on the CPU, each checked (`Lcp::validate`) in the parallel pass
+    /// that solves it: an error names the first bad problem. `keys[i]`:
+    /// problem i's contact ids, whose warm basis (with
+    /// `settings.warm_start`) is looked up in that pass too. Everything per
+    /// problem (check, warm basis, solve, the final check of the answer, its
+    /// report) runs on the threads; only the batch's counts are serial.
     /// Enumeration (and all_solutions) on the CPU backend refuses n > 20;
     /// after device trouble (or with backend Auto) such problems go to
     /// Lemke, as on the GPU path.
     pub(super) fn lcps_on_cpu(
         &self,
         lcps: &[Lcp],
-        warm: Option<&[Option<u32>]>,
+        keys: Option<&[&[u64]]>,
     ) -> Result<Report, Error> {
         let big_to_lemke = self.settings.backend != Backend::Cpu;
         let enumerates = self.settings.method == Method::Enumeration || self.settings.all_solutions;
-        if !big_to_lemke && enumerates {
-            if let Some((i, l)) = lcps
-                .iter()
-                .enumerate()
-                .find(|(_, l)| l.n() > MAX_ENUMERATION_N)
+        let t = Instant::now();
+        let invalid = AtomicBool::new(false);
+        let (settings, memory) = (&self.settings, &self.warm);
+        let islands = parallel_map(lcps.len(), self.threads, |i| {
+            let lcp = &lcps[i];
+            let n = lcp.n();
+            // The item's name is formatted only for the error, below.
+            if lcp.validate("problem").is_err()
+                || (!big_to_lemke && enumerates && n > MAX_ENUMERATION_N)
             {
-                return Err(Error::Unsupported(format!(
-                    "problem {i}: enumeration visits 2^n bases and is limited to n ≤ {MAX_ENUMERATION_N} (this problem has n = {}); use Lemke",
-                    l.n()
-                )));
+                // A placeholder that never leaves: the call returns the error.
+                invalid.store(true, Ordering::Relaxed);
+                return IslandReport {
+                    scene: None,
+                    contacts: Vec::new(),
+                    method: settings.method,
+                    path: SolvePath::Invalid,
+                    solution: LcpSolution::invalid(0),
+                };
+            }
+            let warm = keys.and_then(|k| warm_basis(settings, memory, k[i]));
+            let (mut method, mut path) = (Method::Lemke, SolvePath::Lemke);
+            // The solution is built in its place in the report.
+            let mut island = IslandReport {
+                scene: None,
+                contacts: (0..n).collect(),
+                method,
+                path,
+                solution: solve_island(lcp, warm, settings, &mut method, &mut path),
+            };
+            (island.method, island.path) = (method, path);
+            check_solution(&mut island.solution, settings.tolerance);
+            island
+        });
+        if invalid.load(Ordering::Relaxed) {
+            for (i, l) in lcps.iter().enumerate() {
+                l.validate(&format!("problem {i}"))?;
+            }
+            for (i, l) in lcps.iter().enumerate() {
+                if !big_to_lemke && enumerates && l.n() > MAX_ENUMERATION_N {
+                    return Err(Error::Unsupported(format!(
+                        "problem {i}: enumeration visits 2^n bases and is limited to n ≤ {MAX_ENUMERATION_N} (this problem has n = {}); use Lemke",
+                        l.n()
+                    )));
+                }
             }
         }
-        let t = Instant::now();
-        let solved = parallel_map(lcps.len(), self.threads, |i| {
-            let w = warm.and_then(|w| w[i]);
-            solve_on_cpu(&lcps[i], w, &self.settings)
-        });
-        let mut r = self.cpu_report(lcp_islands(lcps, solved), Vec::new());
+        let mut r = self.checked_report(islands, Vec::new());
         r.timings.solve = t.elapsed().as_secs_f64();
         Ok(r)
     }
@@ -135,6 +171,11 @@ impl Solver {
 
     fn cpu_report(&self, mut islands: Vec<IslandReport>, scenes: Vec<SceneReport>) -> Report {
         self.check(&mut islands);
+        self.checked_report(islands, scenes)
+    }
+
+    /// The report of islands already through [`check_solution`].
+    fn checked_report(&self, islands: Vec<IslandReport>, scenes: Vec<SceneReport>) -> Report {
         let mut r = Report::new(islands, scenes, self.cpu_device(), self.choice.clone());
         r.fallback = self.fallback.clone();
         r
@@ -166,29 +207,49 @@ pub(super) type Solved = (Method, SolvePath, LcpSolution);
 /// islands above n = 20 go to Lemke (the LCP path refuses them on the CPU
 /// backend with Enumeration before it gets here).
 pub(super) fn solve_on_cpu(lcp: &Lcp, warm: Option<u32>, s: &Settings) -> Solved {
-    let lemke_path = || (Method::Lemke, SolvePath::Lemke, lemke(lcp, &s.lemke()));
+    let (mut method, mut path) = (Method::Lemke, SolvePath::Lemke);
+    let solution = solve_island(lcp, warm, s, &mut method, &mut path);
+    (method, path, solution)
+}
+
+/// [`solve_on_cpu`] with the method and path written to `method` and
+/// `path` (both as they come in where Lemke answers): the solution is
+/// returned as its step built it, not moved through a tuple at each step.
+pub(super) fn solve_island(
+    lcp: &Lcp,
+    warm: Option<u32>,
+    s: &Settings,
+    method: &mut Method,
+    path: &mut SolvePath,
+) -> LcpSolution {
     match s.method {
-        Method::Lemke => lemke_path(),
-        Method::Pgs => (Method::Pgs, SolvePath::Pgs, pgs(lcp, &s.pgs())),
-        Method::Auto | Method::Enumeration if lcp.n() > MAX_ENUMERATION_N => lemke_path(),
+        Method::Lemke => lemke(lcp, &s.lemke()),
+        Method::Pgs => {
+            (*method, *path) = (Method::Pgs, SolvePath::Pgs);
+            pgs(lcp, &s.pgs())
+        }
+        Method::Auto | Method::Enumeration if lcp.n() > MAX_ENUMERATION_N => lemke(lcp, &s.lemke()),
         Method::Auto | Method::Enumeration => {
             let e = s.enumeration();
             if s.predict && !s.all_solutions {
-                if let Ok((path, solution)) = prediction(lcp, warm, &e) {
-                    return (Method::Enumeration, prediction_path(path), solution);
+                let mut how = prediction::SolvePath::Separating;
+                let found = predict_solution(lcp, warm, &e, &mut how);
+                if let Some(solution) = found {
+                    (*method, *path) = (Method::Enumeration, prediction_path(how));
+                    return solution;
                 }
             }
             let mut pivots = 0;
             if s.method == Method::Auto && !s.all_solutions {
-                match lemke_checked(lcp, s) {
-                    Ok(solution) => return (Method::Lemke, SolvePath::Lemke, solution),
-                    Err(p) => pivots = p,
+                if let Some(solution) = lemke_checked(lcp, s, &mut pivots) {
+                    return solution;
                 }
             }
+            (*method, *path) = (Method::Enumeration, SolvePath::EnumeratedCpu);
             let mut solution =
                 enumerate(lcp, &e).expect("n ≤ 20 and settings validated in Solver::new");
             solution.counters.pivots += pivots;
-            (Method::Enumeration, SolvePath::EnumeratedCpu, solution)
+            solution
         }
     }
 }
@@ -197,46 +258,45 @@ pub(super) fn solve_on_cpu(lcp: &Lcp, warm: Option<u32>, s: &Settings) -> Solved
 /// tolerances (the check every GPU answer goes through: feasible, M_SS not
 /// singular); the solution is the re-solve's. Where that basis (and the
 /// bases of its answer's support) fail the check, Lemke's own answer is
-/// taken when the door's final check passes it ([`within_tolerance`]).
-/// Err(pivots spent) when Lemke did not end on a solution or none passes.
+/// taken when the door's final check passes it.
+/// None when Lemke did not end on a solution or none passes; `pivots`: the
+/// pivots spent.
 ///
 /// The textbook run's basis is checked first ([`lemke_textbook_basis`]:
 /// no tableau read-back, no polish, since the re-solve here is the answer);
 /// where it does not give a checked solution with an error of at most 1e-12,
 /// the whole of [`lemke`] (its scaled and covering-vector retries) runs.
-fn lemke_checked(lcp: &Lcp, s: &Settings) -> Result<LcpSolution, u64> {
+fn lemke_checked(lcp: &Lcp, s: &Settings, pivots: &mut u64) -> Option<LcpSolution> {
     let e = s.enumeration();
     let (mask, first_pivots) = lemke_textbook_basis(lcp, &s.lemke());
+    *pivots = first_pivots;
     if let Some(mask) = mask {
-        if let Some(solution) = checked_basis(lcp, mask, first_pivots, &e) {
-            if solution.residuals.error <= TEXTBOOK_ACCEPT {
-                return Ok(solution);
-            }
+        let found = checked_basis(lcp, mask, first_pivots, &e);
+        if found
+            .as_ref()
+            .is_some_and(|sol| sol.residuals.error <= TEXTBOOK_ACCEPT)
+        {
+            return found;
         }
     }
     let l = lemke(lcp, &s.lemke());
-    let pivots = l.counters.pivots;
+    *pivots = l.counters.pivots;
     let (Status::Solved, Some(mask)) = (l.status, l.basis) else {
-        return Err(pivots);
+        return None;
     };
-    checked_basis(lcp, mask, pivots, &e)
-        .or_else(|| checked_basis(lcp, support(&l.z, 0.0), pivots, &e))
-        .or_else(|| checked_basis(lcp, support(&l.z, SUPPORT_DROP), pivots, &e))
-        .or_else(|| within_tolerance(&l, s.tolerance).then_some(l))
-        .ok_or(pivots)
-}
-
-/// Whether Lemke's own answer is a solution by the door's final check
-/// (z and w finite, the error measure recomputed from M and q in f64 at
-/// most `tolerance`): the last answer taken before enumerating. On a
-/// degenerate island every basis through Lemke's answer can be singular or
-/// ill-conditioned to the basis check (a resting 4-box stack, 16 contacts,
-/// M of rank 12: a box held on two diagonal corners) while the answer is
-/// right to 1e-11…1e-9; 1 world × 6,000 steps of that stack enumerated
-/// 2^16 bases on 459 steps (~70 ms each) without this, on 2 with it (test
-/// `a_resting_stack_is_seldom_enumerated`).
-fn within_tolerance(l: &LcpSolution, tolerance: f64) -> bool {
-    l.z.iter().chain(&l.w).all(|v| v.is_finite()) && l.residuals.error <= tolerance
+    let p = *pivots;
+    checked_basis(lcp, mask, p, &e)
+        .or_else(|| checked_basis(lcp, support(&l.z, 0.0), p, &e))
+        .or_else(|| checked_basis(lcp, support(&l.z, SUPPORT_DROP), p, &e))
+        // Lemke's own answer where the door's final check passes it (z, w
+        // finite, the error recomputed from M and q in f64 within the
+        // tolerance). On a degenerate island every basis through it can be
+        // singular or ill-conditioned to the basis check (a resting 4-box
+        // stack, 16 contacts, M of rank 12: a box held on two diagonal
+        // corners) while the answer is right to 1e-11…1e-9; 1 world × 6,000
+        // steps of that stack enumerated 2^16 bases (~70 ms each) on 459
+        // steps without this, on 2 with it (`a_resting_stack_is_seldom_enumerated`).
+        .or_else(|| l.passes_check(s.tolerance).then_some(l))
 }
 
 /// Impulses at or below this fraction of the largest are left out of the

@@ -345,16 +345,16 @@ impl Solver {
 
     fn solve_lcps_warm(&mut self, lcps: &[Lcp], keys: Option<&[&[u64]]>) -> Result<Report, Error> {
         let start = Instant::now();
-        for (i, lcp) in lcps.iter().enumerate() {
-            // The item's name is formatted only for the error.
-            if lcp.validate("problem").is_err() {
-                lcp.validate(&format!("problem {i}"))?;
-            }
-        }
-        let warm = self.warm_bases(keys);
         let mut report = None;
         let (use_gpu, why) = self.gpu_for(lcps.iter().map(Lcp::n));
         if let Some(ctx) = self.gpu.clone().filter(|_| use_gpu) {
+            for (i, lcp) in lcps.iter().enumerate() {
+                // The item's name is formatted only for the error.
+                if lcp.validate("problem").is_err() {
+                    lcp.validate(&format!("problem {i}"))?;
+                }
+            }
+            let warm = self.warm_bases(keys);
             let on_gpu = if self.settings.all_solutions {
                 self.all_solutions_lcps_on_gpu(&ctx, lcps)
             } else {
@@ -366,9 +366,11 @@ impl Solver {
                 Err(e) => return Err(e),
             }
         }
+        // The CPU path checks each problem and looks up its warm basis on
+        // the threads that solve it.
         let mut report = match report {
             Some(r) => r,
-            None => self.lcps_on_cpu(lcps, warm.as_deref())?,
+            None => self.lcps_on_cpu(lcps, keys)?,
         };
         if self.cost.is_some() {
             report.choice = why;
@@ -482,12 +484,7 @@ impl Solver {
     /// `settings.tolerance`, becomes `numerical_failure`.
     pub(super) fn check(&self, islands: &mut [IslandReport]) {
         for isl in islands {
-            let s = &mut isl.solution;
-            let finite =
-                s.z.iter().chain(&s.w).all(|v| v.is_finite()) && s.residuals.error.is_finite();
-            if s.status.is_solution() && !(finite && s.residuals.error <= self.settings.tolerance) {
-                s.status = crate::Status::NumericalFailure;
-            }
+            check_solution(&mut isl.solution, self.settings.tolerance);
         }
     }
 
@@ -497,10 +494,7 @@ impl Solver {
     }
 
     fn warm_basis(&self, ids: &[u64]) -> Option<u32> {
-        if !self.settings.warm_start || ids.is_empty() {
-            return None;
-        }
-        self.warm.basis(ids)
+        warm_basis(&self.settings, &self.warm, ids)
     }
 
     /// Records each island's basis under its contact ids.
@@ -508,14 +502,30 @@ impl Solver {
         if !self.settings.warm_start {
             return;
         }
-        for (ids, isl) in islands {
-            if let (Some(basis), false) = (isl.solution.basis, ids.is_empty()) {
-                if isl.solution.status.is_solution() {
-                    self.warm.record(ids, basis);
-                }
-            }
-        }
+        let records: Vec<(&[u64], u32)> = islands
+            .filter(|(ids, isl)| !ids.is_empty() && isl.solution.status.is_solution())
+            .filter_map(|(ids, isl)| Some((ids, isl.solution.basis?)))
+            .collect();
+        self.warm.record_all(&records, self.threads);
     }
+}
+
+/// The check of [`Solver::check`] on one answer: a solution whose z, w or
+/// error is not finite, or whose error is above `tolerance`, becomes
+/// `numerical_failure`.
+pub(super) fn check_solution(s: &mut crate::LcpSolution, tolerance: f64) {
+    if s.status.is_solution() && !s.passes_check(tolerance) {
+        s.status = crate::Status::NumericalFailure;
+    }
+}
+
+/// The warm basis remembered for an island's contact ids (None without
+/// `settings.warm_start` or without ids).
+pub(super) fn warm_basis(settings: &Settings, memory: &WarmStart, ids: &[u64]) -> Option<u32> {
+    if !settings.warm_start || ids.is_empty() {
+        return None;
+    }
+    memory.basis(ids)
 }
 
 /// The caller's ids of an island's contacts; empty when one has none (such
@@ -642,8 +652,23 @@ mod tests {
             q: vec![1.0, -1.0],
         };
         let good = Lcp::new(vec![1.0], vec![-1.0]).unwrap();
-        let e = cpu(Method::Lemke).solve_lcps(&[good, bad]).unwrap_err();
+        let e = cpu(Method::Lemke)
+            .solve_lcps(&[good.clone(), bad.clone()])
+            .unwrap_err();
         assert!(e.to_string().contains("problem 1"), "{e}");
+        // Checks come before the size limit, whatever the order in the batch.
+        let big = Lcp::new(vec![0.0; 21 * 21], vec![1.0; 21]).unwrap();
+        let e = cpu(Method::Enumeration)
+            .solve_lcps(&[big.clone(), bad])
+            .unwrap_err();
+        assert!(e.to_string().contains("problem 1: field `M[0][1]`"), "{e}");
+        let e = cpu(Method::Enumeration)
+            .solve_lcps(&[good, big])
+            .unwrap_err();
+        assert!(
+            e.to_string().contains("problem 1: enumeration visits"),
+            "{e}"
+        );
         let scene = crate::Scene {
             bodies: vec![Body::new(1.0, [1.0; 3], [0.0; 3])],
             contacts: vec![Contact::new(3, None, [0.0; 3], [0.0, 1.0, 0.0], 0.5)],

@@ -98,9 +98,7 @@ pub(super) fn repair_settings(s: &Settings) -> Settings {
 /// A solution the step may apply: a solution status, finite, within the
 /// tolerance (the door's final check).
 fn usable(s: &LcpSolution, tolerance: f64) -> bool {
-    s.status.is_solution()
-        && s.z.iter().chain(&s.w).all(|v| v.is_finite())
-        && s.residuals.error <= tolerance
+    s.status.is_solution() && s.passes_check(tolerance)
 }
 
 /// The normal impulses of an unsolved island with frictionless LCP `lcp`
