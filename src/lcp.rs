@@ -13,6 +13,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::short_vec::ShortVec;
+
 /// One LCP(q, M) of dimension n, M dense and row-major.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Lcp {
@@ -98,15 +100,15 @@ impl Lcp {
         Ok(())
     }
 
-    /// w = M z + q.
-    pub fn w(&self, z: &[f64]) -> Vec<f64> {
+    /// w = M z + q (inline up to [`crate::SHORT_INLINE`] rows: nothing allocated).
+    pub fn w(&self, z: &[f64]) -> ShortVec<f64> {
         let n = self.n();
-        (0..n)
-            .map(|i| {
-                let row = &self.m[i * n..(i + 1) * n];
-                self.q[i] + row.iter().zip(z).map(|(a, b)| a * b).sum::<f64>()
-            })
-            .collect()
+        let mut w = ShortVec::from_elem(0.0, n);
+        for (i, wi) in w.as_mut_slice().iter_mut().enumerate() {
+            let row = &self.m[i * n..(i + 1) * n];
+            *wi = self.q[i] + row.iter().zip(z).map(|(a, b)| a * b).sum::<f64>();
+        }
+        w
     }
 
     /// Residuals of a candidate z (w recomputed here).
@@ -300,10 +302,11 @@ pub struct LcpSolution {
     /// What the solve found.
     pub status: Status,
     /// The impulses (or the last iterate when the status is not a solution;
-    /// zeros when nothing was found).
-    pub z: Vec<f64>,
+    /// zeros when nothing was found). Inline up to [`crate::SHORT_INLINE`]
+    /// entries: a batch of small problems allocates nothing per answer.
+    pub z: ShortVec<f64>,
     /// w = M z + q for the z above.
-    pub w: Vec<f64>,
+    pub w: ShortVec<f64>,
     /// The error measure and the sign and complementarity residuals of (z, w).
     pub residuals: Residuals,
     /// The work the solver did.
@@ -321,7 +324,13 @@ pub struct LcpSolution {
 
 impl LcpSolution {
     /// A result with the given status and z, w and residuals computed from `lcp`.
-    pub fn from_z(lcp: &Lcp, status: Status, z: Vec<f64>, counters: Counters) -> Self {
+    pub fn from_z(
+        lcp: &Lcp,
+        status: Status,
+        z: impl Into<ShortVec<f64>>,
+        counters: Counters,
+    ) -> Self {
+        let z = z.into();
         let w = lcp.w(&z);
         let residuals = Residuals::of(&z, &w, &lcp.q);
         LcpSolution {
@@ -349,8 +358,8 @@ impl LcpSolution {
     pub(crate) fn invalid(n: usize) -> Self {
         LcpSolution {
             status: Status::InvalidInput,
-            z: vec![0.0; n],
-            w: vec![0.0; n],
+            z: ShortVec::from_elem(0.0, n),
+            w: ShortVec::from_elem(0.0, n),
             residuals: Residuals::default(),
             counters: Counters::default(),
             basis: None,

@@ -57,6 +57,7 @@ pub(crate) mod prediction;
 pub mod report;
 pub mod scene;
 pub mod settings;
+pub mod short_vec;
 pub mod solver;
 pub(crate) mod solvers;
 pub(crate) mod validation;
@@ -76,6 +77,7 @@ pub use report::{
 };
 pub use scene::{Body, Contact, Scene};
 pub use settings::{Backend, GpuSettings, Method, Settings};
+pub use short_vec::{ShortVec, SHORT_INLINE};
 pub use solver::world_path::{StepReport, StepTimings, WorldStepReport};
 pub use solver::Repairs;
 pub use solver::{CostModel, Solver};

@@ -16,6 +16,7 @@ use crate::friction::{FrictionMethod, FrictionSolution};
 use crate::gpu::Precision;
 use crate::lcp::{LcpSolution, Status};
 use crate::settings::Method;
+use crate::short_vec::ShortVec;
 
 /// How an island was settled.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
@@ -86,8 +87,10 @@ pub struct IslandReport {
     /// The scene it belongs to (None for an LCP batch).
     pub scene: Option<usize>,
     /// The scene's contact indices in the order of the LCP's rows (for an
-    /// LCP batch: 0..n).
-    pub contacts: Vec<usize>,
+    /// LCP batch: 0..n). Inline up to [`crate::SHORT_INLINE`] contacts, as
+    /// the solution's z and w: a batch of small islands allocates nothing
+    /// per island.
+    pub contacts: ShortVec<usize>,
     /// The algorithm whose answer this is (enumeration hands islands beyond
     /// its size limit to Lemke).
     pub method: Method,

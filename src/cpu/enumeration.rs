@@ -32,6 +32,7 @@
 
 use crate::lcp::{BasisSolution, Counters, Lcp, LcpSolution, Residuals, SolutionSet, Status};
 use crate::linalg::{null_space, solve_in_place, PIVOT_TOL};
+use crate::short_vec::ShortVec;
 
 /// Largest n the CPU enumerates (2²⁰ bases).
 pub const MAX_ENUMERATION_N: usize = 20;
@@ -103,8 +104,8 @@ pub enum BasisOutcome {
     /// to (0 when feasible outright; any value above the relaxed tolerance
     /// stands for "more than that").
     Solved {
-        z: Vec<f64>,
-        w: Vec<f64>,
+        z: ShortVec<f64>,
+        w: ShortVec<f64>,
         feasible: bool,
         infeasibility: f64,
     },
@@ -303,10 +304,18 @@ fn feasible_z(
     mask: u32,
     settings: &EnumerationSettings,
     keep: impl FnOnce() -> bool,
-) -> Option<Vec<f64>> {
+) -> Option<ShortVec<f64>> {
     let infeasibility = s.solve(lcp, mask, settings)?;
-    (infeasibility <= settings.feasibility_tol && keep())
-        .then(|| s.z[..lcp.n()].iter().map(|v| v.max(0.0)).collect())
+    (infeasibility <= settings.feasibility_tol && keep()).then(|| clamped_z(s, lcp.n()))
+}
+
+/// The scratch's z of the last solve, negative entries clamped to 0.
+fn clamped_z(s: &Scratch, n: usize) -> ShortVec<f64> {
+    let mut z = ShortVec::from(&s.z[..n]);
+    for v in z.iter_mut() {
+        *v = v.max(0.0);
+    }
+    z
 }
 
 /// [`solve_basis`] with the caller's scratch.
@@ -321,7 +330,7 @@ fn basis_outcome(
         None => BasisOutcome::Singular,
         Some(infeasibility) => {
             let feasible = infeasibility <= settings.feasibility_tol;
-            let z: Vec<f64> = s.z[..n].iter().map(|v| v.max(0.0)).collect();
+            let z = clamped_z(s, n);
             let w = lcp.w(&z);
             BasisOutcome::Solved {
                 z,
@@ -445,9 +454,13 @@ fn decide(
             least = Some((infeasibility, mask));
         }
         if settings.all_solutions {
-            let z: Vec<f64> = scratch.z[..n].iter().map(|v| v.max(0.0)).collect();
+            let z = clamped_z(&scratch, n);
             let w = lcp.w(&z);
-            all.push(BasisSolution { basis: mask, z, w });
+            all.push(BasisSolution {
+                basis: mask,
+                z: z.into_vec(),
+                w: w.into_vec(),
+            });
         }
         true
     });

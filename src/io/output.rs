@@ -55,8 +55,8 @@ impl LcpOutput {
         let n = sol.z.len();
         LcpOutput {
             status: sol.status.name().to_string(),
-            z: sol.z.clone(),
-            w: sol.w.clone(),
+            z: sol.z.to_vec(),
+            w: sol.w.to_vec(),
             error: sol.residuals.error,
             min_z: sol.residuals.min_z,
             min_w: sol.residuals.min_w,
@@ -161,7 +161,7 @@ impl ScenesOutput {
                     islands: report.islands[sc.islands.clone()]
                         .iter()
                         .map(|r| IslandOutput {
-                            contacts: r.contacts.clone(),
+                            contacts: r.contacts.to_vec(),
                             status: r.solution.status.name().to_string(),
                             error: r.solution.residuals.error,
                             solver: r.method.name().to_string(),

@@ -14,6 +14,7 @@ use crate::prediction::{self, predict_solution};
 use crate::report::{IslandReport, Report, SceneReport, SolvePath};
 use crate::scene::Scene;
 use crate::settings::{Backend, Method, Settings};
+use crate::short_vec::ShortVec;
 use crate::solvers::lemke::{lemke, lemke_textbook_basis};
 use crate::solvers::pgs::pgs;
 use crate::Error;
@@ -49,7 +50,7 @@ impl Solver {
                 invalid.store(true, Ordering::Relaxed);
                 return IslandReport {
                     scene: None,
-                    contacts: Vec::new(),
+                    contacts: ShortVec::new(),
                     method: settings.method,
                     path: SolvePath::Invalid,
                     solution: LcpSolution::invalid(0),
@@ -148,7 +149,7 @@ impl Solver {
                 }
                 islands.push(IslandReport {
                     scene: Some(s),
-                    contacts: island.contacts,
+                    contacts: island.contacts.into(),
                     method,
                     path,
                     solution,

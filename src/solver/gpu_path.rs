@@ -64,7 +64,7 @@ impl Solver {
             for (k, isl) in sol.islands.into_iter().enumerate() {
                 islands.push(IslandReport {
                     scene: Some(s),
-                    contacts: isl.contacts,
+                    contacts: isl.contacts.into(),
                     method: match isl.solver {
                         crate::solvers::Solver::Lemke => Method::Lemke,
                         _ => Method::Enumeration,

@@ -145,7 +145,7 @@ impl Solver {
                     .unwrap_or_else(|| solve_on_cpu(lcp, None, &self.settings));
                 IslandReport {
                     scene: Some(index),
-                    contacts: isl.contacts,
+                    contacts: isl.contacts.into(),
                     method,
                     path,
                     solution,
@@ -159,12 +159,12 @@ impl Solver {
         for (isl, lcp) in reports.iter().zip(&lcps) {
             let repaired;
             let z = if isl.status().is_solution() {
-                &isl.solution.z
+                &isl.solution.z[..]
             } else {
                 let (r, z) = repair_island(lcp, fix);
                 repairs.add(r);
                 repaired = z;
-                &repaired
+                &repaired[..]
             };
             for (&c, &zi) in isl.contacts.iter().zip(z) {
                 impulses[c] = zi;

@@ -106,12 +106,12 @@ fn usable(s: &LcpSolution, tolerance: f64) -> bool {
 pub(super) fn repair_island(lcp: &Lcp, settings: &Settings) -> (Repair, Vec<f64>) {
     let (_, _, exact) = solve_on_cpu(lcp, None, settings);
     if usable(&exact, settings.tolerance) {
-        return (Repair::Exact, exact.z);
+        return (Repair::Exact, exact.z.into_vec());
     }
     let approx = pgs(lcp, &settings.pgs());
     let swept = matches!(approx.status, Status::Solved | Status::NotConverged);
     if swept && approx.z.iter().all(|z| z.is_finite() && *z >= 0.0) {
-        return (Repair::Approximate, approx.z);
+        return (Repair::Approximate, approx.z.into_vec());
     }
     (Repair::Dropped, vec![0.0; lcp.n()])
 }

@@ -327,7 +327,7 @@ fn basis_solution(
         }
     }
     if status != Status::Solved {
-        return LcpSolution::from_z(lcp, status, ws.z_tableau.clone(), counters);
+        return LcpSolution::from_z(lcp, status, ws.z_tableau.as_slice(), counters);
     }
     ws.support.sort_unstable();
     // w of each candidate z comes out of its row residual; the winner's
@@ -343,8 +343,8 @@ fn basis_solution(
     let mut sol = LcpSolution {
         status,
         residuals: Residuals::of(z, w, &lcp.q),
-        z: z.clone(),
-        w: w.clone(),
+        z: z.as_slice().into(),
+        w: w.as_slice().into(),
         counters,
         basis: None,
         all_bases: Vec::new(),

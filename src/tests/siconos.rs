@@ -52,7 +52,7 @@ impl Problem {
                         let w = if s["w"].is_array() {
                             numbers(&s["w"])
                         } else {
-                            self.lcp.w(&z)
+                            self.lcp.w(&z).into_vec()
                         };
                         (z, w)
                     })
