@@ -102,13 +102,18 @@ impl Lcp {
 
     /// w = M z + q (inline up to [`crate::SHORT_INLINE`] rows: nothing allocated).
     pub fn w(&self, z: &[f64]) -> ShortVec<f64> {
+        let mut w = ShortVec::from_elem(0.0, self.n());
+        self.w_into(z, &mut w);
+        w
+    }
+
+    /// w = M z + q written into `w` (n entries), where the caller holds it.
+    pub(crate) fn w_into(&self, z: &[f64], w: &mut [f64]) {
         let n = self.n();
-        let mut w = ShortVec::from_elem(0.0, n);
-        for (i, wi) in w.as_mut_slice().iter_mut().enumerate() {
+        for (i, wi) in w[..n].iter_mut().enumerate() {
             let row = &self.m[i * n..(i + 1) * n];
             *wi = self.q[i] + row.iter().zip(z).map(|(a, b)| a * b).sum::<f64>();
         }
-        w
     }
 
     /// Residuals of a candidate z (w recomputed here).

@@ -28,9 +28,7 @@ use std::hash::{BuildHasher, Hasher, RandomState};
 
 use serde::Serialize;
 
-use crate::cpu::enumeration::{
-    feasible_basis, feasible_basis_if, EnumerationSettings, MAX_ENUMERATION_N,
-};
+use crate::cpu::enumeration::{feasible_basis_into, EnumerationSettings, MAX_ENUMERATION_N};
 use crate::lcp::{Counters, Lcp, LcpSolution, Status};
 
 /// How an island was settled; every batch reports a count of each.
@@ -225,7 +223,21 @@ pub fn predict_solution(
     settings: &EnumerationSettings,
     path: &mut SolvePath,
 ) -> Option<LcpSolution> {
-    steps(lcp, warm_basis, settings, path, None)
+    let mut out = LcpSolution::invalid(0);
+    steps(lcp, warm_basis, settings, path, None, &mut out).then_some(out)
+}
+
+/// [`predict_solution`] written into `out` (true), where the CPU path's
+/// report holds it (see [`feasible_basis_into`]); false, `out` untouched,
+/// when the island needs more than prediction.
+pub(crate) fn predict_into(
+    lcp: &Lcp,
+    warm_basis: Option<u32>,
+    settings: &EnumerationSettings,
+    path: &mut SolvePath,
+    out: &mut LcpSolution,
+) -> bool {
+    steps(lcp, warm_basis, settings, path, None, out)
 }
 
 /// An island prediction could not settle, and what it learnt of M on the
@@ -244,26 +256,36 @@ pub fn prediction(
 ) -> Result<(SolvePath, LcpSolution), Unsettled> {
     let mut path = SolvePath::Separating;
     let mut definite = None;
-    match steps(lcp, warm_basis, settings, &mut path, Some(&mut definite)) {
-        Some(solution) => Ok((path, solution)),
-        None => Err(Unsettled { definite }),
+    let mut solution = LcpSolution::invalid(0);
+    match steps(
+        lcp,
+        warm_basis,
+        settings,
+        &mut path,
+        Some(&mut definite),
+        &mut solution,
+    ) {
+        true => Ok((path, solution)),
+        false => Err(Unsettled { definite }),
     }
 }
 
-/// The steps of [`prediction`]: the solution, and in `path` the step that
-/// gave it. With `learn`, M's definiteness is tested on every island that
-/// reaches step 4 and written there; without, only where the predicted
-/// basis is feasible.
+/// The steps of [`prediction`]: whether one settled the island, its
+/// solution written into `out` and in `path` the step that gave it (`out`
+/// untouched when none did). With `learn`, M's definiteness is tested on
+/// every island that reaches step 4 and written there; without, only
+/// where the predicted basis is feasible.
 fn steps(
     lcp: &Lcp,
     warm_basis: Option<u32>,
     settings: &EnumerationSettings,
     path: &mut SolvePath,
     learn: Option<&mut Option<bool>>,
-) -> Option<LcpSolution> {
+    out: &mut LcpSolution,
+) -> bool {
     let n = lcp.n();
     if n > MAX_ENUMERATION_N {
-        return None;
+        return false;
     }
     let counters = |bases: u64| Counters {
         bases_visited: bases,
@@ -272,23 +294,21 @@ fn steps(
     // 1. Separating: the empty basis, feasible iff q ≥ 0.
     if lcp.q.iter().all(|&v| v >= 0.0) {
         *path = SolvePath::Separating;
-        return feasible_basis(lcp, 0, settings, counters(1));
+        return feasible_basis_into(lcp, 0, settings, counters(1), || true, out);
     }
     // 2. One approaching contact: z = −q/M when M > 0, else no solution.
     if n == 1 {
         *path = SolvePath::SingleContact;
-        return feasible_basis(lcp, 1, settings, counters(2)).or_else(|| {
-            let mut sol = LcpSolution::from_z(lcp, Status::NoSolution, vec![0.0], counters(2));
-            sol.basis = None;
-            Some(sol)
-        });
+        if !feasible_basis_into(lcp, 1, settings, counters(2), || true, out) {
+            *out = LcpSolution::from_z(lcp, Status::NoSolution, [0.0], counters(2));
+        }
+        return true;
     }
     // 3. Last frame's basis.
     if let Some(mask) = warm_basis.filter(|&m| m >> n == 0) {
-        let found = feasible_basis(lcp, mask, settings, counters(1));
-        if found.is_some() {
+        if feasible_basis_into(lcp, mask, settings, counters(1), || true, out) {
             *path = SolvePath::WarmStart;
-            return found;
+            return true;
         }
     }
     // 4. The approaching contacts, when the solution is unique.
@@ -297,15 +317,18 @@ fn steps(
         .fold(0u32, |m, i| m | 1 << i);
     *path = SolvePath::PredictedBasis;
     let Some(definite) = learn else {
-        return feasible_basis_if(lcp, approaching, settings, counters(1), || {
-            is_positive_definite(lcp)
-        });
+        return feasible_basis_into(
+            lcp,
+            approaching,
+            settings,
+            counters(1),
+            || is_positive_definite(lcp),
+            out,
+        );
     };
     *definite = Some(is_positive_definite(lcp));
-    if *definite == Some(true) {
-        return feasible_basis(lcp, approaching, settings, counters(1));
-    }
-    None
+    *definite == Some(true)
+        && feasible_basis_into(lcp, approaching, settings, counters(1), || true, out)
 }
 
 #[cfg(test)]

@@ -37,89 +37,126 @@ pub const SHORT_INLINE: usize = 8;
 /// ```
 #[derive(Clone)]
 pub struct ShortVec<T: Copy + Default> {
-    repr: Repr<T>,
-}
-
-/// Inline while it fits, else a `Vec`.
-#[derive(Clone)]
-enum Repr<T> {
-    Inline { len: u8, items: [T; SHORT_INLINE] },
-    Heap(Vec<T>),
+    /// Entries held: `items[..len]` while len ≤ [`SHORT_INLINE`], else all
+    /// of `heap`.
+    len: usize,
+    /// The entries while they fit.
+    items: [T; SHORT_INLINE],
+    /// The entries once they do not (empty, unallocated, before).
+    // A plain struct, not an enum of the two: every field stays aligned,
+    // so that building one and moving it into a report costs whole-word
+    // copies (an enum packed its length next to the tag, and the moves'
+    // wide loads stalled on the narrow stores before them).
+    heap: Vec<T>,
 }
 
 impl<T: Copy + Default> ShortVec<T> {
     /// An empty vector (nothing allocated).
     pub fn new() -> Self {
         ShortVec {
-            repr: Repr::Inline {
-                len: 0,
-                items: [T::default(); SHORT_INLINE],
-            },
+            len: 0,
+            items: [T::default(); SHORT_INLINE],
+            heap: Vec::new(),
         }
     }
 
     /// `n` copies of `value` (allocates only for n > [`SHORT_INLINE`]).
     pub fn from_elem(value: T, n: usize) -> Self {
-        if n > SHORT_INLINE {
-            return ShortVec {
-                repr: Repr::Heap(vec![value; n]),
-            };
-        }
         ShortVec {
-            repr: Repr::Inline {
-                len: n as u8,
-                items: [value; SHORT_INLINE],
+            len: n,
+            items: [value; SHORT_INLINE],
+            heap: if n > SHORT_INLINE {
+                vec![value; n]
+            } else {
+                Vec::new()
             },
         }
+    }
+
+    /// Makes it `n` copies of `value` in place, keeping any heap block
+    /// (allocates only for n > [`SHORT_INLINE`] and a block too small).
+    pub fn reset(&mut self, value: T, n: usize) {
+        self.heap.clear();
+        if n > SHORT_INLINE {
+            self.heap.resize(n, value);
+        } else {
+            self.items = [value; SHORT_INLINE];
+        }
+        self.len = n;
     }
 
     /// The entries as a slice.
     #[inline]
     pub fn as_slice(&self) -> &[T] {
-        match &self.repr {
-            Repr::Inline { len, items } => &items[..usize::from(*len)],
-            Repr::Heap(v) => v,
+        if self.len <= SHORT_INLINE {
+            &self.items[..self.len]
+        } else {
+            &self.heap
         }
     }
 
     /// The entries as a mutable slice.
     #[inline]
     pub fn as_mut_slice(&mut self) -> &mut [T] {
-        match &mut self.repr {
-            Repr::Inline { len, items } => &mut items[..usize::from(*len)],
-            Repr::Heap(v) => v,
+        if self.len <= SHORT_INLINE {
+            &mut self.items[..self.len]
+        } else {
+            &mut self.heap
         }
     }
 
     /// Appends `value`, moving the entries to the heap when the inline
     /// space is full.
     pub fn push(&mut self, value: T) {
-        match &mut self.repr {
-            Repr::Inline { len, items } if usize::from(*len) < SHORT_INLINE => {
-                items[usize::from(*len)] = value;
-                *len += 1;
+        if self.len < SHORT_INLINE {
+            self.items[self.len] = value;
+        } else {
+            if self.len == SHORT_INLINE {
+                self.heap.reserve(2 * SHORT_INLINE);
+                self.heap.extend_from_slice(&self.items);
             }
-            Repr::Inline { items, .. } => {
-                let mut v = Vec::with_capacity(2 * SHORT_INLINE);
-                v.extend_from_slice(items);
-                v.push(value);
-                self.repr = Repr::Heap(v);
-            }
-            Repr::Heap(v) => v.push(value),
+            self.heap.push(value);
         }
+        self.len += 1;
     }
 
     /// The entries as a `Vec` (reusing the heap block when there is one).
     pub fn into_vec(self) -> Vec<T> {
-        match self.repr {
-            Repr::Inline { len, items } => items[..usize::from(len)].to_vec(),
-            Repr::Heap(v) => v,
+        if self.len <= SHORT_INLINE {
+            self.items[..self.len].to_vec()
+        } else {
+            self.heap
         }
     }
 
     /// Whether the entries live on the heap (more than [`SHORT_INLINE`]).
     pub fn spilled(&self) -> bool {
-        matches!(self.repr, Repr::Heap(_))
+        self.len > SHORT_INLINE
+    }
+}
+
+impl ShortVec<usize> {
+    /// 0, 1, …, n − 1: an LCP batch's contact list, copied whole from a
+    /// constant while it fits (no per-entry stores for the report's move
+    /// of it to stall on).
+    pub(crate) fn indices(n: usize) -> Self {
+        const FIRST: [usize; SHORT_INLINE] = {
+            let mut a = [0; SHORT_INLINE];
+            let mut i = 0;
+            while i < SHORT_INLINE {
+                a[i] = i;
+                i += 1;
+            }
+            a
+        };
+        if n > SHORT_INLINE {
+            return (0..n).collect();
+        }
+        ShortVec {
+            len: n,
+            items: FIRST,
+            heap: Vec::new(),
+        }
     }
 }
 
@@ -159,17 +196,14 @@ impl<T: Copy + Default> std::borrow::Borrow<[T]> for ShortVec<T> {
 impl<T: Copy + Default> From<&[T]> for ShortVec<T> {
     fn from(s: &[T]) -> Self {
         if s.len() > SHORT_INLINE {
-            return ShortVec {
-                repr: Repr::Heap(s.to_vec()),
-            };
+            return ShortVec::from(s.to_vec());
         }
         let mut items = [T::default(); SHORT_INLINE];
         items[..s.len()].copy_from_slice(s);
         ShortVec {
-            repr: Repr::Inline {
-                len: s.len() as u8,
-                items,
-            },
+            len: s.len(),
+            items,
+            heap: Vec::new(),
         }
     }
 }
@@ -184,12 +218,14 @@ impl<T: Copy + Default> From<Vec<T>> for ShortVec<T> {
     /// Short vectors are copied inline (and the block freed); longer ones
     /// keep their heap block.
     fn from(v: Vec<T>) -> Self {
-        if v.len() > SHORT_INLINE {
-            return ShortVec {
-                repr: Repr::Heap(v),
-            };
+        if v.len() <= SHORT_INLINE {
+            return ShortVec::from(v.as_slice());
         }
-        ShortVec::from(v.as_slice())
+        ShortVec {
+            len: v.len(),
+            items: [T::default(); SHORT_INLINE],
+            heap: v,
+        }
     }
 }
 
@@ -200,8 +236,18 @@ impl<T: Copy + Default> From<ShortVec<T>> for Vec<T> {
 }
 
 impl<T: Copy + Default> FromIterator<T> for ShortVec<T> {
+    /// Fills the inline space first with no per-entry check of where the
+    /// entries live (`(0..n).collect()` builds every island's contact list).
     fn from_iter<I: IntoIterator<Item = T>>(iter: I) -> Self {
+        let mut iter = iter.into_iter();
         let mut v = ShortVec::new();
+        for slot in v.items.iter_mut() {
+            match iter.next() {
+                Some(x) => *slot = x,
+                None => return v,
+            }
+            v.len += 1;
+        }
         v.extend(iter);
         v
     }

@@ -112,7 +112,7 @@ pub enum BasisOutcome {
 }
 
 thread_local! {
-    /// One scratch per thread for [`solve_basis`] and [`feasible_basis`]:
+    /// One scratch per thread for [`solve_basis`] and [`feasible_basis_into`]:
     /// zeroing its 3.7 KB per call costs as much as the solve itself for
     /// n ≤ 8.
     static SCRATCH: std::cell::RefCell<Scratch> = std::cell::RefCell::new(Scratch::new());
@@ -250,72 +250,82 @@ pub fn solve_basis(lcp: &Lcp, mask: u32, settings: &EnumerationSettings) -> Basi
 }
 
 /// Basis `mask` re-solved as [`solve_basis`] does, and when it is feasible
-/// (to the strict tolerance) the solution it gives: status `Solved`, z, w
-/// (the same values [`solve_basis`] returns), their residuals, the basis and
-/// `counters`. None when M_SS is singular or the basis is infeasible; then
-/// nothing is allocated. The skips of the default path (prediction, Lemke's
-/// checked basis) settle an island through this.
-pub fn feasible_basis(
-    lcp: &Lcp,
-    mask: u32,
-    settings: &EnumerationSettings,
-    counters: Counters,
-) -> Option<LcpSolution> {
-    feasible_basis_if(lcp, mask, settings, counters, || true)
-}
-
-/// [`feasible_basis`] where a feasible basis is kept only if `keep()` says
-/// so too (asked only of a feasible basis: prediction tests M's
-/// definiteness only where the predicted basis is feasible).
-pub fn feasible_basis_if(
+/// (to the strict tolerance) and `keep()` says so too (asked only of a
+/// feasible basis: prediction tests M's definiteness only there), the
+/// solution it gives written into `out` (true): status `Solved`, z, w (the
+/// same values [`solve_basis`] returns), their residuals, the basis and
+/// `counters`. False, `out` untouched, when M_SS is singular, the basis
+/// infeasible or not kept. The skips of the default path (prediction,
+/// Lemke's checked basis) settle an island through this.
+///
+/// The answer is written where the caller keeps it (the default CPU path:
+/// in the batch's report) and nothing is allocated for n ≤
+/// [`crate::SHORT_INLINE`]: returning it by value instead moved a
+/// just-written solution (z and w stored entry by entry, then copied with
+/// wide loads) at each of the six calls it went up through, and each move
+/// stalled on store forwarding, costing more than the arithmetic here.
+pub(crate) fn feasible_basis_into(
     lcp: &Lcp,
     mask: u32,
     settings: &EnumerationSettings,
     counters: Counters,
     keep: impl FnOnce() -> bool,
-) -> Option<LcpSolution> {
+    out: &mut LcpSolution,
+) -> bool {
     let n = lcp.n();
     assert!(
         n <= MAX_ENUMERATION_N,
         "feasible_basis: n = {n} > {MAX_ENUMERATION_N}"
     );
-    let z = SCRATCH.with(|s| match s.try_borrow_mut() {
-        Ok(mut s) => feasible_z(&mut s, lcp, mask, settings, keep),
-        Err(_) => feasible_z(&mut Scratch::new(), lcp, mask, settings, keep),
-    })?;
-    let w = lcp.w(&z);
-    Some(LcpSolution {
-        status: Status::Solved,
-        residuals: Residuals::of(&z, &w, &lcp.q),
-        z,
-        w,
-        counters,
-        basis: Some(mask),
-        all_bases: Vec::new(),
-        solution_set: None,
+    SCRATCH.with(|s| match s.try_borrow_mut() {
+        Ok(mut s) => feasible_solution(&mut s, lcp, mask, settings, counters, keep, out),
+        Err(_) => feasible_solution(
+            &mut Scratch::new(),
+            lcp,
+            mask,
+            settings,
+            counters,
+            keep,
+            out,
+        ),
     })
 }
 
-/// z of basis `mask` (negative entries clamped to 0) when it is feasible
-/// to the strict tolerance and `keep()`.
-fn feasible_z(
+/// [`feasible_basis_into`] with the caller's scratch.
+fn feasible_solution(
     s: &mut Scratch,
     lcp: &Lcp,
     mask: u32,
     settings: &EnumerationSettings,
+    counters: Counters,
     keep: impl FnOnce() -> bool,
-) -> Option<ShortVec<f64>> {
-    let infeasibility = s.solve(lcp, mask, settings)?;
-    (infeasibility <= settings.feasibility_tol && keep()).then(|| clamped_z(s, lcp.n()))
+    out: &mut LcpSolution,
+) -> bool {
+    let Some(infeasibility) = s.solve(lcp, mask, settings) else {
+        return false;
+    };
+    if !(infeasibility <= settings.feasibility_tol && keep()) {
+        return false;
+    }
+    let n = lcp.n();
+    out.z.reset(0.0, n);
+    for (zi, &v) in out.z.iter_mut().zip(&s.z[..n]) {
+        *zi = v.max(0.0);
+    }
+    out.w.reset(0.0, n);
+    lcp.w_into(&out.z, &mut out.w);
+    out.status = Status::Solved;
+    out.residuals = Residuals::of(&out.z, &out.w, &lcp.q);
+    out.counters = counters;
+    out.basis = Some(mask);
+    out.all_bases.clear();
+    out.solution_set = None;
+    true
 }
 
 /// The scratch's z of the last solve, negative entries clamped to 0.
 fn clamped_z(s: &Scratch, n: usize) -> ShortVec<f64> {
-    let mut z = ShortVec::from(&s.z[..n]);
-    for v in z.iter_mut() {
-        *v = v.max(0.0);
-    }
-    z
+    s.z[..n].iter().map(|v| v.max(0.0)).collect()
 }
 
 /// [`solve_basis`] with the caller's scratch.

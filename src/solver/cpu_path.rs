@@ -5,12 +5,12 @@ use std::time::Instant;
 
 use super::{check_solution, warm_basis, Solver};
 use crate::cpu::assembly::{assemble_contacts, assemble_island};
-use crate::cpu::batch::parallel_map;
-use crate::cpu::enumeration::{enumerate, feasible_basis, MAX_ENUMERATION_N};
+use crate::cpu::batch::{parallel_fill, parallel_map};
+use crate::cpu::enumeration::{enumerate, feasible_basis_into, MAX_ENUMERATION_N};
 use crate::cpu::impulses::apply_impulses;
 use crate::islands::find_islands;
 use crate::lcp::{Lcp, LcpSolution, Status};
-use crate::prediction::{self, predict_solution};
+use crate::prediction::{self, predict_into};
 use crate::report::{IslandReport, Report, SceneReport, SolvePath};
 use crate::scene::Scene;
 use crate::settings::{Backend, Method, Settings};
@@ -39,36 +39,42 @@ impl Solver {
         let t = Instant::now();
         let invalid = AtomicBool::new(false);
         let (settings, memory) = (&self.settings, &self.warm);
-        let islands = parallel_map(lcps.len(), self.threads, |i| {
+        // Every report is written where the batch's report keeps it (no
+        // move of a few hundred bytes per island). A placeholder stays only
+        // where a problem fails its checks, and never leaves: the call
+        // returns the error.
+        let mut islands: Vec<IslandReport> = (0..lcps.len())
+            .map(|_| IslandReport {
+                scene: None,
+                contacts: ShortVec::new(),
+                method: settings.method,
+                path: SolvePath::Invalid,
+                solution: LcpSolution::invalid(0),
+            })
+            .collect();
+        parallel_fill(&mut islands, self.threads, |i, island| {
             let lcp = &lcps[i];
             let n = lcp.n();
             // The item's name is formatted only for the error, below.
             if lcp.validate("problem").is_err()
                 || (!big_to_lemke && enumerates && n > MAX_ENUMERATION_N)
             {
-                // A placeholder that never leaves: the call returns the error.
                 invalid.store(true, Ordering::Relaxed);
-                return IslandReport {
-                    scene: None,
-                    contacts: ShortVec::new(),
-                    method: settings.method,
-                    path: SolvePath::Invalid,
-                    solution: LcpSolution::invalid(0),
-                };
+                return;
             }
             let warm = keys.and_then(|k| warm_basis(settings, memory, k[i]));
             let (mut method, mut path) = (Method::Lemke, SolvePath::Lemke);
-            // The solution is built in its place in the report.
-            let mut island = IslandReport {
-                scene: None,
-                contacts: (0..n).collect(),
-                method,
-                path,
-                solution: solve_island(lcp, warm, settings, &mut method, &mut path),
-            };
+            island.contacts = ShortVec::indices(n);
+            solve_island(
+                lcp,
+                warm,
+                settings,
+                &mut method,
+                &mut path,
+                &mut island.solution,
+            );
             (island.method, island.path) = (method, path);
             check_solution(&mut island.solution, settings.tolerance);
-            island
         });
         if invalid.load(Ordering::Relaxed) {
             for (i, l) in lcps.iter().enumerate() {
@@ -190,7 +196,7 @@ pub(super) fn lcp_islands(lcps: &[Lcp], solved: Vec<Solved>) -> Vec<IslandReport
         .zip(lcps)
         .map(|((method, path, solution), lcp)| IslandReport {
             scene: None,
-            contacts: (0..lcp.n()).collect(),
+            contacts: ShortVec::indices(lcp.n()),
             method,
             path,
             solution,
@@ -209,48 +215,51 @@ pub(super) type Solved = (Method, SolvePath, LcpSolution);
 /// backend with Enumeration before it gets here).
 pub(super) fn solve_on_cpu(lcp: &Lcp, warm: Option<u32>, s: &Settings) -> Solved {
     let (mut method, mut path) = (Method::Lemke, SolvePath::Lemke);
-    let solution = solve_island(lcp, warm, s, &mut method, &mut path);
+    let mut solution = LcpSolution::invalid(0);
+    solve_island(lcp, warm, s, &mut method, &mut path, &mut solution);
     (method, path, solution)
 }
 
 /// [`solve_on_cpu`] with the method and path written to `method` and
-/// `path` (both as they come in where Lemke answers): the solution is
-/// returned as its step built it, not moved through a tuple at each step.
+/// `path` (both as they come in where Lemke answers) and the solution to
+/// `out`: the LCP batch's path writes each answer where its report keeps
+/// it (see [`crate::cpu::enumeration::feasible_basis_into`]).
 pub(super) fn solve_island(
     lcp: &Lcp,
     warm: Option<u32>,
     s: &Settings,
     method: &mut Method,
     path: &mut SolvePath,
-) -> LcpSolution {
+    out: &mut LcpSolution,
+) {
     match s.method {
-        Method::Lemke => lemke(lcp, &s.lemke()),
+        Method::Lemke => *out = lemke(lcp, &s.lemke()),
         Method::Pgs => {
             (*method, *path) = (Method::Pgs, SolvePath::Pgs);
-            pgs(lcp, &s.pgs())
+            *out = pgs(lcp, &s.pgs());
         }
-        Method::Auto | Method::Enumeration if lcp.n() > MAX_ENUMERATION_N => lemke(lcp, &s.lemke()),
+        Method::Auto | Method::Enumeration if lcp.n() > MAX_ENUMERATION_N => {
+            *out = lemke(lcp, &s.lemke());
+        }
         Method::Auto | Method::Enumeration => {
             let e = s.enumeration();
             if s.predict && !s.all_solutions {
                 let mut how = prediction::SolvePath::Separating;
-                let found = predict_solution(lcp, warm, &e, &mut how);
-                if let Some(solution) = found {
+                if predict_into(lcp, warm, &e, &mut how, out) {
                     (*method, *path) = (Method::Enumeration, prediction_path(how));
-                    return solution;
+                    return;
                 }
             }
             let mut pivots = 0;
-            if s.method == Method::Auto && !s.all_solutions {
-                if let Some(solution) = lemke_checked(lcp, s, &mut pivots) {
-                    return solution;
-                }
+            if s.method == Method::Auto
+                && !s.all_solutions
+                && lemke_checked(lcp, s, &mut pivots, out)
+            {
+                return;
             }
             (*method, *path) = (Method::Enumeration, SolvePath::EnumeratedCpu);
-            let mut solution =
-                enumerate(lcp, &e).expect("n ≤ 20 and settings validated in Solver::new");
-            solution.counters.pivots += pivots;
-            solution
+            *out = enumerate(lcp, &e).expect("n ≤ 20 and settings validated in Solver::new");
+            out.counters.pivots += pivots;
         }
     }
 }
@@ -260,44 +269,49 @@ pub(super) fn solve_island(
 /// singular); the solution is the re-solve's. Where that basis (and the
 /// bases of its answer's support) fail the check, Lemke's own answer is
 /// taken when the door's final check passes it.
-/// None when Lemke did not end on a solution or none passes; `pivots`: the
-/// pivots spent.
+/// Written into `out` (true); false when Lemke did not end on a solution
+/// or none passes (`out` then holds no answer: a refused one, or what it
+/// held); `pivots`: the pivots spent.
 ///
 /// The textbook run's basis is checked first ([`lemke_textbook_basis`]:
 /// no tableau read-back, no polish, since the re-solve here is the answer);
 /// where it does not give a checked solution with an error of at most 1e-12,
 /// the whole of [`lemke`] (its scaled and covering-vector retries) runs.
-fn lemke_checked(lcp: &Lcp, s: &Settings, pivots: &mut u64) -> Option<LcpSolution> {
+fn lemke_checked(lcp: &Lcp, s: &Settings, pivots: &mut u64, out: &mut LcpSolution) -> bool {
     let e = s.enumeration();
     let (mask, first_pivots) = lemke_textbook_basis(lcp, &s.lemke());
     *pivots = first_pivots;
     if let Some(mask) = mask {
-        let found = checked_basis(lcp, mask, first_pivots, &e);
-        if found
-            .as_ref()
-            .is_some_and(|sol| sol.residuals.error <= TEXTBOOK_ACCEPT)
+        if checked_basis(lcp, mask, first_pivots, &e, out) && out.residuals.error <= TEXTBOOK_ACCEPT
         {
-            return found;
+            return true;
         }
     }
     let l = lemke(lcp, &s.lemke());
     *pivots = l.counters.pivots;
     let (Status::Solved, Some(mask)) = (l.status, l.basis) else {
-        return None;
+        return false;
     };
     let p = *pivots;
-    checked_basis(lcp, mask, p, &e)
-        .or_else(|| checked_basis(lcp, support(&l.z, 0.0), p, &e))
-        .or_else(|| checked_basis(lcp, support(&l.z, SUPPORT_DROP), p, &e))
-        // Lemke's own answer where the door's final check passes it (z, w
-        // finite, the error recomputed from M and q in f64 within the
-        // tolerance). On a degenerate island every basis through it can be
-        // singular or ill-conditioned to the basis check (a resting 4-box
-        // stack, 16 contacts, M of rank 12: a box held on two diagonal
-        // corners) while the answer is right to 1e-11…1e-9; 1 world × 6,000
-        // steps of that stack enumerated 2^16 bases (~70 ms each) on 459
-        // steps without this, on 2 with it (`a_resting_stack_is_seldom_enumerated`).
-        .or_else(|| l.passes_check(s.tolerance).then_some(l))
+    if checked_basis(lcp, mask, p, &e, out)
+        || checked_basis(lcp, support(&l.z, 0.0), p, &e, out)
+        || checked_basis(lcp, support(&l.z, SUPPORT_DROP), p, &e, out)
+    {
+        return true;
+    }
+    // Lemke's own answer where the door's final check passes it (z, w
+    // finite, the error recomputed from M and q in f64 within the
+    // tolerance). On a degenerate island every basis through it can be
+    // singular or ill-conditioned to the basis check (a resting 4-box
+    // stack, 16 contacts, M of rank 12: a box held on two diagonal
+    // corners) while the answer is right to 1e-11…1e-9; 1 world × 6,000
+    // steps of that stack enumerated 2^16 bases (~70 ms each) on 459
+    // steps without this, on 2 with it (`a_resting_stack_is_seldom_enumerated`).
+    let passes = l.passes_check(s.tolerance);
+    if passes {
+        *out = l;
+    }
+    passes
 }
 
 /// Impulses at or below this fraction of the largest are left out of the
@@ -324,18 +338,20 @@ fn support(z: &[f64], drop: f64) -> u32 {
 const TEXTBOOK_ACCEPT: f64 = 1e-12;
 
 /// Basis `mask` re-solved in f64 and checked (feasible, M_SS not singular):
-/// the solution with `pivots` in its counters, or None.
+/// the solution with `pivots` in its counters written into `out` (true),
+/// or false with `out` untouched.
 fn checked_basis(
     lcp: &Lcp,
     mask: u32,
     pivots: u64,
     e: &crate::cpu::enumeration::EnumerationSettings,
-) -> Option<LcpSolution> {
+    out: &mut LcpSolution,
+) -> bool {
     let counters = crate::lcp::Counters {
         pivots,
         ..Default::default()
     };
-    feasible_basis(lcp, mask, e, counters)
+    feasible_basis_into(lcp, mask, e, counters, || true, out)
 }
 
 pub(super) fn prediction_path(p: prediction::SolvePath) -> SolvePath {
