@@ -43,15 +43,14 @@ impl Solver {
         // move of a few hundred bytes per island). A placeholder stays only
         // where a problem fails its checks, and never leaves: the call
         // returns the error.
-        let mut islands: Vec<IslandReport> = (0..lcps.len())
-            .map(|_| IslandReport {
-                scene: None,
-                contacts: ShortVec::new(),
-                method: settings.method,
-                path: SolvePath::Invalid,
-                solution: LcpSolution::invalid(0),
-            })
-            .collect();
+        let mut islands: Vec<IslandReport> = Vec::with_capacity(lcps.len());
+        islands.resize_with(lcps.len(), || IslandReport {
+            scene: None,
+            contacts: ShortVec::new(),
+            method: settings.method,
+            path: SolvePath::Invalid,
+            solution: LcpSolution::invalid(0),
+        });
         parallel_fill(&mut islands, self.threads, |i, island| {
             let lcp = &lcps[i];
             let n = lcp.n();
