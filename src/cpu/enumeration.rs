@@ -94,6 +94,9 @@ impl EnumerationSettings {
 }
 
 /// What solving one basis gave.
+// z and w inline (`ShortVec`) make `Solved` far larger than `Singular`;
+// boxing them would allocate per basis, what `ShortVec` is there to avoid.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug, PartialEq)]
 pub enum BasisOutcome {
     /// M_SS is singular to the pivot tolerance.

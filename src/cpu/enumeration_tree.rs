@@ -106,6 +106,10 @@ pub enum Undecided {
 }
 
 /// What the tree gave for one island.
+// An `LcpSolution` holds z and w inline (`ShortVec`), so `Decided` is far
+// larger than the others; boxing it would allocate per island, what
+// `ShortVec` is there to avoid.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug, PartialEq)]
 pub enum TreeOutcome {
     /// Enumeration's basis and z. Counters: every basis screened
