@@ -80,24 +80,26 @@ fn answer_offset(method: ProjectedMethod, k: usize) -> usize {
     }
 }
 
-/// A chunk of islands (sorted by k) packed for the shader.
+/// A chunk of islands (sorted by k) packed for the shader: where each
+/// island's data and vectors lie. The buffers themselves are written at
+/// upload, straight from the problems ([`RoundsJob::run`]).
 pub(crate) struct FrictionChunk {
     /// The caller's index of each table entry.
     pub order: Vec<usize>,
     table: Vec<PackedFrictionIsland>,
-    /// W, q, μ of every island.
-    values: Vec<f64>,
-    /// Every island's vectors, its start r0 in the first 3k.
-    vectors: Vec<f64>,
+    /// Scalars in `values` (W, q, μ of every island).
+    values_len: usize,
+    /// Scalars in `vectors` (every island's vectors, its start r0 in the
+    /// first 3k).
+    vectors_len: usize,
 }
 
 /// Packs `problems[i]` for i in `indices` (each valid, k ≤
 /// [`MAX_GPU_CONTACTS`]), sorted by k, into chunks whose buffers each stay
-/// under `max_bytes` at `sb` bytes per scalar; `start(i)` is island i's r0.
+/// under `max_bytes` at `sb` bytes per scalar.
 pub(crate) fn pack_friction_chunks(
     problems: &[FrictionProblem],
     indices: &[usize],
-    start: &dyn Fn(usize) -> Vec<f64>,
     method: ProjectedMethod,
     max_bytes: u64,
     sb: u64,
@@ -110,15 +112,15 @@ pub(crate) fn pack_friction_chunks(
         let mut chunk = FrictionChunk {
             order: Vec::new(),
             table: Vec::new(),
-            values: Vec::new(),
-            vectors: Vec::new(),
+            values_len: 0,
+            vectors_len: 0,
         };
         while at < order.len() {
             let i = order[at];
             let p = &problems[i];
             let k = p.contacts();
-            let values = (chunk.values.len() + p.w.len() + 4 * k) as u64 * sb;
-            let vectors = (chunk.vectors.len() + vector_len(method, k)) as u64 * sb;
+            let values = (chunk.values_len + p.w.len() + 4 * k) as u64 * sb;
+            let vectors = (chunk.vectors_len + vector_len(method, k)) as u64 * sb;
             let count = chunk.order.len() as u64 + 1;
             let per_island = (SCALARS as u64 * sb).max(16);
             let too_big = values.max(vectors).max(count * per_island) > max_bytes;
@@ -127,22 +129,42 @@ pub(crate) fn pack_friction_chunks(
             }
             chunk.table.push(PackedFrictionIsland {
                 k: k as u32,
-                data: chunk.values.len() as u32,
-                vectors: chunk.vectors.len() as u32,
+                data: chunk.values_len as u32,
+                vectors: chunk.vectors_len as u32,
                 slot: chunk.table.len() as u32,
             });
-            chunk.values.extend_from_slice(&p.w);
-            chunk.values.extend_from_slice(&p.q);
-            chunk.values.extend_from_slice(&p.mu);
-            let v0 = chunk.vectors.len();
-            chunk.vectors.resize(v0 + vector_len(method, k), 0.0);
-            chunk.vectors[v0..v0 + 3 * k].copy_from_slice(&start(i));
+            chunk.values_len += p.w.len() + 4 * k;
+            chunk.vectors_len += vector_len(method, k);
             chunk.order.push(i);
             at += 1;
         }
         chunks.push(chunk);
     }
     chunks
+}
+
+/// Writes `src` at scalar `at` of `view` in precision `p` (little-endian,
+/// as the shaders read them).
+fn write_scalars(view: &mut wgpu::BufferViewMut, at: usize, src: &[f64], p: Precision) {
+    if src.is_empty() {
+        return;
+    }
+    if p == Precision::F64 {
+        let bytes: &[u8] = bytemuck::cast_slice(src);
+        view.slice(8 * at..8 * at + bytes.len())
+            .copy_from_slice(bytes);
+    } else {
+        // A contact's W block rows at a time: small enough for the stack.
+        let mut buf = [0u8; 4 * 64];
+        for (c, part) in src.chunks(64).enumerate() {
+            for (b, &v) in buf.chunks_exact_mut(4).zip(part) {
+                b.copy_from_slice(&(v as f32).to_le_bytes());
+            }
+            let from = 4 * (at + 64 * c);
+            view.slice(from..from + 4 * part.len())
+                .copy_from_slice(&buf[..4 * part.len()]);
+        }
+    }
 }
 
 /// What the shader gave for one island.
@@ -219,22 +241,48 @@ impl RoundsJob<'_> {
             .friction_projected(self.ctx, k as usize, apgd)
     }
 
-    fn upload(&self, chunk: &FrictionChunk) -> ChunkBuffers {
+    /// The chunk's buffers, W, q, μ and the starts written straight into
+    /// them from `problems` (`warm[i]`, where given, is island i's r0;
+    /// else 0, which the zeroed buffer already holds).
+    fn upload(
+        &self,
+        chunk: &FrictionChunk,
+        problems: &[FrictionProblem],
+        warm: Option<&[Vec<f64>]>,
+    ) -> Result<ChunkBuffers, Error> {
         let (ctx, p) = (self.ctx, self.ctx.precision());
+        let sb = p.bytes();
         let count = chunk.table.len() as u64;
-        let vectors = scalars_to_bytes(&chunk.vectors, p);
         let states_size = count * std::mem::size_of::<FrictionState>() as u64;
-        let scalars_size = count * SCALARS as u64 * p.bytes();
-        ChunkBuffers {
-            values: ctx.storage("friction values", &scalars_to_bytes(&chunk.values, p)),
-            vectors_size: vectors.len() as u64,
-            vectors: ctx.storage("friction vectors", &vectors),
+        let scalars_size = count * SCALARS as u64 * sb;
+        let vectors_size = chunk.vectors_len as u64 * sb;
+        let values =
+            ctx.storage_filled("friction values", chunk.values_len as u64 * sb, |view| {
+                for (rec, &i) in chunk.table.iter().zip(&chunk.order) {
+                    let (pr, at) = (&problems[i], rec.data as usize);
+                    write_scalars(view, at, &pr.w, p);
+                    write_scalars(view, at + pr.w.len(), &pr.q, p);
+                    write_scalars(view, at + pr.w.len() + pr.q.len(), &pr.mu, p);
+                }
+            })?;
+        let vectors = ctx.storage_filled("friction vectors", vectors_size, |view| {
+            let Some(warm) = warm else { return };
+            for (rec, &i) in chunk.table.iter().zip(&chunk.order) {
+                if let Some(r0) = warm.get(i) {
+                    write_scalars(view, rec.vectors as usize, r0, p);
+                }
+            }
+        })?;
+        Ok(ChunkBuffers {
+            values,
+            vectors,
+            vectors_size,
             scalars: ctx.storage_zeroed("friction scalars", scalars_size),
             scalars_size,
             states: ctx.storage_zeroed("friction states", states_size),
             states_size,
             unfinished: ctx.storage_zeroed("friction unfinished", UNFINISHED_BYTES),
-        }
+        })
     }
 
     /// One dispatch range per island size k over `table` (sorted by k;
@@ -288,9 +336,15 @@ impl RoundsJob<'_> {
     /// invocation of a finished island still cost about 1.5 µs a round,
     /// measured: a batch's few slow islands made its rounds cost as much as
     /// all of it).
-    pub(crate) fn run(&self, chunk: &FrictionChunk) -> Result<ChunkRun, Error> {
+    /// `problems` and `warm` are the caller's, indexed by `chunk.order`.
+    pub(crate) fn run(
+        &self,
+        chunk: &FrictionChunk,
+        problems: &[FrictionProblem],
+        warm: Option<&[Vec<f64>]>,
+    ) -> Result<ChunkRun, Error> {
         let ctx = self.ctx;
-        let b = self.upload(chunk);
+        let b = self.upload(chunk, problems, warm)?;
         let mut run = ChunkRun {
             islands: Vec::new(),
             dispatches: 0,
@@ -331,6 +385,9 @@ impl RoundsJob<'_> {
         Ok(run)
     }
 
+    /// The answers of the chunk's islands, each island's answer and
+    /// scalars taken straight from the mapped readback (the rest of its
+    /// vectors stay there).
     fn read(&self, chunk: &FrictionChunk, b: &ChunkBuffers) -> Result<Vec<GpuIslandRun>, Error> {
         let ctx = self.ctx;
         let reads = [
@@ -338,39 +395,42 @@ impl RoundsJob<'_> {
             (&b.scalars, b.scalars_size),
             (&b.states, b.states_size),
         ];
-        let mut bytes = ctx
-            .submit_and_read(ctx.encoder("friction readback"), &reads)?
-            .into_iter();
         let p: Precision = ctx.precision();
-        let vectors = scalars_from_bytes(&bytes.next().unwrap_or_default(), p);
-        let scalars = scalars_from_bytes(&bytes.next().unwrap_or_default(), p);
-        let state_bytes = bytes.next().unwrap_or_default();
-        let states: &[FrictionState] = bytemuck::try_cast_slice(&state_bytes)
-            .map_err(|e| Error::Gpu(format!("friction states: {e}")))?;
-        chunk
-            .table
-            .iter()
-            .enumerate()
-            .map(|(t, rec)| {
-                let (k, v) = (rec.k as usize, rec.vectors as usize);
-                let at = v + answer_offset(self.method, k);
-                // APGD: the best iterate's error; the sweeps: the last one's.
-                let e = if self.method == ProjectedMethod::Apgd {
-                    2
-                } else {
-                    3
-                };
-                Ok(GpuIslandRun {
-                    state: *states
-                        .get(t)
-                        .ok_or_else(|| Error::Gpu("friction states: short read".into()))?,
-                    r: vectors
-                        .get(at..at + 3 * k)
-                        .ok_or_else(|| Error::Gpu("friction vectors: short read".into()))?
-                        .to_vec(),
-                    error: scalars.get(SCALARS * t + e).copied().unwrap_or(f64::NAN),
+        let sb = p.bytes() as usize;
+        ctx.submit_and_map(ctx.encoder("friction readback"), &reads, |bytes| {
+            let (vectors, scalars, state_bytes) = (bytes[0], bytes[1], bytes[2]);
+            let states: &[FrictionState] = bytemuck::try_cast_slice(state_bytes)
+                .map_err(|e| Error::Gpu(format!("friction states: {e}")))?;
+            chunk
+                .table
+                .iter()
+                .enumerate()
+                .map(|(t, rec)| {
+                    let (k, v) = (rec.k as usize, rec.vectors as usize);
+                    let at = sb * (v + answer_offset(self.method, k));
+                    // APGD: the best iterate's error; the sweeps: the last one's.
+                    let e = if self.method == ProjectedMethod::Apgd {
+                        2
+                    } else {
+                        3
+                    };
+                    let e_at = sb * (SCALARS * t + e);
+                    Ok(GpuIslandRun {
+                        state: *states
+                            .get(t)
+                            .ok_or_else(|| Error::Gpu("friction states: short read".into()))?,
+                        r: scalars_from_bytes(
+                            vectors
+                                .get(at..at + sb * 3 * k)
+                                .ok_or_else(|| Error::Gpu("friction vectors: short read".into()))?,
+                            p,
+                        ),
+                        error: scalars
+                            .get(e_at..e_at + sb)
+                            .map_or(f64::NAN, |b| scalars_from_bytes(b, p)[0]),
+                    })
                 })
-            })
-            .collect()
+                .collect()
+        })?
     }
 }
