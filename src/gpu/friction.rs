@@ -16,7 +16,7 @@ use std::time::Instant;
 use super::buffers::limits_for;
 pub use super::friction_rounds::MAX_GPU_CONTACTS;
 use super::friction_rounds::{
-    controls_buffer, pack_friction_chunks, GpuIslandRun, RoundsJob, FAILED,
+    controls_buffer, pack_friction_chunks, GpuIslandRun, RoundsJob, FAILED, FIRST_TRIES,
 };
 use super::kernel::round_budget;
 use super::{GpuContext, GpuSolveSettings, Precision};
@@ -247,6 +247,8 @@ pub(crate) fn run_on_gpu(
                 method: settings.method,
                 controls: &controls,
                 budget: round_budget(ctx, &limits),
+                // The caller's own round budget: every round at it.
+                first_tries: gpu.round_budget.is_none().then_some(FIRST_TRIES),
                 max_groups,
                 max_iterations: settings.max_iterations,
             };
