@@ -59,12 +59,22 @@ impl GpuContext {
         size: u64,
         fill: impl FnOnce(&mut wgpu::BufferViewMut),
     ) -> Result<wgpu::Buffer, Error> {
+        let mut usage = wgpu::BufferUsages::STORAGE
+            | wgpu::BufferUsages::COPY_SRC
+            | wgpu::BufferUsages::COPY_DST;
+        // Where the device allows it (software adapters, see
+        // `GpuContext::new`), the buffer itself is mapped: no staging buffer.
+        if self
+            .device
+            .features()
+            .contains(wgpu::Features::MAPPABLE_PRIMARY_BUFFERS)
+        {
+            usage |= wgpu::BufferUsages::MAP_WRITE;
+        }
         let buffer = self.device.create_buffer(&wgpu::BufferDescriptor {
             label: Some(label),
             size: size.max(16).next_multiple_of(4),
-            usage: wgpu::BufferUsages::STORAGE
-                | wgpu::BufferUsages::COPY_SRC
-                | wgpu::BufferUsages::COPY_DST,
+            usage,
             mapped_at_creation: true,
         });
         {

@@ -180,6 +180,35 @@ fn growing_rounds_give_the_iterates_of_full_rounds() {
     }
 }
 
+/// The friction batches' buffers are written in place at creation
+/// (`storage_filled`): a shader's view of them, read back, is what was
+/// written, and 0 where nothing was; on a software adapter the device maps
+/// storage buffers themselves (no staging copy).
+#[test]
+fn filled_storage_buffers_hold_what_was_written() {
+    let Some(ctx) = gpu_context(Precision::F64) else {
+        return;
+    };
+    if ctx.adapter_info().software {
+        assert!(ctx
+            .device
+            .features()
+            .contains(wgpu::Features::MAPPABLE_PRIMARY_BUFFERS));
+    }
+    let written: Vec<u8> = (1..=24).collect();
+    let buffer = ctx
+        .storage_filled("test", 64, |view| {
+            view.slice(16..40).copy_from_slice(&written);
+        })
+        .unwrap();
+    let back = ctx
+        .submit_and_read(ctx.encoder("test"), &[(&buffer, 64)])
+        .unwrap();
+    let mut expected = vec![0u8; 64];
+    expected[16..40].copy_from_slice(&written);
+    assert_eq!(back[0], expected);
+}
+
 /// Final answers of the GPU path against the twin's, at `precision`.
 fn final_answers_match(precision: Precision, u_tol: f64) {
     let Some(ctx) = gpu_context(precision) else {
