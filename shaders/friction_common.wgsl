@@ -65,8 +65,8 @@ struct Controls {
 
 @group(0) @binding(0) var<uniform> params: Params;
 @group(0) @binding(1) var<storage, read> islands: array<FrictionIsland>;
-@group(0) @binding(2) var<storage, read> values: array<Scalar>;
-@group(0) @binding(3) var<storage, read_write> vectors: array<Scalar>;
+// Bindings 2 (values) and 3 (vectors): declared by each kernel (scalars
+// in friction_projected_global.wgsl, vec4 in friction_projected.wgsl).
 @group(0) @binding(4) var<storage, read_write> scalars: array<Scalar>;
 @group(0) @binding(5) var<storage, read_write> states: array<FrictionState>;
 @group(0) @binding(6) var<storage, read_write> unfinished: array<atomic<u32>, 17>;

@@ -38,6 +38,12 @@
 // Prepended by the generator: shaders/friction_common.wgsl (HOST lines,
 // constants, records, bindings, finite, project_on_cone).
 
+// An island's W, q, mu from island.data and its vectors from
+// island.vectors, scalar by scalar (both multiples of 4: the host pads
+// every island's blocks for the vec4 reads of friction_projected.wgsl).
+@group(0) @binding(2) var<storage, read> values: array<Scalar>;
+@group(0) @binding(3) var<storage, read_write> vectors: array<Scalar>;
+
 // APGD's trial iterate and its velocity; the sweeps' velocity u in `un`.
 var<private> xn: array<Scalar, MAX_DIM>;
 var<private> un: array<Scalar, MAX_DIM>;

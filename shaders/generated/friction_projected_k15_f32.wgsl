@@ -68,8 +68,8 @@ struct Controls {
 
 @group(0) @binding(0) var<uniform> params: Params;
 @group(0) @binding(1) var<storage, read> islands: array<FrictionIsland>;
-@group(0) @binding(2) var<storage, read> values: array<Scalar>;
-@group(0) @binding(3) var<storage, read_write> vectors: array<Scalar>;
+// Bindings 2 (values) and 3 (vectors): declared by each kernel (scalars
+// in friction_projected_global.wgsl, vec4 in friction_projected.wgsl).
 @group(0) @binding(4) var<storage, read_write> scalars: array<Scalar>;
 @group(0) @binding(5) var<storage, read_write> states: array<FrictionState>;
 @group(0) @binding(6) var<storage, read_write> unfinished: array<atomic<u32>, 17>;
@@ -147,6 +147,12 @@ fn project_on_cone(v: vec3<Scalar>, m: Scalar) -> vec3<Scalar> {
 
 // Prepended by the generator: shaders/friction_common.wgsl (HOST lines,
 // constants, records, bindings, finite, project_on_cone).
+
+// An island's W, q, mu from island.data and its vectors from
+// island.vectors, scalar by scalar (both multiples of 4: the host pads
+// every island's blocks for the vec4 reads of friction_projected.wgsl).
+@group(0) @binding(2) var<storage, read> values: array<Scalar>;
+@group(0) @binding(3) var<storage, read_write> vectors: array<Scalar>;
 
 // APGD's trial iterate and its velocity; the sweeps' velocity u in `un`.
 var<private> xn: array<Scalar, MAX_DIM>;

@@ -68,8 +68,8 @@ struct Controls {
 
 @group(0) @binding(0) var<uniform> params: Params;
 @group(0) @binding(1) var<storage, read> islands: array<FrictionIsland>;
-@group(0) @binding(2) var<storage, read> values: array<Scalar>;
-@group(0) @binding(3) var<storage, read_write> vectors: array<Scalar>;
+// Bindings 2 (values) and 3 (vectors): declared by each kernel (scalars
+// in friction_projected_global.wgsl, vec4 in friction_projected.wgsl).
 @group(0) @binding(4) var<storage, read_write> scalars: array<Scalar>;
 @group(0) @binding(5) var<storage, read_write> states: array<FrictionState>;
 @group(0) @binding(6) var<storage, read_write> unfinished: array<atomic<u32>, 17>;
@@ -123,7 +123,8 @@ fn project_on_cone(v: vec3<Scalar>, m: Scalar) -> vec3<Scalar> {
 // An island's W (3k x 3k, row-major), q (3k) and mu (k) lie in `values`
 // from island.data; its vectors in `vectors` from island.vectors:
 //   sweeps: x (3k), then the contacts' steps eta (k);
-//   apgd:   x, u(x), y, u(y), best (3k each).
+//   apgd:   x, u(x), y, u(y), best (3k each), padded to a multiple of 4.
+// Both blocks start at multiples of 4 scalars (read as vec4 here).
 // `scalars` holds 4 per island: theta, L, best error, last error.
 //
 // Loops marked UNROLL are unrolled by the generator for k <= 4 (every
@@ -156,6 +157,23 @@ fn project_on_cone(v: vec3<Scalar>, m: Scalar) -> vec3<Scalar> {
 // Entries of an island: N = 3k; W has N * N.
 const N: u32 = 3u * FIXED_K;
 const NN: u32 = N * N;
+// vec4s of an island's block in `values` (W, q, mu, padded by the host to
+// a multiple of 4), of APGD's vectors (x, u(x), y, u(y), best, padded), of
+// x alone (rounded up), and of the sweeps' vectors (x and eta: 4k
+// scalars). The generator's unrolling takes the same values from
+// compose.rs.
+const VALUES4: u32 = (NN + N + FIXED_K + 3u) / 4u;
+const APGD4: u32 = (5u * N + 3u) / 4u;
+const X4: u32 = (N + 3u) / 4u;
+const SWEEPS4: u32 = FIXED_K;
+
+// The island's blocks as vec4: llvmpipe turns each buffer access at a
+// per-island address into a loop over the SIMD lanes, one per access
+// whatever its width, so a vec4 costs about what a scalar does (the reload
+// of a k = 4 island at each round: 220 scalar reads, now 55). The blocks
+// start at multiples of 4 scalars (island.data, island.vectors).
+@group(0) @binding(2) var<storage, read> values: array<vec4<Scalar>>;
+@group(0) @binding(3) var<storage, read_write> vectors: array<vec4<Scalar>>;
 
 // The island's data and vectors, private to the invocation (see the top).
 var<private> w: array<Scalar, NN>;
@@ -172,100 +190,157 @@ var<private> eta: array<Scalar, FIXED_K>;
 var<private> xn: array<Scalar, N>;
 var<private> un: array<Scalar, N>;
 
-// Copies island `rec`'s W, q, mu and its first `vectors` vectors of N
-// (x, u(x), y, u(y), best in that order) into the private arrays; returns
-// where its vectors lie in `vectors`.
-fn load_island(rec: FrictionIsland, vectors_used: u32) -> u32 {
+// Entry e of the island's block in `values` into W, q or mu (e past the
+// block: padding, dropped). Called with constant e only (unrolled loops),
+// so every private index is a constant.
+fn put_value(e: u32, v: Scalar) {
+    if e < NN {
+        w[e] = v;
+    } else if e < NN + N {
+        q[e - NN] = v;
+    } else if e < NN + N + FIXED_K {
+        mu[e - NN - N] = v;
+    }
+}
+
+// Entry e of APGD's vectors (x, u(x), y, u(y), best) or of the sweeps'
+// (x, eta) into the private arrays (padding dropped); constant e only.
+fn put_vector(e: u32, v: Scalar, apgd: bool) {
+    if e < N {
+        x[e] = v;
+    } else if !apgd {
+        if e < N + FIXED_K {
+            eta[e - N] = v;
+        }
+    } else if e < 2u * N {
+        ux[e - N] = v;
+    } else if e < 3u * N {
+        y[e - 2u * N] = v;
+    } else if e < 4u * N {
+        uy[e - 3u * N] = v;
+    } else if e < 5u * N {
+        best[e - 4u * N] = v;
+    }
+}
+
+// Entry e of APGD's vectors or the sweeps', 0 for padding; constant e only.
+fn get_vector(e: u32, apgd: bool) -> Scalar {
+    if e < N {
+        return x[e];
+    }
+    if !apgd {
+        if e < N + FIXED_K {
+            return eta[e - N];
+        }
+        return Scalar(0.0);
+    }
+    if e < 2u * N {
+        return ux[e - N];
+    }
+    if e < 3u * N {
+        return y[e - 2u * N];
+    }
+    if e < 4u * N {
+        return uy[e - 3u * N];
+    }
+    if e < 5u * N {
+        return best[e - 4u * N];
+    }
+    return Scalar(0.0);
+}
+
+// Copies island `rec`'s W, q, mu into the private arrays, and its vectors:
+// `vectors4` vec4s of them (x alone: X4, which may also fill the start of
+// u(x); APGD's all: APGD4; the sweeps': SWEEPS4). Returns where its
+// vectors lie in `vectors` (in vec4s).
+fn load_island(rec: FrictionIsland, vectors4: u32, apgd: bool) -> u32 {
+    let d = rec.data / 4u;
 {
 
-        w[0u] = values[rec.data + 0u];
+        let t = values[d + 0u];
+        put_value(4u * 0u, t.x);
+        put_value(4u * 0u + 1u, t.y);
+        put_value(4u * 0u + 2u, t.z);
+        put_value(4u * 0u + 3u, t.w);
     }
 {
 
-        w[1u] = values[rec.data + 1u];
+        let t = values[d + 1u];
+        put_value(4u * 1u, t.x);
+        put_value(4u * 1u + 1u, t.y);
+        put_value(4u * 1u + 2u, t.z);
+        put_value(4u * 1u + 3u, t.w);
     }
 {
 
-        w[2u] = values[rec.data + 2u];
+        let t = values[d + 2u];
+        put_value(4u * 2u, t.x);
+        put_value(4u * 2u + 1u, t.y);
+        put_value(4u * 2u + 2u, t.z);
+        put_value(4u * 2u + 3u, t.w);
     }
 {
 
-        w[3u] = values[rec.data + 3u];
-    }
-{
-
-        w[4u] = values[rec.data + 4u];
-    }
-{
-
-        w[5u] = values[rec.data + 5u];
-    }
-{
-
-        w[6u] = values[rec.data + 6u];
-    }
-{
-
-        w[7u] = values[rec.data + 7u];
-    }
-{
-
-        w[8u] = values[rec.data + 8u];
+        let t = values[d + 3u];
+        put_value(4u * 3u, t.x);
+        put_value(4u * 3u + 1u, t.y);
+        put_value(4u * 3u + 2u, t.z);
+        put_value(4u * 3u + 3u, t.w);
     }
 
+    let v = rec.vectors / 4u;
+    if vectors4 == X4 {
 {
 
-        q[0u] = values[rec.data + NN + 0u];
-    }
+            let t = vectors[v + 0u];
+            put_vector(4u * 0u, t.x, apgd);
+            put_vector(4u * 0u + 1u, t.y, apgd);
+            put_vector(4u * 0u + 2u, t.z, apgd);
+            put_vector(4u * 0u + 3u, t.w, apgd);
+        }
+
+    } else if apgd {
 {
 
-        q[1u] = values[rec.data + NN + 1u];
-    }
-{
-
-        q[2u] = values[rec.data + NN + 2u];
-    }
-
-{
-
-        mu[0u] = values[rec.data + NN + N + 0u];
-    }
-
-    let v = rec.vectors;
-{
-
-        x[0u] = vectors[v + 0u];
-    }
-{
-
-        x[1u] = vectors[v + 1u];
-    }
-{
-
-        x[2u] = vectors[v + 2u];
-    }
-
-    if vectors_used > 1u {
-{
-
-            ux[0u] = vectors[v + N + 0u];
-            y[0u] = vectors[v + 2u * N + 0u];
-            uy[0u] = vectors[v + 3u * N + 0u];
-            best[0u] = vectors[v + 4u * N + 0u];
+            let t = vectors[v + 0u];
+            put_vector(4u * 0u, t.x, true);
+            put_vector(4u * 0u + 1u, t.y, true);
+            put_vector(4u * 0u + 2u, t.z, true);
+            put_vector(4u * 0u + 3u, t.w, true);
         }
 {
 
-            ux[1u] = vectors[v + N + 1u];
-            y[1u] = vectors[v + 2u * N + 1u];
-            uy[1u] = vectors[v + 3u * N + 1u];
-            best[1u] = vectors[v + 4u * N + 1u];
+            let t = vectors[v + 1u];
+            put_vector(4u * 1u, t.x, true);
+            put_vector(4u * 1u + 1u, t.y, true);
+            put_vector(4u * 1u + 2u, t.z, true);
+            put_vector(4u * 1u + 3u, t.w, true);
         }
 {
 
-            ux[2u] = vectors[v + N + 2u];
-            y[2u] = vectors[v + 2u * N + 2u];
-            uy[2u] = vectors[v + 3u * N + 2u];
-            best[2u] = vectors[v + 4u * N + 2u];
+            let t = vectors[v + 2u];
+            put_vector(4u * 2u, t.x, true);
+            put_vector(4u * 2u + 1u, t.y, true);
+            put_vector(4u * 2u + 2u, t.z, true);
+            put_vector(4u * 2u + 3u, t.w, true);
+        }
+{
+
+            let t = vectors[v + 3u];
+            put_vector(4u * 3u, t.x, true);
+            put_vector(4u * 3u + 1u, t.y, true);
+            put_vector(4u * 3u + 2u, t.z, true);
+            put_vector(4u * 3u + 3u, t.w, true);
+        }
+
+    } else {
+{
+
+            let t = vectors[v + 0u];
+            put_vector(4u * 0u, t.x, false);
+            put_vector(4u * 0u + 1u, t.y, false);
+            put_vector(4u * 0u + 2u, t.z, false);
+            put_vector(4u * 0u + 3u, t.w, false);
         }
 
     }
@@ -584,7 +659,8 @@ fn sweeps(@builtin(global_invocation_id) gid: vec3<u32>) {
     if st.status > RUNNING {
         return;
     }
-    let v = load_island(rec, 1u);
+    // x and eta (eta is 0 before the first round, then computed here).
+    let v = load_island(rec, SWEEPS4, false);
     let gauss_seidel = (params.flags & 1u) == 1u;
     var spent = NN + 4u * N;
     if st.status == NOT_STARTED {
@@ -592,12 +668,6 @@ fn sweeps(@builtin(global_invocation_id) gid: vec3<u32>) {
         contact_steps(gauss_seidel);
         st.status = RUNNING;
         spent += product_cost();
-    } else {
-{
-
-            eta[0u] = vectors[v + N + 0u];
-        }
-
     }
     var cost = product_cost() + 6u * N;
     if gauss_seidel {
@@ -623,50 +693,54 @@ fn sweeps(@builtin(global_invocation_id) gid: vec3<u32>) {
     scalars[4u * index + 3u] = err;
 {
 
-        vectors[v + 0u] = x[0u];
-    }
-{
-
-        vectors[v + 1u] = x[1u];
-    }
-{
-
-        vectors[v + 2u] = x[2u];
-    }
-
-{
-
-        vectors[v + N + 0u] = eta[0u];
+        vectors[v + 0u] = vec4<Scalar>(
+            get_vector(4u * 0u, false),
+            get_vector(4u * 0u + 1u, false),
+            get_vector(4u * 0u + 2u, false),
+            get_vector(4u * 0u + 3u, false)
+        );
     }
 
     finish_round(index, st);
 }
 
-// Writes APGD's vectors back to `vectors` from v.
+// Writes APGD's vectors back to `vectors` from v (in vec4s).
 fn store_apgd(v: u32) {
 {
 
-        vectors[v + 0u] = x[0u];
-        vectors[v + N + 0u] = ux[0u];
-        vectors[v + 2u * N + 0u] = y[0u];
-        vectors[v + 3u * N + 0u] = uy[0u];
-        vectors[v + 4u * N + 0u] = best[0u];
+        vectors[v + 0u] = vec4<Scalar>(
+            get_vector(4u * 0u, true),
+            get_vector(4u * 0u + 1u, true),
+            get_vector(4u * 0u + 2u, true),
+            get_vector(4u * 0u + 3u, true)
+        );
     }
 {
 
-        vectors[v + 1u] = x[1u];
-        vectors[v + N + 1u] = ux[1u];
-        vectors[v + 2u * N + 1u] = y[1u];
-        vectors[v + 3u * N + 1u] = uy[1u];
-        vectors[v + 4u * N + 1u] = best[1u];
+        vectors[v + 1u] = vec4<Scalar>(
+            get_vector(4u * 1u, true),
+            get_vector(4u * 1u + 1u, true),
+            get_vector(4u * 1u + 2u, true),
+            get_vector(4u * 1u + 3u, true)
+        );
     }
 {
 
-        vectors[v + 2u] = x[2u];
-        vectors[v + N + 2u] = ux[2u];
-        vectors[v + 2u * N + 2u] = y[2u];
-        vectors[v + 3u * N + 2u] = uy[2u];
-        vectors[v + 4u * N + 2u] = best[2u];
+        vectors[v + 2u] = vec4<Scalar>(
+            get_vector(4u * 2u, true),
+            get_vector(4u * 2u + 1u, true),
+            get_vector(4u * 2u + 2u, true),
+            get_vector(4u * 2u + 3u, true)
+        );
+    }
+{
+
+        vectors[v + 3u] = vec4<Scalar>(
+            get_vector(4u * 3u, true),
+            get_vector(4u * 3u + 1u, true),
+            get_vector(4u * 3u + 2u, true),
+            get_vector(4u * 3u + 3u, true)
+        );
     }
 
 }
@@ -949,14 +1023,14 @@ fn apgd(@builtin(global_invocation_id) gid: vec3<u32>) {
     var a: ApgdScalars;
     var v: u32;
     if st.status == NOT_STARTED {
-        v = load_island(rec, 1u);
+        v = load_island(rec, X4, true);
         st.status = RUNNING;
         if !apgd_start(&a) {
             st.status = FAILED;
         }
         spent += 2u * product_cost() + 8u * N;
     } else {
-        v = load_island(rec, 5u);
+        v = load_island(rec, APGD4, true);
         a = ApgdScalars(scalars[s], scalars[s + 1u], scalars[s + 2u], scalars[s + 3u]);
     }
     let cost = product_cost() + 10u * N;

@@ -68,8 +68,8 @@ struct Controls {
 
 @group(0) @binding(0) var<uniform> params: Params;
 @group(0) @binding(1) var<storage, read> islands: array<FrictionIsland>;
-@group(0) @binding(2) var<storage, read> values: array<Scalar>;
-@group(0) @binding(3) var<storage, read_write> vectors: array<Scalar>;
+// Bindings 2 (values) and 3 (vectors): declared by each kernel (scalars
+// in friction_projected_global.wgsl, vec4 in friction_projected.wgsl).
 @group(0) @binding(4) var<storage, read_write> scalars: array<Scalar>;
 @group(0) @binding(5) var<storage, read_write> states: array<FrictionState>;
 @group(0) @binding(6) var<storage, read_write> unfinished: array<atomic<u32>, 17>;
@@ -123,7 +123,8 @@ fn project_on_cone(v: vec3<Scalar>, m: Scalar) -> vec3<Scalar> {
 // An island's W (3k x 3k, row-major), q (3k) and mu (k) lie in `values`
 // from island.data; its vectors in `vectors` from island.vectors:
 //   sweeps: x (3k), then the contacts' steps eta (k);
-//   apgd:   x, u(x), y, u(y), best (3k each).
+//   apgd:   x, u(x), y, u(y), best (3k each), padded to a multiple of 4.
+// Both blocks start at multiples of 4 scalars (read as vec4 here).
 // `scalars` holds 4 per island: theta, L, best error, last error.
 //
 // Loops marked UNROLL are unrolled by the generator for k <= 4 (every
@@ -156,6 +157,23 @@ fn project_on_cone(v: vec3<Scalar>, m: Scalar) -> vec3<Scalar> {
 // Entries of an island: N = 3k; W has N * N.
 const N: u32 = 3u * FIXED_K;
 const NN: u32 = N * N;
+// vec4s of an island's block in `values` (W, q, mu, padded by the host to
+// a multiple of 4), of APGD's vectors (x, u(x), y, u(y), best, padded), of
+// x alone (rounded up), and of the sweeps' vectors (x and eta: 4k
+// scalars). The generator's unrolling takes the same values from
+// compose.rs.
+const VALUES4: u32 = (NN + N + FIXED_K + 3u) / 4u;
+const APGD4: u32 = (5u * N + 3u) / 4u;
+const X4: u32 = (N + 3u) / 4u;
+const SWEEPS4: u32 = FIXED_K;
+
+// The island's blocks as vec4: llvmpipe turns each buffer access at a
+// per-island address into a loop over the SIMD lanes, one per access
+// whatever its width, so a vec4 costs about what a scalar does (the reload
+// of a k = 4 island at each round: 220 scalar reads, now 55). The blocks
+// start at multiples of 4 scalars (island.data, island.vectors).
+@group(0) @binding(2) var<storage, read> values: array<vec4<Scalar>>;
+@group(0) @binding(3) var<storage, read_write> vectors: array<vec4<Scalar>>;
 
 // The island's data and vectors, private to the invocation (see the top).
 var<private> w: array<Scalar, NN>;
@@ -172,486 +190,413 @@ var<private> eta: array<Scalar, FIXED_K>;
 var<private> xn: array<Scalar, N>;
 var<private> un: array<Scalar, N>;
 
-// Copies island `rec`'s W, q, mu and its first `vectors` vectors of N
-// (x, u(x), y, u(y), best in that order) into the private arrays; returns
-// where its vectors lie in `vectors`.
-fn load_island(rec: FrictionIsland, vectors_used: u32) -> u32 {
-{
-
-        w[0u] = values[rec.data + 0u];
-    }
-{
-
-        w[1u] = values[rec.data + 1u];
-    }
-{
-
-        w[2u] = values[rec.data + 2u];
-    }
-{
-
-        w[3u] = values[rec.data + 3u];
-    }
-{
-
-        w[4u] = values[rec.data + 4u];
-    }
-{
-
-        w[5u] = values[rec.data + 5u];
-    }
-{
-
-        w[6u] = values[rec.data + 6u];
-    }
-{
-
-        w[7u] = values[rec.data + 7u];
-    }
-{
-
-        w[8u] = values[rec.data + 8u];
-    }
-{
-
-        w[9u] = values[rec.data + 9u];
-    }
-{
-
-        w[10u] = values[rec.data + 10u];
-    }
-{
-
-        w[11u] = values[rec.data + 11u];
-    }
-{
-
-        w[12u] = values[rec.data + 12u];
-    }
-{
-
-        w[13u] = values[rec.data + 13u];
-    }
-{
-
-        w[14u] = values[rec.data + 14u];
-    }
-{
-
-        w[15u] = values[rec.data + 15u];
-    }
-{
-
-        w[16u] = values[rec.data + 16u];
-    }
-{
-
-        w[17u] = values[rec.data + 17u];
-    }
-{
-
-        w[18u] = values[rec.data + 18u];
-    }
-{
-
-        w[19u] = values[rec.data + 19u];
-    }
-{
-
-        w[20u] = values[rec.data + 20u];
-    }
-{
-
-        w[21u] = values[rec.data + 21u];
-    }
-{
-
-        w[22u] = values[rec.data + 22u];
-    }
-{
-
-        w[23u] = values[rec.data + 23u];
-    }
-{
-
-        w[24u] = values[rec.data + 24u];
-    }
-{
-
-        w[25u] = values[rec.data + 25u];
-    }
-{
-
-        w[26u] = values[rec.data + 26u];
-    }
-{
-
-        w[27u] = values[rec.data + 27u];
-    }
-{
-
-        w[28u] = values[rec.data + 28u];
-    }
-{
-
-        w[29u] = values[rec.data + 29u];
-    }
-{
-
-        w[30u] = values[rec.data + 30u];
-    }
-{
-
-        w[31u] = values[rec.data + 31u];
-    }
-{
-
-        w[32u] = values[rec.data + 32u];
-    }
-{
-
-        w[33u] = values[rec.data + 33u];
-    }
-{
-
-        w[34u] = values[rec.data + 34u];
-    }
-{
-
-        w[35u] = values[rec.data + 35u];
-    }
-{
-
-        w[36u] = values[rec.data + 36u];
-    }
-{
-
-        w[37u] = values[rec.data + 37u];
+// Entry e of the island's block in `values` into W, q or mu (e past the
+// block: padding, dropped). Called with constant e only (unrolled loops),
+// so every private index is a constant.
+fn put_value(e: u32, v: Scalar) {
+    if e < NN {
+        w[e] = v;
+    } else if e < NN + N {
+        q[e - NN] = v;
+    } else if e < NN + N + FIXED_K {
+        mu[e - NN - N] = v;
     }
-{
-
-        w[38u] = values[rec.data + 38u];
-    }
-{
-
-        w[39u] = values[rec.data + 39u];
-    }
-{
-
-        w[40u] = values[rec.data + 40u];
-    }
-{
-
-        w[41u] = values[rec.data + 41u];
-    }
-{
-
-        w[42u] = values[rec.data + 42u];
-    }
-{
-
-        w[43u] = values[rec.data + 43u];
-    }
-{
-
-        w[44u] = values[rec.data + 44u];
-    }
-{
-
-        w[45u] = values[rec.data + 45u];
-    }
-{
-
-        w[46u] = values[rec.data + 46u];
-    }
-{
-
-        w[47u] = values[rec.data + 47u];
-    }
-{
-
-        w[48u] = values[rec.data + 48u];
-    }
-{
-
-        w[49u] = values[rec.data + 49u];
-    }
-{
-
-        w[50u] = values[rec.data + 50u];
-    }
-{
-
-        w[51u] = values[rec.data + 51u];
-    }
-{
-
-        w[52u] = values[rec.data + 52u];
-    }
-{
-
-        w[53u] = values[rec.data + 53u];
-    }
-{
-
-        w[54u] = values[rec.data + 54u];
-    }
-{
-
-        w[55u] = values[rec.data + 55u];
-    }
-{
-
-        w[56u] = values[rec.data + 56u];
-    }
-{
-
-        w[57u] = values[rec.data + 57u];
-    }
-{
-
-        w[58u] = values[rec.data + 58u];
-    }
-{
-
-        w[59u] = values[rec.data + 59u];
-    }
-{
-
-        w[60u] = values[rec.data + 60u];
-    }
-{
-
-        w[61u] = values[rec.data + 61u];
-    }
-{
-
-        w[62u] = values[rec.data + 62u];
-    }
-{
-
-        w[63u] = values[rec.data + 63u];
-    }
-{
-
-        w[64u] = values[rec.data + 64u];
-    }
-{
-
-        w[65u] = values[rec.data + 65u];
-    }
-{
-
-        w[66u] = values[rec.data + 66u];
-    }
-{
-
-        w[67u] = values[rec.data + 67u];
-    }
-{
+}
 
-        w[68u] = values[rec.data + 68u];
+// Entry e of APGD's vectors (x, u(x), y, u(y), best) or of the sweeps'
+// (x, eta) into the private arrays (padding dropped); constant e only.
+fn put_vector(e: u32, v: Scalar, apgd: bool) {
+    if e < N {
+        x[e] = v;
+    } else if !apgd {
+        if e < N + FIXED_K {
+            eta[e - N] = v;
+        }
+    } else if e < 2u * N {
+        ux[e - N] = v;
+    } else if e < 3u * N {
+        y[e - 2u * N] = v;
+    } else if e < 4u * N {
+        uy[e - 3u * N] = v;
+    } else if e < 5u * N {
+        best[e - 4u * N] = v;
     }
-{
-
-        w[69u] = values[rec.data + 69u];
-    }
-{
-
-        w[70u] = values[rec.data + 70u];
-    }
-{
+}
 
-        w[71u] = values[rec.data + 71u];
+// Entry e of APGD's vectors or the sweeps', 0 for padding; constant e only.
+fn get_vector(e: u32, apgd: bool) -> Scalar {
+    if e < N {
+        return x[e];
     }
-{
-
-        w[72u] = values[rec.data + 72u];
+    if !apgd {
+        if e < N + FIXED_K {
+            return eta[e - N];
+        }
+        return Scalar(0.0);
     }
-{
-
-        w[73u] = values[rec.data + 73u];
+    if e < 2u * N {
+        return ux[e - N];
     }
-{
-
-        w[74u] = values[rec.data + 74u];
+    if e < 3u * N {
+        return y[e - 2u * N];
     }
-{
-
-        w[75u] = values[rec.data + 75u];
+    if e < 4u * N {
+        return uy[e - 3u * N];
     }
-{
-
-        w[76u] = values[rec.data + 76u];
+    if e < 5u * N {
+        return best[e - 4u * N];
     }
-{
+    return Scalar(0.0);
+}
 
-        w[77u] = values[rec.data + 77u];
-    }
+// Copies island `rec`'s W, q, mu into the private arrays, and its vectors:
+// `vectors4` vec4s of them (x alone: X4, which may also fill the start of
+// u(x); APGD's all: APGD4; the sweeps': SWEEPS4). Returns where its
+// vectors lie in `vectors` (in vec4s).
+fn load_island(rec: FrictionIsland, vectors4: u32, apgd: bool) -> u32 {
+    let d = rec.data / 4u;
 {
 
-        w[78u] = values[rec.data + 78u];
+        let t = values[d + 0u];
+        put_value(4u * 0u, t.x);
+        put_value(4u * 0u + 1u, t.y);
+        put_value(4u * 0u + 2u, t.z);
+        put_value(4u * 0u + 3u, t.w);
     }
 {
 
-        w[79u] = values[rec.data + 79u];
+        let t = values[d + 1u];
+        put_value(4u * 1u, t.x);
+        put_value(4u * 1u + 1u, t.y);
+        put_value(4u * 1u + 2u, t.z);
+        put_value(4u * 1u + 3u, t.w);
     }
 {
 
-        w[80u] = values[rec.data + 80u];
+        let t = values[d + 2u];
+        put_value(4u * 2u, t.x);
+        put_value(4u * 2u + 1u, t.y);
+        put_value(4u * 2u + 2u, t.z);
+        put_value(4u * 2u + 3u, t.w);
     }
-
 {
 
-        q[0u] = values[rec.data + NN + 0u];
+        let t = values[d + 3u];
+        put_value(4u * 3u, t.x);
+        put_value(4u * 3u + 1u, t.y);
+        put_value(4u * 3u + 2u, t.z);
+        put_value(4u * 3u + 3u, t.w);
     }
 {
 
-        q[1u] = values[rec.data + NN + 1u];
+        let t = values[d + 4u];
+        put_value(4u * 4u, t.x);
+        put_value(4u * 4u + 1u, t.y);
+        put_value(4u * 4u + 2u, t.z);
+        put_value(4u * 4u + 3u, t.w);
     }
 {
 
-        q[2u] = values[rec.data + NN + 2u];
+        let t = values[d + 5u];
+        put_value(4u * 5u, t.x);
+        put_value(4u * 5u + 1u, t.y);
+        put_value(4u * 5u + 2u, t.z);
+        put_value(4u * 5u + 3u, t.w);
     }
 {
 
-        q[3u] = values[rec.data + NN + 3u];
+        let t = values[d + 6u];
+        put_value(4u * 6u, t.x);
+        put_value(4u * 6u + 1u, t.y);
+        put_value(4u * 6u + 2u, t.z);
+        put_value(4u * 6u + 3u, t.w);
     }
 {
 
-        q[4u] = values[rec.data + NN + 4u];
+        let t = values[d + 7u];
+        put_value(4u * 7u, t.x);
+        put_value(4u * 7u + 1u, t.y);
+        put_value(4u * 7u + 2u, t.z);
+        put_value(4u * 7u + 3u, t.w);
     }
 {
 
-        q[5u] = values[rec.data + NN + 5u];
+        let t = values[d + 8u];
+        put_value(4u * 8u, t.x);
+        put_value(4u * 8u + 1u, t.y);
+        put_value(4u * 8u + 2u, t.z);
+        put_value(4u * 8u + 3u, t.w);
     }
 {
 
-        q[6u] = values[rec.data + NN + 6u];
+        let t = values[d + 9u];
+        put_value(4u * 9u, t.x);
+        put_value(4u * 9u + 1u, t.y);
+        put_value(4u * 9u + 2u, t.z);
+        put_value(4u * 9u + 3u, t.w);
     }
 {
 
-        q[7u] = values[rec.data + NN + 7u];
+        let t = values[d + 10u];
+        put_value(4u * 10u, t.x);
+        put_value(4u * 10u + 1u, t.y);
+        put_value(4u * 10u + 2u, t.z);
+        put_value(4u * 10u + 3u, t.w);
     }
 {
 
-        q[8u] = values[rec.data + NN + 8u];
+        let t = values[d + 11u];
+        put_value(4u * 11u, t.x);
+        put_value(4u * 11u + 1u, t.y);
+        put_value(4u * 11u + 2u, t.z);
+        put_value(4u * 11u + 3u, t.w);
     }
-
 {
 
-        mu[0u] = values[rec.data + NN + N + 0u];
+        let t = values[d + 12u];
+        put_value(4u * 12u, t.x);
+        put_value(4u * 12u + 1u, t.y);
+        put_value(4u * 12u + 2u, t.z);
+        put_value(4u * 12u + 3u, t.w);
     }
 {
 
-        mu[1u] = values[rec.data + NN + N + 1u];
+        let t = values[d + 13u];
+        put_value(4u * 13u, t.x);
+        put_value(4u * 13u + 1u, t.y);
+        put_value(4u * 13u + 2u, t.z);
+        put_value(4u * 13u + 3u, t.w);
     }
 {
 
-        mu[2u] = values[rec.data + NN + N + 2u];
+        let t = values[d + 14u];
+        put_value(4u * 14u, t.x);
+        put_value(4u * 14u + 1u, t.y);
+        put_value(4u * 14u + 2u, t.z);
+        put_value(4u * 14u + 3u, t.w);
     }
-
-    let v = rec.vectors;
 {
 
-        x[0u] = vectors[v + 0u];
+        let t = values[d + 15u];
+        put_value(4u * 15u, t.x);
+        put_value(4u * 15u + 1u, t.y);
+        put_value(4u * 15u + 2u, t.z);
+        put_value(4u * 15u + 3u, t.w);
     }
 {
 
-        x[1u] = vectors[v + 1u];
+        let t = values[d + 16u];
+        put_value(4u * 16u, t.x);
+        put_value(4u * 16u + 1u, t.y);
+        put_value(4u * 16u + 2u, t.z);
+        put_value(4u * 16u + 3u, t.w);
     }
 {
 
-        x[2u] = vectors[v + 2u];
+        let t = values[d + 17u];
+        put_value(4u * 17u, t.x);
+        put_value(4u * 17u + 1u, t.y);
+        put_value(4u * 17u + 2u, t.z);
+        put_value(4u * 17u + 3u, t.w);
     }
 {
 
-        x[3u] = vectors[v + 3u];
+        let t = values[d + 18u];
+        put_value(4u * 18u, t.x);
+        put_value(4u * 18u + 1u, t.y);
+        put_value(4u * 18u + 2u, t.z);
+        put_value(4u * 18u + 3u, t.w);
     }
 {
 
-        x[4u] = vectors[v + 4u];
+        let t = values[d + 19u];
+        put_value(4u * 19u, t.x);
+        put_value(4u * 19u + 1u, t.y);
+        put_value(4u * 19u + 2u, t.z);
+        put_value(4u * 19u + 3u, t.w);
     }
 {
 
-        x[5u] = vectors[v + 5u];
+        let t = values[d + 20u];
+        put_value(4u * 20u, t.x);
+        put_value(4u * 20u + 1u, t.y);
+        put_value(4u * 20u + 2u, t.z);
+        put_value(4u * 20u + 3u, t.w);
     }
 {
 
-        x[6u] = vectors[v + 6u];
+        let t = values[d + 21u];
+        put_value(4u * 21u, t.x);
+        put_value(4u * 21u + 1u, t.y);
+        put_value(4u * 21u + 2u, t.z);
+        put_value(4u * 21u + 3u, t.w);
     }
 {
 
-        x[7u] = vectors[v + 7u];
+        let t = values[d + 22u];
+        put_value(4u * 22u, t.x);
+        put_value(4u * 22u + 1u, t.y);
+        put_value(4u * 22u + 2u, t.z);
+        put_value(4u * 22u + 3u, t.w);
     }
 {
 
-        x[8u] = vectors[v + 8u];
+        let t = values[d + 23u];
+        put_value(4u * 23u, t.x);
+        put_value(4u * 23u + 1u, t.y);
+        put_value(4u * 23u + 2u, t.z);
+        put_value(4u * 23u + 3u, t.w);
     }
 
-    if vectors_used > 1u {
+    let v = rec.vectors / 4u;
+    if vectors4 == X4 {
 {
 
-            ux[0u] = vectors[v + N + 0u];
-            y[0u] = vectors[v + 2u * N + 0u];
-            uy[0u] = vectors[v + 3u * N + 0u];
-            best[0u] = vectors[v + 4u * N + 0u];
+            let t = vectors[v + 0u];
+            put_vector(4u * 0u, t.x, apgd);
+            put_vector(4u * 0u + 1u, t.y, apgd);
+            put_vector(4u * 0u + 2u, t.z, apgd);
+            put_vector(4u * 0u + 3u, t.w, apgd);
         }
 {
 
-            ux[1u] = vectors[v + N + 1u];
-            y[1u] = vectors[v + 2u * N + 1u];
-            uy[1u] = vectors[v + 3u * N + 1u];
-            best[1u] = vectors[v + 4u * N + 1u];
+            let t = vectors[v + 1u];
+            put_vector(4u * 1u, t.x, apgd);
+            put_vector(4u * 1u + 1u, t.y, apgd);
+            put_vector(4u * 1u + 2u, t.z, apgd);
+            put_vector(4u * 1u + 3u, t.w, apgd);
         }
 {
 
-            ux[2u] = vectors[v + N + 2u];
-            y[2u] = vectors[v + 2u * N + 2u];
-            uy[2u] = vectors[v + 3u * N + 2u];
-            best[2u] = vectors[v + 4u * N + 2u];
+            let t = vectors[v + 2u];
+            put_vector(4u * 2u, t.x, apgd);
+            put_vector(4u * 2u + 1u, t.y, apgd);
+            put_vector(4u * 2u + 2u, t.z, apgd);
+            put_vector(4u * 2u + 3u, t.w, apgd);
+        }
+
+    } else if apgd {
+{
+
+            let t = vectors[v + 0u];
+            put_vector(4u * 0u, t.x, true);
+            put_vector(4u * 0u + 1u, t.y, true);
+            put_vector(4u * 0u + 2u, t.z, true);
+            put_vector(4u * 0u + 3u, t.w, true);
         }
 {
 
-            ux[3u] = vectors[v + N + 3u];
-            y[3u] = vectors[v + 2u * N + 3u];
-            uy[3u] = vectors[v + 3u * N + 3u];
-            best[3u] = vectors[v + 4u * N + 3u];
+            let t = vectors[v + 1u];
+            put_vector(4u * 1u, t.x, true);
+            put_vector(4u * 1u + 1u, t.y, true);
+            put_vector(4u * 1u + 2u, t.z, true);
+            put_vector(4u * 1u + 3u, t.w, true);
         }
 {
 
-            ux[4u] = vectors[v + N + 4u];
-            y[4u] = vectors[v + 2u * N + 4u];
-            uy[4u] = vectors[v + 3u * N + 4u];
-            best[4u] = vectors[v + 4u * N + 4u];
+            let t = vectors[v + 2u];
+            put_vector(4u * 2u, t.x, true);
+            put_vector(4u * 2u + 1u, t.y, true);
+            put_vector(4u * 2u + 2u, t.z, true);
+            put_vector(4u * 2u + 3u, t.w, true);
         }
 {
 
-            ux[5u] = vectors[v + N + 5u];
-            y[5u] = vectors[v + 2u * N + 5u];
-            uy[5u] = vectors[v + 3u * N + 5u];
-            best[5u] = vectors[v + 4u * N + 5u];
+            let t = vectors[v + 3u];
+            put_vector(4u * 3u, t.x, true);
+            put_vector(4u * 3u + 1u, t.y, true);
+            put_vector(4u * 3u + 2u, t.z, true);
+            put_vector(4u * 3u + 3u, t.w, true);
         }
 {
 
-            ux[6u] = vectors[v + N + 6u];
-            y[6u] = vectors[v + 2u * N + 6u];
-            uy[6u] = vectors[v + 3u * N + 6u];
-            best[6u] = vectors[v + 4u * N + 6u];
+            let t = vectors[v + 4u];
+            put_vector(4u * 4u, t.x, true);
+            put_vector(4u * 4u + 1u, t.y, true);
+            put_vector(4u * 4u + 2u, t.z, true);
+            put_vector(4u * 4u + 3u, t.w, true);
         }
 {
 
-            ux[7u] = vectors[v + N + 7u];
-            y[7u] = vectors[v + 2u * N + 7u];
-            uy[7u] = vectors[v + 3u * N + 7u];
-            best[7u] = vectors[v + 4u * N + 7u];
+            let t = vectors[v + 5u];
+            put_vector(4u * 5u, t.x, true);
+            put_vector(4u * 5u + 1u, t.y, true);
+            put_vector(4u * 5u + 2u, t.z, true);
+            put_vector(4u * 5u + 3u, t.w, true);
         }
 {
 
-            ux[8u] = vectors[v + N + 8u];
-            y[8u] = vectors[v + 2u * N + 8u];
-            uy[8u] = vectors[v + 3u * N + 8u];
-            best[8u] = vectors[v + 4u * N + 8u];
+            let t = vectors[v + 6u];
+            put_vector(4u * 6u, t.x, true);
+            put_vector(4u * 6u + 1u, t.y, true);
+            put_vector(4u * 6u + 2u, t.z, true);
+            put_vector(4u * 6u + 3u, t.w, true);
+        }
+{
+
+            let t = vectors[v + 7u];
+            put_vector(4u * 7u, t.x, true);
+            put_vector(4u * 7u + 1u, t.y, true);
+            put_vector(4u * 7u + 2u, t.z, true);
+            put_vector(4u * 7u + 3u, t.w, true);
+        }
+{
+
+            let t = vectors[v + 8u];
+            put_vector(4u * 8u, t.x, true);
+            put_vector(4u * 8u + 1u, t.y, true);
+            put_vector(4u * 8u + 2u, t.z, true);
+            put_vector(4u * 8u + 3u, t.w, true);
+        }
+{
+
+            let t = vectors[v + 9u];
+            put_vector(4u * 9u, t.x, true);
+            put_vector(4u * 9u + 1u, t.y, true);
+            put_vector(4u * 9u + 2u, t.z, true);
+            put_vector(4u * 9u + 3u, t.w, true);
+        }
+{
+
+            let t = vectors[v + 10u];
+            put_vector(4u * 10u, t.x, true);
+            put_vector(4u * 10u + 1u, t.y, true);
+            put_vector(4u * 10u + 2u, t.z, true);
+            put_vector(4u * 10u + 3u, t.w, true);
+        }
+{
+
+            let t = vectors[v + 11u];
+            put_vector(4u * 11u, t.x, true);
+            put_vector(4u * 11u + 1u, t.y, true);
+            put_vector(4u * 11u + 2u, t.z, true);
+            put_vector(4u * 11u + 3u, t.w, true);
+        }
+
+    } else {
+{
+
+            let t = vectors[v + 0u];
+            put_vector(4u * 0u, t.x, false);
+            put_vector(4u * 0u + 1u, t.y, false);
+            put_vector(4u * 0u + 2u, t.z, false);
+            put_vector(4u * 0u + 3u, t.w, false);
+        }
+{
+
+            let t = vectors[v + 1u];
+            put_vector(4u * 1u, t.x, false);
+            put_vector(4u * 1u + 1u, t.y, false);
+            put_vector(4u * 1u + 2u, t.z, false);
+            put_vector(4u * 1u + 3u, t.w, false);
+        }
+{
+
+            let t = vectors[v + 2u];
+            put_vector(4u * 2u, t.x, false);
+            put_vector(4u * 2u + 1u, t.y, false);
+            put_vector(4u * 2u + 2u, t.z, false);
+            put_vector(4u * 2u + 3u, t.w, false);
         }
 
     }
@@ -1968,7 +1913,8 @@ fn sweeps(@builtin(global_invocation_id) gid: vec3<u32>) {
     if st.status > RUNNING {
         return;
     }
-    let v = load_island(rec, 1u);
+    // x and eta (eta is 0 before the first round, then computed here).
+    let v = load_island(rec, SWEEPS4, false);
     let gauss_seidel = (params.flags & 1u) == 1u;
     var spent = NN + 4u * N;
     if st.status == NOT_STARTED {
@@ -1976,20 +1922,6 @@ fn sweeps(@builtin(global_invocation_id) gid: vec3<u32>) {
         contact_steps(gauss_seidel);
         st.status = RUNNING;
         spent += product_cost();
-    } else {
-{
-
-            eta[0u] = vectors[v + N + 0u];
-        }
-{
-
-            eta[1u] = vectors[v + N + 1u];
-        }
-{
-
-            eta[2u] = vectors[v + N + 2u];
-        }
-
     }
     var cost = product_cost() + 6u * N;
     if gauss_seidel {
@@ -2015,130 +1947,144 @@ fn sweeps(@builtin(global_invocation_id) gid: vec3<u32>) {
     scalars[4u * index + 3u] = err;
 {
 
-        vectors[v + 0u] = x[0u];
+        vectors[v + 0u] = vec4<Scalar>(
+            get_vector(4u * 0u, false),
+            get_vector(4u * 0u + 1u, false),
+            get_vector(4u * 0u + 2u, false),
+            get_vector(4u * 0u + 3u, false)
+        );
     }
 {
 
-        vectors[v + 1u] = x[1u];
+        vectors[v + 1u] = vec4<Scalar>(
+            get_vector(4u * 1u, false),
+            get_vector(4u * 1u + 1u, false),
+            get_vector(4u * 1u + 2u, false),
+            get_vector(4u * 1u + 3u, false)
+        );
     }
 {
 
-        vectors[v + 2u] = x[2u];
-    }
-{
-
-        vectors[v + 3u] = x[3u];
-    }
-{
-
-        vectors[v + 4u] = x[4u];
-    }
-{
-
-        vectors[v + 5u] = x[5u];
-    }
-{
-
-        vectors[v + 6u] = x[6u];
-    }
-{
-
-        vectors[v + 7u] = x[7u];
-    }
-{
-
-        vectors[v + 8u] = x[8u];
-    }
-
-{
-
-        vectors[v + N + 0u] = eta[0u];
-    }
-{
-
-        vectors[v + N + 1u] = eta[1u];
-    }
-{
-
-        vectors[v + N + 2u] = eta[2u];
+        vectors[v + 2u] = vec4<Scalar>(
+            get_vector(4u * 2u, false),
+            get_vector(4u * 2u + 1u, false),
+            get_vector(4u * 2u + 2u, false),
+            get_vector(4u * 2u + 3u, false)
+        );
     }
 
     finish_round(index, st);
 }
 
-// Writes APGD's vectors back to `vectors` from v.
+// Writes APGD's vectors back to `vectors` from v (in vec4s).
 fn store_apgd(v: u32) {
 {
 
-        vectors[v + 0u] = x[0u];
-        vectors[v + N + 0u] = ux[0u];
-        vectors[v + 2u * N + 0u] = y[0u];
-        vectors[v + 3u * N + 0u] = uy[0u];
-        vectors[v + 4u * N + 0u] = best[0u];
+        vectors[v + 0u] = vec4<Scalar>(
+            get_vector(4u * 0u, true),
+            get_vector(4u * 0u + 1u, true),
+            get_vector(4u * 0u + 2u, true),
+            get_vector(4u * 0u + 3u, true)
+        );
     }
 {
 
-        vectors[v + 1u] = x[1u];
-        vectors[v + N + 1u] = ux[1u];
-        vectors[v + 2u * N + 1u] = y[1u];
-        vectors[v + 3u * N + 1u] = uy[1u];
-        vectors[v + 4u * N + 1u] = best[1u];
+        vectors[v + 1u] = vec4<Scalar>(
+            get_vector(4u * 1u, true),
+            get_vector(4u * 1u + 1u, true),
+            get_vector(4u * 1u + 2u, true),
+            get_vector(4u * 1u + 3u, true)
+        );
     }
 {
 
-        vectors[v + 2u] = x[2u];
-        vectors[v + N + 2u] = ux[2u];
-        vectors[v + 2u * N + 2u] = y[2u];
-        vectors[v + 3u * N + 2u] = uy[2u];
-        vectors[v + 4u * N + 2u] = best[2u];
+        vectors[v + 2u] = vec4<Scalar>(
+            get_vector(4u * 2u, true),
+            get_vector(4u * 2u + 1u, true),
+            get_vector(4u * 2u + 2u, true),
+            get_vector(4u * 2u + 3u, true)
+        );
     }
 {
 
-        vectors[v + 3u] = x[3u];
-        vectors[v + N + 3u] = ux[3u];
-        vectors[v + 2u * N + 3u] = y[3u];
-        vectors[v + 3u * N + 3u] = uy[3u];
-        vectors[v + 4u * N + 3u] = best[3u];
+        vectors[v + 3u] = vec4<Scalar>(
+            get_vector(4u * 3u, true),
+            get_vector(4u * 3u + 1u, true),
+            get_vector(4u * 3u + 2u, true),
+            get_vector(4u * 3u + 3u, true)
+        );
     }
 {
 
-        vectors[v + 4u] = x[4u];
-        vectors[v + N + 4u] = ux[4u];
-        vectors[v + 2u * N + 4u] = y[4u];
-        vectors[v + 3u * N + 4u] = uy[4u];
-        vectors[v + 4u * N + 4u] = best[4u];
+        vectors[v + 4u] = vec4<Scalar>(
+            get_vector(4u * 4u, true),
+            get_vector(4u * 4u + 1u, true),
+            get_vector(4u * 4u + 2u, true),
+            get_vector(4u * 4u + 3u, true)
+        );
     }
 {
 
-        vectors[v + 5u] = x[5u];
-        vectors[v + N + 5u] = ux[5u];
-        vectors[v + 2u * N + 5u] = y[5u];
-        vectors[v + 3u * N + 5u] = uy[5u];
-        vectors[v + 4u * N + 5u] = best[5u];
+        vectors[v + 5u] = vec4<Scalar>(
+            get_vector(4u * 5u, true),
+            get_vector(4u * 5u + 1u, true),
+            get_vector(4u * 5u + 2u, true),
+            get_vector(4u * 5u + 3u, true)
+        );
     }
 {
 
-        vectors[v + 6u] = x[6u];
-        vectors[v + N + 6u] = ux[6u];
-        vectors[v + 2u * N + 6u] = y[6u];
-        vectors[v + 3u * N + 6u] = uy[6u];
-        vectors[v + 4u * N + 6u] = best[6u];
+        vectors[v + 6u] = vec4<Scalar>(
+            get_vector(4u * 6u, true),
+            get_vector(4u * 6u + 1u, true),
+            get_vector(4u * 6u + 2u, true),
+            get_vector(4u * 6u + 3u, true)
+        );
     }
 {
 
-        vectors[v + 7u] = x[7u];
-        vectors[v + N + 7u] = ux[7u];
-        vectors[v + 2u * N + 7u] = y[7u];
-        vectors[v + 3u * N + 7u] = uy[7u];
-        vectors[v + 4u * N + 7u] = best[7u];
+        vectors[v + 7u] = vec4<Scalar>(
+            get_vector(4u * 7u, true),
+            get_vector(4u * 7u + 1u, true),
+            get_vector(4u * 7u + 2u, true),
+            get_vector(4u * 7u + 3u, true)
+        );
     }
 {
 
-        vectors[v + 8u] = x[8u];
-        vectors[v + N + 8u] = ux[8u];
-        vectors[v + 2u * N + 8u] = y[8u];
-        vectors[v + 3u * N + 8u] = uy[8u];
-        vectors[v + 4u * N + 8u] = best[8u];
+        vectors[v + 8u] = vec4<Scalar>(
+            get_vector(4u * 8u, true),
+            get_vector(4u * 8u + 1u, true),
+            get_vector(4u * 8u + 2u, true),
+            get_vector(4u * 8u + 3u, true)
+        );
+    }
+{
+
+        vectors[v + 9u] = vec4<Scalar>(
+            get_vector(4u * 9u, true),
+            get_vector(4u * 9u + 1u, true),
+            get_vector(4u * 9u + 2u, true),
+            get_vector(4u * 9u + 3u, true)
+        );
+    }
+{
+
+        vectors[v + 10u] = vec4<Scalar>(
+            get_vector(4u * 10u, true),
+            get_vector(4u * 10u + 1u, true),
+            get_vector(4u * 10u + 2u, true),
+            get_vector(4u * 10u + 3u, true)
+        );
+    }
+{
+
+        vectors[v + 11u] = vec4<Scalar>(
+            get_vector(4u * 11u, true),
+            get_vector(4u * 11u + 1u, true),
+            get_vector(4u * 11u + 2u, true),
+            get_vector(4u * 11u + 3u, true)
+        );
     }
 
 }
@@ -2995,14 +2941,14 @@ fn apgd(@builtin(global_invocation_id) gid: vec3<u32>) {
     var a: ApgdScalars;
     var v: u32;
     if st.status == NOT_STARTED {
-        v = load_island(rec, 1u);
+        v = load_island(rec, X4, true);
         st.status = RUNNING;
         if !apgd_start(&a) {
             st.status = FAILED;
         }
         spent += 2u * product_cost() + 8u * N;
     } else {
-        v = load_island(rec, 5u);
+        v = load_island(rec, APGD4, true);
         a = ApgdScalars(scalars[s], scalars[s + 1u], scalars[s + 2u], scalars[s + 3u]);
     }
     let cost = product_cost() + 10u * N;

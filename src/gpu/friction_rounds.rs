@@ -57,17 +57,38 @@ pub(crate) const FAILED: u32 = 4;
 
 /// Scalars per island in `scalars`: θ, L, best error, last error.
 const SCALARS: usize = 4;
+/// Steps per island in the first round, then 2×, 4×, … up to
+/// [`GROWN_TRIES`], each round its own submission with the finished islands
+/// dropped; then the full round budget. Why: the lanes of a SIMD group on
+/// llvmpipe wait for the slowest island of the group within a round, and
+/// the iteration counts are skewed (APGD on random spheres k = 4: median
+/// 53, p90 116, max 565), so one long round keeps most lanes idle; each
+/// round also reloads every running island (W and its vectors, about as
+/// much as 20 steps at k = 4, measured), so the first round is long enough
+/// that the quick sets (boxes, stacks: at most 60 steps) finish in it.
+/// 2026-11-26 on lavapipe, 10,000 islands: APGD random spheres k = 4 rounds
+/// 0.10 → 0.08 s, PGS 0.19 → 0.14 s, Jacobi 0.45 → 0.40 s.
+pub(crate) const FIRST_TRIES: u32 = 64;
+/// See [`FIRST_TRIES`].
+const GROWN_TRIES: u32 = 1024;
 /// Bytes of `unfinished`: one counter per k = 0…16.
 const UNFINISHED_BYTES: u64 = 17 * 4;
 
 /// Scalars of an island's vectors: sweeps x and the steps (4k); APGD x,
-/// u(x), y, u(y), best (15k).
+/// u(x), y, u(y), best (15k), padded to a multiple of 4 (the k ≤ 4 kernels
+/// read and write them as vec4).
 fn vector_len(method: ProjectedMethod, k: usize) -> usize {
     if method == ProjectedMethod::Apgd {
-        15 * k
+        (15 * k).next_multiple_of(4)
     } else {
         4 * k
     }
+}
+
+/// Scalars of an island's block in `values`: W, q, μ (9k² + 4k), padded to
+/// a multiple of 4 (read as vec4 by the k ≤ 4 kernels).
+fn values_len(p: &FrictionProblem) -> usize {
+    (p.w.len() + p.q.len() + p.mu.len()).next_multiple_of(4)
 }
 
 /// Where the answer lies among an island's vectors: APGD's best iterate,
@@ -80,24 +101,26 @@ fn answer_offset(method: ProjectedMethod, k: usize) -> usize {
     }
 }
 
-/// A chunk of islands (sorted by k) packed for the shader.
+/// A chunk of islands (sorted by k) packed for the shader: where each
+/// island's data and vectors lie. The buffers themselves are written at
+/// upload, straight from the problems ([`RoundsJob::run`]).
 pub(crate) struct FrictionChunk {
     /// The caller's index of each table entry.
     pub order: Vec<usize>,
     table: Vec<PackedFrictionIsland>,
-    /// W, q, μ of every island.
-    values: Vec<f64>,
-    /// Every island's vectors, its start r0 in the first 3k.
-    vectors: Vec<f64>,
+    /// Scalars in `values` (W, q, μ of every island).
+    values_len: usize,
+    /// Scalars in `vectors` (every island's vectors, its start r0 in the
+    /// first 3k).
+    vectors_len: usize,
 }
 
 /// Packs `problems[i]` for i in `indices` (each valid, k ≤
 /// [`MAX_GPU_CONTACTS`]), sorted by k, into chunks whose buffers each stay
-/// under `max_bytes` at `sb` bytes per scalar; `start(i)` is island i's r0.
+/// under `max_bytes` at `sb` bytes per scalar.
 pub(crate) fn pack_friction_chunks(
     problems: &[FrictionProblem],
     indices: &[usize],
-    start: &dyn Fn(usize) -> Vec<f64>,
     method: ProjectedMethod,
     max_bytes: u64,
     sb: u64,
@@ -110,15 +133,15 @@ pub(crate) fn pack_friction_chunks(
         let mut chunk = FrictionChunk {
             order: Vec::new(),
             table: Vec::new(),
-            values: Vec::new(),
-            vectors: Vec::new(),
+            values_len: 0,
+            vectors_len: 0,
         };
         while at < order.len() {
             let i = order[at];
             let p = &problems[i];
             let k = p.contacts();
-            let values = (chunk.values.len() + p.w.len() + 4 * k) as u64 * sb;
-            let vectors = (chunk.vectors.len() + vector_len(method, k)) as u64 * sb;
+            let values = (chunk.values_len + values_len(p)) as u64 * sb;
+            let vectors = (chunk.vectors_len + vector_len(method, k)) as u64 * sb;
             let count = chunk.order.len() as u64 + 1;
             let per_island = (SCALARS as u64 * sb).max(16);
             let too_big = values.max(vectors).max(count * per_island) > max_bytes;
@@ -127,22 +150,42 @@ pub(crate) fn pack_friction_chunks(
             }
             chunk.table.push(PackedFrictionIsland {
                 k: k as u32,
-                data: chunk.values.len() as u32,
-                vectors: chunk.vectors.len() as u32,
+                data: chunk.values_len as u32,
+                vectors: chunk.vectors_len as u32,
                 slot: chunk.table.len() as u32,
             });
-            chunk.values.extend_from_slice(&p.w);
-            chunk.values.extend_from_slice(&p.q);
-            chunk.values.extend_from_slice(&p.mu);
-            let v0 = chunk.vectors.len();
-            chunk.vectors.resize(v0 + vector_len(method, k), 0.0);
-            chunk.vectors[v0..v0 + 3 * k].copy_from_slice(&start(i));
+            chunk.values_len += values_len(p);
+            chunk.vectors_len += vector_len(method, k);
             chunk.order.push(i);
             at += 1;
         }
         chunks.push(chunk);
     }
     chunks
+}
+
+/// Writes `src` at scalar `at` of `view` in precision `p` (little-endian,
+/// as the shaders read them).
+fn write_scalars(view: &mut wgpu::BufferViewMut, at: usize, src: &[f64], p: Precision) {
+    if src.is_empty() {
+        return;
+    }
+    if p == Precision::F64 {
+        let bytes: &[u8] = bytemuck::cast_slice(src);
+        view.slice(8 * at..8 * at + bytes.len())
+            .copy_from_slice(bytes);
+    } else {
+        // A contact's W block rows at a time: small enough for the stack.
+        let mut buf = [0u8; 4 * 64];
+        for (c, part) in src.chunks(64).enumerate() {
+            for (b, &v) in buf.chunks_exact_mut(4).zip(part) {
+                b.copy_from_slice(&(v as f32).to_le_bytes());
+            }
+            let from = 4 * (at + 64 * c);
+            view.slice(from..from + 4 * part.len())
+                .copy_from_slice(&buf[..4 * part.len()]);
+        }
+    }
 }
 
 /// What the shader gave for one island.
@@ -172,6 +215,9 @@ pub(crate) struct RoundsJob<'a> {
     /// The controls uniform (binding 7).
     pub controls: &'a wgpu::Buffer,
     pub budget: u32,
+    /// Steps in the first round of a growing schedule ([`FIRST_TRIES`]);
+    /// None: every round at `budget`.
+    pub first_tries: Option<u32>,
     pub max_groups: u32,
     pub max_iterations: u32,
 }
@@ -219,22 +265,64 @@ impl RoundsJob<'_> {
             .friction_projected(self.ctx, k as usize, apgd)
     }
 
-    fn upload(&self, chunk: &FrictionChunk) -> ChunkBuffers {
+    /// The loop work (see the shader's top) of an island of k contacts in
+    /// a round that makes `tries` steps after its start (APGD: backtracking
+    /// tries; the sweeps: sweeps), at most the round budget.
+    fn budget_for_tries(&self, k: u32, tries: u32) -> u32 {
+        let n = 3 * k;
+        let product = n * n + n;
+        let (start, per_try) = match self.method {
+            ProjectedMethod::Apgd => (n * n + 6 * n + 2 * product + 8 * n, product + 10 * n),
+            ProjectedMethod::GaussSeidel => (n * n + 4 * n + product, 2 * product + 6 * n),
+            _ => (n * n + 4 * n + product, product + 6 * n),
+        };
+        start
+            .saturating_add(tries.saturating_mul(per_try))
+            .min(self.budget)
+    }
+
+    /// The chunk's buffers, W, q, μ and the starts written straight into
+    /// them from `problems` (`warm[i]`, where given, is island i's r0;
+    /// else 0, which the zeroed buffer already holds).
+    fn upload(
+        &self,
+        chunk: &FrictionChunk,
+        problems: &[FrictionProblem],
+        warm: Option<&[Vec<f64>]>,
+    ) -> Result<ChunkBuffers, Error> {
         let (ctx, p) = (self.ctx, self.ctx.precision());
+        let sb = p.bytes();
         let count = chunk.table.len() as u64;
-        let vectors = scalars_to_bytes(&chunk.vectors, p);
         let states_size = count * std::mem::size_of::<FrictionState>() as u64;
-        let scalars_size = count * SCALARS as u64 * p.bytes();
-        ChunkBuffers {
-            values: ctx.storage("friction values", &scalars_to_bytes(&chunk.values, p)),
-            vectors_size: vectors.len() as u64,
-            vectors: ctx.storage("friction vectors", &vectors),
+        let scalars_size = count * SCALARS as u64 * sb;
+        let vectors_size = chunk.vectors_len as u64 * sb;
+        let values =
+            ctx.storage_filled("friction values", chunk.values_len as u64 * sb, |view| {
+                for (rec, &i) in chunk.table.iter().zip(&chunk.order) {
+                    let (pr, at) = (&problems[i], rec.data as usize);
+                    write_scalars(view, at, &pr.w, p);
+                    write_scalars(view, at + pr.w.len(), &pr.q, p);
+                    write_scalars(view, at + pr.w.len() + pr.q.len(), &pr.mu, p);
+                }
+            })?;
+        let vectors = ctx.storage_filled("friction vectors", vectors_size, |view| {
+            let Some(warm) = warm else { return };
+            for (rec, &i) in chunk.table.iter().zip(&chunk.order) {
+                if let Some(r0) = warm.get(i) {
+                    write_scalars(view, rec.vectors as usize, r0, p);
+                }
+            }
+        })?;
+        Ok(ChunkBuffers {
+            values,
+            vectors,
+            vectors_size,
             scalars: ctx.storage_zeroed("friction scalars", scalars_size),
             scalars_size,
             states: ctx.storage_zeroed("friction states", states_size),
             states_size,
             unfinished: ctx.storage_zeroed("friction unfinished", UNFINISHED_BYTES),
-        }
+        })
     }
 
     /// One dispatch range per island size k over `table` (sorted by k;
@@ -244,6 +332,7 @@ impl RoundsJob<'_> {
         &self,
         table: &[PackedFrictionIsland],
         b: &ChunkBuffers,
+        tries: Option<u32>,
     ) -> Result<Vec<(u32, Ranges)>, Error> {
         let gauss_seidel = (self.method == ProjectedMethod::GaussSeidel) as u32;
         let islands = self
@@ -255,8 +344,9 @@ impl RoundsJob<'_> {
             let k = table[first].k;
             let stage = self.stage(k)?;
             let last = first + table[first..].iter().take_while(|r| r.k == k).count();
+            let budget = tries.map_or(self.budget, |t| self.budget_for_tries(k, t));
             let span = Span {
-                budget: self.budget,
+                budget,
                 flags: gauss_seidel,
                 ..Span::items(first as u32, (last - first) as u32)
             };
@@ -288,9 +378,15 @@ impl RoundsJob<'_> {
     /// invocation of a finished island still cost about 1.5 µs a round,
     /// measured: a batch's few slow islands made its rounds cost as much as
     /// all of it).
-    pub(crate) fn run(&self, chunk: &FrictionChunk) -> Result<ChunkRun, Error> {
+    /// `problems` and `warm` are the caller's, indexed by `chunk.order`.
+    pub(crate) fn run(
+        &self,
+        chunk: &FrictionChunk,
+        problems: &[FrictionProblem],
+        warm: Option<&[Vec<f64>]>,
+    ) -> Result<ChunkRun, Error> {
         let ctx = self.ctx;
-        let b = self.upload(chunk);
+        let b = self.upload(chunk, problems, warm)?;
         let mut run = ChunkRun {
             islands: Vec::new(),
             dispatches: 0,
@@ -301,8 +397,10 @@ impl RoundsJob<'_> {
         let cap = (self.max_iterations as usize + 1) * 65 + 1;
         let mut running = chunk.table.clone();
         let mut per_submit = 1usize;
+        // Short rounds first (see FIRST_TRIES), then the full budget.
+        let mut tries = self.first_tries;
         while !running.is_empty() {
-            let buckets = self.buckets(&running, &b)?;
+            let buckets = self.buckets(&running, &b, tries)?;
             let mut encoder = ctx.encoder("friction rounds");
             for _ in 0..per_submit {
                 for (k, ranges) in &buckets {
@@ -325,12 +423,22 @@ impl RoundsJob<'_> {
                     run.rounds
                 )));
             }
-            per_submit = (per_submit * 2).min(256);
+            tries = match tries {
+                Some(t) if t < GROWN_TRIES => Some(2 * t),
+                Some(_) => None,
+                None => {
+                    per_submit = (per_submit * 2).min(256);
+                    None
+                }
+            };
         }
         run.islands = self.read(chunk, &b)?;
         Ok(run)
     }
 
+    /// The answers of the chunk's islands, each island's answer and
+    /// scalars taken straight from the mapped readback (the rest of its
+    /// vectors stay there).
     fn read(&self, chunk: &FrictionChunk, b: &ChunkBuffers) -> Result<Vec<GpuIslandRun>, Error> {
         let ctx = self.ctx;
         let reads = [
@@ -338,39 +446,42 @@ impl RoundsJob<'_> {
             (&b.scalars, b.scalars_size),
             (&b.states, b.states_size),
         ];
-        let mut bytes = ctx
-            .submit_and_read(ctx.encoder("friction readback"), &reads)?
-            .into_iter();
         let p: Precision = ctx.precision();
-        let vectors = scalars_from_bytes(&bytes.next().unwrap_or_default(), p);
-        let scalars = scalars_from_bytes(&bytes.next().unwrap_or_default(), p);
-        let state_bytes = bytes.next().unwrap_or_default();
-        let states: &[FrictionState] = bytemuck::try_cast_slice(&state_bytes)
-            .map_err(|e| Error::Gpu(format!("friction states: {e}")))?;
-        chunk
-            .table
-            .iter()
-            .enumerate()
-            .map(|(t, rec)| {
-                let (k, v) = (rec.k as usize, rec.vectors as usize);
-                let at = v + answer_offset(self.method, k);
-                // APGD: the best iterate's error; the sweeps: the last one's.
-                let e = if self.method == ProjectedMethod::Apgd {
-                    2
-                } else {
-                    3
-                };
-                Ok(GpuIslandRun {
-                    state: *states
-                        .get(t)
-                        .ok_or_else(|| Error::Gpu("friction states: short read".into()))?,
-                    r: vectors
-                        .get(at..at + 3 * k)
-                        .ok_or_else(|| Error::Gpu("friction vectors: short read".into()))?
-                        .to_vec(),
-                    error: scalars.get(SCALARS * t + e).copied().unwrap_or(f64::NAN),
+        let sb = p.bytes() as usize;
+        ctx.submit_and_map(ctx.encoder("friction readback"), &reads, |bytes| {
+            let (vectors, scalars, state_bytes) = (bytes[0], bytes[1], bytes[2]);
+            let states: &[FrictionState] = bytemuck::try_cast_slice(state_bytes)
+                .map_err(|e| Error::Gpu(format!("friction states: {e}")))?;
+            chunk
+                .table
+                .iter()
+                .enumerate()
+                .map(|(t, rec)| {
+                    let (k, v) = (rec.k as usize, rec.vectors as usize);
+                    let at = sb * (v + answer_offset(self.method, k));
+                    // APGD: the best iterate's error; the sweeps: the last one's.
+                    let e = if self.method == ProjectedMethod::Apgd {
+                        2
+                    } else {
+                        3
+                    };
+                    let e_at = sb * (SCALARS * t + e);
+                    Ok(GpuIslandRun {
+                        state: *states
+                            .get(t)
+                            .ok_or_else(|| Error::Gpu("friction states: short read".into()))?,
+                        r: scalars_from_bytes(
+                            vectors
+                                .get(at..at + sb * 3 * k)
+                                .ok_or_else(|| Error::Gpu("friction vectors: short read".into()))?,
+                            p,
+                        ),
+                        error: scalars
+                            .get(e_at..e_at + sb)
+                            .map_or(f64::NAN, |b| scalars_from_bytes(b, p)[0]),
+                    })
                 })
-            })
-            .collect()
+                .collect()
+        })?
     }
 }

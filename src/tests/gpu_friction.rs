@@ -24,7 +24,8 @@ use crate::friction::{
     ProjectedMethod, ProjectedSettings, MAX_GPU_CONTACTS,
 };
 use crate::gpu::friction::run_on_gpu;
-use crate::gpu::friction_rounds::{AT_CAP, CONVERGED};
+use crate::gpu::friction_rounds::{AT_CAP, CONVERGED, FIRST_TRIES};
+use crate::gpu::kernel::SOFTWARE_ROUND_BUDGET;
 use crate::gpu::{GpuContext, Precision};
 use crate::{GpuSettings, Status};
 
@@ -121,6 +122,91 @@ fn f64_shader_iterates_are_the_twins() {
     for method in ProjectedMethod::ALL {
         iterates_match(&ctx, &problems, method);
     }
+}
+
+/// The default rounds grow (FIRST_TRIES steps, then twice as many, each
+/// round its own submission with the finished islands dropped); islands
+/// that run past the first round continue where it stopped. Their
+/// iterates equal those of full-budget rounds (a round budget given: no
+/// growing) and the twin's iteration counts, on islands that need more
+/// than FIRST_TRIES steps (k = 1, 4: the unrolled kernels; 7: the buffer
+/// kernel).
+#[test]
+fn growing_rounds_give_the_iterates_of_full_rounds() {
+    let Some(ctx) = gpu_context(Precision::F64) else {
+        return;
+    };
+    let problems = islands_of(0x5C4, 4, &[1, 4, 7]);
+    let all: Vec<usize> = (0..problems.len()).collect();
+    let bitwise = ctx.adapter_info().software;
+    for method in ProjectedMethod::ALL {
+        let settings = ProjectedSettings {
+            method,
+            tolerance: Some(1e-12),
+            max_iterations: 400,
+            ..Default::default()
+        };
+        let (grown, figures) = run_on_gpu(
+            &ctx,
+            &problems,
+            &all,
+            None,
+            &settings,
+            &GpuSettings::default(),
+        )
+        .unwrap();
+        let full = GpuSettings {
+            round_budget: Some(SOFTWARE_ROUND_BUDGET),
+            ..GpuSettings::default()
+        };
+        let (flat, _) = run_on_gpu(&ctx, &problems, &all, None, &settings, &full).unwrap();
+        let longest = grown.iter().map(|r| r.state.iterations).max().unwrap_or(0);
+        assert!(
+            longest > 2 * FIRST_TRIES && figures.rounds >= 3,
+            "{method:?}: longest island {longest} iterations, {} rounds",
+            figures.rounds
+        );
+        for (i, ((p, g), f)) in problems.iter().zip(&grown).zip(&flat).enumerate() {
+            let what = format!("{method:?} island {i} (k = {})", p.contacts());
+            assert_eq!(g.state, f.state, "{what}");
+            let twin = solve_checked(p, None, &settings, 1e-12);
+            assert_eq!(g.state.iterations, twin.iterations, "{what}");
+            let d = rel_diff(&g.r, &f.r);
+            assert!(d <= 1e-11, "{what}: r differs by {d:e}");
+            if bitwise {
+                assert_eq!(g.r, f.r, "{what}: not bit for bit");
+            }
+        }
+    }
+}
+
+/// The friction batches' buffers are written in place at creation
+/// (`storage_filled`): a shader's view of them, read back, is what was
+/// written, and 0 where nothing was; on a software adapter the device maps
+/// storage buffers themselves (no staging copy).
+#[test]
+fn filled_storage_buffers_hold_what_was_written() {
+    let Some(ctx) = gpu_context(Precision::F64) else {
+        return;
+    };
+    if ctx.adapter_info().software {
+        assert!(ctx
+            .device
+            .features()
+            .contains(wgpu::Features::MAPPABLE_PRIMARY_BUFFERS));
+    }
+    let written: Vec<u8> = (1..=24).collect();
+    let buffer = ctx
+        .storage_filled("test", 64, |view| {
+            view.slice(16..40).copy_from_slice(&written);
+        })
+        .unwrap();
+    let back = ctx
+        .submit_and_read(ctx.encoder("test"), &[(&buffer, 64)])
+        .unwrap();
+    let mut expected = vec![0u8; 64];
+    expected[16..40].copy_from_slice(&written);
+    assert_eq!(back[0], expected);
 }
 
 /// Final answers of the GPU path against the twin's, at `precision`.

@@ -93,7 +93,18 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
                 &format!("const SCALAR_EPSILON: Scalar = {eps};"),
             )?;
             let n = 3 * k as u64;
-            let constants = [("N", n), ("NN", n * n), ("FIXED_K", k as u64)];
+            // The vec4 counts of shaders/friction_projected.wgsl (its
+            // VALUES4, APGD4, X4, SWEEPS4: the same formulas).
+            let k4 = k as u64;
+            let constants = [
+                ("N", n),
+                ("NN", n * n),
+                ("FIXED_K", k4),
+                ("VALUES4", (n * n + n + k4).div_ceil(4)),
+                ("APGD4", (5 * n).div_ceil(4)),
+                ("X4", n.div_ceil(4)),
+                ("SWEEPS4", k4),
+            ];
             unroll_marked_loops(&s, &constants, true)?
         }
         Shader::Unrolled(n) | Shader::Tree(n) | Shader::FrictionProjected(n) => {
