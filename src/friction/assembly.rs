@@ -171,18 +171,26 @@ pub fn assemble_friction_island(
         }
     }
     touches.sort_unstable();
+    // Each side's three rows, copied once into fixed-size blocks (the pair
+    // loop below reads each side's once per partner: no bounds checks there).
+    let sides: Vec<Side> = touches
+        .iter()
+        .map(|&(_, i, side)| Side::of(&rows[island.contacts[i]], i, side))
+        .collect();
     let mut w = vec![0.0; n * n];
+    let mut start = 0;
     for group in touches.chunk_by(|x, y| x.0 == y.0) {
-        for &(_, i, si) in group {
-            let row_i = &rows[island.contacts[i]].rows;
-            for &(_, j, sj) in group {
-                let row_j = &rows[island.contacts[j]].rows;
-                for (a, ra) in row_i.iter().enumerate() {
-                    let jac = &ra.jacobian[6 * si..6 * si + 6];
-                    let at = (3 * i + a) * n + 3 * j;
-                    for (entry, rb) in w[at..at + 3].iter_mut().zip(row_j) {
-                        *entry += body_term(jac, &rb.response[6 * sj..6 * sj + 6]);
-                    }
+        let group_sides = &sides[start..start + group.len()];
+        start += group.len();
+        for si in group_sides {
+            for sj in group_sides {
+                let block = body_block(&si.jacobian, &sj.response);
+                let at = 3 * si.contact * n + 3 * sj.contact;
+                for (a, terms) in block.iter().enumerate() {
+                    let out = &mut w[at + a * n..at + a * n + 3];
+                    out[0] += terms[0];
+                    out[1] += terms[1];
+                    out[2] += terms[2];
                 }
             }
         }
@@ -200,11 +208,55 @@ pub fn assemble_friction_island(
     FrictionProblem { w, q, mu }
 }
 
-/// One body's term of a W entry: J · (M⁻¹ Jᵀ) over that body's 6 entries,
-/// summed as [`matrix_entry`] sums them.
+/// One contact's side (one dynamic body) in an island: its index in the
+/// island, the side's 6 entries of J per direction n, t₁, t₂, and of
+/// M⁻¹ Jᵀ transposed (entry k of every direction together).
+struct Side {
+    contact: usize,
+    jacobian: [[f64; 6]; 3],
+    response: [[f64; 3]; 6],
+}
+
+impl Side {
+    /// Side `side` (0: body a, 1: body b) of contact number `contact` of
+    /// the island, from its rows.
+    fn of(rows: &FrictionContactRows, contact: usize, side: usize) -> Side {
+        let part = |v: &[f64; 12]| -> [f64; 6] { std::array::from_fn(|k| v[6 * side + k]) };
+        let response = rows.rows.each_ref().map(|r| part(&r.response));
+        Side {
+            contact,
+            jacobian: rows.rows.each_ref().map(|r| part(&r.jacobian)),
+            response: std::array::from_fn(|k| std::array::from_fn(|b| response[b][k])),
+        }
+    }
+}
+
+/// One body's terms of a 3 × 3 block of W: entry (α, β) is J_α · (M⁻¹ J_βᵀ)
+/// over that body's 6 entries, summed in order k = 0..6 as [`matrix_entry`]
+/// sums them, the nine sums side by side (the compiler keeps them in vector
+/// registers; each is the same chain of additions, so bit for bit
+/// `matrix_entry`'s term up to the sign of a zero sum, which the entry's
+/// `0 + term` erases).
 #[inline]
-fn body_term(jacobian: &[f64], response: &[f64]) -> f64 {
-    jacobian.iter().zip(response).map(|(a, b)| a * b).sum()
+fn body_block(jacobian: &[[f64; 6]; 3], response: &[[f64; 3]; 6]) -> [[f64; 3]; 3] {
+    // s + c v, lane by lane: one more term of three sums.
+    #[inline(always)]
+    fn add(s: [f64; 3], c: f64, v: &[f64; 3]) -> [f64; 3] {
+        [s[0] + c * v[0], s[1] + c * v[1], s[2] + c * v[2]]
+    }
+    let row = |j: &[f64; 6]| {
+        let s = [
+            j[0] * response[0][0],
+            j[0] * response[0][1],
+            j[0] * response[0][2],
+        ];
+        let s = add(s, j[1], &response[1]);
+        let s = add(s, j[2], &response[2]);
+        let s = add(s, j[3], &response[3]);
+        let s = add(s, j[4], &response[4]);
+        add(s, j[5], &response[5])
+    };
+    [row(&jacobian[0]), row(&jacobian[1]), row(&jacobian[2])]
 }
 
 /// One island of a scene and its frictional problem.

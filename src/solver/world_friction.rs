@@ -22,7 +22,7 @@ use crate::cpu::impulses::BodyVelocity;
 use crate::friction::assembly::{
     apply_friction_impulses, assemble_friction_contacts, assemble_friction_island,
 };
-use crate::friction::solve_friction_problem;
+use crate::friction::{solve_friction_problem, FrictionProblem};
 use crate::islands::{find_islands, Island};
 use crate::report::{FrictionIslandReport, SceneFriction, SceneReport};
 use crate::scene::Scene;
@@ -105,15 +105,17 @@ impl Solver {
                 warm.then(|| item.warm.friction.start(ids)).flatten()
             })
             .collect();
+        let problems: Vec<FrictionProblem> = islands
+            .iter()
+            .map(|isl| assemble_friction_island(scene, &rows, isl))
+            .collect();
         let t1 = Instant::now();
         let settings = self.settings.friction();
         let mut r = vec![[0.0; 3]; scene.contacts.len()];
         let mut u = vec![[0.0; 3]; scene.contacts.len()];
         let mut reports = Vec::with_capacity(islands.len());
-        for (island, start) in islands.into_iter().zip(&starts) {
-            // Assembled just before its solve: W is still in the cache.
-            let problem = assemble_friction_island(scene, &rows, &island);
-            let solution = solve_friction_problem(&problem, start.as_deref(), &settings);
+        for ((island, problem), start) in islands.into_iter().zip(&problems).zip(&starts) {
+            let solution = solve_friction_problem(problem, start.as_deref(), &settings);
             for (i, &c) in island.contacts.iter().enumerate() {
                 r[c].copy_from_slice(&solution.r[3 * i..3 * i + 3]);
                 u[c].copy_from_slice(&solution.u[3 * i..3 * i + 3]);
