@@ -171,8 +171,8 @@ pub fn assemble_friction_island(
         }
     }
     touches.sort_unstable();
-    // Each side's three rows, copied once into fixed-size blocks (the pair
-    // loop below reads each side's once per partner: no bounds checks there).
+    // Each side's 6-entry parts of its three rows, found once (the pair
+    // loop below reads them per partner, without bounds checks).
     let sides: Vec<Side> = touches
         .iter()
         .map(|&(_, i, side)| Side::of(&rows[island.contacts[i]], i, side))
@@ -209,24 +209,25 @@ pub fn assemble_friction_island(
 }
 
 /// One contact's side (one dynamic body) in an island: its index in the
-/// island, the side's 6 entries of J per direction n, t₁, t₂, and of
-/// M⁻¹ Jᵀ transposed (entry k of every direction together).
-struct Side {
+/// island and, per direction n, t₁, t₂, the side's 6 entries of J and of
+/// M⁻¹ Jᵀ (borrowed from the contact's rows: nothing is copied).
+struct Side<'a> {
     contact: usize,
-    jacobian: [[f64; 6]; 3],
-    response: [[f64; 3]; 6],
+    jacobian: [&'a [f64; 6]; 3],
+    response: [&'a [f64; 6]; 3],
 }
 
-impl Side {
+impl<'a> Side<'a> {
     /// Side `side` (0: body a, 1: body b) of contact number `contact` of
     /// the island, from its rows.
-    fn of(rows: &FrictionContactRows, contact: usize, side: usize) -> Side {
-        let part = |v: &[f64; 12]| -> [f64; 6] { std::array::from_fn(|k| v[6 * side + k]) };
-        let response = rows.rows.each_ref().map(|r| part(&r.response));
+    fn of(rows: &'a FrictionContactRows, contact: usize, side: usize) -> Self {
+        let part = |v: &'a [f64; 12]| -> &'a [f64; 6] {
+            v[6 * side..6 * side + 6].try_into().expect("6 entries")
+        };
         Side {
             contact,
             jacobian: rows.rows.each_ref().map(|r| part(&r.jacobian)),
-            response: std::array::from_fn(|k| std::array::from_fn(|b| response[b][k])),
+            response: rows.rows.each_ref().map(|r| part(&r.response)),
         }
     }
 }
@@ -238,25 +239,20 @@ impl Side {
 /// `matrix_entry`'s term up to the sign of a zero sum, which the entry's
 /// `0 + term` erases).
 #[inline]
-fn body_block(jacobian: &[[f64; 6]; 3], response: &[[f64; 3]; 6]) -> [[f64; 3]; 3] {
-    // s + c v, lane by lane: one more term of three sums.
-    #[inline(always)]
-    fn add(s: [f64; 3], c: f64, v: &[f64; 3]) -> [f64; 3] {
-        [s[0] + c * v[0], s[1] + c * v[1], s[2] + c * v[2]]
-    }
+fn body_block(jacobian: &[&[f64; 6]; 3], response: &[&[f64; 6]; 3]) -> [[f64; 3]; 3] {
+    let [r0, r1, r2] = response;
     let row = |j: &[f64; 6]| {
-        let s = [
-            j[0] * response[0][0],
-            j[0] * response[0][1],
-            j[0] * response[0][2],
-        ];
-        let s = add(s, j[1], &response[1]);
-        let s = add(s, j[2], &response[2]);
-        let s = add(s, j[3], &response[3]);
-        let s = add(s, j[4], &response[4]);
-        add(s, j[5], &response[5])
+        let mut s = [j[0] * r0[0], j[0] * r1[0], j[0] * r2[0]];
+        for k in 1..6 {
+            s = [
+                s[0] + j[k] * r0[k],
+                s[1] + j[k] * r1[k],
+                s[2] + j[k] * r2[k],
+            ];
+        }
+        s
     };
-    [row(&jacobian[0]), row(&jacobian[1]), row(&jacobian[2])]
+    [row(jacobian[0]), row(jacobian[1]), row(jacobian[2])]
 }
 
 /// One island of a scene and its frictional problem.
