@@ -145,11 +145,14 @@ impl Solver {
                 format!("{dt} is not a positive number"),
             ));
         }
-        for (i, w) in worlds.iter().enumerate() {
-            // The world's name is formatted only for the error.
-            if w.validate("world").is_err() {
-                w.validate(&format!("world {i}"))?;
-            }
+        // Checked over the cores; the first bad world (in order) is checked
+        // again by name for the error (the name is formatted only then).
+        let shared: &[World] = worlds;
+        let bad = parallel_map(shared.len(), self.threads, |i| {
+            shared[i].validate("world").is_err()
+        });
+        if let Some(i) = bad.iter().position(|&b| b) {
+            worlds[i].validate(&format!("world {i}"))?;
         }
         let start = Instant::now();
         let shared: &[World] = worlds;
