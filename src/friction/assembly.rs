@@ -155,6 +155,23 @@ pub fn assemble_friction_island(
     rows: &[FrictionContactRows],
     island: &Island,
 ) -> FrictionProblem {
+    let mut p = FrictionProblem {
+        w: Vec::new(),
+        q: Vec::new(),
+        mu: Vec::new(),
+    };
+    assemble_friction_island_into(scene, rows, island, &mut p);
+    p
+}
+
+/// [`assemble_friction_island`] into `out`, reusing its buffers (a thread
+/// that assembles island after island allocates W once).
+pub fn assemble_friction_island_into(
+    scene: &Scene,
+    rows: &[FrictionContactRows],
+    island: &Island,
+    out: &mut FrictionProblem,
+) {
     let k = island.len();
     let n = 3 * k;
     // (body, contact in the island, side) for every dynamic side, grouped
@@ -177,7 +194,9 @@ pub fn assemble_friction_island(
         .iter()
         .map(|&(_, i, side)| Side::of(&rows[island.contacts[i]], i, side))
         .collect();
-    let mut w = vec![0.0; n * n];
+    let w = &mut out.w;
+    w.clear();
+    w.resize(n * n, 0.0);
     let mut start = 0;
     for group in touches.chunk_by(|x, y| x.0 == y.0) {
         let group_sides = &sides[start..start + group.len()];
@@ -195,17 +214,16 @@ pub fn assemble_friction_island(
             }
         }
     }
-    let q = island
-        .contacts
-        .iter()
-        .flat_map(|&c| rows[c].rows.map(|r| r.q))
-        .collect();
-    let mu = island
-        .contacts
-        .iter()
-        .map(|&c| scene.contacts[c].friction)
-        .collect();
-    FrictionProblem { w, q, mu }
+    out.q.clear();
+    out.q.extend(
+        island
+            .contacts
+            .iter()
+            .flat_map(|&c| rows[c].rows.map(|r| r.q)),
+    );
+    out.mu.clear();
+    out.mu
+        .extend(island.contacts.iter().map(|&c| scene.contacts[c].friction));
 }
 
 /// One contact's side (one dynamic body) in an island: its index in the

@@ -9,6 +9,7 @@
 //! world, and a world's bits do not depend on the batch around it or on the
 //! thread count.
 
+use std::cell::RefCell;
 use std::time::Instant;
 
 use super::friction_path::contact_impulse;
@@ -20,7 +21,7 @@ use super::Solver;
 use crate::cpu::assembly::{assemble_contacts, assemble_island};
 use crate::cpu::impulses::BodyVelocity;
 use crate::friction::assembly::{
-    apply_friction_impulses, assemble_friction_contacts, assemble_friction_island,
+    apply_friction_impulses, assemble_friction_contacts, assemble_friction_island_into,
 };
 use crate::friction::{solve_friction_problem, FrictionProblem};
 use crate::islands::{find_islands, Island};
@@ -105,17 +106,21 @@ impl Solver {
                 warm.then(|| item.warm.friction.start(ids)).flatten()
             })
             .collect();
-        let problems: Vec<FrictionProblem> = islands
-            .iter()
-            .map(|isl| assemble_friction_island(scene, &rows, isl))
-            .collect();
-        let t1 = Instant::now();
         let settings = self.settings.friction();
         let mut r = vec![[0.0; 3]; scene.contacts.len()];
         let mut u = vec![[0.0; 3]; scene.contacts.len()];
         let mut reports = Vec::with_capacity(islands.len());
-        for ((island, problem), start) in islands.into_iter().zip(&problems).zip(&starts) {
-            let solution = solve_friction_problem(problem, start.as_deref(), &settings);
+        // Each island assembled into this thread's problem just before its
+        // solve (W allocated once per thread; its seconds go to the build).
+        let mut assembly = std::time::Duration::ZERO;
+        let t1 = Instant::now();
+        for (island, start) in islands.into_iter().zip(&starts) {
+            let ta = Instant::now();
+            let solution = with_problem(|problem| {
+                assemble_friction_island_into(scene, &rows, &island, problem);
+                assembly += ta.elapsed();
+                solve_friction_problem(problem, start.as_deref(), &settings)
+            });
             for (i, &c) in island.contacts.iter().enumerate() {
                 r[c].copy_from_slice(&solution.r[3 * i..3 * i + 3]);
                 u[c].copy_from_slice(&solution.u[3 * i..3 * i + 3]);
@@ -167,9 +172,43 @@ impl Solver {
             islands: Vec::new(),
             friction: reports,
             world,
-            times: [t1 - t0, t2 - t1, t3 - t2, t4 - t3].map(|d| d.as_secs_f64()),
+            times: [
+                t1 - t0 + assembly,
+                (t2 - t1).saturating_sub(assembly),
+                t3 - t2,
+                t4 - t3,
+            ]
+            .map(|d| d.as_secs_f64()),
             repairs,
         }
+    }
+}
+
+thread_local! {
+    /// This thread's island problem, reassembled island after island.
+    static PROBLEM: RefCell<FrictionProblem> = RefCell::new(FrictionProblem {
+        w: Vec::new(),
+        q: Vec::new(),
+        mu: Vec::new(),
+    });
+}
+
+/// Runs `f` with this thread's island problem (a fresh one where it is in
+/// use already).
+fn with_problem<T>(f: impl FnOnce(&mut FrictionProblem) -> T) -> T {
+    let mut f = Some(f);
+    let out = PROBLEM.with(|cell| {
+        cell.try_borrow_mut()
+            .ok()
+            .map(|mut p| (f.take().expect("called once"))(&mut p))
+    });
+    match out {
+        Some(v) => v,
+        None => (f.take().expect("not called yet"))(&mut FrictionProblem {
+            w: Vec::new(),
+            q: Vec::new(),
+            mu: Vec::new(),
+        }),
     }
 }
 
