@@ -186,11 +186,13 @@ impl Solver {
 
 thread_local! {
     /// This thread's island problem, reassembled island after island.
-    static PROBLEM: RefCell<FrictionProblem> = RefCell::new(FrictionProblem {
-        w: Vec::new(),
-        q: Vec::new(),
-        mu: Vec::new(),
-    });
+    static PROBLEM: RefCell<FrictionProblem> = const {
+        RefCell::new(FrictionProblem {
+            w: Vec::new(),
+            q: Vec::new(),
+            mu: Vec::new(),
+        })
+    };
 }
 
 /// Runs `f` with this thread's island problem (a fresh one where it is in
