@@ -155,6 +155,23 @@ pub fn assemble_friction_island(
     rows: &[FrictionContactRows],
     island: &Island,
 ) -> FrictionProblem {
+    let mut p = FrictionProblem {
+        w: Vec::new(),
+        q: Vec::new(),
+        mu: Vec::new(),
+    };
+    assemble_friction_island_into(scene, rows, island, &mut p);
+    p
+}
+
+/// [`assemble_friction_island`] into `out`, reusing its buffers (a thread
+/// that assembles island after island allocates W once).
+pub fn assemble_friction_island_into(
+    scene: &Scene,
+    rows: &[FrictionContactRows],
+    island: &Island,
+    out: &mut FrictionProblem,
+) {
     let k = island.len();
     let n = 3 * k;
     // (body, contact in the island, side) for every dynamic side, grouped
@@ -171,40 +188,89 @@ pub fn assemble_friction_island(
         }
     }
     touches.sort_unstable();
-    let mut w = vec![0.0; n * n];
+    // Each side's 6-entry parts of its three rows, found once (the pair
+    // loop below reads them per partner, without bounds checks).
+    let sides: Vec<Side> = touches
+        .iter()
+        .map(|&(_, i, side)| Side::of(&rows[island.contacts[i]], i, side))
+        .collect();
+    let w = &mut out.w;
+    w.clear();
+    w.resize(n * n, 0.0);
+    let mut start = 0;
     for group in touches.chunk_by(|x, y| x.0 == y.0) {
-        for &(_, i, si) in group {
-            let row_i = &rows[island.contacts[i]].rows;
-            for &(_, j, sj) in group {
-                let row_j = &rows[island.contacts[j]].rows;
-                for (a, ra) in row_i.iter().enumerate() {
-                    let jac = &ra.jacobian[6 * si..6 * si + 6];
-                    let at = (3 * i + a) * n + 3 * j;
-                    for (entry, rb) in w[at..at + 3].iter_mut().zip(row_j) {
-                        *entry += body_term(jac, &rb.response[6 * sj..6 * sj + 6]);
-                    }
+        let group_sides = &sides[start..start + group.len()];
+        start += group.len();
+        for si in group_sides {
+            for sj in group_sides {
+                let block = body_block(&si.jacobian, &sj.response);
+                let at = 3 * si.contact * n + 3 * sj.contact;
+                for (a, terms) in block.iter().enumerate() {
+                    let out = &mut w[at + a * n..at + a * n + 3];
+                    out[0] += terms[0];
+                    out[1] += terms[1];
+                    out[2] += terms[2];
                 }
             }
         }
     }
-    let q = island
-        .contacts
-        .iter()
-        .flat_map(|&c| rows[c].rows.map(|r| r.q))
-        .collect();
-    let mu = island
-        .contacts
-        .iter()
-        .map(|&c| scene.contacts[c].friction)
-        .collect();
-    FrictionProblem { w, q, mu }
+    out.q.clear();
+    out.q.extend(
+        island
+            .contacts
+            .iter()
+            .flat_map(|&c| rows[c].rows.map(|r| r.q)),
+    );
+    out.mu.clear();
+    out.mu
+        .extend(island.contacts.iter().map(|&c| scene.contacts[c].friction));
 }
 
-/// One body's term of a W entry: J · (M⁻¹ Jᵀ) over that body's 6 entries,
-/// summed as [`matrix_entry`] sums them.
+/// One contact's side (one dynamic body) in an island: its index in the
+/// island and, per direction n, t₁, t₂, the side's 6 entries of J and of
+/// M⁻¹ Jᵀ (borrowed from the contact's rows: nothing is copied).
+struct Side<'a> {
+    contact: usize,
+    jacobian: [&'a [f64; 6]; 3],
+    response: [&'a [f64; 6]; 3],
+}
+
+impl<'a> Side<'a> {
+    /// Side `side` (0: body a, 1: body b) of contact number `contact` of
+    /// the island, from its rows.
+    fn of(rows: &'a FrictionContactRows, contact: usize, side: usize) -> Self {
+        let part = |v: &'a [f64; 12]| -> &'a [f64; 6] {
+            v[6 * side..6 * side + 6].try_into().expect("6 entries")
+        };
+        Side {
+            contact,
+            jacobian: rows.rows.each_ref().map(|r| part(&r.jacobian)),
+            response: rows.rows.each_ref().map(|r| part(&r.response)),
+        }
+    }
+}
+
+/// One body's terms of a 3 × 3 block of W: entry (α, β) is J_α · (M⁻¹ J_βᵀ)
+/// over that body's 6 entries, summed in order k = 0..6 as [`matrix_entry`]
+/// sums them, the nine sums side by side (the compiler keeps them in vector
+/// registers; each is the same chain of additions, so bit for bit
+/// `matrix_entry`'s term up to the sign of a zero sum, which the entry's
+/// `0 + term` erases).
 #[inline]
-fn body_term(jacobian: &[f64], response: &[f64]) -> f64 {
-    jacobian.iter().zip(response).map(|(a, b)| a * b).sum()
+fn body_block(jacobian: &[&[f64; 6]; 3], response: &[&[f64; 6]; 3]) -> [[f64; 3]; 3] {
+    let [r0, r1, r2] = response;
+    let row = |j: &[f64; 6]| {
+        let mut s = [j[0] * r0[0], j[0] * r1[0], j[0] * r2[0]];
+        for k in 1..6 {
+            s = [
+                s[0] + j[k] * r0[k],
+                s[1] + j[k] * r1[k],
+                s[2] + j[k] * r2[k],
+            ];
+        }
+        s
+    };
+    [row(jacobian[0]), row(jacobian[1]), row(jacobian[2])]
 }
 
 /// One island of a scene and its frictional problem.

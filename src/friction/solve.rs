@@ -157,14 +157,16 @@ pub fn solve_friction_problem(
     let (cap, tolerance) = (s.max_iterations, s.tolerance);
     let (iterations, u) = with_workspace(|ws| {
         ws.prepare(p, &r);
-        let iterations = match s.method {
-            FrictionMethod::Nsgs => nsgs_in(p, ws, &mut r, cap, tolerance, None).0,
-            FrictionMethod::Newton => newton_in(p, ws, &mut r, cap, tolerance).0,
+        let (iterations, exact) = match s.method {
+            FrictionMethod::Nsgs => (nsgs_in(p, ws, &mut r, cap, tolerance, None).0, false),
+            FrictionMethod::Newton => (newton_in(p, ws, &mut r, cap, tolerance).0, false),
             _ => hybrid(p, ws, &mut r, cap, tolerance),
         };
         // No iteration: r is the start and `ws.u` its exact W r + q (the
-        // warm start of a time step, accepted as it is).
-        (iterations, (iterations == 0).then(|| ws.u.clone()))
+        // warm start of a time step, accepted as it is); `exact`: a checked
+        // Newton iterate, whose u was recomputed for it (the same bits
+        // `finish` would compute again).
+        (iterations, (iterations == 0 || exact).then(|| ws.u.clone()))
     });
     finish(p, r, iterations, u, s)
 }
@@ -227,10 +229,18 @@ const NEAR_STEPS: u64 = 3;
 /// Newton round that stalls, Newton runs once from the start itself.
 /// A Newton iterate is projected on the cones and checked again before it
 /// is accepted. Keeps the r of smallest error when the cap is reached.
-fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tolerance: f64) -> u64 {
+/// Returns the iterations and whether `ws.u` is W r + q of the final r as
+/// [`velocity_into`] computes it (not updated incrementally by sweeps).
+fn hybrid(
+    p: &FrictionProblem,
+    ws: &mut Workspace,
+    r: &mut [f64],
+    cap: u64,
+    tolerance: f64,
+) -> (u64, bool) {
     let mut error = ws.error(p, r);
     if error <= tolerance {
-        return 0;
+        return (0, true);
     }
     let budget = 4.0 + p.dim() as f64 / 2.0;
     let mut sweeps_per_round = 2 * budget as u64;
@@ -247,7 +257,7 @@ fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tole
         used += k;
         error = e;
         if error <= tolerance {
-            return used;
+            return (used, true);
         }
         keep_best(ws, r, error, &mut best);
     }
@@ -271,7 +281,7 @@ fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tole
         let (k, e) = newton_round(p, ws, r, (&mut used, cap), tolerance, &mut best);
         error = e;
         if error <= tolerance {
-            break;
+            return (used, true);
         }
         if !from_start && used < cap {
             // Newton stalled from the sweeps' iterate (where ½‖Φ‖² has a
@@ -283,7 +293,7 @@ fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tole
             ws.refresh(p, r);
             error = newton_round(p, ws, r, (&mut used, cap), tolerance, &mut best).1;
             if error <= tolerance {
-                break;
+                return (used, true);
             }
         }
         if k == 0 && sweeps_per_round >= cap {
@@ -295,7 +305,7 @@ fn hybrid(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64], cap: u64, tole
     if !(error <= tolerance) && best < error {
         r.copy_from_slice(&ws.best);
     }
-    used
+    (used, false)
 }
 
 /// Newton ([`newton_in`]) whose converged iterate is projected on the

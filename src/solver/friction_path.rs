@@ -289,7 +289,7 @@ impl Solver {
     /// friction iterations (it is calibrated on LCPs), so `Auto` keeps them
     /// on the CPU, where they also run faster on this machine's software
     /// adapter (BENCHMARKS.md, "GPU: cone projection iterations").
-    fn friction_on_gpu(&self, method: FrictionMethod) -> (bool, String) {
+    pub(super) fn friction_on_gpu(&self, method: FrictionMethod) -> (bool, String) {
         let name = method.name();
         match (&self.gpu, method.projected(), &self.cost) {
             (None, _, _) => (false, format!("{name} on the CPU (no GPU open)")),
@@ -520,7 +520,11 @@ fn origin_counts(f: &ProjectedGpuFigures) -> String {
 }
 
 /// A contact's impulse with its parts, from its rows and local reaction.
-fn contact_impulse(rows: &FrictionContactRows, r: [f64; 3], u: [f64; 3]) -> ContactImpulse {
+pub(super) fn contact_impulse(
+    rows: &FrictionContactRows,
+    r: [f64; 3],
+    u: [f64; 3],
+) -> ContactImpulse {
     ContactImpulse {
         impulse: world_impulse(rows, r).to_array(),
         normal: r[0],

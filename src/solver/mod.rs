@@ -33,6 +33,7 @@ mod cpu_path;
 mod friction_path;
 mod gpu_path;
 mod world_cpu;
+mod world_friction;
 pub mod world_path;
 mod world_repair;
 

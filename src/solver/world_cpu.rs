@@ -8,14 +8,15 @@
 use std::time::Instant;
 
 use super::cpu_path::{solve_on_cpu, Solved};
+use super::world_friction::{repair_unsolved, FrictionMemory};
 use super::world_path::Solved as Results;
 use super::world_path::{max_error, Item, Stepped, WorldStepReport};
-use super::world_repair::{reapply, repair_island, Repairs};
+use super::world_repair::{repair_island, Repairs};
 use super::Solver;
 use crate::cpu::assembly::{assemble_contacts, assemble_island};
 use crate::cpu::enumeration::{solve_basis, BasisOutcome, MAX_ENUMERATION_N};
 use crate::cpu::impulses::{apply_impulses, BodyVelocity};
-use crate::islands::{find_islands, Island};
+use crate::islands::find_islands;
 use crate::lcp::{Counters, Lcp, LcpSolution, Status};
 use crate::report::{IslandReport, Report, SceneReport, SolvePath};
 use crate::scene::Scene;
@@ -73,6 +74,8 @@ pub(super) fn parallel_map_mut<T: Send, R: Send>(
 #[derive(Clone, Debug, Default)]
 pub(super) struct WorldWarm {
     active: Vec<(u64, bool)>,
+    /// The frictional reactions of its last step (worlds with friction).
+    pub(super) friction: FrictionMemory,
 }
 
 impl WorldWarm {
@@ -193,6 +196,7 @@ impl Solver {
                 friction: None,
             }),
             islands: reports,
+            friction: Vec::new(),
             world,
             times: [t1 - t0, t2 - t1, t3 - t2, t4 - t3].map(|d| d.as_secs_f64()),
             repairs,
@@ -227,19 +231,11 @@ impl Solver {
                     .map(|i| i.contacts.as_slice()),
             )
             .collect();
-        let mut repairs = Repairs::default();
         let mut bodies: Option<Vec<BodyVelocity>> = None;
+        let mut repairs = Repairs::default();
         if !unsolved.is_empty() {
-            let rows = assemble_contacts(scene);
             let mut after = d.bodies.clone();
-            for contacts in unsolved {
-                let island = Island {
-                    contacts: contacts.to_vec(),
-                };
-                let (r, z) = repair_island(&assemble_island(scene, &rows, &island), fix);
-                repairs.add(r);
-                reapply(scene, &rows, contacts, &z, &mut after);
-            }
+            repairs = repair_unsolved(scene, unsolved.into_iter(), &mut after, fix);
             bodies = Some(after);
         }
         let t1 = Instant::now();
@@ -254,6 +250,7 @@ impl Solver {
         let world = figures(item.world, &item.prepared, islands, error, repairs.total());
         Stepped {
             islands: Vec::new(),
+            friction: Vec::new(),
             solved: Results::Door(bodies),
             world,
             times: [
@@ -322,7 +319,7 @@ fn warm_settle(lcp: &Lcp, hint: u32, s: &Settings) -> Option<Solved> {
 }
 
 /// A world's figures after its step.
-fn figures(
+pub(super) fn figures(
     w: &World,
     p: &Prepared,
     islands: usize,

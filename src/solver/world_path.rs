@@ -13,8 +13,12 @@
 //!   [`Solver::solve_scenes`] (prediction, checked Lemke, enumeration; the
 //!   same final check), warm-started from that world's own memory of the
 //!   last step, so that its bits do not depend on the batch around it;
-//! - worlds with friction (any contact with μ > 0), and every world while a
-//!   GPU is open, go together in ONE batch through the door
+//! - on the CPU, a world with friction (any contact with μ > 0) is solved
+//!   inside pass 2 too ([`world_friction`](super::world_friction)): its
+//!   frictional islands by the door's Coulomb solvers, each to
+//!   `friction_tolerance`, warm-started from that world's own reactions of
+//!   the last step;
+//! - while a GPU is open, every world goes in ONE batch through the door
 //!   ([`Solver::solve_built_scenes`]) between the two passes.
 //!
 //! The scenes are built here from worlds checked at the start of the step,
@@ -95,6 +99,8 @@ pub struct StepReport {
 pub(super) struct Stepped {
     /// Its islands (worlds solved in pass 2 only).
     pub islands: Vec<IslandReport>,
+    /// Its frictional islands (worlds with friction solved in pass 2 only).
+    pub friction: Vec<FrictionIslandReport>,
     /// Its scene's results.
     pub solved: Solved,
     /// The world's figures.
@@ -139,27 +145,29 @@ impl Solver {
                 format!("{dt} is not a positive number"),
             ));
         }
-        for (i, w) in worlds.iter().enumerate() {
-            // The world's name is formatted only for the error.
-            if w.validate("world").is_err() {
-                w.validate(&format!("world {i}"))?;
-            }
+        // Checked over the cores; the first bad world (in order) is checked
+        // again by name for the error (the name is formatted only then).
+        let shared: &[World] = worlds;
+        let bad = parallel_map(shared.len(), self.threads, |i| {
+            shared[i].validate("world").is_err()
+        });
+        if let Some(i) = bad.iter().position(|&b| b) {
+            worlds[i].validate(&format!("world {i}"))?;
         }
         let start = Instant::now();
         let shared: &[World] = worlds;
         let mut prepared: Vec<Prepared> =
             parallel_map(shared.len(), self.threads, |i| prepare(&shared[i], i, dt));
         let collision = start.elapsed().as_secs_f64();
-        // The door's batch: every world while a GPU is open, else those with friction.
+        // The door's batch: every world while a GPU is open; on the CPU
+        // every world is solved in pass 2, world by world.
         let start = Instant::now();
-        let on_door = |p: &Prepared| self.gpu.is_some() || p.scene.has_friction();
+        let on_door = self.gpu.is_some();
         let mut door_worlds = Vec::new();
         let mut scenes: Vec<Scene> = Vec::new();
-        for (k, p) in prepared.iter_mut().enumerate() {
-            if on_door(p) {
-                door_worlds.push(k);
-                scenes.push(std::mem::take(&mut p.scene));
-            }
+        for (k, p) in prepared.iter_mut().enumerate().filter(|_| on_door) {
+            door_worlds.push(k);
+            scenes.push(std::mem::take(&mut p.scene));
         }
         let door = if scenes.is_empty() {
             None
@@ -189,6 +197,9 @@ impl Solver {
         let fix = repair_settings(&self.settings);
         let this: &Solver = self;
         let stepped = parallel_map_mut(&mut items, self.threads, |k, item| match item.door {
+            None if item.prepared.scene.has_friction() => {
+                this.step_frictional_world_on_cpu(k, item, dt, &fix)
+            }
             None => this.step_world_on_cpu(k, item, dt, &fix),
             Some(j) => {
                 let report = door.as_ref().expect("a door batch for its worlds");
@@ -220,28 +231,35 @@ impl Solver {
         // Wall seconds of pass 2 shared out by the threads' measured times.
         let all: f64 = sums.iter().sum();
         let share = |x: f64| if all > 0.0 { pass * x / all } else { 0.0 };
+        let own_friction = stepped.iter().any(|s| !s.friction.is_empty());
         let (mut report, repairs) = merge_reports(self, stepped.iter().map(|s| &s.repairs), door);
+        if own_friction && report.friction.is_empty() {
+            // Where pass 2's frictional islands went, in the door's words.
+            let (_, went) = self.friction_on_gpu(self.settings.friction_method);
+            report.choice = format!("{}; friction: {went}", report.choice);
+        }
         let mut islands = Vec::new();
         let mut scenes = Vec::with_capacity(stepped.len());
         let mut door_islands = std::mem::take(&mut report.islands).into_iter();
         let mut door_scenes = std::mem::take(&mut report.scenes).into_iter();
-        let mut friction = std::mem::take(&mut report.friction);
+        let mut door_friction = std::mem::take(&mut report.friction).into_iter();
+        let mut friction = Vec::new();
         let mut worlds = Vec::with_capacity(stepped.len());
         for (k, s) in stepped.into_iter().enumerate() {
             worlds.push(s.world);
             let first = islands.len();
+            let first_friction = friction.len();
             let mut scene = match s.solved {
                 Solved::Own(scene) => {
                     islands.extend(s.islands);
+                    friction.extend(s.friction);
                     scene
                 }
                 Solved::Door(bodies) => {
                     let mut d = door_scenes.next().expect("one door scene per door world");
                     islands.extend(door_islands.by_ref().take(d.islands.len()));
                     if let Some(f) = &d.friction {
-                        for isl in &mut friction[f.islands.clone()] {
-                            isl.scene = Some(k);
-                        }
+                        friction.extend(door_friction.by_ref().take(f.islands.len()));
                     }
                     if let Some(b) = bodies {
                         d.bodies = b;
@@ -251,6 +269,12 @@ impl Solver {
             };
             for isl in &mut islands[first..] {
                 isl.scene = Some(k);
+            }
+            for isl in &mut friction[first_friction..] {
+                isl.scene = Some(k);
+            }
+            if let Some(f) = &mut scene.friction {
+                f.islands = first_friction..friction.len();
             }
             scene.islands = first..islands.len();
             scenes.push(scene);
@@ -264,8 +288,8 @@ impl Solver {
         );
         solve.fallback = report.fallback.take();
         solve.gpu = report.gpu.take();
-        // The door's frictional islands keep their order (and the scenes'
-        // ranges into them); their scene is now the world's index.
+        // The frictional islands in world order (each world's range into
+        // them); their scene is the world's index.
         solve.set_friction(friction);
         solve.timings = timings;
         solve.timings.build += share(sums[0]);
