@@ -1,18 +1,53 @@
 //! The CPU path's parallelism: a batch of islands spread over the cores in
-//! interleaved chunks, in order.
+//! chunks, in order, on threads that live as long as the process.
+//!
+//! Why threads that stay: a batch is a few milliseconds (a step of 1,000
+//! worlds, a batch of 10,000 small islands), and threads started per batch
+//! began each with cold per-thread memory (their allocator caches, the
+//! friction solver's thread-local problem) and gave it all back at their
+//! end, every batch (BENCHMARKS.md, "Worlds in time"). The pools are
+//! rayon's, one per thread count asked for, built on first use.
 
-use std::sync::Mutex;
+use std::sync::{Arc, Mutex, OnceLock};
+
+use rayon::ThreadPool;
 
 /// Indices per chunk handed to a thread at a time: large enough that taking
-/// a chunk (one lock) costs nothing beside solving it, small enough that
-/// large and small islands spread evenly over the threads.
+/// a chunk costs nothing beside solving it, small enough that large and
+/// small islands spread evenly over the threads.
 const CHUNK: usize = 64;
 
+/// The most threads a pool has (a larger `threads` setting gets this many):
+/// every pool stays for the process's life.
+const MAX_THREADS: usize = 256;
+
+/// The pools built so far, by their thread count.
+type Pools = Mutex<Vec<(usize, Arc<ThreadPool>)>>;
+
+/// The pool of `threads` threads (≥ 2), built on first use and kept. None
+/// where the system refuses threads: the caller then works alone.
+fn pool(threads: usize) -> Option<Arc<ThreadPool>> {
+    let threads = threads.min(MAX_THREADS);
+    static POOLS: OnceLock<Pools> = OnceLock::new();
+    let mut pools = POOLS
+        .get_or_init(Default::default)
+        .lock()
+        .unwrap_or_else(|p| p.into_inner());
+    if let Some((_, p)) = pools.iter().find(|(n, _)| *n == threads) {
+        return Some(p.clone());
+    }
+    let built = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .thread_name(|i| format!("lcpbatch-{i}"))
+        .build()
+        .ok()?;
+    let built = Arc::new(built);
+    pools.push((threads, built.clone()));
+    Some(built)
+}
+
 /// `f(0), …, f(count − 1)` in order, computed on up to `threads` threads
-/// (0 or 1: on this one). Work is handed out in interleaved chunks of
-/// [`CHUNK`] indices; each result is written once, straight into its slot
-/// of the output (no per-chunk buffer, no second lock), and the calling
-/// thread works as one of the `threads` (one thread fewer to start).
+/// (0 or 1: on this one), through [`parallel_fill`].
 pub fn parallel_map<T: Send>(
     count: usize,
     threads: usize,
@@ -29,33 +64,42 @@ pub fn parallel_map<T: Send>(
         .collect()
 }
 
-/// `f(i, &mut out[i])` for every i, over `threads` threads (0 or 1: on
-/// the caller's), chunk by chunk as [`parallel_map`]: each result is
-/// written where the caller keeps it, never moved (the default CPU path's
-/// island reports are a few hundred bytes each).
+/// `f(i, &mut out[i])` for every slot, on up to `threads` threads (0 or 1:
+/// on this one; else a pool's), [`CHUNK`] slots at a time; see
+/// [`parallel_fill_by`].
 pub fn parallel_fill<T: Send>(out: &mut [T], threads: usize, f: impl Fn(usize, &mut T) + Sync) {
-    let threads = threads.min(out.len().div_ceil(CHUNK)).max(1);
-    if threads == 1 {
+    parallel_fill_by(out, threads, CHUNK, f);
+}
+
+/// `f(i, &mut out[i])` for every slot, on up to `threads` threads (0 or 1:
+/// on this one; else a pool's). Chunks of `chunk` consecutive slots are
+/// handed out in order as threads ask (one lock each), so a core busy
+/// elsewhere takes fewer; each slot is visited once.
+pub(crate) fn parallel_fill_by<T: Send>(
+    out: &mut [T],
+    threads: usize,
+    chunk: usize,
+    f: impl Fn(usize, &mut T) + Sync,
+) {
+    let chunk = chunk.max(1);
+    // The pool of the thread count asked for (one pool per count, however
+    // small the batch); a batch of one chunk stays on this thread.
+    let alone = threads <= 1 || out.len() <= chunk;
+    let Some(pool) = (!alone).then(|| pool(threads)).flatten() else {
         for (i, slot) in out.iter_mut().enumerate() {
             f(i, slot);
         }
         return;
-    }
-    let chunks = Mutex::new(out.chunks_mut(CHUNK).enumerate());
-    let work = || loop {
+    };
+    let chunks = Mutex::new(out.chunks_mut(chunk).enumerate());
+    pool.broadcast(|_| loop {
         let next = chunks.lock().unwrap_or_else(|p| p.into_inner()).next();
         let Some((k, slots)) = next else {
             break;
         };
         for (j, slot) in slots.iter_mut().enumerate() {
-            f(k * CHUNK + j, slot);
+            f(k * chunk + j, slot);
         }
-    };
-    std::thread::scope(|scope| {
-        for _ in 1..threads {
-            scope.spawn(&work);
-        }
-        work();
     });
 }
 

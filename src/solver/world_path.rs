@@ -145,19 +145,24 @@ impl Solver {
                 format!("{dt} is not a positive number"),
             ));
         }
-        // Checked over the cores; the first bad world (in order) is checked
-        // again by name for the error (the name is formatted only then).
-        let shared: &[World] = worlds;
-        let bad = parallel_map(shared.len(), self.threads, |i| {
-            shared[i].validate("world").is_err()
-        });
-        if let Some(i) = bad.iter().position(|&b| b) {
-            worlds[i].validate(&format!("world {i}"))?;
-        }
+        // Checked and collided in one pass over the cores (nothing is
+        // changed before every world has passed); the first bad world (in
+        // order) is checked again by name for the error (the name is
+        // formatted only then).
         let start = Instant::now();
         let shared: &[World] = worlds;
-        let mut prepared: Vec<Prepared> =
-            parallel_map(shared.len(), self.threads, |i| prepare(&shared[i], i, dt));
+        let prepared = parallel_map(shared.len(), self.threads, |i| {
+            let ok = shared[i].validate("world").is_ok();
+            ok.then(|| prepare(&shared[i], i, dt))
+        });
+        if let Some(i) = prepared.iter().position(Option::is_none) {
+            let item = format!("world {i}");
+            return Err(match worlds[i].validate(&item) {
+                Err(e) => e,
+                Ok(()) => Error::invalid(&item, "world", "failed its check".to_string()),
+            });
+        }
+        let mut prepared: Vec<Prepared> = prepared.into_iter().flatten().collect();
         let collision = start.elapsed().as_secs_f64();
         // The door's batch: every world while a GPU is open; on the CPU
         // every world is solved in pass 2, world by world.
