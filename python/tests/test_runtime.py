@@ -76,6 +76,35 @@ def test_ctrl_c_stops_a_long_batch():
     assert waited < 10, f"stopped {waited:.1f} s after Ctrl-C"
 
 
+def test_a_forked_child_solves_on_threads_of_its_own():
+    # Python's multiprocessing forks on Linux: the child inherits the
+    # parent's thread pools but not their threads, and must not wait for them.
+    code = textwrap.dedent(
+        """
+        import os, numpy as np, lcpbatch
+        rng = np.random.default_rng(3)
+        A = rng.standard_normal((2000, 4, 4))
+        M = A @ A.transpose(0, 2, 1) + np.eye(4)
+        q = rng.standard_normal((2000, 4))
+        first = lcpbatch.Solver(backend="cpu", threads=2).solve(M, q)
+        pid = os.fork()
+        if pid == 0:
+            again = lcpbatch.Solver(backend="cpu", threads=2).solve(M, q)
+            os._exit(0 if np.array_equal(again.z, first.z) else 3)
+        _, status = os.waitpid(pid, 0)
+        print("child", os.waitstatus_to_exitcode(status), flush=True)
+        """
+    )
+    p = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True, start_new_session=True)
+    try:
+        out, err = p.communicate(timeout=60)
+    except subprocess.TimeoutExpired:
+        os.killpg(p.pid, signal.SIGKILL)  # the child too
+        pytest.fail("the forked child did not finish its solve in 60 s")
+    assert out.strip() == "child 0", out + err
+
+
 @pytest.mark.parametrize("module", ["lcpbatch", "lcpbatch._results", "lcpbatch._solver", "lcpbatch._friction", "lcpbatch._worlds"])
 def test_docstring_examples_run(module):
     os.environ.setdefault("XDG_RUNTIME_DIR", "/tmp")

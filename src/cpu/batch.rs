@@ -21,19 +21,29 @@ const CHUNK: usize = 64;
 /// every pool stays for the process's life.
 const MAX_THREADS: usize = 256;
 
-/// The pools built so far, by their thread count.
-type Pools = Mutex<Vec<(usize, Arc<ThreadPool>)>>;
+/// The pools built so far: the process that built them and their thread
+/// count.
+type Pools = Mutex<Vec<(u32, usize, Arc<ThreadPool>)>>;
 
 /// The pool of `threads` threads (≥ 2), built on first use and kept. None
 /// where the system refuses threads: the caller then works alone.
+///
+/// A child made by `fork` (Python's `multiprocessing` on Linux) inherits
+/// the pools but not their threads, and would wait for them forever: a
+/// process uses only the pools it built itself (the inherited ones are
+/// forgotten, not dropped, since their threads are not there to stop).
 fn pool(threads: usize) -> Option<Arc<ThreadPool>> {
     let threads = threads.min(MAX_THREADS);
     static POOLS: OnceLock<Pools> = OnceLock::new();
+    let me = std::process::id();
     let mut pools = POOLS
         .get_or_init(Default::default)
         .lock()
         .unwrap_or_else(|p| p.into_inner());
-    if let Some((_, p)) = pools.iter().find(|(n, _)| *n == threads) {
+    if pools.iter().any(|(pid, _, _)| *pid != me) {
+        std::mem::forget(std::mem::take(&mut *pools));
+    }
+    if let Some((_, _, p)) = pools.iter().find(|(_, n, _)| *n == threads) {
         return Some(p.clone());
     }
     let built = rayon::ThreadPoolBuilder::new()
@@ -42,7 +52,7 @@ fn pool(threads: usize) -> Option<Arc<ThreadPool>> {
         .build()
         .ok()?;
     let built = Arc::new(built);
-    pools.push((threads, built.clone()));
+    pools.push((me, threads, built.clone()));
     Some(built)
 }
 
