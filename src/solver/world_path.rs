@@ -70,7 +70,8 @@ pub struct WorldStepReport {
 /// share of the pass as the threads measured it).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
 pub struct StepTimings {
-    /// Gravity, broad and narrow phase, the scenes (all worlds).
+    /// The worlds' checks, gravity, broad and narrow phase, the scenes (all
+    /// worlds; one pass over the cores).
     pub collision: f64,
     /// Islands, assembly, solves, repairs and impulses (the door's batch
     /// included); its parts are in [`StepReport::solve`]'s timings.
