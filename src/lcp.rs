@@ -137,7 +137,7 @@ impl Lcp {
 /// Whether every entry is finite: no exponent field all ones (±inf, NaN),
 /// tested on the bits with an OR that vectorises, without stopping early
 /// (the common answer is yes, and the whole slice has to be read for it).
-fn all_finite(v: &[f64]) -> bool {
+pub(crate) fn all_finite(v: &[f64]) -> bool {
     const EXPONENT: u64 = 0x7ff0_0000_0000_0000;
     v.iter().fold(0u64, |bad, x| {
         bad | u64::from(x.to_bits() & EXPONENT == EXPONENT)

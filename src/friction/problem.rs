@@ -1,5 +1,6 @@
 //! One island's frictional contact problem: W, q and μ.
 
+use crate::lcp::all_finite;
 use crate::Error;
 
 /// The frictional contact problem of one island of k contacts: find r with
@@ -79,6 +80,15 @@ impl FrictionProblem {
                 "W",
                 format!("has {} entries, expected (3k)² = {}", self.w.len(), n * n),
             ));
+        }
+        // The common answer (every entry finite, every μ ≥ 0) without
+        // stopping early: this runs on every island of every batch.
+        if all_finite(&self.w)
+            && all_finite(&self.q)
+            && all_finite(&self.mu)
+            && self.mu.iter().fold(true, |ok, m| ok & (*m >= 0.0))
+        {
+            return Ok(());
         }
         if let Some(i) = self.mu.iter().position(|m| !m.is_finite() || *m < 0.0) {
             return Err(Error::invalid(

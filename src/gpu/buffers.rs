@@ -11,12 +11,32 @@ use crate::lcp::Lcp;
 use crate::Error;
 
 impl GpuContext {
-    /// A storage buffer holding `bytes` (at least 16 bytes: empty bindings
-    /// are invalid), readable by the shaders and copyable to a readback buffer.
-    pub(crate) fn storage(&self, label: &str, bytes: &[u8]) -> wgpu::Buffer {
+    /// Whether the device maps storage buffers themselves (software
+    /// adapters, see `GpuContext::new`): no staging buffer or copy on the
+    /// way in ([`Self::storage_filled`]) or out ([`Self::submit_and_map`]).
+    fn maps_storage(&self) -> bool {
+        self.device
+            .features()
+            .contains(wgpu::Features::MAPPABLE_PRIMARY_BUFFERS)
+    }
+
+    /// The usage of every storage buffer: bound by the shaders, copied to
+    /// and from; where [`Self::maps_storage`], also mapped for reading.
+    fn storage_usage(&self) -> wgpu::BufferUsages {
         let usage = wgpu::BufferUsages::STORAGE
             | wgpu::BufferUsages::COPY_SRC
             | wgpu::BufferUsages::COPY_DST;
+        if self.maps_storage() {
+            usage | wgpu::BufferUsages::MAP_READ
+        } else {
+            usage
+        }
+    }
+
+    /// A storage buffer holding `bytes` (at least 16 bytes: empty bindings
+    /// are invalid), readable by the shaders and copyable to a readback buffer.
+    pub(crate) fn storage(&self, label: &str, bytes: &[u8]) -> wgpu::Buffer {
+        let usage = self.storage_usage();
         if bytes.len() < 16 {
             let mut padded = bytes.to_vec();
             padded.resize(16, 0);
@@ -41,9 +61,7 @@ impl GpuContext {
         self.device.create_buffer(&wgpu::BufferDescriptor {
             label: Some(label),
             size: size.max(16).next_multiple_of(4),
-            usage: wgpu::BufferUsages::STORAGE
-                | wgpu::BufferUsages::COPY_SRC
-                | wgpu::BufferUsages::COPY_DST,
+            usage: self.storage_usage(),
             mapped_at_creation: false,
         })
     }
@@ -59,16 +77,10 @@ impl GpuContext {
         size: u64,
         fill: impl FnOnce(&mut wgpu::BufferViewMut),
     ) -> Result<wgpu::Buffer, Error> {
-        let mut usage = wgpu::BufferUsages::STORAGE
-            | wgpu::BufferUsages::COPY_SRC
-            | wgpu::BufferUsages::COPY_DST;
-        // Where the device allows it (software adapters, see
-        // `GpuContext::new`), the buffer itself is mapped: no staging buffer.
-        if self
-            .device
-            .features()
-            .contains(wgpu::Features::MAPPABLE_PRIMARY_BUFFERS)
-        {
+        let mut usage = self.storage_usage();
+        // Where the device allows it, the buffer itself is mapped: no
+        // staging buffer.
+        if self.maps_storage() {
             usage |= wgpu::BufferUsages::MAP_WRITE;
         }
         let buffer = self.device.create_buffer(&wgpu::BufferDescriptor {
@@ -102,28 +114,35 @@ impl GpuContext {
 
     /// [`Self::submit_and_read`] that hands `read` the mapped bytes
     /// themselves (each buffer's first `bytes`), so that a caller taking a
-    /// part of them copies only that part.
+    /// part of them copies only that part. A buffer the device maps itself
+    /// ([`Self::maps_storage`]) is read in place (no copy: the friction
+    /// batches' vectors, 4.8 MB at 10,000 islands of k = 4); the others
+    /// through a staging buffer. A buffer given twice is read once.
     pub(crate) fn submit_and_map<R>(
         &self,
         mut encoder: wgpu::CommandEncoder,
         reads: &[(&wgpu::Buffer, u64)],
         read: impl FnOnce(&[&[u8]]) -> R,
     ) -> Result<R, Error> {
-        let staging: Vec<(wgpu::Buffer, u64)> = reads
-            .iter()
-            .map(|&(src, size)| {
-                let size4 = size.max(4).next_multiple_of(4);
-                // Readback: MAP_READ buffers cannot be storage, so copy here.
-                let dst = self.device.create_buffer(&wgpu::BufferDescriptor {
-                    label: Some("readback"),
-                    size: size4,
-                    usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-                    mapped_at_creation: false,
-                });
-                encoder.copy_buffer_to_buffer(src, 0, &dst, 0, size4);
-                (dst, size)
-            })
-            .collect();
+        let mut staging: Vec<(wgpu::Buffer, u64)> = Vec::with_capacity(reads.len());
+        for (at, &(src, size)) in reads.iter().enumerate() {
+            let size4 = size.max(4).next_multiple_of(4);
+            let twice = reads[..at].iter().any(|(b, _)| *b == src);
+            if src.usage().contains(wgpu::BufferUsages::MAP_READ) && !twice {
+                staging.push((src.clone(), size));
+                continue;
+            }
+            // Readback: MAP_READ buffers cannot be storage on hardware, so
+            // copy here.
+            let dst = self.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("readback"),
+                size: size4,
+                usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+            encoder.copy_buffer_to_buffer(src, 0, &dst, 0, size4);
+            staging.push((dst, size));
+        }
         self.queue.submit([encoder.finish()]);
         for (dst, _) in &staging {
             dst.slice(..).map_async(wgpu::MapMode::Read, |_| {});
