@@ -365,13 +365,20 @@ fn sweeps(@builtin(global_invocation_id) gid: vec3<u32>) {
         st.iterations++;
     }
     scalars[4u * index + 3u] = err;
+    // An island that is done: x alone (its answer; see store_best).
+    var stored = SWEEPS4;
+    if st.status != RUNNING {
+        stored = X4;
+    }
     for (var i = 0u; i < SWEEPS4; i++) { // UNROLL
-        vectors[v + i] = vec4<Scalar>(
-            get_vector(4u * i, false),
-            get_vector(4u * i + 1u, false),
-            get_vector(4u * i + 2u, false),
-            get_vector(4u * i + 3u, false)
-        );
+        if i < stored {
+            vectors[v + i] = vec4<Scalar>(
+                get_vector(4u * i, false),
+                get_vector(4u * i + 1u, false),
+                get_vector(4u * i + 2u, false),
+                get_vector(4u * i + 3u, false)
+            );
+        }
     }
     finish_round(index, st);
 }
@@ -384,6 +391,21 @@ fn store_apgd(v: u32) {
             get_vector(4u * i + 1u, true),
             get_vector(4u * i + 2u, true),
             get_vector(4u * i + 3u, true)
+        );
+    }
+}
+
+// Writes APGD's best iterate alone (the answer the host reads, from 4N:
+// a multiple of 4 scalars) from v: an island that is done needs nothing
+// else, and llvmpipe turns every vec4 store at a per-island address into a
+// loop over the SIMD lanes (15 of them at k = 4 for all the vectors).
+fn store_best(v: u32) {
+    for (var i = 0u; i < X4; i++) { // UNROLL
+        vectors[v + N + i] = vec4<Scalar>(
+            get_vector(4u * N + 4u * i, true),
+            get_vector(4u * N + 4u * i + 1u, true),
+            get_vector(4u * N + 4u * i + 2u, true),
+            get_vector(4u * N + 4u * i + 3u, true)
         );
     }
 }
@@ -573,6 +595,10 @@ fn apgd(@builtin(global_invocation_id) gid: vec3<u32>) {
     scalars[s + 1u] = a.lipschitz;
     scalars[s + 2u] = a.best;
     scalars[s + 3u] = a.last;
-    store_apgd(v);
+    if st.status == RUNNING {
+        store_apgd(v);
+    } else {
+        store_best(v);
+    }
     finish_round(index, st);
 }

@@ -691,14 +691,21 @@ fn sweeps(@builtin(global_invocation_id) gid: vec3<u32>) {
         st.iterations++;
     }
     scalars[4u * index + 3u] = err;
+    // An island that is done: x alone (its answer; see store_best).
+    var stored = SWEEPS4;
+    if st.status != RUNNING {
+        stored = X4;
+    }
 {
 
-        vectors[v + 0u] = vec4<Scalar>(
-            get_vector(4u * 0u, false),
-            get_vector(4u * 0u + 1u, false),
-            get_vector(4u * 0u + 2u, false),
-            get_vector(4u * 0u + 3u, false)
-        );
+        if 0u < stored {
+            vectors[v + 0u] = vec4<Scalar>(
+                get_vector(4u * 0u, false),
+                get_vector(4u * 0u + 1u, false),
+                get_vector(4u * 0u + 2u, false),
+                get_vector(4u * 0u + 3u, false)
+            );
+        }
     }
 
     finish_round(index, st);
@@ -740,6 +747,23 @@ fn store_apgd(v: u32) {
             get_vector(4u * 3u + 1u, true),
             get_vector(4u * 3u + 2u, true),
             get_vector(4u * 3u + 3u, true)
+        );
+    }
+
+}
+
+// Writes APGD's best iterate alone (the answer the host reads, from 4N:
+// a multiple of 4 scalars) from v: an island that is done needs nothing
+// else, and llvmpipe turns every vec4 store at a per-island address into a
+// loop over the SIMD lanes (15 of them at k = 4 for all the vectors).
+fn store_best(v: u32) {
+{
+
+        vectors[v + N + 0u] = vec4<Scalar>(
+            get_vector(4u * N + 4u * 0u, true),
+            get_vector(4u * N + 4u * 0u + 1u, true),
+            get_vector(4u * N + 4u * 0u + 2u, true),
+            get_vector(4u * N + 4u * 0u + 3u, true)
         );
     }
 
@@ -1068,6 +1092,10 @@ fn apgd(@builtin(global_invocation_id) gid: vec3<u32>) {
     scalars[s + 1u] = a.lipschitz;
     scalars[s + 2u] = a.best;
     scalars[s + 3u] = a.last;
-    store_apgd(v);
+    if st.status == RUNNING {
+        store_apgd(v);
+    } else {
+        store_best(v);
+    }
     finish_round(index, st);
 }

@@ -1204,23 +1204,32 @@ fn sweeps(@builtin(global_invocation_id) gid: vec3<u32>) {
         st.iterations++;
     }
     scalars[4u * index + 3u] = err;
-{
-
-        vectors[v + 0u] = vec4<Scalar>(
-            get_vector(4u * 0u, false),
-            get_vector(4u * 0u + 1u, false),
-            get_vector(4u * 0u + 2u, false),
-            get_vector(4u * 0u + 3u, false)
-        );
+    // An island that is done: x alone (its answer; see store_best).
+    var stored = SWEEPS4;
+    if st.status != RUNNING {
+        stored = X4;
     }
 {
 
-        vectors[v + 1u] = vec4<Scalar>(
-            get_vector(4u * 1u, false),
-            get_vector(4u * 1u + 1u, false),
-            get_vector(4u * 1u + 2u, false),
-            get_vector(4u * 1u + 3u, false)
-        );
+        if 0u < stored {
+            vectors[v + 0u] = vec4<Scalar>(
+                get_vector(4u * 0u, false),
+                get_vector(4u * 0u + 1u, false),
+                get_vector(4u * 0u + 2u, false),
+                get_vector(4u * 0u + 3u, false)
+            );
+        }
+    }
+{
+
+        if 1u < stored {
+            vectors[v + 1u] = vec4<Scalar>(
+                get_vector(4u * 1u, false),
+                get_vector(4u * 1u + 1u, false),
+                get_vector(4u * 1u + 2u, false),
+                get_vector(4u * 1u + 3u, false)
+            );
+        }
     }
 
     finish_round(index, st);
@@ -1298,6 +1307,32 @@ fn store_apgd(v: u32) {
             get_vector(4u * 7u + 1u, true),
             get_vector(4u * 7u + 2u, true),
             get_vector(4u * 7u + 3u, true)
+        );
+    }
+
+}
+
+// Writes APGD's best iterate alone (the answer the host reads, from 4N:
+// a multiple of 4 scalars) from v: an island that is done needs nothing
+// else, and llvmpipe turns every vec4 store at a per-island address into a
+// loop over the SIMD lanes (15 of them at k = 4 for all the vectors).
+fn store_best(v: u32) {
+{
+
+        vectors[v + N + 0u] = vec4<Scalar>(
+            get_vector(4u * N + 4u * 0u, true),
+            get_vector(4u * N + 4u * 0u + 1u, true),
+            get_vector(4u * N + 4u * 0u + 2u, true),
+            get_vector(4u * N + 4u * 0u + 3u, true)
+        );
+    }
+{
+
+        vectors[v + N + 1u] = vec4<Scalar>(
+            get_vector(4u * N + 4u * 1u, true),
+            get_vector(4u * N + 4u * 1u + 1u, true),
+            get_vector(4u * N + 4u * 1u + 2u, true),
+            get_vector(4u * N + 4u * 1u + 3u, true)
         );
     }
 
@@ -1877,6 +1912,10 @@ fn apgd(@builtin(global_invocation_id) gid: vec3<u32>) {
     scalars[s + 1u] = a.lipschitz;
     scalars[s + 2u] = a.best;
     scalars[s + 3u] = a.last;
-    store_apgd(v);
+    if st.status == RUNNING {
+        store_apgd(v);
+    } else {
+        store_best(v);
+    }
     finish_round(index, st);
 }

@@ -8,6 +8,7 @@ use super::dispatch::{Ranges, Span};
 use super::layout::{scalars_from_bytes, scalars_to_bytes};
 use super::pipelines::{Pipelines, Stage};
 use super::{GpuContext, Precision};
+use crate::cpu::batch::parallel_map;
 use crate::friction::{FrictionProblem, ProjectedMethod};
 use crate::Error;
 
@@ -452,36 +453,38 @@ impl RoundsJob<'_> {
             let (vectors, scalars, state_bytes) = (bytes[0], bytes[1], bytes[2]);
             let states: &[FrictionState] = bytemuck::try_cast_slice(state_bytes)
                 .map_err(|e| Error::Gpu(format!("friction states: {e}")))?;
-            chunk
-                .table
-                .iter()
-                .enumerate()
-                .map(|(t, rec)| {
-                    let (k, v) = (rec.k as usize, rec.vectors as usize);
-                    let at = sb * (v + answer_offset(self.method, k));
-                    // APGD: the best iterate's error; the sweeps: the last one's.
-                    let e = if self.method == ProjectedMethod::Apgd {
-                        2
-                    } else {
-                        3
-                    };
-                    let e_at = sb * (SCALARS * t + e);
-                    Ok(GpuIslandRun {
-                        state: *states
-                            .get(t)
-                            .ok_or_else(|| Error::Gpu("friction states: short read".into()))?,
-                        r: scalars_from_bytes(
-                            vectors
-                                .get(at..at + sb * 3 * k)
-                                .ok_or_else(|| Error::Gpu("friction vectors: short read".into()))?,
-                            p,
-                        ),
-                        error: scalars
-                            .get(e_at..e_at + sb)
-                            .map_or(f64::NAN, |b| scalars_from_bytes(b, p)[0]),
-                    })
+            // Over every core: each island's answer is a cache miss or two
+            // in the mapped vectors (1.5 ms of about 25 on one core at
+            // 10,000 islands of k = 4 on lavapipe, measured).
+            let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+            parallel_map(chunk.table.len(), threads, |t| {
+                let rec = &chunk.table[t];
+                let (k, v) = (rec.k as usize, rec.vectors as usize);
+                let at = sb * (v + answer_offset(self.method, k));
+                // APGD: the best iterate's error; the sweeps: the last one's.
+                let e = if self.method == ProjectedMethod::Apgd {
+                    2
+                } else {
+                    3
+                };
+                let e_at = sb * (SCALARS * t + e);
+                Ok(GpuIslandRun {
+                    state: *states
+                        .get(t)
+                        .ok_or_else(|| Error::Gpu("friction states: short read".into()))?,
+                    r: scalars_from_bytes(
+                        vectors
+                            .get(at..at + sb * 3 * k)
+                            .ok_or_else(|| Error::Gpu("friction vectors: short read".into()))?,
+                        p,
+                    ),
+                    error: scalars
+                        .get(e_at..e_at + sb)
+                        .map_or(f64::NAN, |b| scalars_from_bytes(b, p)[0]),
                 })
-                .collect()
+            })
+            .into_iter()
+            .collect()
         })?
     }
 }

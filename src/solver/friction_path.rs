@@ -17,8 +17,7 @@ use crate::friction::assembly::{
 };
 use crate::friction::solve::from_projected;
 use crate::friction::{
-    solve_friction_problem, solve_projected_on_gpu, FrictionMethod, FrictionProblem,
-    FrictionSolution, ProjectedGpuFigures,
+    solve_friction_problem, FrictionMethod, FrictionProblem, FrictionSolution, ProjectedGpuFigures,
 };
 use crate::gpu::friction::solve_projected_on_gpu_against;
 use crate::gpu::friction_assembly::assemble_friction_on_gpu;
@@ -162,12 +161,15 @@ impl Solver {
                 let all_warm: Option<Vec<Vec<f64>>> = warm.iter().cloned().collect();
                 let ps = s.projected_settings();
                 let on_gpu = super::gpu_path::guarded(|| {
-                    solve_projected_on_gpu(
+                    // Every problem was validated above.
+                    solve_projected_on_gpu_against(
                         &ctx,
+                        problems,
                         problems,
                         all_warm.as_deref(),
                         &ps,
                         &self.settings.gpu,
+                        true,
                     )
                 });
                 match on_gpu {
@@ -438,6 +440,7 @@ impl Solver {
             all_warm.as_deref(),
             &s.projected_settings(),
             &self.settings.gpu,
+            false,
         )?;
         let solutions = solutions
             .into_iter()
