@@ -39,6 +39,8 @@ pub struct FrictionBenchOptions {
     pub out_dir: PathBuf,
     /// None: CPU rows only.
     pub gpu: Option<GpuSettings>,
+    /// Timed runs of each row (≥ 1): its time is their median.
+    pub runs: usize,
 }
 
 /// Every friction method, in the table's order.
@@ -62,7 +64,10 @@ pub struct FrictionRow {
     /// The device in words (`cpu (N threads)` or the adapter, with its precision).
     pub device: String,
     pub islands: usize,
+    /// The median of `run_seconds`.
     pub seconds: f64,
+    /// Every timed run of the row, in order (the rows of a set take turns).
+    pub run_seconds: Vec<f64>,
     pub islands_per_second: f64,
     /// Largest Coulomb error (Siconos fc3d, De Saxcé) over every island.
     pub max_coulomb_error: f64,
@@ -79,7 +84,8 @@ pub struct FrictionRow {
 }
 
 impl FrictionRow {
-    fn of(set: &Set, solver: &str, report: &Report, seconds: f64) -> Self {
+    fn of(set: &Set, solver: &str, report: &Report, run_seconds: Vec<f64>) -> Self {
+        let seconds = median(&run_seconds);
         let isl = &report.friction;
         let mut coulomb: Vec<f64> = isl.iter().map(|i| i.error()).collect();
         coulomb.sort_by(f64::total_cmp);
@@ -113,6 +119,7 @@ impl FrictionRow {
             device: report.device.name.clone(),
             islands: isl.len(),
             seconds,
+            run_seconds,
             islands_per_second: isl.len() as f64 / seconds.max(1e-12),
             max_coulomb_error: coulomb.last().copied().unwrap_or(0.0),
             median_coulomb_error: coulomb.get(coulomb.len() / 2).copied().unwrap_or(0.0),
@@ -152,12 +159,17 @@ fn sets(opts: &FrictionBenchOptions) -> Vec<Set> {
     out
 }
 
-/// Solves the set once with `solver` and times the call.
-fn timed_row(solver: &mut Solver, set: &Set, name: &str) -> Result<FrictionRow, Error> {
-    let t = Instant::now();
-    let report = solver.solve_friction(&set.problems)?;
-    let seconds = t.elapsed().as_secs_f64();
-    Ok(FrictionRow::of(set, name, &report, seconds))
+/// The median of `xs` (not empty): the middle one, or the mean of the
+/// two middle ones.
+fn median(xs: &[f64]) -> f64 {
+    let mut v = xs.to_vec();
+    v.sort_by(f64::total_cmp);
+    let m = v.len() / 2;
+    if v.len() % 2 == 1 {
+        v[m]
+    } else {
+        0.5 * (v[m - 1] + v[m])
+    }
 }
 
 /// The settings of one method (the default tolerance 1e-8 and cap).
@@ -168,33 +180,54 @@ fn method_settings(base: &Settings, method: FrictionMethod) -> Settings {
     }
 }
 
-/// The CPU rows of one set: every method on every core.
-fn cpu_rows(set: &Set) -> Result<Vec<FrictionRow>, Error> {
-    METHODS
-        .iter()
-        .map(|&m| {
-            let base = Settings::new(Backend::Cpu, Method::Auto);
-            let mut s = Solver::new(method_settings(&base, m))?;
-            timed_row(&mut s, set, m.name())
-        })
-        .collect()
+/// The solvers of one set's rows, named as the table names them: every
+/// method on the CPU over every core, then on each GPU of `gpus`
+/// (`devices::gpu_solvers`) the projected methods, each first run untimed
+/// on a few islands so that its kernel compiles stay out of the figure.
+fn row_solvers(set: &Set, gpus: &[Solver]) -> Result<Vec<(String, Solver)>, Error> {
+    let mut out = Vec::new();
+    for m in METHODS {
+        let base = Settings::new(Backend::Cpu, Method::Auto);
+        out.push((
+            m.name().to_string(),
+            Solver::new(method_settings(&base, m))?,
+        ));
+    }
+    for gpu in gpus {
+        let precision = gpu.device().precision.name();
+        for m in METHODS.into_iter().filter(|m| m.projected().is_some()) {
+            let mut s = Solver::new(method_settings(gpu.settings(), m))?;
+            s.solve_friction(&set.problems[..set.problems.len().min(16)])?;
+            out.push((format!("gpu {} {precision}", m.name()), s));
+        }
+    }
+    Ok(out)
 }
 
-/// The GPU rows of one set on one adapter and precision (`gpu` a GPU
-/// solver of `devices::gpu_solvers`): the projected methods, each first
-/// run untimed on a few islands so that its kernel compiles stay out of the
-/// figure.
-fn gpu_rows(gpu: &Solver, set: &Set) -> Result<Vec<FrictionRow>, Error> {
-    let precision = gpu.device().precision.name();
-    let mut rows = Vec::new();
-    for m in METHODS.into_iter().filter(|m| m.projected().is_some()) {
-        let mut s = Solver::new(method_settings(gpu.settings(), m))?;
-        let head = &set.problems[..set.problems.len().min(16)];
-        s.solve_friction(head)?;
-        let row = timed_row(&mut s, set, &format!("gpu {} {precision}", m.name()))?;
-        rows.push(row);
+/// The rows of one set: `runs` rounds in which every solver solves the
+/// whole set once, timed (the solvers take turns, so that a noisy
+/// machine's drift falls on all of them alike); each row's time is the
+/// median of its runs, its figures those of its last report.
+fn set_rows(set: &Set, gpus: &[Solver], runs: usize) -> Result<Vec<FrictionRow>, Error> {
+    let mut solvers = row_solvers(set, gpus)?;
+    let mut times: Vec<Vec<f64>> = vec![Vec::new(); solvers.len()];
+    let mut reports: Vec<Option<Report>> = solvers.iter().map(|_| None).collect();
+    for _ in 0..runs.max(1) {
+        for (j, (_, solver)) in solvers.iter_mut().enumerate() {
+            // The last run's report is dropped before the clock starts.
+            reports[j] = None;
+            let t = Instant::now();
+            let report = solver.solve_friction(&set.problems)?;
+            times[j].push(t.elapsed().as_secs_f64());
+            reports[j] = Some(report);
+        }
     }
-    Ok(rows)
+    Ok(solvers
+        .iter()
+        .zip(reports)
+        .zip(times)
+        .filter_map(|(((name, _), report), t)| Some(FrictionRow::of(set, name, &report?, t)))
+        .collect())
 }
 
 fn print_table(rows: &[FrictionRow]) {
@@ -264,10 +297,7 @@ pub fn run(opts: &FrictionBenchOptions) -> Result<(), Error> {
     let mut rows = Vec::new();
     for set in &sets {
         bar.set_message(format!("{} k = {}", set.family.name(), set.k));
-        rows.extend(cpu_rows(set)?);
-        for g in &gpus {
-            rows.extend(gpu_rows(g, set)?);
-        }
+        rows.extend(set_rows(set, &gpus, opts.runs)?);
         bar.inc(1);
     }
     bar.finish_and_clear();
@@ -310,16 +340,19 @@ mod tests {
             seed: 3,
             out_dir: dir.clone(),
             gpu: None,
+            runs: 3,
         };
         let sets = sets(&opts);
         // Random spheres at 1, 4, 8; stacks at 4, 8; resting and sliding boxes at 4.
         assert_eq!(sets.len(), 7);
         let mut rows = Vec::new();
         for set in &sets {
-            let r = cpu_rows(set).unwrap();
+            let r = set_rows(set, &[], opts.runs).unwrap();
             assert_eq!(r.len(), METHODS.len());
             for row in &r {
                 assert_eq!(row.islands, set.problems.len());
+                assert_eq!(row.run_seconds.len(), 3);
+                assert_eq!(row.seconds, median(&row.run_seconds));
                 assert!(row.islands_per_second.is_finite() && row.islands_per_second > 0.0);
                 assert!(row.max_coulomb_error.is_finite(), "{row:?}");
                 if row.solver == "auto" && set.family != FrictionFamily::RandomSpheres {

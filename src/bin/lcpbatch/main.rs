@@ -256,6 +256,10 @@ struct BenchArgs {
     /// With --friction: contacts per island, one set per family that has them.
     #[arg(long, value_delimiter = ',', default_value = "1,2,4,8,16")]
     sizes: Vec<usize>,
+    /// With --friction: timed runs of every row; its time is their median
+    /// (the rows of a set take turns, run by run).
+    #[arg(long, default_value_t = 5)]
+    runs: usize,
     /// Islands per n for the time-against-n curves.
     #[arg(long, default_value_t = 500)]
     per_n: usize,
@@ -471,6 +475,7 @@ fn bench_command(args: BenchArgs) -> Result<(), Error> {
         islands,
         friction,
         sizes,
+        runs,
         per_n,
         batch_sizes,
         seed,
@@ -486,10 +491,10 @@ fn bench_command(args: BenchArgs) -> Result<(), Error> {
     };
     if friction {
         let islands = islands.unwrap_or(2_000);
-        if islands == 0 || sizes.is_empty() || sizes.contains(&0) {
+        if islands == 0 || sizes.is_empty() || sizes.contains(&0) || runs == 0 {
             return Err(Error::invalid(
                 "bench --friction",
-                "--islands/--sizes",
+                "--islands/--sizes/--runs",
                 "must be positive",
             ));
         }
@@ -499,6 +504,7 @@ fn bench_command(args: BenchArgs) -> Result<(), Error> {
             seed,
             out_dir: out,
             gpu,
+            runs,
         });
     }
     let islands = islands.unwrap_or(20_000);
