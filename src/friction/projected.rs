@@ -355,7 +355,7 @@ pub(crate) fn start(problem: &FrictionProblem, r0: Option<&[f64]>) -> Vec<f64> {
 }
 
 /// Every contact's reaction projected on its cone, in place.
-fn project_all(problem: &FrictionProblem, x: &mut [f64]) {
+pub(crate) fn project_all(problem: &FrictionProblem, x: &mut [f64]) {
     for (i, &mu) in problem.mu.iter().enumerate() {
         let p = project_on_cone([x[3 * i], x[3 * i + 1], x[3 * i + 2]], mu);
         x[3 * i..3 * i + 3].copy_from_slice(&p);

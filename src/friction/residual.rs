@@ -6,6 +6,10 @@ use super::cone::project_on_cone;
 use super::problem::FrictionProblem;
 use crate::lcp::norm2;
 
+/// Entries of an island of 16 contacts: the residuals' scratch stays on
+/// the stack up to this size.
+const SCRATCH: usize = 48;
+
 /// The numbers that judge a reaction r (u = W r + q recomputed).
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct FrictionResiduals {
@@ -41,23 +45,34 @@ impl FrictionResiduals {
         let q_norm = norm(&problem.q);
         let scale = q_norm.max(norm(r)).max(norm(u));
         let divide = |x: f64| if scale > f64::EPSILON { x / scale } else { x };
-        let mut coulomb = vec![0.0; u.len()];
-        let coulomb_error = coulomb_error_into(problem, r, u, q_norm, &mut coulomb);
-        let mut cone = Vec::with_capacity(u.len());
+        // Scratch for the two vectors whose norms are the errors: on the
+        // stack up to 16 contacts (every answer of a batch is judged here).
+        let mut stack = [0.0; 2 * SCRATCH];
+        let mut heap = Vec::new();
+        let scratch: &mut [f64] = if 2 * u.len() <= stack.len() {
+            &mut stack[..2 * u.len()]
+        } else {
+            heap.resize(2 * u.len(), 0.0);
+            &mut heap
+        };
+        let (coulomb, cone) = scratch.split_at_mut(u.len());
+        let coulomb_error = coulomb_error_into(problem, r, u, q_norm, coulomb);
         let (mut violation, mut gap, mut dual) = (0.0f64, 0.0f64, 0.0f64);
         for (i, &mu) in problem.mu.iter().enumerate() {
             let ri = [r[3 * i], r[3 * i + 1], r[3 * i + 2]];
             let ui = [u[3 * i], u[3 * i + 1], u[3 * i + 2]];
             let un_tilde = ui[0] + mu * (ui[1] * ui[1] + ui[2] * ui[2]).sqrt();
             let pa = project_on_cone([ri[0] - ui[0], ri[1] - ui[1], ri[2] - ui[2]], mu);
-            cone.extend((0..3).map(|j| ri[j] - pa[j]));
+            for j in 0..3 {
+                cone[3 * i + j] = ri[j] - pa[j];
+            }
             violation = violation.max(ri[1].hypot(ri[2]) - mu * ri[0]);
             gap = gap.max((ri[0] * un_tilde + ri[1] * ui[1] + ri[2] * ui[2]).abs());
             dual = dual.max(-ui[0]);
         }
         FrictionResiduals {
             coulomb_error,
-            cone_error: divide(norm2(cone.into_iter())),
+            cone_error: divide(norm2(cone.iter().copied())),
             cone_violation: violation.max(0.0),
             complementarity: gap,
             dual_cone_violation: dual.max(0.0),

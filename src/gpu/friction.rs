@@ -20,8 +20,8 @@ use super::friction_rounds::{
 };
 use super::kernel::round_budget;
 use super::{GpuContext, GpuSolveSettings, Precision};
-use crate::cpu::batch::parallel_map;
-use crate::friction::projected::{check_warm, solve_checked, start};
+use crate::cpu::batch::parallel_fill;
+use crate::friction::projected::{check_warm, project_all, solve_checked};
 use crate::friction::{FrictionProblem, ProjectedSettings, ProjectedSolution};
 use crate::settings::GpuSettings;
 use crate::Error;
@@ -173,27 +173,32 @@ pub(crate) fn solve_projected_on_gpu_against(
 
     let t_check = Instant::now();
     let tol = tolerance_for(settings, ctx.precision());
-    let mut gpu_run: Vec<Option<&GpuIslandRun>> = vec![None; problems.len()];
-    for (&i, run) in on_gpu.iter().zip(&runs) {
-        gpu_run[i] = Some(run);
+    figures.gpu_iterations = vec![0; problems.len()];
+    // Per island its GPU run (taken by its check, which keeps its r), then
+    // the check's answer and origin.
+    type Slot = (
+        Option<GpuIslandRun>,
+        Option<(ProjectedSolution, FrictionOrigin)>,
+    );
+    let mut slots: Vec<Slot> = (0..problems.len()).map(|_| (None, None)).collect();
+    for (&i, run) in on_gpu.iter().zip(runs) {
+        figures.gpu_iterations[i] = run.state.iterations;
+        slots[i].0 = Some(run);
     }
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-    let checked = parallel_map(problems.len(), threads, |i| {
+    parallel_fill(&mut slots, threads, |i, (run, out)| {
         let p = &problems[i];
-        match gpu_run[i] {
+        *out = Some(match run.take() {
             _ if !valid[i] => (ProjectedSolution::invalid(p), FrictionOrigin::Invalid),
             None => (
                 solve_checked(p, r0(i), settings, tol),
                 FrictionOrigin::CpuFallback,
             ),
             Some(run) => validate_friction_island(p, run, r0(i), settings, tol),
-        }
+        });
     });
+    let checked = slots.into_iter().filter_map(|(_, out)| out);
     figures.validation_seconds = t_check.elapsed().as_secs_f64();
-    figures.gpu_iterations = vec![0; problems.len()];
-    for (&i, run) in on_gpu.iter().zip(&runs) {
-        figures.gpu_iterations[i] = run.state.iterations;
-    }
     let mut solutions = Vec::with_capacity(problems.len());
     for (s, origin) in checked {
         match origin {
@@ -280,14 +285,15 @@ pub(crate) fn run_on_gpu(
 /// or repaired. `r0` is the island's start, for a repair.
 pub(crate) fn validate_friction_island(
     problem: &FrictionProblem,
-    run: &GpuIslandRun,
+    run: GpuIslandRun,
     r0: Option<&[f64]>,
     settings: &ProjectedSettings,
     tolerance: f64,
 ) -> (ProjectedSolution, FrictionOrigin) {
     let usable = run.state.status != FAILED && run.r.iter().all(|v| v.is_finite());
     if usable {
-        let r = start(problem, Some(&run.r));
+        let mut r = run.r;
+        project_all(problem, &mut r);
         let mut kept = ProjectedSolution::judge(problem, r, tolerance, false);
         kept.iterations = run.state.iterations;
         kept.restarts = run.state.restarts;
