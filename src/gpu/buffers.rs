@@ -100,6 +100,68 @@ impl GpuContext {
         Ok(buffer)
     }
 
+    /// [`Self::storage_filled`] where `fill` writes every byte the shaders
+    /// will read: the others are left as they are, 0 in a new buffer, an
+    /// earlier batch's bytes in a kept one. Where the device maps storage
+    /// buffers ([`Self::maps_storage`]), a buffer given back by
+    /// [`Self::keep_spare`] of at least `size` bytes (and at most twice) is
+    /// mapped and written again: a new buffer costs a zeroing by wgpu and
+    /// the kernel's first touch of every page (the friction batches' W,
+    /// 12.8 MB at 10,000 islands of k = 4: about 1 ms of 25 on lavapipe,
+    /// measured).
+    pub(crate) fn storage_written(
+        &self,
+        label: &str,
+        size: u64,
+        fill: impl FnOnce(&mut wgpu::BufferViewMut),
+    ) -> Result<wgpu::Buffer, Error> {
+        let size = size.max(16).next_multiple_of(4);
+        let kept = self.maps_storage().then(|| self.take_spare(size)).flatten();
+        let Some(buffer) = kept else {
+            return self.storage_filled(label, size, fill);
+        };
+        let slice = buffer.slice(..size);
+        slice.map_async(wgpu::MapMode::Write, |_| {});
+        self.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| Error::Gpu(format!("mapping {label}: {e}")))?;
+        {
+            let mut view = slice
+                .get_mapped_range_mut()
+                .map_err(|e| Error::Gpu(format!("filling {label}: {e}")))?;
+            fill(&mut view);
+        }
+        buffer.unmap();
+        Ok(buffer)
+    }
+
+    /// A kept buffer of `size` to twice `size` bytes, the smallest (None
+    /// when there is none).
+    fn take_spare(&self, size: u64) -> Option<wgpu::Buffer> {
+        let mut spare = self.spare.lock().ok()?;
+        let fits = |b: &wgpu::Buffer| b.size() >= size && b.size() <= 2 * size;
+        let at = (0..spare.len())
+            .filter(|&i| fits(&spare[i]))
+            .min_by_key(|&i| spare[i].size())?;
+        Some(spare.swap_remove(at))
+    }
+
+    /// Keeps `buffer` (made by [`Self::storage_written`]; the caller is
+    /// done with it, and wgpu waits for any submission still using it
+    /// before it is mapped again) for a later batch: at most
+    /// [`SPARE_BUFFERS`] are kept, the newest.
+    pub(crate) fn keep_spare(&self, buffer: wgpu::Buffer) {
+        if !self.maps_storage() {
+            return;
+        }
+        if let Ok(mut spare) = self.spare.lock() {
+            if spare.len() >= SPARE_BUFFERS {
+                spare.remove(0);
+            }
+            spare.push(buffer);
+        }
+    }
+
     /// Copies each (buffer, bytes) to a mappable buffer, submits `encoder`,
     /// waits, and returns the bytes.
     pub(crate) fn submit_and_read(
@@ -171,6 +233,10 @@ impl GpuContext {
         Ok(out)
     }
 }
+
+/// Host-written buffers a context keeps between batches (two per
+/// friction chunk: its W, q, μ and its vectors).
+const SPARE_BUFFERS: usize = 4;
 
 /// Largest bytes per binding and workgroups per dispatch for this batch.
 pub(crate) fn limits_for(ctx: &GpuContext, settings: &GpuSolveSettings) -> (u64, u32) {

@@ -383,6 +383,9 @@ pub struct GpuContext {
     pub(crate) errors: ErrorSink,
     /// The pipelines of the context's precision: built on first use, then reused.
     pub(crate) pipelines: Mutex<Option<Arc<Pipelines>>>,
+    /// Host-written storage buffers of earlier batches, kept for the next
+    /// (`GpuContext::storage_written`, software adapters only).
+    pub(crate) spare: Mutex<Vec<wgpu::Buffer>>,
 }
 
 impl std::fmt::Debug for GpuContext {
@@ -464,6 +467,7 @@ impl GpuContext {
             limits,
             errors,
             pipelines: Mutex::new(None),
+            spare: Mutex::new(Vec::new()),
         })
     }
 

@@ -297,8 +297,12 @@ impl RoundsJob<'_> {
         let states_size = count * std::mem::size_of::<FrictionState>() as u64;
         let scalars_size = count * SCALARS as u64 * sb;
         let vectors_size = chunk.vectors_len as u64 * sb;
+        // Both written in place, in buffers kept from the last chunk where
+        // there are (`storage_written`): every byte a shader reads is
+        // written here. The shaders read an island's block padding, and
+        // drop it.
         let values =
-            ctx.storage_filled("friction values", chunk.values_len as u64 * sb, |view| {
+            ctx.storage_written("friction values", chunk.values_len as u64 * sb, |view| {
                 for (rec, &i) in chunk.table.iter().zip(&chunk.order) {
                     let (pr, at) = (&problems[i], rec.data as usize);
                     write_scalars(view, at, &pr.w, p);
@@ -306,12 +310,17 @@ impl RoundsJob<'_> {
                     write_scalars(view, at + pr.w.len() + pr.q.len(), &pr.mu, p);
                 }
             })?;
-        let vectors = ctx.storage_filled("friction vectors", vectors_size, |view| {
-            let Some(warm) = warm else { return };
+        // The first round reads each island's start r0 (x, 3k: 0 without a
+        // warm start) and computes the rest of its vectors (it may read a
+        // few entries past x, in its own block, and overwrite them).
+        let zeros = [0.0; 3 * MAX_GPU_CONTACTS];
+        let vectors = ctx.storage_written("friction vectors", vectors_size, |view| {
             for (rec, &i) in chunk.table.iter().zip(&chunk.order) {
-                if let Some(r0) = warm.get(i) {
-                    write_scalars(view, rec.vectors as usize, r0, p);
-                }
+                let k = rec.k as usize;
+                let r0 = warm
+                    .and_then(|w| w.get(i))
+                    .map_or(&zeros[..3 * k], Vec::as_slice);
+                write_scalars(view, rec.vectors as usize, r0, p);
             }
         })?;
         Ok(ChunkBuffers {
@@ -434,6 +443,8 @@ impl RoundsJob<'_> {
             };
         }
         run.islands = self.read(chunk, &b)?;
+        ctx.keep_spare(b.values);
+        ctx.keep_spare(b.vectors);
         Ok(run)
     }
 
