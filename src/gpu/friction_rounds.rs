@@ -5,10 +5,10 @@
 use bytemuck::{Pod, Zeroable};
 
 use super::dispatch::{Ranges, Span};
-use super::layout::{scalars_from_bytes, scalars_to_bytes};
+use super::layout::{scalar_from_bytes, scalars_from_bytes, scalars_to_bytes};
 use super::pipelines::{Pipelines, Stage};
 use super::{GpuContext, Precision};
-use crate::cpu::batch::parallel_map;
+use crate::cpu::batch::parallel_fill;
 use crate::friction::{FrictionProblem, ProjectedMethod};
 use crate::Error;
 
@@ -190,7 +190,7 @@ fn write_scalars(view: &mut wgpu::BufferViewMut, at: usize, src: &[f64], p: Prec
 }
 
 /// What the shader gave for one island.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub(crate) struct GpuIslandRun {
     pub state: FrictionState,
     /// The shader's answer (APGD's best iterate, the sweeps' x), in the
@@ -464,38 +464,36 @@ impl RoundsJob<'_> {
             let (vectors, scalars, state_bytes) = (bytes[0], bytes[1], bytes[2]);
             let states: &[FrictionState] = bytemuck::try_cast_slice(state_bytes)
                 .map_err(|e| Error::Gpu(format!("friction states: {e}")))?;
+            // Every table entry's place lies inside the buffers as packed:
+            // checked once here, so that the reads below cannot miss.
+            let n = chunk.table.len();
+            if states.len() < n
+                || scalars.len() < sb * SCALARS * n
+                || vectors.len() < sb * chunk.vectors_len
+            {
+                return Err(Error::Gpu("friction results: short read".into()));
+            }
+            // APGD: the best iterate's error; the sweeps: the last one's.
+            let e = if self.method == ProjectedMethod::Apgd {
+                2
+            } else {
+                3
+            };
             // Over every core: each island's answer is a cache miss or two
             // in the mapped vectors (1.5 ms of about 25 on one core at
             // 10,000 islands of k = 4 on lavapipe, measured).
             let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-            parallel_map(chunk.table.len(), threads, |t| {
+            let mut runs = vec![GpuIslandRun::default(); n];
+            parallel_fill(&mut runs, threads, |t, run| {
                 let rec = &chunk.table[t];
                 let (k, v) = (rec.k as usize, rec.vectors as usize);
                 let at = sb * (v + answer_offset(self.method, k));
-                // APGD: the best iterate's error; the sweeps: the last one's.
-                let e = if self.method == ProjectedMethod::Apgd {
-                    2
-                } else {
-                    3
-                };
                 let e_at = sb * (SCALARS * t + e);
-                Ok(GpuIslandRun {
-                    state: *states
-                        .get(t)
-                        .ok_or_else(|| Error::Gpu("friction states: short read".into()))?,
-                    r: scalars_from_bytes(
-                        vectors
-                            .get(at..at + sb * 3 * k)
-                            .ok_or_else(|| Error::Gpu("friction vectors: short read".into()))?,
-                        p,
-                    ),
-                    error: scalars
-                        .get(e_at..e_at + sb)
-                        .map_or(f64::NAN, |b| scalars_from_bytes(b, p)[0]),
-                })
-            })
-            .into_iter()
-            .collect()
+                run.state = states[t];
+                run.r = scalars_from_bytes(&vectors[at..at + sb * 3 * k], p);
+                run.error = scalar_from_bytes(&scalars[e_at..e_at + sb], p);
+            });
+            Ok(runs)
         })?
     }
 }

@@ -313,6 +313,19 @@ pub fn scalars_to_bytes(values: &[f64], precision: Precision) -> Vec<u8> {
     }
 }
 
+/// The one scalar of `bytes` (its first 8 bytes in f64, 4 in f32; NaN when
+/// there are fewer): [`scalars_from_bytes`] without a vector.
+pub(crate) fn scalar_from_bytes(bytes: &[u8], precision: Precision) -> f64 {
+    match precision {
+        Precision::F64 => bytes
+            .first_chunk::<8>()
+            .map_or(f64::NAN, |b| f64::from_le_bytes(*b)),
+        _ => bytes
+            .first_chunk::<4>()
+            .map_or(f64::NAN, |b| f32::from_le_bytes(*b) as f64),
+    }
+}
+
 /// The shader's scalars, from bytes, as f64.
 pub fn scalars_from_bytes(bytes: &[u8], precision: Precision) -> Vec<f64> {
     match precision {
