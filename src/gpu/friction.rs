@@ -16,7 +16,7 @@ use std::time::Instant;
 use super::buffers::limits_for;
 pub use super::friction_rounds::MAX_GPU_CONTACTS;
 use super::friction_rounds::{
-    controls_buffer, pack_friction_chunks, GpuIslandRun, RoundsJob, FAILED, FIRST_TRIES,
+    controls_buffer, pack_friction_chunks, GpuIslandRun, RoundsJob, AT_CAP, FAILED, FIRST_TRIES,
 };
 use super::kernel::round_budget;
 use super::{GpuContext, GpuSolveSettings, Precision};
@@ -24,12 +24,15 @@ use crate::cpu::batch::parallel_fill;
 use crate::friction::projected::{check_warm, project_all, solve_checked};
 use crate::friction::{FrictionProblem, ProjectedSettings, ProjectedSolution};
 use crate::settings::GpuSettings;
-use crate::Error;
+use crate::{Error, Status};
 
 /// Where an island's answer came from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum FrictionOrigin {
-    /// The GPU's answer, within the tolerance in f64.
+    /// The GPU's answer: within the tolerance in f64, or, from an f64
+    /// shader, where it stopped at the iteration cap (status
+    /// `not_converged`, as the CPU twin, whose iterates it repeats, would
+    /// end; see [`solve_projected_on_gpu`]).
     Gpu,
     /// The GPU's answer missed the tolerance in f64; the CPU twin continued
     /// from it and met it.
@@ -97,7 +100,11 @@ pub(crate) fn tolerance_for(settings: &ProjectedSettings, precision: Precision) 
 }
 
 /// Solves a batch of frictional islands by `settings.method` on the GPU of
-/// `ctx`, each answer validated in f64 (see the module docs); `warm[i]`,
+/// `ctx`, each answer validated in f64 (see the module docs; an f64
+/// shader's answer at the iteration cap is judged and kept: it is the
+/// twin's answer at the same cap, and polishing or solving it again would
+/// give the island two or three times the iterations the CPU path gives
+/// it); `warm[i]`,
 /// where given, is island i's start (3k). Results in the caller's order.
 /// The tolerance is [`ProjectedSettings::f64_tolerance`] on an f64 context,
 /// [`ProjectedSettings::f32_tolerance`] on an f32 one. `gpu` gives the
@@ -185,6 +192,8 @@ pub(crate) fn solve_projected_on_gpu_against(
         figures.gpu_iterations[i] = run.state.iterations;
         slots[i].0 = Some(run);
     }
+    // The f64 shaders repeat the twin's iterates (to rounding).
+    let twin = ctx.precision() == Precision::F64;
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
     parallel_fill(&mut slots, threads, |i, (run, out)| {
         let p = &problems[i];
@@ -194,7 +203,7 @@ pub(crate) fn solve_projected_on_gpu_against(
                 solve_checked(p, r0(i), settings, tol),
                 FrictionOrigin::CpuFallback,
             ),
-            Some(run) => validate_friction_island(p, run, r0(i), settings, tol),
+            Some(run) => validate_friction_island(p, run, r0(i), settings, tol, twin),
         });
     });
     let checked = slots.into_iter().filter_map(|(_, out)| out);
@@ -282,22 +291,27 @@ pub(crate) fn run_on_gpu(
 }
 
 /// The f64 check of one GPU answer (see the module docs): kept, polished
-/// or repaired. `r0` is the island's start, for a repair.
+/// or repaired. `r0` is the island's start, for a repair. `twin`: the
+/// shader ran in f64, so an island it stopped at the iteration cap holds
+/// the twin's answer at that cap, judged here and kept (`not_converged`
+/// unless the f64 check finds it within the tolerance).
 pub(crate) fn validate_friction_island(
     problem: &FrictionProblem,
     run: GpuIslandRun,
     r0: Option<&[f64]>,
     settings: &ProjectedSettings,
     tolerance: f64,
+    twin: bool,
 ) -> (ProjectedSolution, FrictionOrigin) {
     let usable = run.state.status != FAILED && run.r.iter().all(|v| v.is_finite());
     if usable {
+        let at_cap = twin && run.state.status == AT_CAP;
         let mut r = run.r;
         project_all(problem, &mut r);
         let mut kept = ProjectedSolution::judge(problem, r, tolerance, false);
         kept.iterations = run.state.iterations;
         kept.restarts = run.state.restarts;
-        if kept.status.is_solution() {
+        if kept.status.is_solution() || at_cap && kept.status == Status::NotConverged {
             return (kept, FrictionOrigin::Gpu);
         }
         let mut polished = solve_checked(problem, Some(&kept.r), settings, tolerance);

@@ -51,7 +51,6 @@ pub(crate) const RUNNING: u32 = 1;
 #[cfg_attr(not(test), allow(dead_code))]
 pub(crate) const CONVERGED: u32 = 2;
 /// max_iterations reached.
-#[cfg_attr(not(test), allow(dead_code))]
 pub(crate) const AT_CAP: u32 = 3;
 /// A non-finite error or step (the CPU twin's numerical failure).
 pub(crate) const FAILED: u32 = 4;

@@ -257,6 +257,41 @@ fn kept_buffers_are_written_again_and_change_no_answer() {
     assert_eq!(after, alone);
 }
 
+/// An f64 island stopped at the iteration cap is kept as the twin ends it
+/// at the same cap (`not_converged`, about the twin's error), not polished
+/// or solved again on the CPU with the budget a second time.
+#[test]
+fn f64_islands_at_the_cap_end_as_the_twin_ends_them() {
+    let Some(ctx) = gpu_context(Precision::F64) else {
+        return;
+    };
+    let problems = islands_of(0xCA9, 20, &[1, 4]);
+    for method in ProjectedMethod::ALL {
+        let settings = ProjectedSettings {
+            method,
+            max_iterations: 3,
+            ..Default::default()
+        };
+        let cpu = solve_projected_batch(&problems, None, &settings, 0).unwrap();
+        let (out, figures) =
+            solve_projected_on_gpu(&ctx, &problems, None, &settings, &GpuSettings::default())
+                .unwrap();
+        let capped = cpu.iter().filter(|c| c.status == Status::NotConverged);
+        assert!(
+            capped.count() >= problems.len() / 2,
+            "{method:?}: few at the cap"
+        );
+        assert_eq!((figures.polished, figures.repaired), (0, 0), "{method:?}");
+        for (i, (g, c)) in out.iter().zip(&cpu).enumerate() {
+            let what = format!("{method:?} island {i}");
+            assert_eq!(g.status, c.status, "{what}");
+            assert_eq!(g.iterations, c.iterations, "{what}");
+            let (eg, ec) = (g.residuals.cone_error, c.residuals.cone_error);
+            assert!((eg - ec).abs() <= 1e-9 * (1.0 + ec), "{what}: {eg} vs {ec}");
+        }
+    }
+}
+
 /// Final answers of the GPU path against the twin's, at `precision`.
 fn final_answers_match(precision: Precision, u_tol: f64) {
     let Some(ctx) = gpu_context(precision) else {

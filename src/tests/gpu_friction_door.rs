@@ -5,7 +5,7 @@
 
 use crate::friction::random::random_problems;
 use crate::settings::{Backend, Settings};
-use crate::{FrictionMethod, GpuContext, Solver, Status};
+use crate::{FrictionMethod, GpuContext, Precision, Solver, Status};
 
 use super::common::gpu_settings_or_skip;
 
@@ -172,16 +172,18 @@ fn scenes_with_friction_run_on_the_gpu_with_the_gpu_backend() {
     assert_eq!(velocity_deviation(&r, &cpu), 0.0);
 }
 
-/// With too few iterations for the GPU (Jacobi, 3 sweeps) the f64 check
-/// sends islands to the CPU: each is polished (the CPU continues from the
-/// GPU's answer) or repaired (solved again from its start), counted in the
-/// report and named in its choice; no island is called solved above the
-/// tolerance.
+/// With too few iterations for the GPU (Jacobi, 3 sweeps, f32 shaders,
+/// whose answers are not the twin's: an f64 shader's answer at the cap is
+/// kept, see `gpu_friction`) the f64 check sends islands to the CPU: each
+/// is polished (the CPU continues from the GPU's answer) or repaired
+/// (solved again from its start), counted in the report and named in its
+/// choice; no island is called solved above the f32 tolerance.
 #[test]
 fn gpu_friction_islands_that_miss_the_tolerance_are_polished_and_counted() {
-    let Some(g) = gpu_settings_or_skip() else {
+    let Some(mut g) = gpu_settings_or_skip() else {
         return;
     };
+    g.precision = Precision::F32;
     // Without the frictionless scene: the LCP path's counts would add in.
     let mut scenes = friction_scenes();
     scenes.remove(1);
@@ -206,6 +208,6 @@ fn gpu_friction_islands_that_miss_the_tolerance_are_polished_and_counted() {
     );
     for isl in &r.friction {
         let e = isl.solution.residuals.cone_error;
-        assert_eq!(isl.status() == Status::Solved, e <= 1e-8, "error {e:e}");
+        assert_eq!(isl.status() == Status::Solved, e <= 1e-5, "error {e:e}");
     }
 }
