@@ -7,9 +7,11 @@
 //! `cpu_fallback`); the others run on the GPU in rounds
 //! ([`super::friction_rounds`]). Validation: the GPU's r is projected on the
 //! cones in f64 and its residuals recomputed in f64; within the tolerance it
-//! is kept (`gpu`); else the CPU twin continues from it (`polished` when
-//! that meets the tolerance); else the CPU twin solves the island again from
-//! its start (`repaired`, with the status that gives).
+//! is kept (`gpu`), and so is an f64 shader's answer at the iteration cap
+//! (the twin's own at that cap: `not_converged`, as the twin ends it); else
+//! the CPU twin continues from it (`polished` when that meets the
+//! tolerance); else the CPU twin solves the island again from its start
+//! (`repaired`, with the status that gives).
 
 use std::time::Instant;
 
@@ -206,10 +208,10 @@ pub(crate) fn solve_projected_on_gpu_against(
             Some(run) => validate_friction_island(p, run, r0(i), settings, tol, twin),
         });
     });
-    let checked = slots.into_iter().filter_map(|(_, out)| out);
+    let answers = slots.into_iter().filter_map(|(_, out)| out);
     figures.validation_seconds = t_check.elapsed().as_secs_f64();
     let mut solutions = Vec::with_capacity(problems.len());
-    for (s, origin) in checked {
+    for (s, origin) in answers {
         match origin {
             FrictionOrigin::Gpu => figures.gpu += 1,
             FrictionOrigin::Polished => figures.polished += 1,
