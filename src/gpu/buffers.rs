@@ -148,17 +148,20 @@ impl GpuContext {
 
     /// Keeps `buffer` (made by [`Self::storage_written`]; the caller is
     /// done with it, and wgpu waits for any submission still using it
-    /// before it is mapped again) for a later batch: at most
-    /// [`SPARE_BUFFERS`] are kept, the newest.
+    /// before it is mapped again) for a later batch: the newest
+    /// [`SPARE_BUFFERS`], at most [`SPARE_BYTES`] in all (a larger buffer
+    /// is let go: host memory a context would hold after one huge batch).
     pub(crate) fn keep_spare(&self, buffer: wgpu::Buffer) {
-        if !self.maps_storage() {
+        if !self.maps_storage() || buffer.size() > SPARE_BYTES {
             return;
         }
         if let Ok(mut spare) = self.spare.lock() {
-            if spare.len() >= SPARE_BUFFERS {
+            spare.push(buffer);
+            while spare.len() > SPARE_BUFFERS
+                || spare.iter().map(wgpu::Buffer::size).sum::<u64>() > SPARE_BYTES
+            {
                 spare.remove(0);
             }
-            spare.push(buffer);
         }
     }
 
@@ -237,6 +240,10 @@ impl GpuContext {
 /// Host-written buffers a context keeps between batches (two per
 /// friction chunk: its W, q, μ and its vectors).
 const SPARE_BUFFERS: usize = 4;
+
+/// Bytes of the buffers a context keeps between batches, in all: 512 MiB
+/// (the W of 400,000 islands of k = 4 in f64).
+const SPARE_BYTES: u64 = 512 << 20;
 
 /// Largest bytes per binding and workgroups per dispatch for this batch.
 pub(crate) fn limits_for(ctx: &GpuContext, settings: &GpuSolveSettings) -> (u64, u32) {
