@@ -89,15 +89,8 @@ impl GpuContext {
             usage,
             mapped_at_creation: true,
         });
-        {
-            let mut view = buffer
-                .slice(..)
-                .get_mapped_range_mut()
-                .map_err(|e| Error::Gpu(format!("filling {label}: {e}")))?;
-            fill(&mut view);
-        }
-        buffer.unmap();
-        Ok(buffer)
+        let all = buffer.size();
+        fill_mapped(buffer, all, label, fill)
     }
 
     /// [`Self::storage_filled`] where `fill` writes every byte the shaders
@@ -120,19 +113,11 @@ impl GpuContext {
         let Some(buffer) = kept else {
             return self.storage_filled(label, size, fill);
         };
-        let slice = buffer.slice(..size);
-        slice.map_async(wgpu::MapMode::Write, |_| {});
+        buffer.slice(..size).map_async(wgpu::MapMode::Write, |_| {});
         self.device
             .poll(wgpu::PollType::wait_indefinitely())
             .map_err(|e| Error::Gpu(format!("mapping {label}: {e}")))?;
-        {
-            let mut view = slice
-                .get_mapped_range_mut()
-                .map_err(|e| Error::Gpu(format!("filling {label}: {e}")))?;
-            fill(&mut view);
-        }
-        buffer.unmap();
-        Ok(buffer)
+        fill_mapped(buffer, size, label, fill)
     }
 
     /// A kept buffer of `size` to twice `size` bytes, the smallest (None
@@ -235,6 +220,25 @@ impl GpuContext {
         }
         Ok(out)
     }
+}
+
+/// `fill` run on the first `size` bytes of `buffer`, mapped for writing
+/// (at creation or by `map_async`), then the buffer unmapped and returned.
+fn fill_mapped(
+    buffer: wgpu::Buffer,
+    size: u64,
+    label: &str,
+    fill: impl FnOnce(&mut wgpu::BufferViewMut),
+) -> Result<wgpu::Buffer, Error> {
+    {
+        let mut view = buffer
+            .slice(..size)
+            .get_mapped_range_mut()
+            .map_err(|e| Error::Gpu(format!("filling {label}: {e}")))?;
+        fill(&mut view);
+    }
+    buffer.unmap();
+    Ok(buffer)
 }
 
 /// Host-written buffers a context keeps between batches (two per
