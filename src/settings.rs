@@ -235,6 +235,11 @@ pub struct Settings {
     pub friction_max_iterations: u64,
     /// The GPU backend's settings.
     pub gpu: GpuSettings,
+    /// Print device trouble on stderr, once per solver (default true: the
+    /// command-line tool's `warning: GPU: …` line). A caller that reports
+    /// [`crate::Report::fallback`] itself (the Python package, as a
+    /// `DeviceWarning`) turns it off so that the trouble is told once.
+    pub warn_on_stderr: bool,
 }
 
 impl Default for Settings {
@@ -262,6 +267,7 @@ impl Default for Settings {
             friction_tolerance: FrictionSettings::default().tolerance,
             friction_max_iterations: FrictionSettings::default().max_iterations,
             gpu: GpuSettings::default(),
+            warn_on_stderr: true,
         }
     }
 }

@@ -18,7 +18,8 @@
 //! No adapter, a named adapter that does not exist, f64 asked of an adapter
 //! without SHADER_F64, or a GPU error in the middle of a batch (lost device,
 //! validation error, out of memory, a panic inside wgpu): the solver warns
-//! once on stderr (`warning: GPU: …; solving on the CPU (f64, exact)`),
+//! once on stderr (`warning: GPU: …; solving on the CPU (f64, exact)`;
+//! unless [`Settings::warn_on_stderr`] is off),
 //! records the reason in [`Report::fallback`], drops the device and solves
 //! this batch and every later one on the CPU, with the CPU's results. LCPs
 //! beyond the CPU enumeration's n ≤ 20 then go to Lemke, as on the GPU path.
@@ -306,7 +307,9 @@ impl Solver {
     fn fall_back(&mut self, why: String) {
         self.gpu = None;
         if self.fallback.is_none() {
-            eprintln!("warning: GPU: {why}; solving on the CPU (f64, exact)");
+            if self.settings.warn_on_stderr {
+                eprintln!("warning: GPU: {why}; solving on the CPU (f64, exact)");
+            }
             self.fallback = Some(why);
         }
     }
