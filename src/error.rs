@@ -68,13 +68,21 @@ impl Error {
         }
     }
 
-    /// Converts a serde_json error, keeping its position.
+    /// Converts a serde_json error, keeping its position (once: serde's
+    /// message without its own " at line L column C", which the error's
+    /// text states already).
     pub fn json(path: impl Into<String>, e: serde_json::Error) -> Self {
+        let (line, column) = (e.line(), e.column());
+        let text = e.to_string();
+        let message = text
+            .strip_suffix(&format!(" at line {line} column {column}"))
+            .unwrap_or(&text)
+            .to_string();
         Error::Json {
             path: path.into(),
-            line: e.line(),
-            column: e.column(),
-            message: e.to_string(),
+            line,
+            column,
+            message,
         }
     }
 }

@@ -35,8 +35,17 @@ pub(super) fn parse_friction_json(
     path: &str,
     value: serde_json::Value,
 ) -> Result<Vec<FrictionProblem>, Error> {
-    let file: FrictionFile = serde_json::from_value(value)
-        .map_err(|e| Error::invalid(path, "friction_problems", e.to_string()))?;
+    let file = FrictionFile::deserialize(&value).map_err(|e| {
+        // Name the problem and the field (a misspelt key as unknown, not its
+        // correct spelling as missing); serde's words where that finds nothing.
+        let fields: [(&str, bool, super::FieldCheck); 3] = [
+            ("W", true, super::rows),
+            ("q", true, super::numbers),
+            ("mu", true, super::numbers),
+        ];
+        super::check_problems(path, &value, "friction_problems", &fields)
+            .unwrap_or_else(|| Error::invalid(path, "friction_problems", e.to_string()))
+    })?;
     if file.friction_problems.is_empty() {
         return Err(Error::invalid(path, "friction_problems", "empty list"));
     }

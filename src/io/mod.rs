@@ -208,6 +208,9 @@ fn kind(v: &serde_json::Value) -> String {
 
 type FieldError = (String, String);
 
+/// A field's check: Ok, or the field (with its index) and what is wrong.
+type FieldCheck = fn(&serde_json::Value, &str) -> Result<(), FieldError>;
+
 fn number(v: &serde_json::Value, field: &str) -> Result<(), FieldError> {
     if v.is_number() {
         Ok(())
@@ -261,16 +264,13 @@ fn index(v: &serde_json::Value, field: &str) -> Result<(), FieldError> {
     }
 }
 
-/// Checks the fields of an object: each required one present and of the
-/// right form, optional ones of the right form when present, and no others
-/// when `closed`.
+/// Checks the fields of an object: no others than `fields` when `closed`
+/// (first, so that a misspelt key is named as unknown rather than reported
+/// as its correct spelling missing), each required one present and of the
+/// right form, optional ones of the right form when present.
 fn object(
     v: &serde_json::Value,
-    fields: &[(
-        &str,
-        bool,
-        fn(&serde_json::Value, &str) -> Result<(), FieldError>,
-    )],
+    fields: &[(&str, bool, FieldCheck)],
     closed: bool,
 ) -> Result<(), FieldError> {
     let Some(obj) = v.as_object() else {
@@ -279,13 +279,6 @@ fn object(
             format!("expected an object, found {}", kind(v)),
         ));
     };
-    for &(name, required, check) in fields {
-        match obj.get(name) {
-            None if required => return Err((name.into(), "missing".into())),
-            None => {}
-            Some(x) => check(x, name)?,
-        }
-    }
     if closed {
         if let Some(k) = obj
             .keys()
@@ -298,14 +291,17 @@ fn object(
             ));
         }
     }
+    for &(name, required, check) in fields {
+        match obj.get(name) {
+            None if required => return Err((name.into(), "missing".into())),
+            None => {}
+            Some(x) => check(x, name)?,
+        }
+    }
     Ok(())
 }
 
-fn body_fields() -> [(
-    &'static str,
-    bool,
-    fn(&serde_json::Value, &str) -> Result<(), FieldError>,
-); 5] {
+fn body_fields() -> [(&'static str, bool, FieldCheck); 5] {
     [
         ("inv_mass", true, number),
         ("inv_inertia", true, |v, f| array(v, f, Some(3), vec3)),
@@ -315,11 +311,7 @@ fn body_fields() -> [(
     ]
 }
 
-fn contact_fields() -> [(
-    &'static str,
-    bool,
-    fn(&serde_json::Value, &str) -> Result<(), FieldError>,
-); 8] {
+fn contact_fields() -> [(&'static str, bool, FieldCheck); 8] {
     [
         ("a", true, index),
         (
@@ -422,33 +414,49 @@ fn check_scenes(path: &str, v: &serde_json::Value) -> Option<Error> {
         .find_map(|(i, s)| check_scene(&format!("scene {i}"), s))
 }
 
+/// A matrix given as rows of numbers (`M`, `W`).
+fn rows(v: &serde_json::Value, f: &str) -> Result<(), FieldError> {
+    array(v, f, None, |r, f| array(r, f, None, number))
+}
+
+/// A list of numbers (`q`, `mu`).
+fn numbers(v: &serde_json::Value, f: &str) -> Result<(), FieldError> {
+    array(v, f, None, number)
+}
+
 fn check_batch(path: &str, v: &serde_json::Value) -> Option<Error> {
+    check_problems(
+        path,
+        v,
+        "problems",
+        &[("M", true, rows), ("q", true, numbers)],
+    )
+}
+
+/// A file `{key: [problem, …]}` whose problems are objects of exactly
+/// `fields`: the first fault, named by `problem i` and the field.
+fn check_problems(
+    path: &str,
+    v: &serde_json::Value,
+    key: &str,
+    fields: &[(&str, bool, FieldCheck)],
+) -> Option<Error> {
     if let Some(k) = v
         .as_object()
-        .and_then(|o| o.keys().find(|k| k.as_str() != "problems"))
+        .and_then(|o| o.keys().find(|k| k.as_str() != key))
     {
         return Some(Error::invalid(
             path,
             k.as_str(),
-            "unknown field (expected `problems`)",
+            format!("unknown field (expected `{key}`)"),
         ));
     }
-    let problems = match list(path, v, "problems") {
+    let problems = match list(path, v, key) {
         Ok(p) => p,
         Err(e) => return Some(e),
     };
-    let fields: [(
-        &str,
-        bool,
-        fn(&serde_json::Value, &str) -> Result<(), FieldError>,
-    ); 2] = [
-        ("M", true, |v, f| {
-            array(v, f, None, |r, f| array(r, f, None, number))
-        }),
-        ("q", true, |v, f| array(v, f, None, number)),
-    ];
     problems.iter().enumerate().find_map(|(i, p)| {
-        object(p, &fields, true)
+        object(p, fields, true)
             .err()
             .map(|(field, reason)| Error::invalid(format!("problem {i}"), field, reason))
     })
@@ -540,5 +548,60 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(e.contains("inv_mass") || e.contains("invalid type"), "{e}");
+    }
+
+    #[test]
+    fn malformed_json_states_its_position_once() {
+        let text = "{\"problems\": [\n  {\"M\": [[1]], \"q\": [1]},\n  {\"M\": [[1]] \"q\": [1]}]}";
+        let e = parse_json("t.json", text).unwrap_err();
+        let Error::Json { line, column, .. } = &e else {
+            panic!("not a JSON error: {e}");
+        };
+        assert_eq!((*line, *column), (3, 15)); // the `"` of "q"
+        let text = e.to_string();
+        assert_eq!(
+            text,
+            "t.json: malformed JSON at line 3, column 15: expected `,` or `}`"
+        );
+        assert_eq!(text.matches("line").count(), 1, "{text}");
+        assert_eq!(text.matches("column").count(), 1, "{text}");
+    }
+
+    #[test]
+    fn a_misspelt_key_is_named_as_unknown_not_its_spelling_as_missing() {
+        let cases = [
+            (
+                r#"{"problems":[{"M":[[1]],"q":[1]},{"M":[[1]],"qq":[1]}]}"#,
+                "problem 1: field `qq`: unknown field (expected `M`, `q`)",
+            ),
+            (
+                r#"{"problems":[{"m":[[1]],"q":[1]}]}"#,
+                "problem 0: field `m`: unknown field (expected `M`, `q`)",
+            ),
+            (
+                r#"{"friction_problems":[{"W":[[1,0,0],[0,1,0],[0,0,1]],"q":[-1,0,0],"m":[0.5]}]}"#,
+                "problem 0: field `m`: unknown field (expected `W`, `q`, `mu`)",
+            ),
+            (
+                r#"{"bodies":[],"contacts":[{"a":0,"point":[0,0,0],"normal":[0,1,0],"restituion":0.5}]}"#,
+                "scene 0, contact 0: field `restituion`: unknown field",
+            ),
+        ];
+        for (text, want) in cases {
+            let e = parse_json("t.json", text).unwrap_err().to_string();
+            assert!(e.starts_with(want), "{want}\n{e}");
+        }
+        // A key truly missing is still reported as missing.
+        let e = parse_json("t.json", r#"{"problems":[{"M":[[1]]}]}"#)
+            .unwrap_err()
+            .to_string();
+        assert_eq!(e, "problem 0: field `q`: missing");
+        let e = parse_json(
+            "t.json",
+            r#"{"friction_problems":[{"W":[[1,0,0],[0,1,0],[0,0,1]],"q":[-1,0,0]}]}"#,
+        )
+        .unwrap_err()
+        .to_string();
+        assert_eq!(e, "problem 0: field `mu`: missing");
     }
 }
