@@ -7,7 +7,7 @@ use std::path::PathBuf;
 
 use lcpbatch::generate::stress::{basis_condition, generate, siconos_scaled, Family, StressCase};
 use lcpbatch::io::write_atomically;
-use lcpbatch::{Backend, Error, GpuSettings, Lcp, Method, Report, Settings, Solver};
+use lcpbatch::{Backend, Error, GpuSettings, Lcp, Method, Report, Settings, Solver, Status};
 
 use crate::devices::{gpu_solvers, machine_description};
 use crate::plots;
@@ -20,7 +20,10 @@ pub struct StressPoint {
     pub parameter: f64,
     /// Condition number of the reference basis' principal submatrix.
     pub condition: f64,
-    pub error: f64,
+    /// The error measure of z on the problem as posed; None (`null`, "n/a"
+    /// in the table) where the status claims no z: no solution, a ray, an
+    /// input the method cannot take (an error of 1 there measured only z = 0).
+    pub error: Option<f64>,
     pub status: String,
     pub status_matches_reference: bool,
     /// Every z and w finite.
@@ -33,9 +36,11 @@ pub struct StressRow {
     pub family: String,
     pub solver: String,
     pub cases: usize,
-    pub median_error: f64,
-    pub p99_error: f64,
-    pub max_error: f64,
+    /// Over the cases with an error (see [`StressPoint::error`]); None
+    /// when no case has one.
+    pub median_error: Option<f64>,
+    pub p99_error: Option<f64>,
+    pub max_error: Option<f64>,
     /// Share of cases whose status equals the f64 exhaustive enumeration's.
     pub status_match: f64,
     /// Cases with a NaN or Inf in z or w (must be 0).
@@ -74,18 +79,17 @@ pub fn summarise(points: &[StressPoint]) -> Vec<StressRow> {
                 .iter()
                 .filter(|p| p.family == family && p.solver == solver)
                 .collect();
-            let mut e: Vec<f64> = ps.iter().map(|p| p.error).collect();
+            let mut e: Vec<f64> = ps.iter().filter_map(|p| p.error).collect();
             e.sort_by(f64::total_cmp);
             let q = |f: f64| {
                 e.get(((e.len() as f64 - 1.0) * f).round() as usize)
                     .copied()
-                    .unwrap_or(0.0)
             };
             StressRow {
                 cases: ps.len(),
                 median_error: q(0.5),
                 p99_error: q(0.99),
-                max_error: e.last().copied().unwrap_or(0.0),
+                max_error: e.last().copied(),
                 status_match: ps.iter().filter(|p| p.status_matches_reference).count() as f64
                     / ps.len().max(1) as f64,
                 non_finite: ps.iter().filter(|p| !p.finite).count(),
@@ -111,6 +115,16 @@ pub fn regularized(lcp: &Lcp, alpha: f64) -> Lcp {
     }
 }
 
+/// Whether a status comes with a z whose error means something: a solution,
+/// the last iterate at a cap, or an answer that failed the final check; not
+/// `no_solution`, `ray_termination` or `invalid_input`, which claim none.
+fn has_z(status: Status) -> bool {
+    !matches!(
+        status,
+        Status::NoSolution | Status::RayTermination | Status::InvalidInput
+    )
+}
+
 /// The points of one method's report on `cases`, against the reference.
 fn points_of(
     label: &str,
@@ -128,15 +142,17 @@ fn points_of(
             // Errors are measured on the problem as posed, before regularisation.
             let res = c.lcp.residuals(&isl.solution.z);
             let s = &isl.solution;
+            let error = has_z(isl.status()).then_some(res.error);
             StressPoint {
                 family: label.into(),
                 solver: solver.into(),
                 parameter: c.parameter,
                 condition,
-                error: res.error,
+                error,
                 status: isl.status().name().into(),
                 status_matches_reference: isl.status() == r.status(),
-                finite: s.z.iter().chain(&s.w).all(|v| v.is_finite()) && res.error.is_finite(),
+                finite: s.z.iter().chain(&s.w).all(|v| v.is_finite())
+                    && error.is_none_or(f64::is_finite),
             }
         })
         .collect()
@@ -205,6 +221,11 @@ fn run_family(
     Ok((points, repaired))
 }
 
+/// An error in the table: `1.2e-15`, or `n/a` where no case has one.
+fn error_cell(e: Option<f64>) -> String {
+    e.map_or("n/a".into(), |e| format!("{e:.1e}"))
+}
+
 fn print_rows(rows: &[StressRow]) {
     println!(
         "{:<22} {:<26} {:>6} {:>9} {:>9} {:>9} {:>8} {:>9} {:>9}",
@@ -212,13 +233,13 @@ fn print_rows(rows: &[StressRow]) {
     );
     for r in rows {
         println!(
-            "{:<22} {:<26} {:>6} {:>9.1e} {:>9.1e} {:>9.1e} {:>7.1}% {:>9} {:>9}",
+            "{:<22} {:<26} {:>6} {:>9} {:>9} {:>9} {:>7.1}% {:>9} {:>9}",
             r.family,
             r.solver,
             r.cases,
-            r.median_error,
-            r.p99_error,
-            r.max_error,
+            error_cell(r.median_error),
+            error_cell(r.p99_error),
+            error_cell(r.max_error),
             100.0 * r.status_match,
             r.non_finite,
             r.repaired.map_or("-".into(), |v| v.to_string())
@@ -282,7 +303,7 @@ pub fn run(opts: &StressOptions) -> Result<Vec<StressRow>, Error> {
     let scatter: Vec<(f64, f64, String)> = points
         .iter()
         .filter(|p| p.condition.is_finite())
-        .map(|p| (p.condition.max(1.0), p.error.max(1e-18), p.solver.clone()))
+        .filter_map(|p| Some((p.condition.max(1.0), p.error?.max(1e-18), p.solver.clone())))
         .collect();
     plots::scatter(
         &scatter,
@@ -321,11 +342,42 @@ mod tests {
     }
 
     #[test]
+    fn problems_without_a_solution_have_no_error_to_report() {
+        let cases = generate(Family::Infeasible, 4, 10);
+        let (points, _) = run_family("infeasible", &cases, 0.0, &mut []).unwrap();
+        let rows = summarise(&points);
+        // Enumeration proves there is no solution: no z, so no error (it
+        // used to print 1.0, the error of z = 0).
+        let reference: Vec<&StressPoint> = points
+            .iter()
+            .filter(|p| p.solver.starts_with("enum"))
+            .collect();
+        assert_eq!(reference.len(), 10);
+        assert!(reference
+            .iter()
+            .all(|p| p.status == "no_solution" && p.error.is_none() && p.finite));
+        let row = rows.iter().find(|r| r.solver.starts_with("enum")).unwrap();
+        assert_eq!((row.median_error, row.max_error), (None, None));
+        assert_eq!(error_cell(row.max_error), "n/a");
+        assert_eq!(error_cell(Some(1.5e-15)), "1.5e-15");
+        // PGS at its cap keeps its last iterate's error.
+        let pgs: Vec<&StressPoint> = points.iter().filter(|p| p.solver == "pgs 100").collect();
+        assert!(pgs
+            .iter()
+            .filter(|p| p.status == "not_converged")
+            .all(|p| p.error.is_some()));
+        let json = serde_json::to_string(&row).unwrap();
+        assert!(json.contains(r#""max_error":null"#), "{json}");
+    }
+
+    #[test]
     fn regularization_makes_resting_stacks_definite() {
         let cases = generate(Family::RestingStacks, 5, 20);
         let (points, _) = run_family("resting", &cases, 1e-6, &mut []).unwrap();
         let auto: Vec<&StressPoint> = points.iter().filter(|p| p.solver == "auto f64").collect();
         assert!(!auto.is_empty());
-        assert!(auto.iter().all(|p| p.error < 1e-3 && p.finite));
+        assert!(auto
+            .iter()
+            .all(|p| p.error.is_some_and(|e| e < 1e-3) && p.finite));
     }
 }
