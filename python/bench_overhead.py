@@ -49,7 +49,7 @@ def main() -> None:
     args = ap.parse_args()
 
     M, q = batch(args.problems, args.n)
-    s = lcpbatch.Solver(backend=args.backend, solver=args.solver)
+    s = lcpbatch.Solver(backend=args.backend, method=args.solver)
     s.solve(M, q)  # warm-up: pipelines, thread pool, page faults
     python, rust, inside = [], [], []
     for _ in range(args.repeats):

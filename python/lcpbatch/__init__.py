@@ -14,14 +14,26 @@ Entry points: :func:`solve` (LCP batches), :func:`solve_scenes` (bodies and
 contacts as arrays, friction ``mu`` per contact), :func:`solve_friction`
 (Siconos FrictionContact3D problems), :class:`World` and :func:`simulate`
 (worlds in time), :class:`Solver` (keeps the device between calls),
-:mod:`lcpbatch.distributed` (shards over a Dask cluster).
+:mod:`lcpbatch.distributed` (shards over a Dask cluster). ``help()`` of each
+lists every setting with the values it accepts, and the result's fields.
 """
 
-from . import _native
-from ._friction import FrictionResult
-from ._results import PATH_NAMES, LcpResult, Report, ScenesResult, Status
-from ._solver import DeviceWarning, Solver, adapters, simulate, solve, solve_friction, solve_scenes
-from ._worlds import StepResult, World
+import os as _os
+import tempfile as _tempfile
+
+# Where XDG_RUNTIME_DIR is not set (a headless machine, root, a container),
+# Mesa's Wayland probe prints "error: XDG_RUNTIME_DIR is invalid or not set
+# in the environment." at every adapter enumeration; as the command-line tool
+# does, point it at the temporary folder for this process, which only quiets
+# that probe (no Wayland display is found there either).
+if "XDG_RUNTIME_DIR" not in _os.environ:
+    _os.environ["XDG_RUNTIME_DIR"] = _tempfile.gettempdir()
+
+from . import _native  # noqa: E402
+from ._friction import FrictionResult  # noqa: E402
+from ._results import PATH_NAMES, LcpResult, Report, ScenesResult, Status  # noqa: E402
+from ._solver import DeviceWarning, Solver, adapters, simulate, solve, solve_friction, solve_scenes  # noqa: E402
+from ._worlds import StepResult, World  # noqa: E402
 
 #: At most this many problems per chunk (Ctrl-C is checked between chunks).
 CHUNK_PROBLEMS: int = _native.CHUNK_PROBLEMS

@@ -15,9 +15,30 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 import numpy as np
 
 from ._inputs import id_array, ragged_ids, real_array
-from ._results import Report, Status, _split
+from ._results import Report, Status, _split, fill_doc
 
-__all__ = ["FrictionResult", "dense", "ragged"]
+__all__ = ["FrictionResult", "FRICTION_FIELDS_DOC", "dense", "ragged"]
+
+#: The fields of :class:`FrictionResult` (in its docstring and ``solve_friction``'s).
+FRICTION_FIELDS_DOC = """\
+    - ``r``, ``u``: (B, 3k) float64 (lists for a ragged batch): reactions and
+      velocities u = W r + q, interleaved per contact (normal, t1, t2);
+    - ``status``: (B,) int8 :class:`Status` codes (``SOLVED`` when the
+      Coulomb error, or for "jacobi", "pgs", "apgd" the cone error, is at
+      most ``friction_tolerance``; ``NOT_CONVERGED`` at the iteration cap;
+      ``NUMERICAL_FAILURE``); ``status_names()``: the same as str;
+      ``ok``: (B,) bool, solved;
+    - ``coulomb_error`` (also ``error``): (B,) Siconos' fc3d error with De
+      Saxcé's correction, normalised by max(‖q‖, ‖r‖, ‖u‖);
+      ``cone_error``: (B,) the residual ‖r − P_K(r − u)‖ of the convex
+      cone complementarity problem;
+    - ``iterations``: (B,) NSGS sweeps plus Newton steps (the projected
+      methods: their iterations); ``warm_started``: (B,) bool, started from
+      the reactions remembered by contact id;
+    - ``ragged``: whether the batch was lists of problems of different k;
+    - ``report``: :class:`Report` (``friction_statuses``,
+      ``max_coulomb_error``; ``help(lcpbatch.Report)``).
+"""
 
 
 def _mu_rows(mu: Any, b: int, k: int) -> np.ndarray:
@@ -90,16 +111,7 @@ def ragged(W: Sequence[Any], q: Any, mu: Any, ids: Any) -> Tuple[List[np.ndarray
 class FrictionResult:
     """The answers of a batch of frictional problems, one row per problem.
 
-    - ``r``, ``u``: (B, 3k) float64 (lists for a ragged batch): reactions and
-      velocities u = W r + q, interleaved per contact (normal, t1, t2);
-    - ``status``: (B,) int8 :class:`Status` codes (``SOLVED`` when the
-      Coulomb error is at most ``friction_tolerance``, ``NOT_CONVERGED``,
-      ``NUMERICAL_FAILURE``); ``ok``: (B,) bool;
-    - ``coulomb_error``: (B,) Siconos' fc3d error with De Saxcé's correction,
-      normalised by max(‖q‖, ‖r‖, ‖u‖); ``cone_error``: (B,) the residual
-      ‖r − P_K(r − u)‖ of the convex cone complementarity problem;
-    - ``iterations``: (B,) NSGS sweeps plus Newton steps; ``warm_started``: (B,) bool;
-    - ``report``: :class:`Report` (``friction_statuses``, ``max_coulomb_error``).
+    <fields>
 
     >>> import numpy as np, lcpbatch
     >>> W = np.eye(3)[None]; q = np.array([[-1.0, 3.0, 0.0]]); mu = np.array([[0.5]])
@@ -150,3 +162,6 @@ class FrictionResult:
             f"<lcpbatch.FrictionResult: {len(self)} problems; {counts or 'none'}; max Coulomb error "
             f"{'none' if err is None else f'{err:.3e}'}; on {self.report.device}>"
         )
+
+
+fill_doc(FrictionResult, fields=FRICTION_FIELDS_DOC)

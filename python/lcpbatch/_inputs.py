@@ -108,14 +108,14 @@ def ragged_ids(ids: Any, shapes: Sequence[Tuple[int, ...]], what: str) -> Option
     return idl
 
 
-def check_enumeration_size(sizes: Union[Sequence[int], np.ndarray], solver: str, backend: str) -> None:
+def check_enumeration_size(sizes: Union[Sequence[int], np.ndarray], method: str, backend: str) -> None:
     """Enumeration on the CPU visits 2^n bases and stops at n = 20: say so
     before solving, naming the first problem too large."""
-    if solver not in ("enum", "enumeration") or backend != "cpu":
+    if method not in ("enum", "enumeration") or backend != "cpu":
         return
     for i, n in enumerate(sizes):
         if n > 20:
             raise ValueError(
                 f"M[{i}]: n = {n} is too large for enumeration on the CPU (n ≤ 20: "
-                "it visits 2^n bases); use solver='auto' or solver='lemke'"
+                "it visits 2^n bases); use method='auto' or method='lemke'"
             )

@@ -14,6 +14,17 @@ from . import _native
 __all__ = ["Status", "Report", "LcpResult", "ScenesResult", "PATH_NAMES"]
 
 
+def fill_doc(obj: Any, **parts: str) -> None:
+    """Puts each part in ``obj``'s docstring in place of its line
+    ``<name>``, so that one text (the settings, a result's fields) is
+    written once and shown by ``help()`` of every function that has it."""
+    for name, text in parts.items():
+        marker = f"    <{name}>\n"
+        if marker not in (obj.__doc__ or ""):
+            raise AssertionError(f"{obj.__qualname__}: no <{name}> in its docstring")
+        obj.__doc__ = obj.__doc__.replace(marker, text.rstrip("\n") + "\n")
+
+
 class Status(enum.IntEnum):
     """What a solve found for one problem (the codes of ``result.status``).
 
@@ -57,12 +68,77 @@ if [s.name.lower() for s in Status] != list(_native.status_names()):  # pragma: 
 PATH_NAMES: List[str] = list(_native.path_names())
 _PATHS = np.array(PATH_NAMES)
 
+#: The fields of :class:`LcpResult` (in its docstring and ``solve``'s).
+LCP_FIELDS_DOC = """\
+    Attributes (B problems; for a ragged batch, a list of B arrays where the
+    dense form has a (B, n) array):
+
+    - ``z``, ``w``: (B, n) float64, with w = M z + q recomputed in f64;
+    - ``status``: (B,) int8 codes of :class:`Status` (SOLVED,
+      MULTIPLE_SOLUTIONS, NO_SOLUTION, RAY_TERMINATION, NOT_CONVERGED,
+      INVALID_INPUT, NUMERICAL_FAILURE); ``status_names()``: the same as
+      (B,) str ("solved", …); ``ok``: (B,) bool, a solution;
+    - ``error``: (B,) float64, the Siconos measure ‖z − max(0, z − w)‖ / ‖q‖;
+    - ``basis``: (B, n) bool, z_i basic; ``has_basis``: (B,) bool, whether the
+      solver reported a basis (PGS does not: its rows are all False);
+    - ``pivots`` (Lemke), ``iterations`` (PGS sweeps), ``bases_visited``
+      (enumeration): (B,) uint64;
+    - ``path``: (B,) str, how each problem was settled, one of
+      ``PATH_NAMES``: "separating", "single_contact", "warm_start",
+      "predicted_basis", "enumerated_gpu", "repaired", "enumerated_cpu",
+      "lemke", "pgs", "invalid" (see :class:`Report`'s ``counts``);
+    - ``solution_count``: (B,) int64, distinct solutions with
+      ``all_solutions=True`` (−1 where unknown); ``solution_set``: list of
+      "empty", "isolated", "bounded_continuum", "unbounded_continuum" or None;
+    - ``all_z``, ``all_basis``: with ``all_solutions=True``, per problem a
+      (k, n) array of the z (and the basis) of every valid complementary
+      basis found; None otherwise;
+    - ``ragged``: whether the batch was a list of problems of different sizes;
+    - ``report``: :class:`Report`, the batch's figures (``help(lcpbatch.Report)``).
+"""
+
 
 class Report:
     """Batch figures of one call: where it ran and why, islands per path,
     per status, the largest error, seconds per phase and any GPU fallback.
 
-    ``print(report)`` gives a few lines; every figure is also an attribute:
+    ``print(report)`` gives the library's summary (``text``); every figure
+    is also an attribute:
+
+    - ``device``: the device in words (adapter, wgpu backend, precision);
+      ``device_kind``: "cpu", "hardware_gpu" or "software_gpu";
+      ``precision``: "f64" or "f32" (the GPU shaders'; "f64" on the CPU);
+    - ``choice``: why this device (the backend asked for; with
+      backend "auto" and a GPU open, the cost model's CPU and GPU
+      estimates); ``fallback``: why the CPU took over from the GPU (None:
+      no device trouble);
+    - ``counts``: islands per path: "separating" (q ≥ 0, no impulse),
+      "single_contact" (closed form), "warm_start" (last call's basis),
+      "predicted_basis" (the approaching contacts' basis, M positive
+      definite), "enumerated_gpu" (enumerated on the GPU, confirmed in f64),
+      "polished" (GPU answers whose basis held in f64), "repaired" (GPU
+      answers re-solved on the CPU), "enumerated_cpu", "lemke",
+      "cpu_fallback" (too large for the GPU's kernels, n > 16: Lemke),
+      "pgs", "invalid" (failed their checks);
+    - ``statuses``: islands per :class:`Status` name ("solved", …);
+    - ``max_error``, ``max_error_index``: the largest error measure over
+      the islands with a solution, and which island (None: none);
+    - ``timings``: seconds: "build" (checks, islands, assembly),
+      "prediction", "gpu" (upload, dispatch, readback), "validation"
+      (checking the GPU's answers in f64), "solve" (CPU solves), "impulses"
+      (velocities after the impulses), "total" (the whole call);
+    - ``gpu``: None on the CPU, else "chunks" (parts under the device's
+      limits), "dispatches", "rounds" (enumeration rounds),
+      "tree_decided", "tree_undecided" (islands the tree kernel decided or
+      left to elimination), "max_gpu_error" (the GPU's own error before
+      the f64 polish), "max_velocity_deviation" (scenes: the GPU's impulse
+      stage against its f64 twin);
+    - ``chunks``: parts the call was solved in (Ctrl-C is seen between them);
+    - ``friction_islands``: frictional islands (or problems of
+      ``solve_friction``); ``friction_statuses``: their statuses;
+      ``max_coulomb_error``, ``max_coulomb_error_index``: the largest
+      Coulomb error over the solved ones and which (None: none);
+    - ``text``: the summary ``print`` shows; ``to_dict()``: all of it.
 
     >>> import numpy as np, lcpbatch
     >>> r = lcpbatch.solve(np.array([[[2.0, 1.0], [1.0, 2.0]]]), np.array([[-5.0, -6.0]]), backend="cpu")
@@ -123,24 +199,7 @@ def _split(flat: np.ndarray, offsets: np.ndarray) -> List[np.ndarray]:
 class LcpResult:
     """The answers of an LCP batch, one row per problem.
 
-    Attributes (B problems; for a ragged batch, a list of B arrays where the
-    dense form has a (B, n) array):
-
-    - ``z``, ``w``: (B, n) float64, with w = M z + q recomputed in f64;
-    - ``status``: (B,) int8 codes of :class:`Status`; ``ok``: (B,) bool, a solution;
-    - ``error``: (B,) float64, the Siconos measure ‖z − max(0, z − w)‖ / ‖q‖;
-    - ``basis``: (B, n) bool, z_i basic; ``has_basis``: (B,) bool, whether the
-      solver reported a basis (PGS does not: its rows are all False);
-    - ``pivots`` (Lemke), ``iterations`` (PGS sweeps), ``bases_visited``
-      (enumeration): (B,) uint64;
-    - ``path``: (B,) str, how each problem was settled (``PATH_NAMES``);
-    - ``solution_count``: (B,) int64, distinct solutions with
-      ``all_solutions=True`` (−1 where unknown); ``solution_set``: list of
-      "empty", "isolated", "bounded_continuum", "unbounded_continuum" or None;
-    - ``all_z``, ``all_basis``: with ``all_solutions=True``, per problem a
-      (k, n) array of the z (and the basis) of every valid complementary
-      basis found; None otherwise;
-    - ``report``: :class:`Report`.
+    <fields>
 
     >>> import numpy as np, lcpbatch
     >>> r = lcpbatch.solve(np.array([[[2.0, 1.0], [1.0, 2.0]]]), np.array([[-5.0, -6.0]]))
@@ -180,7 +239,7 @@ class LcpResult:
 
         >>> import numpy as np, lcpbatch
         >>> M = np.array([[[1.0]], [[-1.0]]])         # the second has no solution
-        >>> lcpbatch.solve(M, np.array([[-1.0], [-1.0]]), solver="enum").ok.tolist()
+        >>> lcpbatch.solve(M, np.array([[-1.0], [-1.0]]), method="enum").ok.tolist()
         [True, False]
         """
         return self.status <= Status.MULTIPLE_SOLUTIONS
@@ -190,7 +249,7 @@ class LcpResult:
 
         >>> import numpy as np, lcpbatch
         >>> M = np.array([[[1.0]], [[-1.0]]])
-        >>> lcpbatch.solve(M, np.array([[-1.0], [-1.0]]), solver="enum").status_names().tolist()
+        >>> lcpbatch.solve(M, np.array([[-1.0], [-1.0]]), method="enum").status_names().tolist()
         ['solved', 'no_solution']
         """
         names = np.array([s.name.lower() for s in Status])
@@ -212,25 +271,7 @@ class LcpResult:
 class ScenesResult:
     """The answers of a batch of scenes.
 
-    For one scene (``solve_scenes(bodies=dict, contacts=dict)``):
-    ``impulses`` (C,), ``velocity`` and ``angular_velocity`` (N, 3) after the
-    impact; for a batch (lists of dicts), lists of those, one per scene.
-    Per island (all scenes, in order): ``island_scene`` (I,), ``island_contacts``
-    (list of the scene's contact indices, in the order of the island's LCP
-    rows), ``status`` (I,) :class:`Status` codes, ``error``, ``path``, ``z``
-    and ``w`` (lists). ``scene_ok`` (S,) bool: every island of the scene (the
-    frictional ones included) has a solution. ``report``: :class:`Report`.
-
-    With friction (``mu`` > 0 on a contact): per contact ``impulse`` (C, 3),
-    the impulse vector on body a in the world frame (normal plus tangential
-    part; z n for a frictionless scene) and ``tangential`` (C, 2), its
-    tangential parts (r_t1, r_t2) in the contact's frame (t1, t2 = n × t1);
-    ``impulses`` stays the normal part. An island with any μ > 0 is a
-    frictional island: ``friction_scene`` (F,), ``friction_contacts`` (list),
-    ``friction_status`` (F,) :class:`Status` codes, ``friction_error`` (F,)
-    the Coulomb error (Siconos' fc3d error with De Saxcé's correction),
-    ``friction_cone_error`` and ``friction_iterations`` (F,). Frictional
-    islands are not in the LCP island arrays (``status``, ``z``, …).
+    <fields>
 
     >>> import numpy as np, lcpbatch
     >>> bodies = dict(inv_mass=[1.0], inv_inertia=[[2.5, 2.5, 2.5]],
@@ -284,6 +325,42 @@ class ScenesResult:
             f"<lcpbatch.ScenesResult: {len(self.scene_ok)} scene(s), {len(self.status)} "
             f"island(s){friction}; {counts or 'none'}; on {self.report.device}>"
         )
+
+
+#: The fields of :class:`ScenesResult` (in its docstring and ``solve_scenes``').
+SCENES_FIELDS_DOC = """\
+    For one scene (``solve_scenes(bodies=dict, contacts=dict)``; ``single``
+    is True) per contact and body of the scene, for a batch (lists of
+    dicts) lists of those, one per scene:
+
+    - ``impulses``: (C,) the normal impulse of each contact;
+    - ``impulse``: (C, 3) each contact's impulse vector on body a in the
+      world frame (normal plus tangential part; z n without friction);
+    - ``tangential``: (C, 2) its tangential parts (r_t1, r_t2) in the
+      contact's frame (t1, t2 = n × t1; zero without friction);
+    - ``velocity``, ``angular_velocity``: (N, 3) the bodies' velocities
+      after the impulses.
+
+    Per frictionless island, all scenes in order (I islands):
+    ``island_scene`` (I,) its scene; ``island_contacts`` (list) the scene's
+    contact indices in the order of the island's LCP rows; ``status`` (I,)
+    :class:`Status` codes; ``error`` (I,); ``path`` (I,) str (as in
+    :class:`LcpResult`); ``z``, ``w`` (lists).
+
+    Per frictional island (one with any μ > 0; F islands, not in the
+    arrays above): ``friction_scene`` (F,); ``friction_contacts`` (list);
+    ``friction_status`` (F,) :class:`Status` codes; ``friction_error`` (F,)
+    the Coulomb error (Siconos' fc3d error with De Saxcé's correction);
+    ``friction_cone_error`` (F,) the cone complementarity residual;
+    ``friction_iterations`` (F,).
+
+    ``scene_ok``: (S,) bool, every island of the scene (the frictional ones
+    included) has a solution. ``report``: :class:`Report`, the batch's
+    figures (``help(lcpbatch.Report)``).
+"""
+
+fill_doc(LcpResult, fields=LCP_FIELDS_DOC)
+fill_doc(ScenesResult, fields=SCENES_FIELDS_DOC)
 
 
 def merge_reports(reports: Sequence[Report]) -> Report:

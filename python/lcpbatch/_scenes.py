@@ -22,9 +22,9 @@ One scene is a pair of mappings (dicts) of arrays:
     the library's deterministic basis of the normal. Only the frame of the
     reported tangential parts depends on it.
 
-Conventions (seed 000): r = point − centre of mass, v_rel = (ṗ_a − ṗ_b)·n,
-impulse +z n on a and −z n on b. Unknown keys are an error (a misspelt
-``restitution`` is never silently 0)."""
+Conventions (those of the scene format, README "Formats"): r = point −
+centre of mass, v_rel = (ṗ_a − ṗ_b)·n, impulse +z n on a and −z n on b.
+Unknown keys are an error (a misspelt ``restitution`` is never silently 0)."""
 
 from __future__ import annotations
 

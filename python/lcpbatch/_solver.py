@@ -11,10 +11,10 @@ from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 import numpy as np
 
 from . import _friction, _inputs, _native
-from ._friction import FrictionResult
-from ._results import LcpResult, ScenesResult
+from ._friction import FRICTION_FIELDS_DOC, FrictionResult
+from ._results import LCP_FIELDS_DOC, SCENES_FIELDS_DOC, LcpResult, ScenesResult, fill_doc
 from ._scenes import scene_arrays
-from ._worlds import StepResult, World
+from ._worlds import STEP_FIELDS_DOC, StepResult, World
 
 __all__ = ["Solver", "solve", "solve_scenes", "solve_friction", "simulate", "DeviceWarning", "adapters"]
 
@@ -48,34 +48,110 @@ def adapters(api: str = "auto") -> List[Dict[str, Any]]:
     return list(_native.adapters(api))
 
 
+#: The settings of :class:`Solver`, which every solve function takes too
+#: (shown by ``help()`` of each).
+_SETTINGS_DOC = """\
+    Settings: keyword arguments, each optional (defaults are the library's
+    ``Settings``), with every value each accepts:
+
+    - ``backend``: where islands are solved.
+
+      - ``"auto"`` (default): the CPU unless a GPU is worth opening. With
+        ``method`` "lemke" or "pgs" (CPU-only methods): the CPU. With an
+        ``adapter`` named: that adapter, even a software one. Else a
+        hardware adapter if wgpu finds one; an unnamed software adapter
+        (lavapipe, llvmpipe) is never opened, being slower than the CPU on
+        every batch measured (BENCHMARKS.md). With a GPU open, each batch
+        goes where a cost model of this machine (seconds per island by
+        size on each path, measured once and cached per device) estimates
+        it faster; frictional islands stay on the CPU. ``choice`` and
+        ``report.choice`` say why, with both estimates.
+      - ``"cpu"``: the f64 path over every core.
+      - ``"gpu"``: the GPU for every batch, software adapters included,
+        every answer checked on the CPU in f64 (method "auto" or "enum";
+        "lemke" and "pgs" are a ``ValueError`` there).
+
+      Device trouble (no adapter, a named adapter not found, f64 asked of
+      an adapter without it, a device lost) solves on the CPU instead, with
+      one :class:`DeviceWarning` and the reason in ``fallback``.
+    - ``method``: the algorithm of frictionless islands and LCPs.
+
+      - ``"auto"`` (default): the fastest exact path: prediction (separating,
+        single contact, warm start, predicted basis), then Lemke, its basis
+        re-solved and checked in f64, enumeration where the check fails; on
+        the GPU, enumeration.
+      - ``"enum"`` (also ``"enumeration"``): enumeration of the
+        complementary bases, fewest active contacts first (CPU n ≤ 20, GPU
+        n ≤ 16); the only method the GPU runs.
+      - ``"lemke"``: Lemke's complementary pivoting (CPU, any n).
+      - ``"pgs"``: projected Gauss–Seidel from z = 0 (CPU, iterative).
+    - ``solver``: the old name of ``method``; deprecated (a
+      ``DeprecationWarning``), same values.
+    - ``precision``: GPU shader precision, ``"auto"`` (default: f64 where the
+      adapter has SHADER_F64, else f32), ``"f32"`` or ``"f64"`` (f64 on an
+      adapter without it is device trouble, never silently f32). Answers
+      are checked in f64 on the CPU whatever it is.
+    - ``all_solutions`` (default False): enumerate every basis and report
+      the solution set (``all_z``, ``all_basis``, ``solution_count``,
+      ``solution_set``); method "auto" or "enum".
+    - ``warm_start`` (default False): remember each problem's basis (and
+      each frictional contact's reaction) by its contact ``ids`` and start
+      the next call from it.
+    - ``tolerance``: the largest error measure reported as solved (default
+      1e-8, in (0, 1)).
+    - ``threads``: CPU threads (default 0: every core).
+    - ``adapter``: part of a GPU adapter's name (case-insensitive; default
+      None: the best adapter, hardware before software).
+    - ``api``: the wgpu backend to look on, ``"auto"`` (default: all, Vulkan
+      before GL), ``"vulkan"``, ``"gl"``, ``"metal"`` or ``"dx12"``.
+    - ``predict`` (default True): settle the islands that need no
+      enumeration first (same answers).
+    - ``lemke_max_pivots``: Lemke's pivot cap (default 10,000);
+      ``pgs_max_sweeps``: PGS's sweep cap (default 1000); ``pgs_tolerance``:
+      PGS stops at this error (default 1e-10).
+    - ``friction_method``: the algorithm of islands and problems with
+      friction.
+
+      - ``"auto"`` (default): NSGS sweeps, then Alart–Curnier semismooth
+        Newton, each stopping when the Coulomb error (Siconos' fc3d error
+        with De Saxcé's correction) is at most ``friction_tolerance``.
+      - ``"nsgs"``: non-smooth block Gauss–Seidel, each contact solved exactly.
+      - ``"newton"``: Alart–Curnier Newton with line search alone.
+      - ``"jacobi"``, ``"pgs"``, ``"apgd"``: projected Jacobi sweeps,
+        projected Gauss–Seidel sweeps, accelerated projected gradient on
+        the cone complementarity model of Anitescu–Tasora (on the GPU with
+        backend "gpu"), judged by that model's residual ``cone_error``.
+
+      The exact methods ("auto", "nsgs", "newton") run on the CPU in f64.
+    - ``friction_tolerance``: the largest Coulomb error (projected methods:
+      cone error) reported as solved (default 1e-8, in (0, 1));
+      ``friction_max_iterations``: cap on NSGS sweeps plus Newton steps, or
+      on the projected methods' iterations (default 1000).
+
+    A bad value raises ``ValueError`` naming the argument and the values it
+    accepts.
+"""
+
+
+def _method(method: str, solver: Optional[str], stacklevel: int) -> str:
+    """The algorithm from ``method=``, or from ``solver=`` (its old name), with
+    a ``DeprecationWarning`` that points ``stacklevel`` frames above the
+    function calling this one (the user's line)."""
+    if solver is None:
+        return method
+    warnings.warn("lcpbatch: the keyword solver= is deprecated; use method= (the same values)",
+                  DeprecationWarning, stacklevel=stacklevel + 2)
+    if method not in ("auto", solver):
+        raise TypeError(f"method={method!r} and solver={solver!r}: give method= only "
+                        "(solver= is its deprecated old name)")
+    return solver
+
+
 class Solver:
     """A contact solver built once and used for many batches: it keeps the
     device, its compiled pipelines and the warm-start memory between calls.
 
-    Keyword arguments (defaults are the library's):
-
-    - ``backend``: "auto" (a hardware GPU if there is one, else the CPU),
-      "cpu" or "gpu" (software adapters too; device trouble falls back to
-      the CPU with a :class:`DeviceWarning`);
-    - ``solver``: "auto" (the fastest exact path), "enum" (enumeration of
-      complementary bases), "lemke" or "pgs";
-    - ``precision``: GPU shader precision "auto", "f32" or "f64" (answers are
-      checked in f64 on the CPU whatever it is);
-    - ``all_solutions``: enumerate every basis and report the solution set
-      (``all_z``, ``all_basis``; where it runs: the library's ``Settings``);
-    - ``warm_start``: remember each problem's basis by its contact ``ids``;
-    - ``tolerance``: the largest error measure reported as solved (default 1e-8);
-    - ``threads``: CPU threads (0: every core); ``adapter``: part of a GPU
-      adapter's name; ``api``: "auto", "vulkan", "gl", "metal", "dx12";
-      ``predict``: settle easy problems before enumerating (default True);
-      ``lemke_max_pivots``, ``pgs_max_sweeps``, ``pgs_tolerance``;
-    - ``friction_method``: "auto" (NSGS then Alart–Curnier Newton, the
-      default), "nsgs" or "newton", for islands and problems with friction
-      (always on the CPU in f64); ``friction_tolerance``: the largest Coulomb
-      error reported as solved (default 1e-8); ``friction_max_iterations``:
-      cap on NSGS sweeps plus Newton steps (default 1000).
-
-    A bad value raises ``ValueError`` naming the argument.
+    <settings>
 
     >>> import numpy as np, lcpbatch
     >>> s = lcpbatch.Solver(backend="cpu", warm_start=True)
@@ -89,7 +165,7 @@ class Solver:
         self,
         *,
         backend: str = "auto",
-        solver: str = "auto",
+        method: str = "auto",
         precision: str = "auto",
         all_solutions: bool = False,
         warm_start: bool = False,
@@ -104,9 +180,11 @@ class Solver:
         friction_method: str = "auto",
         friction_tolerance: Optional[float] = None,
         friction_max_iterations: Optional[int] = None,
+        solver: Optional[str] = None,
     ):
+        method = _method(method, solver, stacklevel=1)
         self.settings: Dict[str, Any] = dict(
-            backend=backend, solver=solver, precision=precision, all_solutions=all_solutions,
+            backend=backend, method=method, precision=precision, all_solutions=all_solutions,
             warm_start=warm_start, tolerance=tolerance, threads=threads, adapter=adapter,
             api=api, predict=predict, lemke_max_pivots=lemke_max_pivots,
             pgs_max_sweeps=pgs_max_sweeps, pgs_tolerance=pgs_tolerance,
@@ -186,13 +264,13 @@ class Solver:
         backend = self.settings["backend"]
         if _inputs.is_ragged(M):
             ms, qs, idl = _inputs.ragged(M, q, ids)
-            _inputs.check_enumeration_size([len(x) for x in qs], self.settings["solver"], backend)
+            _inputs.check_enumeration_size([len(x) for x in qs], self.settings["method"], backend)
             d = self._native.solve_ragged(ms, qs, idl)
             result = LcpResult(d, ragged=True, n=None)
         else:
             m, qa, idsa = _inputs.dense(M, q, ids)
             if len(m):
-                _inputs.check_enumeration_size([m.shape[1]], self.settings["solver"], backend)
+                _inputs.check_enumeration_size([m.shape[1]], self.settings["method"], backend)
             d = self._native.solve_dense(m, qa, idsa)
             result = LcpResult(d, ragged=False, n=m.shape[1])
         self._warn_fallback(result.report.fallback)
@@ -231,8 +309,8 @@ class Solver:
                        ids: Optional[Union[ArrayLike, Sequence[ArrayLike]]] = None) -> FrictionResult:
         """Solves a batch of frictional contact problems (Siconos'
         FrictionContact3D): u = W r + q with Coulomb's law per contact (see
-        ``lcpbatch._friction``), on the CPU in f64 over every core with
-        ``friction_method``.
+        ``lcpbatch._friction``), with ``friction_method``: on the CPU in f64
+        over every core (the projected methods on the GPU with backend "gpu").
 
         ``W`` (B, 3k, 3k), ``q`` (B, 3k), ``mu`` (B, k) or a scalar, float64
         or float32, any memory order; contact i owns entries 3i (normal),
@@ -306,6 +384,9 @@ _CACHE_SIZE = 8
 def _cached(**settings: Any) -> Solver:
     """One solver per distinct settings, kept for later calls (the device
     and its pipelines are opened once); at most 8 are kept."""
+    if "solver" in settings:
+        # Two frames up: the caller of solve, solve_scenes, solve_friction or simulate.
+        settings["method"] = _method(settings.get("method", "auto"), settings.pop("solver"), stacklevel=2)
     key = tuple(sorted(settings.items()))
     with _CACHE_LOCK:
         s = _CACHE.get(key)
@@ -317,21 +398,27 @@ def _cached(**settings: Any) -> Solver:
 
 
 def solve(M: Union[ArrayLike, Sequence[ArrayLike]], q: Union[ArrayLike, Sequence[ArrayLike]], *,
-          solver: str = "auto", backend: str = "auto", precision: str = "auto",
+          method: str = "auto", backend: str = "auto", precision: str = "auto",
           all_solutions: bool = False, warm_start: Optional[Union[ArrayLike, Sequence[ArrayLike]]] = None,
           tolerance: Optional[float] = None, **settings: Any) -> LcpResult:
     """Solves a batch of LCPs: find z with w = M z + q ≥ 0, z ≥ 0, zᵀw = 0.
 
     ``M`` (B, n, n) and ``q`` (B, n) arrays (float64 or float32, any
     memory order), or a list of NumPy arrays, one (nᵢ, nᵢ) per problem, and
-    a list of (nᵢ,) for problems of different sizes. ``warm_start``: contact ids shaped like q; each problem
-    then starts from the basis its contacts had in the last call with the
-    same settings (the solver behind this function is cached per settings).
-    Other keyword arguments are those of :class:`Solver`. Returns an
-    :class:`LcpResult`.
+    a list of (nᵢ,) for problems of different sizes. ``warm_start``: contact
+    ids shaped like q; each problem then starts from the basis its contacts
+    had in the last call with the same settings (the solver behind this
+    function is cached per settings). The other keyword arguments are the
+    settings of :class:`Solver`:
+
+    <settings>
+
+    Returns an :class:`LcpResult`:
+
+    <fields>
 
     >>> import numpy as np, lcpbatch
-    >>> M = np.array([[[2.0, 1.0], [1.0, 2.0]]])      # seed 000's example
+    >>> M = np.array([[[2.0, 1.0], [1.0, 2.0]]])      # two contacts, both active
     >>> q = np.array([[-5.0, -6.0]])
     >>> r = lcpbatch.solve(M, q)
     >>> r.z.round(6).tolist(), r.status_names().tolist(), bool(r.error[0] < 1e-12)
@@ -342,7 +429,7 @@ def solve(M: Union[ArrayLike, Sequence[ArrayLike]], q: Union[ArrayLike, Sequence
             raise TypeError("warm_start: give the contact ids (integers shaped like q), not True; "
                             "or keep a Solver(warm_start=True) and pass ids to its solve")
         warm_start = None
-    s = _cached(solver=solver, backend=backend, precision=precision, all_solutions=all_solutions,
+    s = _cached(method=method, backend=backend, precision=precision, all_solutions=all_solutions,
                 warm_start=warm_start is not None, tolerance=tolerance, **settings)
     return s.solve(M, q, ids=warm_start)
 
@@ -350,8 +437,14 @@ def solve(M: Union[ArrayLike, Sequence[ArrayLike]], q: Union[ArrayLike, Sequence
 def solve_scenes(bodies: Union[SceneArrays, Sequence[SceneArrays]],
                  contacts: Union[SceneArrays, Sequence[SceneArrays]], **settings: Any) -> ScenesResult:
     """Solves the impact of one scene or a batch of scenes given as arrays
-    (see :meth:`Solver.solve_scenes`); keyword arguments are those of
-    :class:`Solver`.
+    (see :meth:`Solver.solve_scenes` and ``lcpbatch._scenes`` for the
+    layout); the keyword arguments are the settings of :class:`Solver`:
+
+    <settings>
+
+    Returns a :class:`ScenesResult`:
+
+    <fields>
 
     >>> import lcpbatch
     >>> ball = dict(inv_mass=[1.0], inv_inertia=[[2.5, 2.5, 2.5]], position=[[0, 0.5, 0]],
@@ -369,15 +462,26 @@ def solve_friction(W: Union[ArrayLike, Sequence[ArrayLike]], q: Union[ArrayLike,
                    tolerance: Optional[float] = None, max_iterations: Optional[int] = None,
                    ids: Optional[Union[ArrayLike, Sequence[ArrayLike]]] = None, **settings: Any) -> FrictionResult:
     """Solves a batch of frictional contact problems (Siconos'
-    FrictionContact3D form; see :meth:`Solver.solve_friction`). ``method``:
-    "auto", "nsgs" or "newton"; ``tolerance``: the largest Coulomb error
-    reported as solved (default 1e-8); ``ids``: contact ids (B, k) for warm
-    start from the last call with the same settings. Other keyword arguments
-    are those of :class:`Solver`.
+    FrictionContact3D form; see :meth:`Solver.solve_friction`).
 
-    Seed 001's projection example: a contact with W = I, free velocity
-    q = (−1, 3, −4) (approaching, sliding with v_T = (3, −4)) and μ = 0.5 gets
-    r_N = 1 and r_T = −μ r_N v_T/‖v_T‖ = (−0.3, 0.4):
+    ``method``: the friction method (``friction_method`` of
+    :class:`Solver`): "auto" (default), "nsgs", "newton", "jacobi", "pgs" or
+    "apgd"; ``tolerance``: the largest error reported as solved (default
+    1e-8); ``max_iterations``: cap on NSGS sweeps plus Newton steps, or on
+    the projected methods' iterations (default 1000); ``ids``: contact ids
+    (B, k) for warm start from the last call with the same settings. The
+    other keyword arguments are the settings of :class:`Solver`:
+
+    <settings>
+
+    Returns a :class:`FrictionResult`:
+
+    <fields>
+
+    A contact with W = I, free velocity q = (−1, 3, −4) (approaching,
+    sliding with v_T = (3, −4)) and μ = 0.5 slides: r_N = 1 and r_T is the
+    projection of −v_T on the disc of radius μ r_N (Coulomb's maximum
+    dissipation), −μ r_N v_T/‖v_T‖ = (−0.3, 0.4):
 
     >>> import numpy as np, lcpbatch
     >>> r = lcpbatch.solve_friction(np.eye(3)[None], np.array([[-1.0, 3.0, -4.0]]), np.array([[0.5]]))
@@ -391,12 +495,18 @@ def solve_friction(W: Union[ArrayLike, Sequence[ArrayLike]], q: Union[ArrayLike,
 
 def simulate(worlds: Union[World, Sequence[World]], dt: float, steps: int = 1, **settings: Any) -> StepResult:
     """Steps a batch of worlds ``steps`` times by ``dt`` seconds, in place
-    (see :meth:`Solver.step_worlds`); keyword arguments are those of
-    :class:`Solver` (``warm_start=True`` carries contact impulses from step
-    to step by contact id). ``friction_tolerance`` defaults to 1e-12 here, as
-    in ``lcpbatch simulate``: the Coulomb error is relative to an island's
-    largest impulse, and the solver's 1e-8 leaves heavy resting boxes with
-    velocities near 1e-6 m/s.
+    (see :meth:`Solver.step_worlds`). ``friction_tolerance`` defaults to
+    1e-12 here, as in ``lcpbatch simulate``: the Coulomb error is relative to
+    an island's largest impulse, and the solver's 1e-8 leaves heavy resting
+    boxes with velocities near 1e-6 m/s. The keyword arguments are the
+    settings of :class:`Solver` (``warm_start=True`` carries contact
+    impulses from step to step by contact id):
+
+    <settings>
+
+    Returns a :class:`StepResult`:
+
+    <fields>
 
     >>> import lcpbatch
     >>> w = lcpbatch.World.generate("spheres", 1, seed=3)
@@ -406,3 +516,10 @@ def simulate(worlds: Union[World, Sequence[World]], dt: float, steps: int = 1, *
     """
     settings.setdefault("friction_tolerance", 1e-12)
     return _cached(**settings).step_worlds(worlds, dt, steps)
+
+
+fill_doc(Solver, settings=_SETTINGS_DOC)
+fill_doc(solve, settings=_SETTINGS_DOC, fields=LCP_FIELDS_DOC)
+fill_doc(solve_scenes, settings=_SETTINGS_DOC, fields=SCENES_FIELDS_DOC)
+fill_doc(solve_friction, settings=_SETTINGS_DOC, fields=FRICTION_FIELDS_DOC)
+fill_doc(simulate, settings=_SETTINGS_DOC, fields=STEP_FIELDS_DOC)

@@ -2,10 +2,12 @@
 JSON world format or a standard generator) with its state as arrays, and
 :class:`StepResult`, what ``Solver.step_worlds`` / ``simulate`` return.
 
-A step (seed 001 §四, DVI): collision (spheres, boxes, planes), one batch of
-contact islands for every world (frictionless islands as LCPs, islands with
-friction by the exact Coulomb solvers), the velocities after the impulses,
-then the poses. Units: m, kg, s; gravity default (0, −9.81, 0)."""
+A step (the velocity-level time stepping of Stewart and Trinkle 1996 and
+Anitescu and Potra 1997; README, "Simulating worlds"): collision (spheres,
+boxes, planes), one batch of contact islands for every world (frictionless
+islands as LCPs, islands with friction by the Coulomb solvers), the
+velocities after the impulses, then the poses. Units: m, kg, s; gravity
+default (0, −9.81, 0)."""
 
 from __future__ import annotations
 
@@ -14,9 +16,28 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple
 import numpy as np
 
 from . import _native
-from ._results import Report
+from ._results import Report, fill_doc
 
-__all__ = ["World", "StepResult", "concat_step_results"]
+__all__ = ["World", "StepResult", "STEP_FIELDS_DOC", "concat_step_results"]
+
+#: The fields of :class:`StepResult` (in its docstring and ``simulate``'s).
+STEP_FIELDS_DOC = """\
+    - ``kinetic``, ``potential``: (steps, W) energies (J) after each step;
+      ``energy``: their sum;
+    - ``max_penetration``: (steps, W) deepest penetration (m) before the step's correction;
+    - ``contacts``, ``islands``, ``awake``: (steps, W) int64: contacts,
+      contact islands and bodies awake (not sleeping);
+    - ``max_error``: (steps, W) largest error of the world's islands (LCP
+      error, or Coulomb error for frictional ones; 0 without islands);
+    - ``unsolved``: (steps,) islands whose status is not a solution, over
+      all worlds (each given exact frictionless impulses, else PGS's, else
+      none: an unchecked answer never moves a body);
+    - ``timings``: dict of (steps,) seconds: ``collision``, ``solve``, ``integrate``;
+    - ``worlds``: the worlds (updated in place), and their final states
+      ``positions``, ``orientations``, ``velocities``, ``angular_velocities``
+      as lists of arrays, one per world;
+    - ``report``: :class:`Report` of the last step's solve (None for 0 steps).
+"""
 
 
 class World:
@@ -47,7 +68,11 @@ class World:
 
     @staticmethod
     def kinds() -> List[str]:
-        """Names of the standard generators ("spheres", "stack", "pyramid", …)."""
+        """Names of the standard generators: "spheres" (falling spheres),
+        "stack" (boxes resting on each other), "pyramid" (boxes, ``size`` on
+        the bottom row), "slide" (a box sliding at 2 m/s, μ = 0.5),
+        "incline" (a box on a 20° incline, μ = 0.5: it sticks), "rain"
+        (spheres and boxes of mixed sizes from random poses)."""
         return list(_native.NativeWorld.kinds())
 
     @classmethod
@@ -158,17 +183,7 @@ def _restore(text: str, state: Tuple[np.ndarray, ...]) -> World:
 class StepResult:
     """What ``steps`` steps of a batch of W worlds found, per step and world:
 
-    - ``kinetic``, ``potential``: (steps, W) energies (J) after each step;
-    - ``max_penetration``: (steps, W) deepest penetration (m) before the step's correction;
-    - ``contacts``, ``islands``, ``awake``: (steps, W) int64;
-    - ``max_error``: (steps, W) largest error of the world's islands (LCP
-      error, or Coulomb error for frictional ones; 0 without islands);
-    - ``unsolved``: (steps,) islands whose status is not a solution;
-    - ``timings``: dict of (steps,) seconds: ``collision``, ``solve``, ``integrate``;
-    - ``worlds``: the worlds (updated in place), and their final states
-      ``positions``, ``orientations``, ``velocities``, ``angular_velocities``
-      as lists of arrays, one per world;
-    - ``report``: :class:`Report` of the last step's solve (None for 0 steps).
+    <fields>
 
     >>> import lcpbatch
     >>> w = lcpbatch.World.generate("spheres", 1, seed=0)
@@ -204,6 +219,9 @@ class StepResult:
         steps, worlds = self.kinetic.shape
         return (f"<lcpbatch.StepResult: {steps} step(s) of {worlds} world(s); "
                 f"{int(self.unsolved.sum())} unsolved island(s)>")
+
+
+fill_doc(StepResult, fields=STEP_FIELDS_DOC)
 
 
 def concat_step_results(parts: Sequence[StepResult], worlds: Sequence[World]) -> StepResult:

@@ -50,7 +50,7 @@ except ImportError as e:  # pragma: no cover - exercised without the extra
 
 from . import _inputs
 from ._results import LcpResult, ScenesResult, concat_lcp_results, concat_scenes_results
-from ._solver import Solver
+from ._solver import Solver, _method
 from ._worlds import StepResult, World, concat_step_results
 
 __all__ = ["DistributedSolver", "solve", "solve_scenes", "simulate"]
@@ -121,6 +121,9 @@ class DistributedSolver:
 
     def __init__(self, client: Client, **settings: Any):
         self.client = client
+        if "solver" in settings:
+            # Warned here once, not on every worker.
+            settings["method"] = _method(settings.get("method", "auto"), settings.pop("solver"), stacklevel=1)
         self.settings = settings
         self.plugin = SolverPlugin(settings)
         # register_plugin since distributed 2023.9; register_worker_plugin before.

@@ -11,7 +11,9 @@ use pyo3::prelude::*;
 /// so that the constructor's signature stays one list).
 pub(crate) struct Args<'a> {
     pub backend: &'a str,
-    pub solver: &'a str,
+    /// "auto", "enum" (or "enumeration"), "lemke" or "pgs": the Python
+    /// keyword `method` (its deprecated alias `solver` is resolved in Python).
+    pub method: &'a str,
     pub precision: &'a str,
     pub all_solutions: bool,
     pub warm_start: bool,
@@ -23,7 +25,8 @@ pub(crate) struct Args<'a> {
     pub lemke_max_pivots: Option<u64>,
     pub pgs_max_sweeps: Option<u64>,
     pub pgs_tolerance: Option<f64>,
-    /// "auto", "nsgs" or "newton" (islands and problems with friction).
+    /// "auto", "nsgs", "newton", "jacobi", "pgs" or "apgd" (islands and
+    /// problems with friction).
     pub friction_method: &'a str,
     pub friction_tolerance: Option<f64>,
     pub friction_max_iterations: Option<u64>,
@@ -43,21 +46,21 @@ fn backend(s: &str) -> PyResult<Backend> {
     }
 }
 
-/// `solver`: "auto", "enum" (or "enumeration"), "lemke" or "pgs".
+/// `method`: "auto", "enum" (or "enumeration"), "lemke" or "pgs".
 fn method(s: &str) -> PyResult<Method> {
     match s.to_ascii_lowercase().as_str() {
         "auto" => Ok(Method::Auto),
         "enum" | "enumeration" => Ok(Method::Enumeration),
         "lemke" => Ok(Method::Lemke),
         "pgs" => Ok(Method::Pgs),
-        _ => Err(bad("solver", s, "'auto', 'enum', 'lemke', 'pgs'")),
+        _ => Err(bad("method", s, "'auto', 'enum', 'lemke', 'pgs'")),
     }
 }
 
 impl Args<'_> {
     /// The library's settings; `ValueError` naming the argument at fault.
     pub fn settings(&self) -> PyResult<Settings> {
-        let mut s = Settings::new(backend(self.backend)?, method(self.solver)?);
+        let mut s = Settings::new(backend(self.backend)?, method(self.method)?);
         s.gpu.precision = Precision::parse(self.precision)
             .map_err(|_| bad("precision", self.precision, "'auto', 'f32', 'f64'"))?;
         s.gpu.api = BackendChoice::parse(self.api)
@@ -84,7 +87,7 @@ impl Args<'_> {
             bad(
                 "friction_method",
                 self.friction_method,
-                "'auto', 'nsgs', 'newton'",
+                "'auto', 'nsgs', 'newton', 'jacobi', 'pgs', 'apgd'",
             )
         })?;
         if let Some(t) = self.friction_tolerance {
@@ -93,6 +96,9 @@ impl Args<'_> {
         if let Some(n) = self.friction_max_iterations {
             s.friction_max_iterations = n;
         }
+        // Python reports device trouble as a DeviceWarning (from the
+        // report's fallback): the library's stderr line would say it twice.
+        s.warn_on_stderr = false;
         // "settings: tolerance: 2 is not in (0, 1)" names the argument too.
         s.validate().map_err(crate::to_py_err)?;
         Ok(s)

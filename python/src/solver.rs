@@ -107,7 +107,7 @@ impl NativeSolver {
     /// Builds the solver (opens the device), GIL released. Sixteen keyword
     /// arguments on purpose: one per setting a Python user may change.
     #[new]
-    #[pyo3(signature = (backend="auto", solver="auto", precision="auto", all_solutions=false,
+    #[pyo3(signature = (backend="auto", method="auto", precision="auto", all_solutions=false,
         warm_start=false, tolerance=None, threads=0, adapter=None, api="auto", predict=true,
         lemke_max_pivots=None, pgs_max_sweeps=None, pgs_tolerance=None, friction_method="auto",
         friction_tolerance=None, friction_max_iterations=None))]
@@ -115,7 +115,7 @@ impl NativeSolver {
     fn new(
         py: Python<'_>,
         backend: &str,
-        solver: &str,
+        method: &str,
         precision: &str,
         all_solutions: bool,
         warm_start: bool,
@@ -133,7 +133,7 @@ impl NativeSolver {
     ) -> PyResult<Self> {
         let settings: Settings = Args {
             backend,
-            solver,
+            method,
             precision,
             all_solutions,
             warm_start,

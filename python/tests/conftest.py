@@ -10,8 +10,6 @@ import pytest
 
 import lcpbatch
 
-os.environ.setdefault("XDG_RUNTIME_DIR", "/tmp")
-
 
 def require_gpu() -> bool:
     return os.environ.get("LCPBATCH_REQUIRE_GPU") == "1"

@@ -25,7 +25,7 @@ def test_cpu_and_gpu_give_the_same_statuses_and_answers(gpu):
     G = rng.standard_normal((200, 4, 4))
     g = rng.standard_normal((200, 4))
     for M_, q_ in ((M, q), (G, g)):
-        cpu = lcpbatch.Solver(backend="cpu", solver="enum").solve(M_, q_)
+        cpu = lcpbatch.Solver(backend="cpu", method="enum").solve(M_, q_)
         on_gpu = gpu.solve(M_, q_)
         assert on_gpu.report.device_kind != "cpu" and on_gpu.report.gpu is not None
         np.testing.assert_array_equal(on_gpu.status, cpu.status)

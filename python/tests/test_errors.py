@@ -76,9 +76,9 @@ def test_warm_start_takes_ids_not_a_flag():
 def test_n_too_large_for_enumeration_names_the_problem():
     big = np.eye(21)[None]
     with pytest.raises(ValueError, match=r"M\[1\]: n = 21 is too large for enumeration"):
-        lcpbatch.solve([np.eye(2), big[0]], [np.zeros(2), -np.ones(21)], solver="enum", backend="cpu")
+        lcpbatch.solve([np.eye(2), big[0]], [np.zeros(2), -np.ones(21)], method="enum", backend="cpu")
     with pytest.raises(ValueError, match="too large for enumeration"):
-        lcpbatch.solve(big, -np.ones((1, 21)), solver="enum", backend="cpu")
+        lcpbatch.solve(big, -np.ones((1, 21)), method="enum", backend="cpu")
     # The default solver takes it (Lemke above the enumeration's limit).
     r = lcpbatch.solve(big, -np.ones((1, 21)), backend="cpu")
     np.testing.assert_allclose(r.z, np.ones((1, 21)))
@@ -88,13 +88,13 @@ def test_n_too_large_for_enumeration_names_the_problem():
     "kwargs, match",
     [
         (dict(backend="tpu"), r"backend: 'tpu' is not one of"),
-        (dict(solver="simplex"), r"solver: 'simplex' is not one of"),
+        (dict(method="simplex"), r"method: 'simplex' is not one of"),
         (dict(precision="f16"), r"precision: 'f16' is not one of"),
         (dict(api="cuda"), r"api: 'cuda' is not one of"),
         (dict(tolerance=2.0), r"tolerance.*2 is not in \(0, 1\)"),
         (dict(pgs_max_sweeps=0), "pgs_max_sweeps"),
-        (dict(all_solutions=True, solver="lemke"), "all_solutions"),
-        (dict(backend="gpu", solver="pgs"), "backend"),
+        (dict(all_solutions=True, method="lemke"), "all_solutions"),
+        (dict(backend="gpu", method="pgs"), "backend"),
         (dict(threads=-1), "threads: -1 is negative"),
     ],
 )

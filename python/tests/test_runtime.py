@@ -26,7 +26,7 @@ def slow_batch(b=2048):
 
 def test_the_gil_is_released_while_solving():
     M, q = slow_batch(1024)
-    s = lcpbatch.Solver(backend="cpu", solver="enum", predict=False, threads=1)
+    s = lcpbatch.Solver(backend="cpu", method="enum", predict=False, threads=1)
     ticks = []
     done = threading.Event()
 
@@ -55,7 +55,7 @@ def test_ctrl_c_stops_a_long_batch():
         sys.path.insert(0, %r)
         from test_runtime import slow_batch
         M, q = slow_batch(40 * 1024)   # about 40 chunks of ~0.7 s
-        s = lcpbatch.Solver(backend="cpu", solver="enum", predict=False)
+        s = lcpbatch.Solver(backend="cpu", method="enum", predict=False)
         print("solving", flush=True)
         t = time.perf_counter()
         try:

@@ -70,7 +70,7 @@ def test_warm_start_by_contact_ids_in_scenes():
                velocity=[[0.0, -1.0, 0.0]])
     contacts = dict(a=np.zeros(4, dtype=int), point=corners, normal=np.tile([0.0, 1, 0], (4, 1)),
                     restitution=0.0, id=[7, 8, 9, 10])
-    s = lcpbatch.Solver(backend="cpu", solver="enum", warm_start=True)
+    s = lcpbatch.Solver(backend="cpu", method="enum", warm_start=True)
     cold = s.solve_scenes(box, contacts)
     hot = s.solve_scenes(box, contacts)
     np.testing.assert_array_equal(cold.impulses, hot.impulses)

@@ -18,7 +18,7 @@ def test_seed_000_two_by_two(solver):
     # Seed 000: M = [[2, 1], [1, 2]], q = (−5, −6). Both contacts active:
     # 2 z1 + z2 = 5 and z1 + 2 z2 = 6 give z = (4/3, 7/3), w = 0.
     r = lcpbatch.solve(np.array([[[2.0, 1.0], [1.0, 2.0]]]), np.array([[-5.0, -6.0]]),
-                       solver=solver, backend="cpu")
+                       method=solver, backend="cpu")
     tol = 1e-8 if solver == "pgs" else 1e-12
     assert r.status.tolist() == [Status.SOLVED]
     np.testing.assert_allclose(r.z[0], [4 / 3, 7 / 3], atol=tol)
@@ -36,7 +36,7 @@ def test_seed_002_lemke_walkthrough(solver):
     # w = (0, 5, 0).
     M = np.stack([SEED_002_M, SEED_002_M])
     q = np.array([[-3.0, 6.0, -1.0], [-3.0, 6.0, 1.0]])
-    r = lcpbatch.solve(M, q, solver=solver, backend="cpu")
+    r = lcpbatch.solve(M, q, method=solver, backend="cpu")
     assert r.status_names().tolist() == ["solved", "solved"]
     np.testing.assert_allclose(r.z, [[0, 1, 3], [1, 0, 1.5]], atol=1e-12)
     np.testing.assert_allclose(r.w, [[2, 0, 0], [0, 5, 0]], atol=1e-12)
@@ -47,7 +47,7 @@ def test_seed_002_lemke_walkthrough(solver):
 
 
 def test_seed_002_with_all_solutions_is_unique():
-    r = lcpbatch.solve(SEED_002_M[None], np.array([[-3.0, 6.0, -1.0]]), all_solutions=True, solver="enum")
+    r = lcpbatch.solve(SEED_002_M[None], np.array([[-3.0, 6.0, -1.0]]), all_solutions=True, method="enum")
     assert r.status[0] == Status.SOLVED
     assert r.solution_set == ["isolated"] and r.solution_count.tolist() == [1]
     assert r.all_z[0].shape == (1, 3) and r.all_basis[0].tolist() == [[False, True, True]]
@@ -58,7 +58,7 @@ def test_seed_002_with_all_solutions_is_unique():
 def test_all_solutions_of_a_degenerate_problem():
     # M = [[1, 1], [1, 1]], q = (−1, −1): every z ≥ 0 with z1 + z2 = 1 solves it
     # (a segment); the bases {1}, {2} give its ends (1, 0) and (0, 1).
-    r = lcpbatch.solve(np.ones((1, 2, 2)), -np.ones((1, 2)), all_solutions=True, solver="enum")
+    r = lcpbatch.solve(np.ones((1, 2, 2)), -np.ones((1, 2)), all_solutions=True, method="enum")
     assert r.solution_set == ["bounded_continuum"] and r.solution_count.tolist() == [-1]
     ends = sorted(map(tuple, np.round(r.all_z[0], 12).tolist()))
     assert (0.0, 1.0) in ends and (1.0, 0.0) in ends
@@ -81,7 +81,7 @@ def test_general_matrices_every_answer_that_claims_a_solution_is_one():
     rng = np.random.default_rng(2)
     M = rng.standard_normal((500, 4, 4))
     q = rng.standard_normal((500, 4))
-    r = lcpbatch.solve(M, q, backend="cpu", solver="enum")
+    r = lcpbatch.solve(M, q, backend="cpu", method="enum")
     assert set(r.status.tolist()) <= {Status.SOLVED, Status.NO_SOLUTION}
     assert r.ok.sum() > 100
     assert_lcp_solutions(M, q, r.z, r.w, r.ok)
@@ -145,7 +145,7 @@ def test_solver_reuse_keeps_one_device_and_warm_starts_by_ids():
     rng = np.random.default_rng(6)
     M, q = random_pd_batch(rng, 64, 4)
     # Singular M (rank 1): no predicted basis, so warm start is what settles it.
-    s = lcpbatch.Solver(backend="cpu", solver="enum", warm_start=True)
+    s = lcpbatch.Solver(backend="cpu", method="enum", warm_start=True)
     ids = np.arange(64 * 4).reshape(64, 4)
     first = s.solve(M, q, ids=ids)
     second = s.solve(M, q, ids=ids)
@@ -159,17 +159,17 @@ def test_solver_reuse_keeps_one_device_and_warm_starts_by_ids():
     fresh = s.solve(M, q, ids=ids + 10_000)
     assert fresh.report.counts["warm_start"] == 0
     # The module function keeps its solver per settings: warm_start=ids works across calls.
-    lcpbatch.solve(M, q, warm_start=ids + 20_000, backend="cpu", solver="enum")
-    again = lcpbatch.solve(M, q, warm_start=ids + 20_000, backend="cpu", solver="enum")
+    lcpbatch.solve(M, q, warm_start=ids + 20_000, backend="cpu", method="enum")
+    again = lcpbatch.solve(M, q, warm_start=ids + 20_000, backend="cpu", method="enum")
     assert again.report.counts["warm_start"] > 0
 
 
 def test_methods_and_counters():
     rng = np.random.default_rng(7)
     M, q = random_pd_batch(rng, 20, 6)
-    lemke = lcpbatch.solve(M, q, solver="lemke", backend="cpu")
-    pgs = lcpbatch.solve(M, q, solver="pgs", backend="cpu", pgs_max_sweeps=100_000)
-    enum = lcpbatch.solve(M, q, solver="enum", backend="cpu", predict=False)
+    lemke = lcpbatch.solve(M, q, method="lemke", backend="cpu")
+    pgs = lcpbatch.solve(M, q, method="pgs", backend="cpu", pgs_max_sweeps=100_000)
+    enum = lcpbatch.solve(M, q, method="enum", backend="cpu", predict=False)
     assert (lemke.path == "lemke").all() and (lemke.pivots > 0).any()
     assert (pgs.path == "pgs").all() and (pgs.iterations > 0).any() and not pgs.has_basis.any()
     assert (enum.path == "enumerated_cpu").all() and (enum.bases_visited > 0).all()
@@ -211,5 +211,5 @@ def test_results_pickle():
     back = pickle.loads(pickle.dumps(r))
     np.testing.assert_array_equal(back.z, r.z)
     assert str(back.report) == str(r.report)
-    s = pickle.loads(pickle.dumps(lcpbatch.Solver(backend="cpu", solver="lemke")))
-    assert s.settings["solver"] == "lemke"
+    s = pickle.loads(pickle.dumps(lcpbatch.Solver(backend="cpu", method="lemke")))
+    assert s.settings["method"] == "lemke"
