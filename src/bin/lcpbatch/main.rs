@@ -77,9 +77,16 @@ impl FrictionSolverArg {
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
 enum BackendArg {
-    /// The GPU whenever an adapter exists, else the CPU.
+    /// Where a hardware adapter exists (or --adapter names one): each batch
+    /// where a cost model of this machine (measured once, cached; `info`
+    /// shows it) estimates it faster, frictional islands on the CPU; else the
+    /// CPU (an unnamed software adapter is never opened: it is slower than
+    /// the CPU path on every batch measured).
     Auto,
+    /// The GPU for every batch, software adapters included, every answer
+    /// checked on the CPU in f64; device trouble solves on the CPU instead.
     Gpu,
+    /// The f64 path over every core.
     Cpu,
 }
 
@@ -133,9 +140,11 @@ enum Command {
     /// Solve a scene file, a many-scene file, an LCP or friction batch (JSON),
     /// or a Siconos .dat file (LCP or FrictionContact3D, told apart by its header).
     Solve(SolveArgs),
-    /// Generate thousands of islands from many simulation instances (balls
-    /// and boxes on the ground and on each other), solve them on the best
-    /// adapter, validate every answer on the CPU in f64, print a summary.
+    /// The main job: generate thousands of islands from many simulation
+    /// instances (balls and boxes on the ground and on each other), solve
+    /// them on the path --backend chooses, validate every answer on the CPU
+    /// in f64, compare with the other path; then step worlds in time and
+    /// write the plots (as `simulate`).
     Demo {
         /// Simulation instances (each a few balls, boxes and stacks).
         #[arg(long, default_value_t = 1000)]
@@ -143,7 +152,7 @@ enum Command {
         /// Seed of the generator.
         #[arg(long, default_value_t = 2026)]
         seed: u64,
-        /// Where to solve (auto: the GPU whenever an adapter exists).
+        /// Where to solve.
         #[arg(long, value_enum, default_value = "auto")]
         backend: BackendArg,
         /// Steps of the worlds stepped in time (second part; 0 skips it).
@@ -182,8 +191,10 @@ enum Command {
     /// with f64 enumeration, repaired counts, stress.json and a plot of error
     /// against condition number.
     Stress(StressArgs),
-    /// Step many rigid-body worlds in time (seed 001's DVI step, one contact
-    /// batch per step): progress, steps.jsonl, final.json and plots in --out.
+    /// Step many rigid-body worlds in time (the velocity-level time stepping
+    /// of Stewart–Trinkle and Anitescu–Potra, README "Simulating worlds"; one
+    /// contact batch per step): progress, steps.jsonl, final.json and plots
+    /// in --out.
     Simulate(simulate::SimulateArgs),
 }
 
@@ -217,7 +228,7 @@ struct SolveArgs {
     /// Write the result here (atomically) instead of to stdout.
     #[arg(short = 'o', long = "output")]
     output: Option<PathBuf>,
-    /// Where to solve: auto (the GPU whenever an adapter exists), gpu, cpu.
+    /// Where to solve.
     #[arg(long, value_enum, default_value = "cpu")]
     backend: BackendArg,
     #[command(flatten)]
@@ -226,11 +237,13 @@ struct SolveArgs {
 
 #[derive(clap::Args)]
 struct GenerateArgs {
+    /// What to write.
     #[arg(long, value_enum)]
     kind: generate::Kind,
     /// Scenes, or LCPs (per family for stress-lcps).
     #[arg(long, default_value_t = 100)]
     count: usize,
+    /// Seed of the generator (the same seed gives the same file).
     #[arg(long, default_value_t = 2026)]
     seed: u64,
     /// The benchmark family of family-lcps.
