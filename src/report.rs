@@ -48,6 +48,20 @@ pub enum SolvePath {
 }
 
 impl SolvePath {
+    /// Every path, in the order of the variants (Python's path codes).
+    pub const ALL: [SolvePath; 10] = [
+        SolvePath::Separating,
+        SolvePath::SingleContact,
+        SolvePath::WarmStart,
+        SolvePath::PredictedBasis,
+        SolvePath::EnumeratedGpu,
+        SolvePath::Repaired,
+        SolvePath::EnumeratedCpu,
+        SolvePath::Lemke,
+        SolvePath::Pgs,
+        SolvePath::Invalid,
+    ];
+
     /// The snake_case name used in reports.
     pub fn name(self) -> &'static str {
         match self {

@@ -8,18 +8,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 /// Every solve path, in the order of the codes handed to Python.
-pub(crate) const PATHS: [SolvePath; 10] = [
-    SolvePath::Separating,
-    SolvePath::SingleContact,
-    SolvePath::WarmStart,
-    SolvePath::PredictedBasis,
-    SolvePath::EnumeratedGpu,
-    SolvePath::Repaired,
-    SolvePath::EnumeratedCpu,
-    SolvePath::Lemke,
-    SolvePath::Pgs,
-    SolvePath::Invalid,
-];
+pub(crate) const PATHS: [SolvePath; 10] = SolvePath::ALL;
 
 /// The code of `path` (its index in [`PATHS`]).
 pub(crate) fn path_code(path: SolvePath) -> i8 {
