@@ -59,8 +59,6 @@ pub mod scene;
 pub mod settings;
 pub mod short_vec;
 pub mod solver;
-pub(crate) mod solvers;
-pub(crate) mod validation;
 pub mod world;
 
 pub use cpu::impulses::BodyVelocity;
@@ -81,7 +79,7 @@ pub use short_vec::{ShortVec, SHORT_INLINE};
 pub use solver::world_path::{StepReport, StepTimings, WorldStepReport};
 pub use solver::Repairs;
 pub use solver::{CostModel, Solver};
-pub use solvers::lemke::{lemke, lemke_textbook_basis, LemkeSettings};
+pub use cpu::lemke::{lemke, lemke_textbook_basis, LemkeSettings};
 pub use world::{RigidBody, Shape, World};
 
 /// Every adapter wgpu finds on `api` (for `lcpbatch info`); empty when none.

@@ -1,6 +1,8 @@
 //! The CPU path for whole scenes, in named phases: build (islands and
 //! assembly), solve (one LCP per island), write back (impulses applied to the
-//! bodies).
+//! bodies). With it, the tests' reference vocabulary: one LCP solved by one
+//! algorithm ([`Solver`], [`SolverSettings`], [`solve`]), one scene island
+//! by island ([`solve_scene`]); the library's door is [`crate::Solver`].
 
 // `solve_scene` (one scene, one island at a time) is the reference the
 // tests compare batched and GPU solves with.
@@ -12,8 +14,10 @@ use crate::cpu::impulses::{apply_impulses, BodyVelocity};
 use crate::islands::{find_islands, Island};
 use crate::lcp::{Lcp, LcpSolution};
 use crate::scene::Scene;
-use crate::solvers::{solve, Solver, SolverSettings};
 use crate::Error;
+use crate::cpu::enumeration::{enumerate, EnumerationSettings};
+use crate::cpu::lemke::{lemke, LemkeSettings};
+use crate::cpu::pgs::{pgs, PgsSettings};
 
 /// One island's problem and result.
 #[derive(Clone, Debug)]
@@ -85,4 +89,85 @@ pub fn solve_scene(
         islands: results,
         rows,
     })
+}
+
+/// Which algorithm solves an LCP.
+#[derive(
+    Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
+)]
+#[serde(rename_all = "snake_case")]
+pub enum Solver {
+    /// Exhaustive enumeration of complementary bases (exact, n ≤ 20).
+    #[default]
+    Enum,
+    /// Lemke's complementary pivoting (exact, any n).
+    Lemke,
+    /// Projected Gauss–Seidel (iterative, approximate).
+    Pgs,
+}
+
+impl Solver {
+    /// The name used in the tests' messages.
+    #[cfg(test)]
+    pub fn name(self) -> &'static str {
+        match self {
+            Solver::Enum => "enum",
+            Solver::Lemke => "lemke",
+            Solver::Pgs => "pgs",
+        }
+    }
+}
+
+/// Settings of every solver; only the chosen solver's part is read.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SolverSettings {
+    pub solver: Solver,
+    pub enumeration: EnumerationSettings,
+    pub lemke: LemkeSettings,
+    pub pgs: PgsSettings,
+    /// Enumeration only: settle what [`crate::prediction`] can before
+    /// enumerating (default true), as the GPU path does, so that both report
+    /// the same result and counters. Not used with `all_solutions`.
+    pub predict: bool,
+}
+
+impl Default for SolverSettings {
+    fn default() -> Self {
+        SolverSettings {
+            solver: Solver::default(),
+            enumeration: EnumerationSettings::default(),
+            lemke: LemkeSettings::default(),
+            pgs: PgsSettings::default(),
+            predict: true,
+        }
+    }
+}
+
+impl SolverSettings {
+    /// Default settings for `solver` (the tests' shorthand).
+    #[cfg(test)]
+    pub fn with_solver(solver: Solver) -> Self {
+        SolverSettings {
+            solver,
+            ..Default::default()
+        }
+    }
+}
+
+/// Solves one LCP with the chosen solver. Errors only when the solver cannot
+/// take the problem at all (enumeration beyond its size limit, settings out
+/// of range); everything else is a status on the solution.
+pub fn solve(lcp: &Lcp, settings: &SolverSettings) -> Result<LcpSolution, crate::Error> {
+    match settings.solver {
+        Solver::Enum if settings.predict && !settings.enumeration.all_solutions => {
+            settings.enumeration.validate()?;
+            match crate::prediction::predict(lcp, None, &settings.enumeration) {
+                Some((_, solution)) => Ok(solution),
+                None => enumerate(lcp, &settings.enumeration),
+            }
+        }
+        Solver::Enum => enumerate(lcp, &settings.enumeration),
+        Solver::Lemke => Ok(lemke(lcp, &settings.lemke)),
+        Solver::Pgs => Ok(pgs(lcp, &settings.pgs)),
+    }
 }

@@ -10,6 +10,7 @@
 //! ([`Report::fallback`]).
 
 use std::fmt;
+use std::ops::AddAssign;
 
 use crate::cpu::impulses::BodyVelocity;
 use crate::friction::{FrictionMethod, FrictionSolution};
@@ -47,6 +48,20 @@ pub enum SolvePath {
 }
 
 impl SolvePath {
+    /// Every path, in the order of the variants (Python's path codes).
+    pub const ALL: [SolvePath; 10] = [
+        SolvePath::Separating,
+        SolvePath::SingleContact,
+        SolvePath::WarmStart,
+        SolvePath::PredictedBasis,
+        SolvePath::EnumeratedGpu,
+        SolvePath::Repaired,
+        SolvePath::EnumeratedCpu,
+        SolvePath::Lemke,
+        SolvePath::Pgs,
+        SolvePath::Invalid,
+    ];
+
     /// The snake_case name used in reports.
     pub fn name(self) -> &'static str {
         match self {
@@ -234,8 +249,9 @@ impl PathCounts {
         *c += 1;
     }
 
-    /// (name, count) of every non-zero count, in a fixed order.
-    pub fn nonzero(&self) -> Vec<(&'static str, usize)> {
+    /// (name, count) of every count, in a fixed order (the order of the
+    /// report's text and of Python's `counts`).
+    pub fn named(&self) -> [(&'static str, usize); 12] {
         [
             ("separating", self.separating),
             ("single_contact", self.single_contact),
@@ -250,9 +266,29 @@ impl PathCounts {
             ("pgs", self.pgs),
             ("invalid", self.invalid),
         ]
-        .into_iter()
-        .filter(|(_, c)| *c > 0)
-        .collect()
+    }
+
+    /// (name, count) of every non-zero count, in the order of [`Self::named`].
+    pub fn nonzero(&self) -> Vec<(&'static str, usize)> {
+        self.named().into_iter().filter(|(_, c)| *c > 0).collect()
+    }
+}
+
+impl AddAssign for PathCounts {
+    /// Every count summed (the one place that lists them for a merge).
+    fn add_assign(&mut self, b: PathCounts) {
+        self.separating += b.separating;
+        self.single_contact += b.single_contact;
+        self.warm_start += b.warm_start;
+        self.predicted_basis += b.predicted_basis;
+        self.enumerated_gpu += b.enumerated_gpu;
+        self.enumerated_cpu += b.enumerated_cpu;
+        self.lemke += b.lemke;
+        self.pgs += b.pgs;
+        self.invalid += b.invalid;
+        self.polished += b.polished;
+        self.repaired += b.repaired;
+        self.cpu_fallback += b.cpu_fallback;
     }
 }
 
@@ -275,6 +311,35 @@ pub struct Timings {
     pub impulses: f64,
     /// The whole call.
     pub total: f64,
+}
+
+impl Timings {
+    /// (name, seconds) of every phase, in a fixed order (that of Python's
+    /// `timings`).
+    pub fn named(&self) -> [(&'static str, f64); 7] {
+        [
+            ("build", self.build),
+            ("prediction", self.prediction),
+            ("gpu", self.gpu),
+            ("validation", self.validation),
+            ("solve", self.solve),
+            ("impulses", self.impulses),
+            ("total", self.total),
+        ]
+    }
+}
+
+impl AddAssign for Timings {
+    /// Every phase's seconds summed.
+    fn add_assign(&mut self, b: Timings) {
+        self.build += b.build;
+        self.prediction += b.prediction;
+        self.gpu += b.gpu;
+        self.validation += b.validation;
+        self.solve += b.solve;
+        self.impulses += b.impulses;
+        self.total += b.total;
+    }
 }
 
 /// What kind of device solved the batch.
@@ -321,6 +386,61 @@ pub struct GpuFigures {
     pub max_velocity_deviation: f64,
 }
 
+impl AddAssign for GpuFigures {
+    /// Counts summed, the largest deviations kept (`f64::max`: a NaN on one
+    /// side gives the other).
+    fn add_assign(&mut self, b: GpuFigures) {
+        self.chunks += b.chunks;
+        self.dispatches += b.dispatches;
+        self.rounds += b.rounds;
+        self.tree_decided += b.tree_decided;
+        self.tree_undecided += b.tree_undecided;
+        self.max_gpu_error = self.max_gpu_error.max(b.max_gpu_error);
+        self.max_velocity_deviation = self.max_velocity_deviation.max(b.max_velocity_deviation);
+    }
+}
+
+/// Islands per status (in the order of [`Status::ALL`]) and the largest
+/// error over those whose status is a solution, with its index.
+type Tally = ([usize; Status::ALL.len()], Option<(f64, usize)>);
+
+/// The [`Tally`] of (status, error) pairs, indices from 0.
+fn tally(items: impl Iterator<Item = (Status, f64)>) -> Tally {
+    let mut statuses = [0usize; Status::ALL.len()];
+    let mut max = None;
+    for (i, (s, e)) in items.enumerate() {
+        if let Some(k) = Status::ALL.iter().position(|&x| x == s) {
+            statuses[k] += 1;
+        }
+        if s.is_solution() {
+            max = larger(max, Some((e, i)));
+        }
+    }
+    (statuses, max)
+}
+
+/// The larger of two (error, index) maxima, `a`'s on a tie. NaN compares
+/// false: a NaN in `b` always replaces `a`, so that it is reported, never
+/// hidden.
+fn larger(a: Option<(f64, usize)>, b: Option<(f64, usize)>) -> Option<(f64, usize)> {
+    match b {
+        Some((e, _)) if !a.is_some_and(|(m, _)| e <= m) => b,
+        _ => a,
+    }
+}
+
+/// `b`'s [`Tally`] added to `a`'s, `b`'s index shifted by `shift`.
+fn add_tally(
+    a: (&mut [usize; Status::ALL.len()], &mut Option<(f64, usize)>),
+    b: Tally,
+    shift: usize,
+) {
+    for (x, y) in a.0.iter_mut().zip(b.0) {
+        *x += y;
+    }
+    *a.1 = larger(*a.1, b.1.map(|(e, i)| (e, i + shift)));
+}
+
 /// Everything a call found; see the module docs.
 #[derive(Clone, Debug)]
 pub struct Report {
@@ -364,28 +484,12 @@ impl Report {
         device: Device,
         choice: String,
     ) -> Self {
-        let mut counts = PathCounts::default();
-        let mut statuses = [0usize; Status::ALL.len()];
-        let mut max_error: Option<(f64, usize)> = None;
-        for (i, isl) in islands.iter().enumerate() {
-            counts.add(isl.path);
-            let s = isl.solution.status;
-            if let Some(k) = Status::ALL.iter().position(|&x| x == s) {
-                statuses[k] += 1;
-            }
-            let e = isl.solution.residuals.error;
-            // NaN compares false: a NaN error always replaces the maximum,
-            // so that it is reported, never hidden.
-            if s.is_solution() && !max_error.is_some_and(|(m, _)| e <= m) {
-                max_error = Some((e, i));
-            }
-        }
-        Report {
-            islands,
-            scenes,
-            counts,
-            statuses,
-            max_error,
+        let mut r = Report {
+            islands: Vec::new(),
+            scenes: Vec::new(),
+            counts: PathCounts::default(),
+            statuses: [0; Status::ALL.len()],
+            max_error: None,
             timings: Timings::default(),
             device,
             choice,
@@ -394,25 +498,78 @@ impl Report {
             friction: Vec::new(),
             friction_statuses: [0; Status::ALL.len()],
             max_coulomb_error: None,
+        };
+        r.set_islands(islands, scenes);
+        r
+    }
+
+    /// Sets the islands and scenes, the counts per path (from the islands'
+    /// paths alone: the GPU's `polished` and `cpu_fallback` start at 0), the
+    /// counts per status and the largest error.
+    pub(crate) fn set_islands(&mut self, islands: Vec<IslandReport>, scenes: Vec<SceneReport>) {
+        self.counts = PathCounts::default();
+        for isl in &islands {
+            self.counts.add(isl.path);
         }
+        (self.statuses, self.max_error) = tally(islands.iter().map(|i| (i.status(), i.error())));
+        self.islands = islands;
+        self.scenes = scenes;
     }
 
     /// Sets the frictional islands, their counts per status and the largest
     /// Coulomb error.
     pub(crate) fn set_friction(&mut self, friction: Vec<FrictionIslandReport>) {
-        self.friction_statuses = [0; Status::ALL.len()];
-        self.max_coulomb_error = None;
-        for (i, isl) in friction.iter().enumerate() {
-            let s = isl.status();
-            if let Some(k) = Status::ALL.iter().position(|&x| x == s) {
-                self.friction_statuses[k] += 1;
-            }
-            let e = isl.error();
-            if s.is_solution() && !self.max_coulomb_error.is_some_and(|(m, _)| e <= m) {
-                self.max_coulomb_error = Some((e, i));
+        (self.friction_statuses, self.max_coulomb_error) =
+            tally(friction.iter().map(|i| (i.status(), i.error())));
+        self.friction = friction;
+    }
+
+    /// Appends `other` (the next part of one batch): its islands, scenes
+    /// and frictional islands after this report's, their scene indices and
+    /// island ranges shifted past this report's, counts, statuses, timings
+    /// and GPU figures summed, the largest errors (NaN wins) with their
+    /// index in the whole batch. The device and choice become `other`'s
+    /// (the last part's), the fallback reason stays the first one.
+    pub fn append(&mut self, mut other: Report) {
+        let (islands, scenes, friction) =
+            (self.islands.len(), self.scenes.len(), self.friction.len());
+        for isl in &mut other.islands {
+            isl.scene = isl.scene.map(|s| s + scenes);
+        }
+        for isl in &mut other.friction {
+            isl.scene = isl.scene.map(|s| s + scenes);
+        }
+        for s in &mut other.scenes {
+            s.islands = s.islands.start + islands..s.islands.end + islands;
+            if let Some(f) = &mut s.friction {
+                f.islands = f.islands.start + friction..f.islands.end + friction;
             }
         }
-        self.friction = friction;
+        self.counts += other.counts;
+        add_tally(
+            (&mut self.statuses, &mut self.max_error),
+            (other.statuses, other.max_error),
+            islands,
+        );
+        add_tally(
+            (&mut self.friction_statuses, &mut self.max_coulomb_error),
+            (other.friction_statuses, other.max_coulomb_error),
+            friction,
+        );
+        self.timings += other.timings;
+        self.gpu = match (self.gpu, other.gpu) {
+            (Some(mut a), Some(b)) => {
+                a += b;
+                Some(a)
+            }
+            (a, b) => a.or(b),
+        };
+        self.fallback = self.fallback.take().or(other.fallback);
+        self.device = other.device;
+        self.choice = other.choice;
+        self.islands.append(&mut other.islands);
+        self.scenes.append(&mut other.scenes);
+        self.friction.append(&mut other.friction);
     }
 
     /// (status, count) of every status that occurs, in [`Status::ALL`] order.
@@ -487,5 +644,67 @@ impl fmt::Display for Report {
             "time: total {:.3} s (build {:.3}, prediction {:.3}, gpu {:.3}, validation {:.3}, solve {:.3}, impulses {:.3})",
             t.total, t.build, t.prediction, t.gpu, t.validation, t.solve, t.impulses
         )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::generate::friction::box_stack;
+    use crate::generate::{box_on_ground, random_scene, Rng};
+    use crate::{Backend, Method, Settings, Solver};
+
+    /// A batch solved in parts and joined by `append` is the batch solved
+    /// at once: islands (scene indices), scenes (island ranges, frictional
+    /// ones too), counts, statuses and the largest errors with their index.
+    #[test]
+    fn appended_parts_are_the_whole() {
+        let mut rng = Rng::new(7);
+        let mut scenes = vec![random_scene(&mut rng, 3, 5, 10.0), box_stack(3, 0.5, 0.1, 0.0)];
+        scenes.push(box_on_ground(1.0, 0.0));
+        scenes.push(random_scene(&mut rng, 4, 6, 100.0));
+        scenes.push(box_stack(2, 0.3, 0.2, 0.01));
+        let mut solver = Solver::new(Settings::new(Backend::Cpu, Method::Auto)).unwrap();
+        let whole = solver.solve_scenes(&scenes).unwrap();
+        for cut in 1..scenes.len() {
+            let mut joined = solver.solve_scenes(&scenes[..cut]).unwrap();
+            joined.append(solver.solve_scenes(&scenes[cut..]).unwrap());
+            assert_eq!(joined.counts, whole.counts, "cut {cut}");
+            assert_eq!(joined.statuses, whole.statuses, "cut {cut}");
+            assert_eq!(joined.max_error, whole.max_error, "cut {cut}");
+            assert_eq!(joined.friction_statuses, whole.friction_statuses);
+            assert_eq!(joined.max_coulomb_error, whole.max_coulomb_error);
+            let scene_of = |r: &super::Report| -> Vec<_> {
+                r.islands.iter().map(|i| (i.scene, i.solution.z.to_vec())).collect()
+            };
+            assert_eq!(scene_of(&joined), scene_of(&whole), "cut {cut}");
+            let friction_of = |r: &super::Report| -> Vec<_> {
+                r.friction.iter().map(|i| (i.scene, i.contacts.clone())).collect()
+            };
+            assert_eq!(friction_of(&joined), friction_of(&whole), "cut {cut}");
+            for (a, b) in joined.scenes.iter().zip(&whole.scenes) {
+                assert_eq!(a.islands, b.islands, "cut {cut}");
+                assert_eq!(a.impulses, b.impulses, "cut {cut}");
+                let range = |s: &super::SceneReport| s.friction.as_ref().map(|f| f.islands.clone());
+                assert_eq!(range(a), range(b), "cut {cut}");
+            }
+        }
+    }
+
+    /// A NaN error in the appended part replaces a finite maximum (it must
+    /// show), and the index is the island's in the whole batch.
+    #[test]
+    fn a_nan_error_in_the_appended_part_is_the_maximum() {
+        let lcp = crate::Lcp::new(vec![2.0], vec![-1.0]).unwrap();
+        let mut solver = Solver::new(Settings::new(Backend::Cpu, Method::Auto)).unwrap();
+        let mut a = solver.solve_lcps(&[lcp.clone(), lcp.clone()]).unwrap();
+        let mut b = solver.solve_lcps(&[lcp]).unwrap();
+        b.islands[0].solution.residuals.error = f64::NAN;
+        b.max_error = Some((f64::NAN, 0));
+        a.append(b);
+        let (e, i) = a.max_error.unwrap();
+        assert!(e.is_nan());
+        assert_eq!(i, 2);
+        assert_eq!(a.islands.len(), 3);
+        assert_eq!(a.statuses.iter().sum::<usize>(), 3);
     }
 }

@@ -11,6 +11,29 @@ use serde::{Deserialize, Serialize};
 
 use crate::Error;
 
+/// The two unit tangents (t₁, t₂) of a contact with unit normal n: an
+/// orthonormal, right-handed frame (t₁ × t₂ = n), a deterministic function
+/// of n alone (Duff et al., "Building an orthonormal basis, revisited",
+/// JCGT 2017). With s = 1 when n.z ≥ 0 (−0.0 included) and −1 otherwise,
+/// a = −1 / (s + n.z), b = n.x n.y a:
+///
+/// ```text
+/// t₁ = (1 + s n.x² a, s b, −s n.x),   t₂ = (b, s + n.y² a, −n.y)
+/// ```
+///
+/// Continuous in n except across the plane n.z = 0 with n.x or n.y away
+/// from 0, where s flips; the ground normal (0, 1, 0) gives t₁ = (1, 0, 0),
+/// t₂ = (0, 0, −1). `shaders/friction_assembly.wgsl` computes the same.
+pub fn tangent_basis(n: DVec3) -> (DVec3, DVec3) {
+    let s = if n.z >= 0.0 { 1.0 } else { -1.0 };
+    let a = -1.0 / (s + n.z);
+    let b = n.x * n.y * a;
+    (
+        DVec3::new(1.0 + s * n.x * n.x * a, s * b, -s * n.x),
+        DVec3::new(b, s + n.y * n.y * a, -n.y),
+    )
+}
+
 /// A rigid body at the instant of the impact.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -62,7 +85,7 @@ pub struct Contact {
     pub friction: f64,
     /// The first tangent t₁ of the contact's friction frame, given by the
     /// caller (unit and orthogonal to the normal, to [`NORMAL_TOL`]); then
-    /// t₂ = n × t₁. Default None: [`crate::friction::tangent_basis`] of the
+    /// t₂ = n × t₁. Default None: [`tangent_basis`] of the
     /// normal. Only the directions of the reported tangential impulse
     /// components depend on it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -251,7 +274,7 @@ impl Contact {
     }
 
     /// The contact's friction frame (t₁, t₂): the caller's tangent t₁ with
-    /// t₂ = n × t₁, or [`crate::friction::tangent_basis`] of the normal.
+    /// t₂ = n × t₁, or [`tangent_basis`] of the normal.
     /// Right-handed: t₁ × t₂ = n.
     pub fn tangents(&self) -> (DVec3, DVec3) {
         let n = self.normal();
@@ -260,7 +283,7 @@ impl Contact {
                 let t1 = DVec3::from_array(t);
                 (t1, n.cross(t1))
             }
-            None => crate::friction::tangent_basis(n),
+            None => tangent_basis(n),
         }
     }
 

@@ -7,10 +7,11 @@
 
 use crate::cpu::enumeration::EnumerationSettings;
 use crate::friction::{FrictionMethod, FrictionSettings};
-use crate::gpu::{BackendChoice, EnumerationKernel, GpuOptions, GpuSolveSettings, Precision};
+use crate::gpu::{GpuOptions, GpuSolveSettings};
 use crate::linalg::PIVOT_TOL;
-use crate::solvers::lemke::LemkeSettings;
-use crate::solvers::pgs::PgsSettings;
+use crate::cpu::lemke::LemkeSettings;
+use crate::cpu::pgs::PgsSettings;
+use std::str::FromStr;
 use crate::Error;
 
 /// Where islands are solved.
@@ -81,6 +82,144 @@ impl Method {
             Method::Enumeration => "enum",
             Method::Lemke => "lemke",
             Method::Pgs => "pgs",
+        }
+    }
+}
+
+/// The value among `all` whose `name` is `s`; else an error naming `what`
+/// and listing the allowed names, e.g. `method: field `method`: `x` is not
+/// one of auto, enum, lemke, pgs`. The one inverse of each `name()`.
+pub(crate) fn from_name<T: Copy>(
+    what: &str,
+    s: &str,
+    all: &[T],
+    name: fn(T) -> &'static str,
+) -> Result<T, Error> {
+    all.iter().copied().find(|&v| name(v) == s).ok_or_else(|| {
+        let names: Vec<&str> = all.iter().map(|&v| name(v)).collect();
+        Error::invalid(
+            what,
+            what,
+            format!("`{s}` is not one of {}", names.join(", ")),
+        )
+    })
+}
+
+impl Backend {
+    /// Every backend, in the order of the help texts.
+    pub const ALL: [Backend; 3] = [Backend::Auto, Backend::Cpu, Backend::Gpu];
+}
+
+impl FromStr for Backend {
+    type Err = Error;
+    /// The backend of [`Backend::name`]; an error listing the names otherwise.
+    fn from_str(s: &str) -> Result<Self, Error> {
+        from_name("backend", s, &Backend::ALL, Backend::name)
+    }
+}
+
+impl Method {
+    /// Every method.
+    pub const ALL: [Method; 4] = [Method::Auto, Method::Enumeration, Method::Lemke, Method::Pgs];
+}
+
+impl FromStr for Method {
+    type Err = Error;
+    /// The method of [`Method::name`] (`enum` for enumeration); an error
+    /// listing the names otherwise.
+    fn from_str(s: &str) -> Result<Self, Error> {
+        from_name("method", s, &Method::ALL, Method::name)
+    }
+}
+
+/// Floating-point type of the shaders.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Precision {
+    /// f64 where the adapter has SHADER_F64, else f32.
+    #[default]
+    Auto,
+    /// 32-bit floats (every adapter).
+    F32,
+    /// 64-bit floats (adapters with SHADER_F64).
+    F64,
+}
+
+impl Precision {
+    /// Every precision.
+    pub const ALL: [Precision; 3] = [Precision::Auto, Precision::F32, Precision::F64];
+
+    /// `auto`, `f32` or `f64`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Precision::Auto => "auto",
+            Precision::F32 => "f32",
+            Precision::F64 => "f64",
+        }
+    }
+}
+
+impl FromStr for Precision {
+    type Err = Error;
+    /// The precision of [`Precision::name`]; an error listing the names otherwise.
+    fn from_str(s: &str) -> Result<Self, Error> {
+        from_name("precision", s, &Precision::ALL, Precision::name)
+    }
+}
+
+/// Which wgpu backend(s) to look for adapters on.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum BackendChoice {
+    /// Every backend wgpu was built with (Vulkan is preferred over GL).
+    #[default]
+    Auto,
+    /// Vulkan (lavapipe among the software adapters).
+    Vulkan,
+    /// OpenGL (llvmpipe through EGL among the software adapters; no f64).
+    Gl,
+    /// Metal.
+    Metal,
+    /// Direct3D 12.
+    Dx12,
+}
+
+/// The enumeration shader.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum EnumerationKernel {
+    /// Per island size, whichever measured faster (`for_n`): Unrolled up to
+    /// n = 7, Workgroup from n = 10, Elimination between (BENCHMARKS.md).
+    #[default]
+    Auto,
+    /// `shaders/enumeration.wgsl`: bases by size, one elimination each, stop
+    /// at the first valid one.
+    Elimination,
+    /// `shaders/enumeration.wgsl` specialised per island size (constant
+    /// loop bounds and private-array indices) for the sizes the generated
+    /// shaders cover; the elimination kernel above. Same answers as
+    /// Elimination, bit for bit.
+    Unrolled,
+    /// `shaders/enumeration_tree.wgsl` first, on every island of n ≤
+    /// [`GpuSettings::tree_max_n`]: all bases screened by principal pivots
+    /// down the tree of bases, the screened ones confirmed by elimination;
+    /// the islands it leaves undecided, and the larger ones, go to Auto's
+    /// kernel. Auto sends only positive definite islands to it.
+    Tree,
+    /// `shaders/enumeration_workgroup.wgsl`: one workgroup per island, its
+    /// 64 invocations solving the bases of one popcount in waves of 64
+    /// consecutive masks, stopping at the first wave with a valid basis
+    /// (the elimination kernel's order and choice: in f64 the same basis,
+    /// z and counters). Parallelism inside an island, for few large ones.
+    Workgroup,
+}
+
+impl EnumerationKernel {
+    /// The name used in settings and benches.
+    pub fn name(self) -> &'static str {
+        match self {
+            EnumerationKernel::Auto => "auto",
+            EnumerationKernel::Elimination => "elimination",
+            EnumerationKernel::Unrolled => "unrolled",
+            EnumerationKernel::Tree => "tree",
+            EnumerationKernel::Workgroup => "workgroup",
         }
     }
 }
@@ -415,6 +554,53 @@ impl Settings {
 
 #[cfg(test)]
 mod tests {
+
+    /// `parse` is the inverse of `name` on every value, and anything else
+    /// is an error naming the field and listing every name.
+    fn round_trip<T: Copy + PartialEq + std::fmt::Debug + FromStr<Err = Error>>(
+        all: &[T],
+        name: fn(T) -> &'static str,
+        field: &str,
+        listed: &str,
+    ) {
+        for &v in all {
+            assert_eq!(name(v).parse::<T>().unwrap(), v, "{}", name(v));
+        }
+        for bad in ["", "Auto", "gpu ", "enumeration", "sor"] {
+            let e = bad.parse::<T>().unwrap_err().to_string();
+            assert_eq!(
+                e,
+                format!("{field}: field `{field}`: `{bad}` is not one of {listed}")
+            );
+        }
+    }
+
+    #[test]
+    fn backend_parses_its_names() {
+        round_trip(&Backend::ALL, Backend::name, "backend", "auto, cpu, gpu");
+    }
+
+    #[test]
+    fn method_parses_its_names() {
+        round_trip(&Method::ALL, Method::name, "method", "auto, enum, lemke, pgs");
+    }
+
+    #[test]
+    fn friction_method_parses_its_names() {
+        round_trip(
+            &FrictionMethod::ALL,
+            FrictionMethod::name,
+            "friction_method",
+            "auto, nsgs, newton, jacobi, pgs, apgd",
+        );
+    }
+
+    #[test]
+    fn precision_parses_its_names() {
+        round_trip(&Precision::ALL, Precision::name, "precision", "auto, f32, f64");
+        // The environment's spelling is any case.
+        assert_eq!(Precision::parse("F64").unwrap(), Precision::F64);
+    }
     use super::*;
 
     #[test]

@@ -82,8 +82,8 @@ impl Args<'_> {
         if let Some(t) = self.pgs_tolerance {
             s.pgs_tolerance = t;
         }
-        s.friction_method = FrictionMethod::from_name(&self.friction_method.to_ascii_lowercase())
-            .ok_or_else(|| {
+        s.friction_method = self.friction_method.to_ascii_lowercase().parse::<FrictionMethod>()
+            .map_err(|_| {
             bad(
                 "friction_method",
                 self.friction_method,

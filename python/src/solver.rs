@@ -30,21 +30,22 @@ impl NativeSolver {
     }
 
     /// Solves `ranges` one after the other with the GIL released, checking
-    /// for Ctrl-C between them; one merged report. `offset` gives the index
-    /// of a range's first scene (0 for LCP batches).
+    /// for Ctrl-C between them; one report ([`Report::append`]: the ranges
+    /// are consecutive from 0, so scene indices shift by the scenes before).
     fn run_chunks(
         &self,
         py: Python<'_>,
         ranges: Vec<Range<usize>>,
-        offset: impl Fn(&Range<usize>) -> usize,
         solve: impl Fn(&mut Solver, Range<usize>) -> Result<Report, lcpbatch::Error> + Sync,
     ) -> PyResult<(Report, usize)> {
         let mut total: Option<Report> = None;
         let count = ranges.len();
         for r in ranges {
-            let before = offset(&r);
             let next = py.detach(|| guard(|| solve(&mut self.lock(), r).map_err(to_py_err)))?;
-            total = Some(report::merge(total, next, before));
+            match &mut total {
+                Some(t) => t.append(next),
+                None => total = Some(next),
+            }
             py.check_signals()?;
         }
         match total {
@@ -67,7 +68,6 @@ impl NativeSolver {
         let (r, count) = self.run_chunks(
             py,
             ranges,
-            |_| 0,
             |s, r| match &ids {
                 Some(ids) => s.solve_lcps_keyed(&lcps[r.clone()], &ids[r]),
                 None => s.solve_lcps(&lcps[r]),
@@ -89,7 +89,6 @@ impl NativeSolver {
         let (r, count) = self.run_chunks(
             py,
             ranges,
-            |_| 0,
             |s, r| match &ids {
                 Some(ids) => s.solve_friction_keyed(&problems[r.clone()], &ids[r]),
                 None => s.solve_friction(&problems[r]),
@@ -220,7 +219,7 @@ impl NativeSolver {
             .collect::<PyResult<_>>()?;
         let ranges = scenes::chunks(&scenes);
         let (r, count) =
-            self.run_chunks(py, ranges, |r| r.start, |s, r| s.solve_scenes(&scenes[r]))?;
+            self.run_chunks(py, ranges, |s, r| s.solve_scenes(&scenes[r]))?;
         let d = PyDict::new(py);
         scenes::scenes_into(py, &d, &scenes, &r)?;
         d.set_item("report", report::to_dict(py, &r, count)?)?;

@@ -1,30 +1,7 @@
-//! The friction cone of one contact: its tangent basis, and the Euclidean
-//! projections on the cone and on the disc of seed 001.
+//! The friction cone of one contact: the Euclidean projections on the cone
+//! and on the disc of seed 001 (the tangent basis is [`crate::scene`]'s).
 
-use glam::DVec3;
-
-/// The two unit tangents (t₁, t₂) of a contact with unit normal n: an
-/// orthonormal, right-handed frame (t₁ × t₂ = n), a deterministic function
-/// of n alone (Duff et al., "Building an orthonormal basis, revisited",
-/// JCGT 2017). With s = 1 when n.z ≥ 0 (−0.0 included) and −1 otherwise,
-/// a = −1 / (s + n.z), b = n.x n.y a:
-///
-/// ```text
-/// t₁ = (1 + s n.x² a, s b, −s n.x),   t₂ = (b, s + n.y² a, −n.y)
-/// ```
-///
-/// Continuous in n except across the plane n.z = 0 with n.x or n.y away
-/// from 0, where s flips; the ground normal (0, 1, 0) gives t₁ = (1, 0, 0),
-/// t₂ = (0, 0, −1). `shaders/friction_assembly.wgsl` computes the same.
-pub fn tangent_basis(n: DVec3) -> (DVec3, DVec3) {
-    let s = if n.z >= 0.0 { 1.0 } else { -1.0 };
-    let a = -1.0 / (s + n.z);
-    let b = n.x * n.y * a;
-    (
-        DVec3::new(1.0 + s * n.x * n.x * a, s * b, -s * n.x),
-        DVec3::new(b, s + n.y * n.y * a, -n.y),
-    )
-}
+pub use crate::scene::tangent_basis;
 
 /// The Euclidean projection of x = (x_n, x_t₁, x_t₂) on the cone
 /// K = {‖x_t‖ ≤ μ x_n}, with t = ‖x_t‖ (Siconos' fc3d projection):
@@ -75,6 +52,7 @@ pub fn project_on_disc(v_t: [f64; 2], mu: f64, gamma_n: f64) -> [f64; 2] {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use glam::DVec3;
 
     #[test]
     fn the_seeds_disc_examples() {

@@ -70,18 +70,22 @@ impl FrictionMethod {
         }
     }
 
-    /// The method of a name of [`Self::name`], None for another.
-    pub fn from_name(name: &str) -> Option<Self> {
-        [
-            Self::Auto,
-            Self::Nsgs,
-            Self::Newton,
-            Self::Jacobi,
-            Self::Pgs,
-            Self::Apgd,
-        ]
-        .into_iter()
-        .find(|m| m.name() == name)
+    /// Every method, in the order of the help texts.
+    pub const ALL: [FrictionMethod; 6] = [
+        Self::Auto,
+        Self::Nsgs,
+        Self::Newton,
+        Self::Jacobi,
+        Self::Pgs,
+        Self::Apgd,
+    ];
+}
+
+impl std::str::FromStr for FrictionMethod {
+    type Err = crate::Error;
+    /// The method of [`FrictionMethod::name`]; an error listing the names otherwise.
+    fn from_str(s: &str) -> Result<Self, crate::Error> {
+        crate::settings::from_name("friction_method", s, &Self::ALL, Self::name)
     }
 }
 

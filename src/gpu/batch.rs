@@ -26,9 +26,9 @@ use crate::cpu::enumeration::EnumerationSettings;
 use crate::cpu::enumeration_tree::TREE_MAX_N;
 use crate::lcp::{Lcp, LcpSolution};
 use crate::prediction::{prediction, SolvePath, Unsettled};
-use crate::solvers::lemke::{lemke, LemkeSettings};
-use crate::solvers::Solver;
-use crate::validation::{validate_island, BatchReport, GpuVerdict, Verdict};
+use crate::cpu::lemke::{lemke, LemkeSettings};
+use crate::pipeline::Solver;
+use crate::gpu::validation::{validate_island, BatchReport, GpuVerdict, Verdict};
 use crate::Error;
 
 /// Default GPU tolerances in f32 (f64 shaders use the CPU's): accept more

@@ -13,40 +13,13 @@ pub const INSTALL_HINT: &str =
 (Debian/Ubuntu; lavapipe through Vulkan) or `apt-get install libegl1 libegl-mesa0 libgl1-mesa-dri` \
 (llvmpipe through GL)";
 
-/// Floating-point type of the shaders.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum Precision {
-    /// f64 where the adapter has SHADER_F64, else f32.
-    #[default]
-    Auto,
-    /// 32-bit floats (every adapter).
-    F32,
-    /// 64-bit floats (adapters with SHADER_F64).
-    F64,
-}
+pub use crate::settings::{BackendChoice, Precision};
 
 impl Precision {
-    /// `auto`, `f32` or `f64`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Precision::Auto => "auto",
-            Precision::F32 => "f32",
-            Precision::F64 => "f64",
-        }
-    }
-
-    /// Parses "auto", "f32" or "f64".
+    /// Parses "auto", "f32" or "f64" in any case ([`std::str::FromStr`] of
+    /// the lowercase text).
     pub fn parse(s: &str) -> Result<Self, Error> {
-        match s.to_ascii_lowercase().as_str() {
-            "auto" => Ok(Precision::Auto),
-            "f32" => Ok(Precision::F32),
-            "f64" => Ok(Precision::F64),
-            other => Err(Error::invalid(
-                "precision",
-                "precision",
-                format!("`{other}` is not one of auto, f32, f64"),
-            )),
-        }
+        s.to_ascii_lowercase().parse()
     }
 
     /// Bytes of one scalar (Auto must have been resolved).
@@ -56,22 +29,6 @@ impl Precision {
             _ => 4,
         }
     }
-}
-
-/// Which wgpu backend(s) to look for adapters on.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum BackendChoice {
-    /// Every backend wgpu was built with (Vulkan is preferred over GL).
-    #[default]
-    Auto,
-    /// Vulkan (lavapipe among the software adapters).
-    Vulkan,
-    /// OpenGL (llvmpipe through EGL among the software adapters; no f64).
-    Gl,
-    /// Metal.
-    Metal,
-    /// Direct3D 12.
-    Dx12,
 }
 
 impl BackendChoice {

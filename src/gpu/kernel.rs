@@ -8,34 +8,7 @@ use crate::cpu::enumeration_tree::TREE_MAX_N;
 use crate::lcp::Lcp;
 use crate::prediction::{is_positive_definite, is_positive_semidefinite};
 
-/// The enumeration shader.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum EnumerationKernel {
-    /// Per island size, whichever measured faster ([`EnumerationKernel::for_n`]):
-    /// Unrolled up to [`UNROLLED_UP_TO_N`], Workgroup from
-    /// [`WORKGROUP_FROM_N`], Elimination between.
-    #[default]
-    Auto,
-    /// `shaders/enumeration.wgsl`: bases by size, one elimination each, stop
-    /// at the first valid one.
-    Elimination,
-    /// `shaders/enumeration.wgsl` specialised per island size (constant
-    /// loop bounds and private-array indices) for n ≤ [`FIXED_MAX_N`]; the
-    /// elimination kernel above. Same answers as Elimination, bit for bit.
-    Unrolled,
-    /// `shaders/enumeration_tree.wgsl` first, on every island of n ≤
-    /// [`GpuSolveSettings::tree_max_n`]: all bases screened by principal pivots down the tree
-    /// of bases, the screened ones confirmed by elimination; the islands it
-    /// leaves undecided, and the larger ones, go to Auto's kernel. Auto
-    /// sends only positive definite islands to it ([`AUTO_TREE`]).
-    Tree,
-    /// `shaders/enumeration_workgroup.wgsl`: one workgroup per island, its
-    /// 64 invocations solving the bases of one popcount in waves of 64
-    /// consecutive masks, stopping at the first wave with a valid basis
-    /// (the elimination kernel's order and choice: in f64 the same basis,
-    /// z and counters). Parallelism inside an island, for few large ones.
-    Workgroup,
-}
+pub use crate::settings::EnumerationKernel;
 
 impl EnumerationKernel {
     /// The kernel that runs islands of n contacts.
@@ -54,17 +27,6 @@ impl EnumerationKernel {
             }
             EnumerationKernel::Unrolled if n > FIXED_MAX_N => EnumerationKernel::Elimination,
             k => k,
-        }
-    }
-
-    /// The name used in settings and benches.
-    pub fn name(self) -> &'static str {
-        match self {
-            EnumerationKernel::Auto => "auto",
-            EnumerationKernel::Elimination => "elimination",
-            EnumerationKernel::Unrolled => "unrolled",
-            EnumerationKernel::Tree => "tree",
-            EnumerationKernel::Workgroup => "workgroup",
         }
     }
 }

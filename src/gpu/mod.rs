@@ -1,6 +1,6 @@
 //! The GPU path: WGSL compute shaders assemble and enumerate thousands of
 //! contact islands at once; every answer is then checked on the CPU in f64
-//! ([`crate::validation`]).
+//! ([`validation`]).
 //!
 //! Stages (each a shader in `shaders/` with a CPU twin of the same name in
 //! [`crate::cpu`], fed the same packed records of [`layout`]):
@@ -71,6 +71,7 @@ pub(crate) mod pipelines;
 pub(crate) mod scene_chunks;
 pub mod scenes;
 pub(crate) mod shaders;
+pub(crate) mod validation;
 
 pub use batch::{solve_lcp_batch_warm, EnumerationKernel, GpuSolveSettings, SolvedOn};
 pub use context::{

@@ -31,9 +31,9 @@ use crate::lcp::{Lcp, LcpSolution};
 use crate::pipeline::{IslandResult, SceneSolution};
 use crate::prediction::{prediction, SolvePath};
 use crate::scene::Scene;
-use crate::solvers::lemke::lemke;
-use crate::solvers::Solver;
-use crate::validation::{validate_island, BatchReport, GpuVerdict, Verdict};
+use crate::cpu::lemke::lemke;
+use crate::pipeline::Solver;
+use crate::gpu::validation::{validate_island, BatchReport, GpuVerdict, Verdict};
 use crate::Error;
 
 /// Scenes after the impact, with where each island was solved.

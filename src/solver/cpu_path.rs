@@ -15,8 +15,8 @@ use crate::report::{IslandReport, Report, SceneReport, SolvePath};
 use crate::scene::Scene;
 use crate::settings::{Backend, Method, Settings};
 use crate::short_vec::ShortVec;
-use crate::solvers::lemke::{lemke, lemke_textbook_basis};
-use crate::solvers::pgs::pgs;
+use crate::cpu::lemke::{lemke, lemke_textbook_basis};
+use crate::cpu::pgs::pgs;
 use crate::Error;
 
 impl Solver {

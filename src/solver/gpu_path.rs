@@ -8,7 +8,7 @@ use crate::prediction;
 use crate::report::{GpuFigures, IslandReport, Report, SceneReport, SolvePath};
 use crate::scene::Scene;
 use crate::settings::Method;
-use crate::validation::BatchReport;
+use crate::gpu::validation::BatchReport;
 use crate::Error;
 
 use super::cpu_path::{lcp_islands, prediction_path, solve_on_cpu, Solved};
@@ -66,7 +66,7 @@ impl Solver {
                     scene: Some(s),
                     contacts: isl.contacts.into(),
                     method: match isl.solver {
-                        crate::solvers::Solver::Lemke => Method::Lemke,
+                        crate::pipeline::Solver::Lemke => Method::Lemke,
                         _ => Method::Enumeration,
                     },
                     path: gpu_path(on[k], Some(r.paths[s][k])),

@@ -285,19 +285,12 @@ impl Solver {
             scene.islands = first..islands.len();
             scenes.push(scene);
         }
-        let timings = report.timings;
-        let mut solve = Report::new(
-            islands,
-            scenes,
-            report.device.clone(),
-            report.choice.clone(),
-        );
-        solve.fallback = report.fallback.take();
-        solve.gpu = report.gpu.take();
-        // The frictional islands in world order (each world's range into
-        // them); their scene is the world's index.
+        // The door's report (device, choice, fallback, GPU figures, times)
+        // with every world's islands in world order, tallied again; the
+        // frictional islands likewise (their scene is the world's index).
+        let mut solve = report;
+        solve.set_islands(islands, scenes);
         solve.set_friction(friction);
-        solve.timings = timings;
         solve.timings.build += share(sums[0]);
         solve.timings.solve += share(sums[1]);
         solve.timings.impulses += share(sums[2]);

@@ -35,7 +35,7 @@ use crate::cpu::impulses::BodyVelocity;
 use crate::lcp::{Lcp, LcpSolution, Status};
 use crate::scene::Scene;
 use crate::settings::{Method, Settings};
-use crate::solvers::pgs::pgs;
+use crate::cpu::pgs::pgs;
 
 /// Unsolved islands of a step, by what their bodies got instead (see the
 /// module docs of `world_repair`).

@@ -5,7 +5,7 @@
 use std::path::PathBuf;
 
 use crate::cpu::enumeration::EnumerationSettings;
-use crate::solvers::{solve, Solver, SolverSettings};
+use crate::pipeline::{solve, Solver, SolverSettings};
 use crate::{Lcp, LcpSolution};
 
 /// The conformance folder: `$LCPBATCH_CONFORMANCE`, else `../shared/conformance`

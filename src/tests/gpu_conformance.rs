@@ -12,7 +12,7 @@ use crate::gpu::{
 };
 use crate::io::{read_input, Input};
 use crate::pipeline::solve_scene;
-use crate::solvers::SolverSettings;
+use crate::pipeline::SolverSettings;
 use crate::{Lcp, Scene, Status};
 
 /// A fresh context at `precision`. No adapter fails the test with the
@@ -276,7 +276,7 @@ fn siconos_batch_matches_the_cpu() {
 }
 
 fn lclemke(lcp: &Lcp) -> crate::LcpSolution {
-    crate::solvers::lemke::lemke(lcp, &Default::default())
+    crate::cpu::lemke::lemke(lcp, &Default::default())
 }
 
 /// Mixed sizes 1…16 as an LCP batch: a batch split into many chunks and

@@ -14,7 +14,7 @@ use crate::generate::{
 };
 use crate::islands::{find_islands, Island};
 use crate::pipeline::solve_scene;
-use crate::solvers::{solve, Solver, SolverSettings};
+use crate::pipeline::{solve, Solver, SolverSettings};
 use crate::{Contact, Scene, Status};
 use glam::{DMat3, DVec3};
 

@@ -14,8 +14,8 @@ use super::common::{all_solutions_settings, run, siconos_dir, w_rel_diff, z_rel_
 use crate::cpu::enumeration::distinct_solutions;
 use crate::io::siconos::parse_dat;
 use crate::io::{read_input, Input};
-use crate::solvers::pgs::PgsSettings;
-use crate::solvers::{solve, Solver, SolverSettings};
+use crate::cpu::pgs::PgsSettings;
+use crate::pipeline::{solve, Solver, SolverSettings};
 use crate::{Lcp, SolutionSet, Status};
 use serde_json::Value;
 

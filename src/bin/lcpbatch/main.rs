@@ -64,15 +64,20 @@ pub(crate) enum FrictionSolverArg {
 
 impl FrictionSolverArg {
     pub(crate) fn method(self) -> FrictionMethod {
-        match self {
-            FrictionSolverArg::Auto => FrictionMethod::Auto,
-            FrictionSolverArg::Nsgs => FrictionMethod::Nsgs,
-            FrictionSolverArg::Newton => FrictionMethod::Newton,
-            FrictionSolverArg::Jacobi => FrictionMethod::Jacobi,
-            FrictionSolverArg::Pgs => FrictionMethod::Pgs,
-            FrictionSolverArg::Apgd => FrictionMethod::Apgd,
-        }
+        parsed(&self)
     }
+}
+
+/// The library's value that an argument names: its command-line spelling
+/// read by the library's `FromStr` (the inverse of its `name()`), so that
+/// the CLI's names and the library's are one table. Every spelling parses
+/// (`every_argument_value_is_a_library_name`).
+fn parsed<T: std::str::FromStr<Err = Error>>(arg: &impl ValueEnum) -> T {
+    let value = arg.to_possible_value().expect("no value is skipped");
+    value
+        .get_name()
+        .parse()
+        .unwrap_or_else(|e| unreachable!("{e}"))
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -125,11 +130,7 @@ impl GpuArgs {
             o.api = BackendChoice::parse(b)?;
         }
         if let Some(p) = self.precision {
-            o.precision = match p {
-                PrecisionArg::Auto => Precision::Auto,
-                PrecisionArg::F32 => Precision::F32,
-                PrecisionArg::F64 => Precision::F64,
-            };
+            o.precision = parsed::<Precision>(&p);
         }
         Ok(o)
     }
@@ -200,11 +201,7 @@ enum Command {
 
 impl BackendArg {
     fn backend(self) -> Backend {
-        match self {
-            BackendArg::Auto => Backend::Auto,
-            BackendArg::Gpu => Backend::Gpu,
-            BackendArg::Cpu => Backend::Cpu,
-        }
+        parsed(&self)
     }
 }
 
@@ -213,11 +210,16 @@ struct SolveArgs {
     /// Input file (.json or .dat).
     file: PathBuf,
     /// Method for every problem or island without friction.
-    #[arg(long, value_enum, default_value = "auto")]
+    #[arg(long = "method", visible_alias = "solver", value_enum, default_value = "auto")]
     solver: SolverArg,
     /// Method for every problem or island with friction (contacts with
     /// μ > 0, friction batches, FrictionContact3D files).
-    #[arg(long, value_enum, default_value = "auto")]
+    #[arg(
+        long = "friction-method",
+        visible_alias = "friction-solver",
+        value_enum,
+        default_value = "auto"
+    )]
     friction_solver: FrictionSolverArg,
     /// A frictional island is `solved` when its Coulomb error is at most this.
     #[arg(long, default_value_t = 1e-8)]
@@ -596,12 +598,7 @@ fn solve_command(args: SolveArgs) -> Result<(), Error> {
         gpu,
     } = args;
 
-    let method = match solver {
-        SolverArg::Auto => Method::Auto,
-        SolverArg::Enum => Method::Enumeration,
-        SolverArg::Lemke => Method::Lemke,
-        SolverArg::Pgs => Method::Pgs,
-    };
+    let method: Method = parsed(&solver);
     if all_solutions && !matches!(method, Method::Auto | Method::Enumeration) {
         return Err(Error::Unsupported(
             "--all-solutions needs --solver auto or enum".into(),
@@ -704,5 +701,28 @@ fn main() -> ExitCode {
             eprintln!("error: {e}");
             ExitCode::FAILURE
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every spelling the CLI accepts is the name of a library value.
+    #[test]
+    fn every_argument_value_is_a_library_name() {
+        for a in SolverArg::value_variants() {
+            let _: Method = parsed(a);
+        }
+        for a in FrictionSolverArg::value_variants() {
+            let _: FrictionMethod = parsed(a);
+        }
+        for a in BackendArg::value_variants() {
+            let _: Backend = parsed(a);
+        }
+        for a in PrecisionArg::value_variants() {
+            let _: Precision = parsed(a);
+        }
+        assert_eq!(parsed::<Method>(&SolverArg::Enum), Method::Enumeration);
     }
 }
