@@ -1,5 +1,6 @@
 //! Helpers shared by the integration tests: where the conformance data lies,
-//! solver shorthands, and the scale-aware comparisons the tests report with.
+//! solver shorthands, the scale-aware comparisons the tests report with, and
+//! the GPU tests' adapter (every skip goes through [`skip`]).
 #![allow(dead_code)]
 
 use std::path::PathBuf;
@@ -8,39 +9,7 @@ use crate::cpu::enumeration::EnumerationSettings;
 use crate::pipeline::{solve, Solver, SolverSettings};
 use crate::{Lcp, LcpSolution};
 
-/// The conformance folder: `$LCPBATCH_CONFORMANCE`, else `../shared/conformance`
-/// beside the crate. `None` (with a line on stderr) when it is absent, so
-/// that a checkout without the shared data skips these tests.
-pub fn conformance_dir() -> Option<PathBuf> {
-    let dir = std::env::var_os("LCPBATCH_CONFORMANCE")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| {
-            PathBuf::from(concat!(
-                env!("CARGO_MANIFEST_DIR"),
-                "/../shared/conformance"
-            ))
-        });
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!(
-            "conformance data not found at {} (set LCPBATCH_CONFORMANCE); skipping",
-            dir.display()
-        );
-        None
-    }
-}
-
-/// The Siconos folder inside the conformance data, when present.
-pub fn siconos_dir() -> Option<PathBuf> {
-    let dir = conformance_dir()?.join("siconos");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!("{} not found; skipping", dir.display());
-        None
-    }
-}
+pub use super::skip::{fc3d_dir, siconos_dir, skip, Lack};
 
 /// Default settings of `solver`.
 pub fn settings(solver: Solver) -> SolverSettings {
@@ -163,22 +132,10 @@ pub fn temp_dir(tag: &str) -> PathBuf {
     dir
 }
 
-/// Set (to anything) in CI: a GPU test that finds no adapter fails
-/// instead of skipping (`.ci/run` installs lavapipe and sets it).
-pub const REQUIRE_GPU: &str = "LCPBATCH_REQUIRE_GPU";
-
-/// Why the GPU tests skip: panics instead when [`REQUIRE_GPU`] is set.
-fn skip(why: &str) {
-    if std::env::var_os(REQUIRE_GPU).is_some() {
-        panic!("{why} ({REQUIRE_GPU} is set: GPU tests must run here)");
-    }
-    eprintln!("skipping a GPU test: {why}");
-}
-
 /// A GPU context at `precision` for the GPU tests (the environment's
-/// adapter choice, `LCPBATCH_GPU_*`). None, with a line on stderr, when f64
-/// is asked of an adapter without SHADER_F64, or when there is no adapter
-/// at all (how to install one is in the line; see [`REQUIRE_GPU`]).
+/// adapter choice, `LCPBATCH_GPU_*`). None, after a [`skip`], when f64 is
+/// asked of an adapter without SHADER_F64 ([`Lack::F64`]), or when there is
+/// no adapter at all ([`Lack::Adapter`]; how to install one is in the line).
 pub fn gpu_context(precision: crate::gpu::Precision) -> Option<crate::gpu::GpuContext> {
     use crate::gpu::{GpuContext, GpuOptions, Precision, INSTALL_HINT};
     let mut o = GpuOptions::from_env().expect("GPU environment variables");
@@ -186,22 +143,36 @@ pub fn gpu_context(precision: crate::gpu::Precision) -> Option<crate::gpu::GpuCo
     match GpuContext::new(&o) {
         Ok(c) => Some(c),
         Err(e) if precision == Precision::F64 && e.to_string().contains("SHADER_F64") => {
-            eprintln!("skipping the f64 run: {e}");
+            skip(Lack::F64, &format!("the f64 run: {e}"));
             None
         }
         Err(e) => {
-            skip(&format!("no GPU adapter ({e}); {INSTALL_HINT}"));
+            skip(
+                Lack::Adapter,
+                &format!("no GPU adapter ({e}); {INSTALL_HINT}"),
+            );
             None
         }
     }
 }
 
 /// The environment's GPU settings at f64 where its adapter has SHADER_F64,
-/// else at its own precision; None (see [`gpu_context`]) without an adapter.
+/// else (after a [`skip`] of the f64 part, [`Lack::F64`]) at f32; None
+/// (see [`gpu_context`]) without an adapter.
 pub fn gpu_settings_or_skip() -> Option<crate::GpuSettings> {
     use crate::gpu::Precision;
     let mut g = crate::GpuSettings::from_env().expect("GPU environment variables");
-    let ctx = gpu_context(Precision::F64).or_else(|| gpu_context(Precision::Auto))?;
+    let ctx = gpu_context(Precision::Auto)?;
+    if ctx.precision() != Precision::F64 {
+        skip(
+            Lack::F64,
+            &format!(
+                "the f64 part: adapter `{}` has no SHADER_F64 (its GPU runs are in {})",
+                ctx.adapter_info().name,
+                ctx.precision().name()
+            ),
+        );
+    }
     g.precision = ctx.precision();
     Some(g)
 }

@@ -4,7 +4,7 @@
 //! byte (compared as the JSON the CLI writes). The command line's side is
 //! in tests/cli/trouble.rs.
 
-use super::common::gpu_settings_or_skip;
+use super::common::{gpu_settings_or_skip, skip, Lack};
 use crate::generate::families::island_lcps;
 use crate::generate::{demo_world, random_island, seed_chain, Rng};
 use crate::gpu::{list_adapters, BackendChoice};
@@ -138,11 +138,14 @@ fn user_errors_stay_errors_after_device_trouble() {
 #[test]
 fn f64_asked_of_an_adapter_without_it_falls_back_to_the_cpu() {
     let Some(gl) = list_adapters(BackendChoice::Gl).into_iter().next() else {
-        println!("skipped: no GL adapter here (llvmpipe through EGL)");
+        skip(Lack::Other, "no GL adapter here (llvmpipe through EGL)");
         return;
     };
     if gl.f64 {
-        println!("the GL adapter has SHADER_F64: nothing to fall back from");
+        skip(
+            Lack::Other,
+            "the GL adapter has SHADER_F64: nothing to fall back from",
+        );
         return;
     }
     let gl_settings = |precision| GpuSettings {

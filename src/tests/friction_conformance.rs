@@ -2,25 +2,13 @@
 //! read by the fc3d reader and solved by each exact Coulomb solver, judged
 //! by the Coulomb error (Siconos' fc3d error) against reference.json.
 
-use std::path::PathBuf;
-
-use super::common::conformance_dir;
+use super::common::fc3d_dir;
 use crate::friction::{solve_friction_problem, FrictionMethod, FrictionSettings};
 use crate::io::fc3d::{is_fc3d, parse_fc3d};
 use crate::Status;
 
 /// Every problem must reach this Coulomb error with the exact path.
 const TARGET: f64 = 1e-10;
-
-fn fc3d_dir() -> Option<PathBuf> {
-    let dir = conformance_dir()?.join("siconos-fc3d");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!("{} not found; skipping", dir.display());
-        None
-    }
-}
 
 fn problems() -> Vec<(String, crate::FrictionProblem, serde_json::Value)> {
     let Some(dir) = fc3d_dir() else {

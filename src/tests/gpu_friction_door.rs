@@ -9,6 +9,14 @@ use crate::{FrictionMethod, GpuContext, Precision, Solver, Status};
 
 use super::common::gpu_settings_or_skip;
 
+/// The cone error the GPU's `solved` islands of `r` meet: the projected
+/// settings' tolerance at the precision the solver's shaders ran in
+/// (f32 where the adapter has no SHADER_F64).
+fn gpu_tolerance(solver: &Solver, r: &crate::Report) -> f64 {
+    let projected = solver.settings().friction().projected_settings();
+    crate::gpu::friction::tolerance_for(&projected, r.device.precision)
+}
+
 fn settings(method: FrictionMethod) -> Settings {
     Settings {
         friction_method: method,
@@ -54,16 +62,23 @@ fn projected_methods_solve_through_the_door_on_cpu_and_gpu() {
         let r = s.solve_friction(&problems).unwrap();
         assert!(r.on_gpu(), "{method:?}: {:?}", r.fallback);
         assert!(r.gpu.is_some_and(|f| f.dispatches > 0));
+        let tol = gpu_tolerance(&s, &r);
         for (a, b) in r.friction.iter().zip(&cpu.friction) {
             assert_eq!(a.status(), Status::Solved, "{method:?} on the GPU");
-            // The same convex problem: u is unique where W is definite.
+            let e = a.solution.residuals.cone_error;
+            assert!(e <= tol, "{method:?}: cone error {e:e} above {tol:e}");
+            // The same convex problem: u is unique where W is definite,
+            // here to within 1e3 times the tolerance (1e-5 at f64's 1e-8;
+            // f32 measured up to 1.2e-3 on GL llvmpipe, island 17 with
+            // ‖r‖∞ = 76).
             let du = a
                 .solution
                 .u
                 .iter()
                 .zip(&b.solution.u)
                 .map(|(x, y)| (x - y).abs());
-            assert!(du.fold(0.0, f64::max) < 1e-5, "{method:?}");
+            let du = du.fold(0.0, f64::max);
+            assert!(du < 1e3 * tol, "{method:?}: u differs by {du:e}");
         }
     }
 }
@@ -101,10 +116,11 @@ fn velocity_deviation(a: &crate::Report, b: &crate::Report) -> f64 {
 
 /// Scenes with friction through `Backend::Gpu` with a projected method:
 /// assembled and iterated on the GPU, every island solved to the cone
-/// error tolerance in f64, the velocities after equal to the CPU's (same
-/// method, same convex problem: u unique where W is definite, and the
-/// bodies' velocities are unique even where it is not) within 1e-6
-/// relative; the report says what ran where. The exact methods stay on the
+/// error tolerance of the shaders' precision (checked in f64), the
+/// velocities after equal to the CPU's (same method, same convex problem:
+/// u unique where W is definite, and the bodies' velocities are unique
+/// even where it is not) within 100 times that tolerance relative (1e-6
+/// in f64); the report says what ran where. The exact methods stay on the
 /// CPU with the GPU open.
 #[test]
 fn scenes_with_friction_run_on_the_gpu_with_the_gpu_backend() {
@@ -130,6 +146,7 @@ fn scenes_with_friction_run_on_the_gpu_with_the_gpu_backend() {
     let mut solver = Solver::new(gpu_settings.clone()).unwrap();
     let r = solver.solve_scenes(&scenes).unwrap();
     assert!(r.on_gpu(), "{:?}", r.fallback);
+    let tol = gpu_tolerance(&solver, &r);
     assert!(
         r.choice
             .contains("friction: apgd on the GPU, assembled on the GPU"),
@@ -141,12 +158,18 @@ fn scenes_with_friction_run_on_the_gpu_with_the_gpu_backend() {
     assert_eq!(r.friction.len(), 3, "one island per frictional scene");
     for isl in &r.friction {
         assert_eq!(isl.status(), Status::Solved);
-        assert!(isl.solution.residuals.cone_error <= 1e-8);
+        let e = isl.solution.residuals.cone_error;
+        assert!(e <= tol, "cone error {e:e} above {tol:e}");
         assert_eq!(isl.method(), method);
     }
     assert!(r.scenes[1].friction.is_none(), "the frictionless scene");
+    // 1e2 times the tolerance: 1e-6 at f64's 1e-8 (f32 measured 2.3e-5 on
+    // GL llvmpipe).
     let dev = velocity_deviation(&r, &cpu);
-    assert!(dev < 1e-6, "GPU and CPU velocities after differ by {dev:e}");
+    assert!(
+        dev < 1e2 * tol,
+        "GPU and CPU velocities after differ by {dev:e}"
+    );
 
     // Exact Coulomb: on the CPU even with the GPU open, the same answers.
     let exact = Settings {

@@ -2,17 +2,13 @@
 //! batches of frictional problems, scenes with friction, the
 //! `--friction-solver` flag, and bad friction input refused.
 
-use super::common::{conformance_dir, lcpbatch, temp_dir};
+use super::common::{fc3d_dir, lcpbatch, temp_dir};
 use super::{numbers, solve_ok, write};
 use serde_json::Value;
 
 #[test]
 fn fc3d_files_are_read_and_solved_to_the_conformance_target() {
-    let Some(dir) = conformance_dir()
-        .map(|d| d.join("siconos-fc3d"))
-        .filter(|d| d.is_dir())
-    else {
-        eprintln!("siconos-fc3d conformance data not found; skipping");
+    let Some(dir) = fc3d_dir() else {
         return;
     };
     for name in [

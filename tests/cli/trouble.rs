@@ -9,6 +9,8 @@ use lcpbatch::generate::families::island_lcps;
 use lcpbatch::generate::{demo_world, random_island, seed_chain, Rng};
 use lcpbatch::{list_adapters, BackendChoice, Lcp, Scene};
 
+use super::common::{skip, Lack};
+
 fn scenes() -> Vec<Scene> {
     let mut rng = Rng::new(11);
     let mut s: Vec<Scene> = (0..12).map(|_| demo_world(&mut rng)).collect();
@@ -117,11 +119,14 @@ fn cli_gpu_without_the_adapter_warns_and_writes_the_cpu_output() {
 fn cli_f64_on_gl_warns_and_writes_the_cpu_output() {
     let gl = list_adapters(BackendChoice::Gl);
     if gl.is_empty() {
-        println!("skipped: no GL adapter here (llvmpipe through EGL)");
+        skip(Lack::Other, "no GL adapter here (llvmpipe through EGL)");
         return;
     }
     if gl.iter().all(|a| a.f64) {
-        println!("the GL adapter has SHADER_F64: nothing to fall back from");
+        skip(
+            Lack::Other,
+            "the GL adapter has SHADER_F64: nothing to fall back from",
+        );
         return;
     }
     for file in files() {

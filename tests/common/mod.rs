@@ -1,45 +1,16 @@
 //! Helpers shared by the command-line tests: where the conformance data
-//! lies, temporary folders, running the binary, and whether a GPU adapter is
-//! there (the library's own tests have theirs in src/tests/common.rs).
+//! lies and skips (both from src/tests/skip.rs, which the library's own
+//! tests share), temporary folders, running the binary, and whether a GPU
+//! adapter is there.
 #![allow(dead_code)]
 
 use std::path::PathBuf;
 
 use lcpbatch::{Backend, GpuSettings, Method, Precision, Settings, Solver};
 
-/// The conformance folder: `$LCPBATCH_CONFORMANCE`, else `../shared/conformance`
-/// beside the crate. `None` (with a line on stderr) when it is absent, so
-/// that a checkout without the shared data skips these tests.
-pub fn conformance_dir() -> Option<PathBuf> {
-    let dir = std::env::var_os("LCPBATCH_CONFORMANCE")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| {
-            PathBuf::from(concat!(
-                env!("CARGO_MANIFEST_DIR"),
-                "/../shared/conformance"
-            ))
-        });
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!(
-            "conformance data not found at {} (set LCPBATCH_CONFORMANCE); skipping",
-            dir.display()
-        );
-        None
-    }
-}
-
-/// The Siconos folder inside the conformance data, when present.
-pub fn siconos_dir() -> Option<PathBuf> {
-    let dir = conformance_dir()?.join("siconos");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!("{} not found; skipping", dir.display());
-        None
-    }
-}
+#[path = "../../src/tests/skip.rs"]
+mod skip;
+pub use skip::{fc3d_dir, siconos_dir, skip, Lack};
 
 /// A directory under the system temp dir, unique to this process and `tag`,
 /// created empty.
@@ -59,14 +30,10 @@ pub fn temp_dir(tag: &str) -> PathBuf {
     dir
 }
 
-/// Set (to anything) in CI: a GPU test that finds no adapter fails
-/// instead of skipping (`.ci/run` installs lavapipe and sets it).
-pub const REQUIRE_GPU: &str = "LCPBATCH_REQUIRE_GPU";
-
 /// Whether the environment's adapter (`LCPBATCH_GPU_*`) opens at
-/// `precision`. Without any adapter: false with a line on stderr saying the
-/// test skips, or a failure where [`REQUIRE_GPU`] is set. f64 on an
-/// adapter without it: false.
+/// `precision`. Otherwise false after a [`skip`]: [`Lack::F64`] where f64
+/// is asked of an adapter without it, [`Lack::Adapter`] without any
+/// adapter (a failure where `LCPBATCH_REQUIRE_GPU` is set).
 pub fn gpu_available(precision: Precision) -> bool {
     let gpu = GpuSettings {
         precision,
@@ -79,12 +46,13 @@ pub fn gpu_available(precision: Precision) -> bool {
     .expect("valid settings");
     match s.fallback() {
         None => true,
-        Some(why) if precision == Precision::F64 && why.contains("SHADER_F64") => false,
+        Some(why) if precision == Precision::F64 && why.contains("SHADER_F64") => {
+            skip(Lack::F64, &format!("the f64 part: {why}"));
+            false
+        }
         Some(why) => {
-            if std::env::var_os(REQUIRE_GPU).is_some() {
-                panic!("no GPU adapter ({why}); {REQUIRE_GPU} is set: GPU tests must run here");
-            }
-            eprintln!("skipping a GPU test: {why}; {}", lcpbatch::INSTALL_HINT);
+            let hint = lcpbatch::INSTALL_HINT;
+            skip(Lack::Adapter, &format!("no GPU adapter ({why}); {hint}"));
             false
         }
     }
