@@ -5,6 +5,7 @@ mod bench;
 mod bench_friction;
 mod devices;
 mod generate;
+mod pictures;
 mod plots;
 mod simulate;
 mod stress;
@@ -339,7 +340,11 @@ fn precision_and_why(device: &lcpbatch::Device, asked: Precision, gpu: &GpuArgs)
             let backend = adapters
                 .unwrap_or_default()
                 .into_iter()
-                .find(|a| device.name.starts_with(&format!("{} ({}", a.name, a.backend)))
+                .find(|a| {
+                    device
+                        .name
+                        .starts_with(&format!("{} ({}", a.name, a.backend))
+                })
                 .map(|a| a.backend.replace("Gl", "GL") + " ")
                 .unwrap_or_default();
             if device.precision == Precision::F64 {
@@ -438,7 +443,11 @@ fn demo_in_time(
         count / 2
     );
     println!("device: {} ({})", solver.device().name, solver.choice());
-    simulate::step_and_write(&mut solver, &mut worlds, steps, 0.01, out)
+    let groups = [
+        ("resting stack:4".to_string(), count.div_ceil(2)),
+        ("sliding box".to_string(), count / 2),
+    ];
+    simulate::step_and_write(&mut solver, &mut worlds, &groups, steps, 0.01, out)
 }
 
 fn info(gpu: &GpuArgs, calibrate: bool) -> Result<(), Error> {
