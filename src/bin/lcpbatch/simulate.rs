@@ -283,7 +283,7 @@ fn title(
 fn shown_worlds(worlds: &[World], groups: &[(String, usize)]) -> Vec<(usize, String)> {
     let mut shown: Vec<(usize, String)> = Vec::new();
     let mut first = 0;
-    for (name, n) in groups {
+    for (name, n) in groups.iter().filter(|g| g.1 > 0) {
         let picks = if groups.len() == 1 {
             vec![first, first + n / 2, first + n - 1]
         } else {
@@ -291,7 +291,7 @@ fn shown_worlds(worlds: &[World], groups: &[(String, usize)]) -> Vec<(usize, Str
         };
         for k in picks {
             let same = shown.iter().any(|s| worlds[s.0] == worlds[k]);
-            if *n > 0 && !same && shown.len() < 3 {
+            if !same && shown.len() < 3 {
                 shown.push((k, format!("world {k}: {name}")));
             }
         }
@@ -370,10 +370,10 @@ fn print_summary(lines: &[StepLine], run: &Run, worlds: usize, wall: f64) {
     );
     println!("  phases (seconds over the run, share of the wall time):");
     for (name, t) in phases {
-        println!("    {name:<17}: {t:.3} s ({:.1}%)", 100.0 * t / wall);
+        println!("    {name}: {t:.3} s ({:.1}%)", 100.0 * t / wall);
         if name == "assembly+solve" {
             for (name, t) in door {
-                println!("      {name:<15}: {t:.3} s ({:.1}%)", 100.0 * t / wall);
+                println!("      {name}: {t:.3} s ({:.1}%)", 100.0 * t / wall);
             }
         }
     }
