@@ -427,7 +427,9 @@ fn demo_in_time(
     for b in worlds.iter_mut().flat_map(|w| w.bodies.iter_mut()) {
         b.friction = 0.0;
     }
-    worlds.extend(simulate::load_worlds("slide", count / 2, 1)?);
+    if count >= 2 {
+        worlds.extend(simulate::load_worlds("slide", count / 2, 1)?);
+    }
     let mut solver = solver_for(
         backend.backend(),
         gpu,
