@@ -193,8 +193,21 @@ pub fn incline(angle: f64, mu: f64, h: f64) -> World {
 }
 
 /// Spheres and boxes of mixed sizes from random poses, in a column of cells
-/// (one body per cell, so that none starts overlapping another).
+/// (one body per cell). The cells are wider than the bounding spheres of
+/// two of the largest bodies plus both centres' jitter, so that no two
+/// bodies start overlapping, whatever their sizes and orientations (cells
+/// of 1.2 m let two tumbled boxes start 4.55 cm inside each other); the
+/// lowest row's centres, 1 m up, are more than that reach above the ground.
 fn rain(size: usize, rng: &mut Rng) -> World {
+    /// Largest sphere radius and box half extent.
+    const RADIUS: f64 = 0.5;
+    const HALF: f64 = 0.45;
+    /// Largest offset of a centre from its cell's, per axis.
+    const JITTER: f64 = 0.05;
+    let reach = RADIUS.max(HALF * 3f64.sqrt());
+    // Neighbours' centres are at least `pitch - 2 JITTER` apart: 4 cm more
+    // than two bounding spheres.
+    let pitch = 2.0 * (reach + JITTER) + 0.04;
     let mut bodies = vec![ground(0.4)];
     let side = (size as f64).cbrt().ceil().max(1.0) as usize;
     for k in 0..size {
@@ -203,17 +216,17 @@ fn rain(size: usize, rng: &mut Rng) -> World {
             (k / (side * side)) as f64,
             ((k / side) % side) as f64,
         );
-        let p = cell * 1.2 + DVec3::new(0.0, 1.0, 0.0) + rng.vector(0.05);
+        let p = cell * pitch + DVec3::new(0.0, 1.0, 0.0) + rng.vector(JITTER);
         let shape = if rng.unit() < 0.5 {
             Shape::Sphere {
-                radius: rng.range(0.2, 0.5),
+                radius: rng.range(0.2, RADIUS),
             }
         } else {
             Shape::Box {
                 half_extents: [
-                    rng.range(0.15, 0.45),
-                    rng.range(0.15, 0.45),
-                    rng.range(0.15, 0.45),
+                    rng.range(0.15, HALF),
+                    rng.range(0.15, HALF),
+                    rng.range(0.15, HALF),
                 ],
             }
         };
@@ -234,6 +247,33 @@ fn rain(size: usize, rng: &mut Rng) -> World {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::world::step::world_contacts;
+
+    /// Every kind at several sizes and seeds starts with no two shapes
+    /// inside each other, as the world's own collision measures it: the
+    /// contacts of the bodies at rest (every pair closer than the contact
+    /// margin, with its signed gap) have gaps ≥ 0 (to rounding: stacked
+    /// boxes touch).
+    #[test]
+    fn every_kind_starts_without_overlap() {
+        for (kind, name) in WorldKind::ALL {
+            for size in [kind.default_size(), 1, 2, 7, 64] {
+                for seed in 0..100 {
+                    let w = standard_world(kind, size, seed);
+                    let at_rest = vec![(DVec3::ZERO, DVec3::ZERO); w.bodies.len()];
+                    for p in world_contacts(&w, &at_rest, 0.01).0 {
+                        assert!(
+                            p.gap >= -1e-12,
+                            "{name}:{size} seed {seed}: bodies {} and {} overlap by {} m",
+                            p.a,
+                            p.b,
+                            -p.gap
+                        );
+                    }
+                }
+            }
+        }
+    }
 
     #[test]
     fn every_kind_is_valid_and_seeded() {

@@ -1,20 +1,23 @@
 //! `lcpbatch simulate`: many worlds stepped in time through
 //! `Solver::step_worlds`, one contact batch per step. Writes into `--out`:
 //! `steps.jsonl` (one line per step, aggregated over the worlds), `final.json`
-//! (the worlds' final states, readable by `--world`), and SVG plots of
-//! energy, penetration, solver error and time per step. Every file is written
-//! atomically after the last step, so a failure leaves none half-written.
+//! (the worlds' final states, readable by `--world`), SVG plots of energy,
+//! penetration, solver error and time per step, and pictures of a few worlds
+//! (`worlds.svg`, side views at a few times; `worlds-animated.svg`, in
+//! motion). Every file is written atomically after the last step, so a
+//! failure leaves none half-written.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use super::pictures::Film;
+use super::plots::{time_panels, Curve, Panel, COLORS};
+use super::{BackendArg, FrictionSolverArg, GpuArgs};
 use lcpbatch::io::write_atomically;
 use lcpbatch::world::format::{parse_worlds, worlds_to_json};
 use lcpbatch::world::generate::{standard_world, WorldKind};
 use lcpbatch::{Error, Settings, Solver, StepReport, World};
-use plotters::prelude::*;
-
-use super::{BackendArg, FrictionSolverArg, GpuArgs};
+use plotters::style::BLACK;
 
 /// `simulate`'s default friction tolerance (see `--friction-tolerance`).
 pub const WORLD_FRICTION_TOLERANCE: f64 = 1e-12;
@@ -185,15 +188,25 @@ pub fn simulate_command(args: SimulateArgs) -> Result<(), Error> {
         ..Settings::default()
     })?;
     println!("device: {} ({})", solver.device().name, solver.choice());
-    step_and_write(&mut solver, &mut worlds, args.steps, args.dt, &args.out)
+    let groups = [(args.world.clone(), worlds.len())];
+    step_and_write(
+        &mut solver,
+        &mut worlds,
+        &groups,
+        args.steps,
+        args.dt,
+        &args.out,
+    )
 }
 
 /// Steps `worlds` `steps` times through the solver's door with a progress
-/// bar, then writes steps.jsonl, final.json and the plots to `out` and
-/// prints the summary (`simulate` and `demo`).
+/// bar, then writes steps.jsonl, final.json, the plots and the pictures of
+/// the worlds to `out` and prints the summary (`simulate` and `demo`).
+/// `groups` names the worlds in order: (kind or file, how many).
 pub fn step_and_write(
     solver: &mut Solver,
     worlds: &mut [World],
+    groups: &[(String, usize)],
     steps: usize,
     dt: f64,
     out: &Path,
@@ -203,11 +216,15 @@ pub fn step_and_write(
         indicatif::ProgressStyle::with_template("{elapsed_precise} [{bar:30}] {pos}/{len} {msg}")
             .expect("valid template"),
     );
+    let mut film = Film::new(worlds, shown_worlds(worlds, groups), steps, dt);
     let mut lines = Vec::with_capacity(steps);
+    let mut run = Run::new(worlds.len());
     let start = Instant::now();
     for step in 0..steps {
         let r = solver.step_worlds(worlds, dt)?;
         let line = StepLine::of(step, (step + 1) as f64 * dt, &r);
+        run.add(step, line.time, &r);
+        film.record(worlds, step + 1, steps, line.time);
         bar.set_message(format!(
             "{} contacts, {} islands",
             line.contacts, line.islands
@@ -217,14 +234,123 @@ pub fn step_and_write(
     }
     let wall = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
-    write_outputs(out, &lines, worlds)?;
-    print_summary(&lines, worlds.len(), wall);
+    let title = title(solver, worlds, groups, steps, dt);
+    write_outputs(out, &lines, worlds, &run, solver.settings(), &title)?;
+    film.write(out, &title)?;
+    print_summary(&lines, &run, worlds.len(), wall);
     println!("wrote {}", out.display());
     Ok(())
 }
 
-/// Totals and the slowest phase, on stdout.
-fn print_summary(lines: &[StepLine], worlds: usize, wall: f64) {
+/// What a plot's title says was simulated: the worlds (kind, count, μ),
+/// the steps, and the device.
+fn title(
+    solver: &Solver,
+    worlds: &[World],
+    groups: &[(String, usize)],
+    steps: usize,
+    dt: f64,
+) -> Vec<String> {
+    let mut first = 0;
+    let kinds: Vec<String> = groups
+        .iter()
+        .filter(|g| g.1 > 0)
+        .map(|(name, n)| {
+            let mu = worlds[first..first + n]
+                .iter()
+                .flat_map(|w| w.bodies.iter().map(|b| b.friction))
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), m| {
+                    (a.min(m), b.max(m))
+                });
+            first += n;
+            let mu = if mu.0 == mu.1 {
+                format!("μ = {}", mu.0)
+            } else {
+                format!("μ {}–{}", mu.0, mu.1)
+            };
+            format!("{n} × {name} ({mu})")
+        })
+        .collect();
+    vec![
+        format!("{}: {steps} steps of {} ms", kinds.join(" + "), dt * 1e3),
+        format!("solved on {}", solver.device().name),
+    ]
+}
+
+/// The worlds the pictures show (with their labels): the first of each
+/// group, or of a single group the first, middle and last where they
+/// differ at the start; three at most.
+fn shown_worlds(worlds: &[World], groups: &[(String, usize)]) -> Vec<(usize, String)> {
+    let mut shown: Vec<(usize, String)> = Vec::new();
+    let mut first = 0;
+    for (name, n) in groups.iter().filter(|g| g.1 > 0) {
+        let picks = if groups.len() == 1 {
+            vec![first, first + n / 2, first + n - 1]
+        } else {
+            vec![first]
+        };
+        for k in picks {
+            let same = shown.iter().any(|s| worlds[s.0] == worlds[k]);
+            if !same && shown.len() < 3 {
+                shown.push((k, format!("world {k}: {name}")));
+            }
+        }
+        first += n;
+    }
+    shown
+}
+
+/// Figures over the whole run that steps.jsonl does not hold per world.
+struct Run {
+    /// Deepest penetration, its world and step.
+    deepest: (f64, usize, usize),
+    /// Frictional islands over all steps.
+    frictional: usize,
+    /// Frictional islands left unsolved (repaired without friction), per
+    /// world.
+    friction_dropped: Vec<usize>,
+    /// (time, largest error) of the frictionless islands, of the
+    /// frictional ones (Coulomb error), at the steps that had them.
+    errors: [Vec<(f64, f64)>; 2],
+}
+
+impl Run {
+    fn new(worlds: usize) -> Self {
+        Run {
+            deepest: (0.0, 0, 0),
+            frictional: 0,
+            friction_dropped: vec![0; worlds],
+            errors: [Vec::new(), Vec::new()],
+        }
+    }
+
+    fn add(&mut self, step: usize, time: f64, r: &StepReport) {
+        let errors = [r.solve.max_error, r.solve.max_coulomb_error];
+        for (line, e) in self.errors.iter_mut().zip(errors) {
+            line.extend(e.map(|(e, _)| (time, e)));
+        }
+        for (k, w) in r.worlds.iter().enumerate() {
+            if w.max_penetration > self.deepest.0 {
+                self.deepest = (w.max_penetration, k, step);
+            }
+        }
+        self.frictional += r.solve.friction.len();
+        for isl in r
+            .solve
+            .friction
+            .iter()
+            .filter(|i| !i.status().is_solution())
+        {
+            if let Some(k) = isl.scene {
+                self.friction_dropped[k] += 1;
+            }
+        }
+    }
+}
+
+/// Totals, phases as a tree and the last step's figures, on stdout; a
+/// warning where friction was dropped.
+fn print_summary(lines: &[StepLine], run: &Run, worlds: usize, wall: f64) {
     let sum = |f: fn(&StepLine) -> f64| lines.iter().map(f).sum::<f64>();
     let phases = [
         ("collision", sum(|l| l.collision_s)),
@@ -242,32 +368,68 @@ fn print_summary(lines: &[StepLine], worlds: usize, wall: f64) {
         worlds,
         lines.len()
     );
+    println!("  phases (seconds over the run, share of the wall time):");
     for (name, t) in phases {
-        println!("  {name:>15}: {t:.3} s ({:.1}%)", 100.0 * t / wall);
-    }
-    for (name, t) in door {
-        println!("    {name:>15}: {t:.3} s ({:.1}%)", 100.0 * t / wall);
+        println!("    {name}: {t:.3} s ({:.1}%)", 100.0 * t / wall);
+        if name == "assembly+solve" {
+            for (name, t) in door {
+                println!("      {name}: {t:.3} s ({:.1}%)", 100.0 * t / wall);
+            }
+        }
     }
     let slowest = phases
         .iter()
         .max_by(|a, b| a.1.total_cmp(&b.1))
         .expect("3 phases");
+    println!("  slowest phase: {}", slowest.0);
     let last = lines.last().expect("at least one step");
     println!(
-        "  slowest phase: {}; last step: energy {:.6e} J, max penetration {:.3e} m, max error {:.3e}, unsolved islands {} (repaired: {} exactly without friction, {} by PGS, {} without impulse)",
-        slowest.0,
+        "  last step (t = {:.3} s): energy {:.6e} J (kinetic {:.3e} J), max penetration {:.3e} m, max error {:.3e}",
+        last.time,
         last.kinetic + last.potential,
+        last.kinetic,
         last.max_penetration,
         last.max_error,
-        lines.iter().map(|l| l.unsolved).sum::<usize>(),
-        lines.iter().map(|l| l.repaired_exact).sum::<usize>(),
-        lines.iter().map(|l| l.repaired_approximate).sum::<usize>(),
-        lines.iter().map(|l| l.repaired_dropped).sum::<usize>(),
     );
+    let total = |f: fn(&StepLine) -> usize| lines.iter().map(f).sum::<usize>();
+    let deepest = match run.deepest {
+        (d, world, step) if d > 0.0 => format!("{d:.3e} m (world {world}, step {step})"),
+        _ => "0 m".to_string(),
+    };
+    println!(
+        "  over all {} steps: deepest penetration {deepest}, max error {:.3e}, unsolved islands {} (repaired: {} exactly without friction, {} by PGS, {} without impulse)",
+        lines.len(),
+        lines.iter().map(|l| l.max_error).fold(0.0, f64::max),
+        total(|l| l.unsolved),
+        total(|l| l.repaired_exact),
+        total(|l| l.repaired_approximate),
+        total(|l| l.repaired_dropped),
+    );
+    let dropped: usize = run.friction_dropped.iter().sum();
+    if dropped > 0 {
+        let (worst, most) = run
+            .friction_dropped
+            .iter()
+            .enumerate()
+            .max_by_key(|&(k, n)| (*n, std::cmp::Reverse(k)))
+            .expect("a world");
+        eprintln!(
+            "warning: friction dropped on {dropped} of {} frictional islands ({:.2}%): the friction solver left them unsolved, and each was solved without friction for that step; most in world {worst} ({most})",
+            run.frictional,
+            100.0 * dropped as f64 / run.frictional.max(1) as f64
+        );
+    }
 }
 
 /// steps.jsonl, final.json and the plots, each written atomically.
-fn write_outputs(out: &Path, lines: &[StepLine], worlds: &[World]) -> Result<(), Error> {
+fn write_outputs(
+    out: &Path,
+    lines: &[StepLine],
+    worlds: &[World],
+    run: &Run,
+    settings: &Settings,
+    title: &[String],
+) -> Result<(), Error> {
     std::fs::create_dir_all(out).map_err(|source| Error::Io {
         path: out.to_path_buf(),
         source,
@@ -279,42 +441,95 @@ fn write_outputs(out: &Path, lines: &[StepLine], worlds: &[World]) -> Result<(),
     }
     write_atomically(&out.join("steps.jsonl"), &jsonl)?;
     write_atomically(&out.join("final.json"), &worlds_to_json(worlds))?;
-    let t = |f: fn(&StepLine) -> f64| -> Vec<(f64, f64)> {
-        lines.iter().map(|l| (l.time, f(l))).collect()
+    let t = |name: &str, f: fn(&StepLine) -> f64| -> Curve {
+        (
+            name.to_string(),
+            lines.iter().map(|l| (l.time, f(l))).collect(),
+        )
     };
-    let plots: [(&str, &str, Vec<Series>); 4] = [
+    let linear = |y_desc: &str, series: Vec<Curve>| Panel {
+        y_desc: y_desc.to_string(),
+        series,
+        floor: None,
+        marks: Vec::new(),
+    };
+    // The frictionless islands' LCP error and the frictional ones' Coulomb
+    // error, each with its tolerance, where the run had such islands.
+    let mut errors = Vec::new();
+    let mut tolerances = Vec::new();
+    let kinds = [
+        (
+            "frictionless islands (LCP)",
+            "LCP tolerance",
+            settings.tolerance,
+        ),
+        (
+            "frictional islands (Coulomb)",
+            "friction tolerance",
+            settings.friction_tolerance,
+        ),
+    ];
+    for ((name, tol_name, tol), pts) in kinds.into_iter().zip(&run.errors) {
+        if !pts.is_empty() {
+            let color = COLORS[errors.len()];
+            errors.push((name.to_string(), pts.clone()));
+            tolerances.push((format!("{tol_name} {tol:.0e}"), tol, color));
+        }
+    }
+    let plots: [(&str, Vec<Panel>); 4] = [
         (
             "energy.svg",
-            "energy (J)",
             vec![
-                ("kinetic", t(|l| l.kinetic)),
-                ("potential", t(|l| l.potential)),
-                ("total", t(|l| l.kinetic + l.potential)),
+                linear(
+                    "energy (J)",
+                    vec![
+                        t("total", |l| l.kinetic + l.potential),
+                        t("potential", |l| l.potential),
+                    ],
+                ),
+                linear("kinetic energy (J)", vec![t("kinetic", |l| l.kinetic)]),
             ],
         ),
         (
             "penetration.svg",
-            "max penetration (m)",
-            vec![("max penetration", t(|l| l.max_penetration))],
+            vec![Panel {
+                floor: Some((
+                    1e-12,
+                    "rounding floor 1e-12 m (less is drawn on it)".to_string(),
+                )),
+                marks: vec![("1 mm".to_string(), 1e-3, BLACK)],
+                ..linear(
+                    "deepest penetration (m)",
+                    vec![t("deepest of any world", |l| l.max_penetration)],
+                )
+            }],
         ),
         (
             "error.svg",
-            "max solver error",
-            vec![("max error", t(|l| l.max_error))],
+            vec![Panel {
+                floor: Some((
+                    f64::EPSILON,
+                    "rounding floor: f64 ε (less is drawn on it)".to_string(),
+                )),
+                marks: tolerances,
+                ..linear("largest error of an island", errors)
+            }],
         ),
         (
             "time.svg",
-            "seconds per step",
-            vec![
-                ("collision", t(|l| l.collision_s)),
-                ("assembly+solve", t(|l| l.solve_s)),
-                ("integrate", t(|l| l.integrate_s)),
-            ],
+            vec![linear(
+                "milliseconds per step",
+                vec![
+                    t("collision", |l| 1e3 * l.collision_s),
+                    t("assembly+solve", |l| 1e3 * l.solve_s),
+                    t("integrate", |l| 1e3 * l.integrate_s),
+                ],
+            )],
         ),
     ];
-    for (file, y_desc, series) in plots {
+    for (file, panels) in plots {
         let tmp = out.join(format!(".{file}.tmp{}", std::process::id()));
-        let done = line_plot(&tmp, y_desc, &series).and_then(|()| {
+        let done = time_panels(&tmp, title, &panels).and_then(|()| {
             std::fs::rename(&tmp, out.join(file)).map_err(|source| Error::Io {
                 path: out.join(file),
                 source,
@@ -326,59 +541,4 @@ fn write_outputs(out: &Path, lines: &[StepLine], worlds: &[World]) -> Result<(),
         done?;
     }
     Ok(())
-}
-
-/// One labelled line: (simulated time, value) points.
-type Series<'a> = (&'a str, Vec<(f64, f64)>);
-
-/// Lines of y against simulated time (linear axes).
-fn line_plot(path: &Path, y_desc: &str, series: &[Series]) -> Result<(), Error> {
-    let err = |e: String| Error::Io {
-        path: path.to_path_buf(),
-        source: std::io::Error::other(e),
-    };
-    let pts = || series.iter().flat_map(|s| s.1.iter());
-    let (x0, x1) = pts().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
-        (a.min(p.0), b.max(p.0))
-    });
-    let (mut y0, mut y1) = pts()
-        .filter(|p| p.1.is_finite())
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
-            (a.min(p.1), b.max(p.1))
-        });
-    if !(y0.is_finite() && y1.is_finite()) {
-        (y0, y1) = (0.0, 1.0);
-    }
-    let pad = ((y1 - y0) * 0.05).max(1e-12 * y1.abs().max(1.0));
-    let root = SVGBackend::new(path, (900, 500)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| err(e.to_string()))?;
-    let mut chart = ChartBuilder::on(&root)
-        .margin(15)
-        .x_label_area_size(40)
-        .y_label_area_size(90)
-        .build_cartesian_2d(x0..x1.max(x0 + 1e-9), (y0 - pad)..(y1 + pad))
-        .map_err(|e| err(e.to_string()))?;
-    chart
-        .configure_mesh()
-        .x_desc("simulated time (s)")
-        .y_desc(y_desc)
-        .y_label_formatter(&|v| format!("{v:.3e}"))
-        .draw()
-        .map_err(|e| err(e.to_string()))?;
-    let colors = [RED, BLUE, BLACK];
-    for (k, (label, p)) in series.iter().enumerate() {
-        let c = colors[k % colors.len()];
-        chart
-            .draw_series(LineSeries::new(p.iter().copied(), c.stroke_width(2)))
-            .map_err(|e| err(e.to_string()))?
-            .label(*label)
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], c));
-    }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .draw()
-        .map_err(|e| err(e.to_string()))?;
-    root.present().map_err(|e| err(e.to_string()))
 }
