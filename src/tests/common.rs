@@ -135,9 +135,9 @@ pub fn temp_dir(tag: &str) -> PathBuf {
 /// A GPU context at `precision` for the GPU tests (the environment's
 /// adapter choice, `LCPBATCH_GPU_*`). None, after a [`skip`], when f64 is
 /// asked of an adapter without SHADER_F64 ([`Lack::F64`]), or when there is
-/// no adapter at all ([`Lack::Adapter`]; how to install one is in the line).
+/// no adapter at all ([`Lack::Adapter`]; the error says how to install one).
 pub fn gpu_context(precision: crate::gpu::Precision) -> Option<crate::gpu::GpuContext> {
-    use crate::gpu::{GpuContext, GpuOptions, Precision, INSTALL_HINT};
+    use crate::gpu::{GpuContext, GpuOptions, Precision};
     let mut o = GpuOptions::from_env().expect("GPU environment variables");
     o.precision = precision;
     match GpuContext::new(&o) {
@@ -147,10 +147,7 @@ pub fn gpu_context(precision: crate::gpu::Precision) -> Option<crate::gpu::GpuCo
             None
         }
         Err(e) => {
-            skip(
-                Lack::Adapter,
-                &format!("no GPU adapter ({e}); {INSTALL_HINT}"),
-            );
+            skip(Lack::Adapter, &format!("no GPU adapter ({e})"));
             None
         }
     }

@@ -2,7 +2,6 @@
 //! fixed-seed physical islands (n = 1…12) through the GPU scene pipeline in
 //! both precisions, and every Siconos problem with n ≤ 16 as an LCP batch.
 
-use std::path::PathBuf;
 use std::time::Instant;
 
 use crate::cpu::enumeration::{enumerate, EnumerationSettings};
@@ -56,12 +55,6 @@ pub fn physical_scenes(min_islands: usize) -> (Vec<Scene>, usize) {
         scenes.push(world);
     }
     (scenes, islands)
-}
-
-fn conformance_root() -> PathBuf {
-    std::env::var_os("LCPBATCH_CONFORMANCE")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/conformance"))
 }
 
 /// The scene pipeline on the GPU against the CPU path, island by island.
@@ -190,14 +183,9 @@ fn physical_islands_f32_match_the_cpu_after_polish() {
 /// the CPU (Lemke), each compared with the CPU path.
 #[test]
 fn siconos_batch_matches_the_cpu() {
-    let dir = conformance_root().join("siconos");
-    if !dir.is_dir() {
-        println!(
-            "conformance data absent at {} (set LCPBATCH_CONFORMANCE): skipped",
-            dir.display()
-        );
+    let Some(dir) = super::common::siconos_dir() else {
         return;
-    }
+    };
     let Some(ctx) = context(Precision::Auto) else {
         return;
     };

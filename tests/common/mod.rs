@@ -51,8 +51,8 @@ pub fn gpu_available(precision: Precision) -> bool {
             false
         }
         Some(why) => {
-            let hint = lcpbatch::INSTALL_HINT;
-            skip(Lack::Adapter, &format!("no GPU adapter ({why}); {hint}"));
+            // The error says how to install an adapter.
+            skip(Lack::Adapter, &format!("no GPU adapter ({why})"));
             false
         }
     }
