@@ -55,14 +55,16 @@ pub enum Error {
 }
 
 impl Error {
-    /// Shorthand for [`Error::Invalid`].
+    /// Shorthand for [`Error::Invalid`]. `item` is anything that displays
+    /// as the item's name (a `&str`, or `format_args!("scene {i}")`, which
+    /// is rendered only here, when a check has failed).
     pub fn invalid(
-        item: impl Into<String>,
+        item: impl std::fmt::Display,
         field: impl Into<String>,
         reason: impl Into<String>,
     ) -> Self {
         Error::Invalid {
-            item: item.into(),
+            item: item.to_string(),
             field: field.into(),
             reason: reason.into(),
         }

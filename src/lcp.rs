@@ -67,8 +67,9 @@ impl Lcp {
     }
 
     /// Checks that M is n×n and every entry of M and q is finite. `item` names
-    /// the problem in the error message.
-    pub fn validate(&self, item: &str) -> Result<(), crate::Error> {
+    /// the problem in the error message (rendered only when a check fails:
+    /// pass `format_args!("problem {i}")`, not `&format!(..)`).
+    pub fn validate(&self, item: impl std::fmt::Display) -> Result<(), crate::Error> {
         let n = self.q.len();
         if n == 0 {
             return Err(crate::Error::invalid(item, "q", "empty problem (n = 0)"));
@@ -410,5 +411,46 @@ mod tests {
         assert!(e.to_string().contains("M[0][1]"), "{e}");
         let e = Lcp::from_rows(&[vec![1.0], vec![1.0, 2.0]], vec![1.0, 2.0]).unwrap_err();
         assert!(e.to_string().contains("M[0]"), "{e}");
+    }
+
+    /// The error texts, byte for byte, with the name as a `&str` or as
+    /// `format_args!` (rendered only when a check fails).
+    #[test]
+    fn error_texts_are_exact() {
+        let i = 4;
+        let cases = [
+            (
+                Lcp {
+                    m: vec![1.0, 0.0, 0.0, 1.0],
+                    q: vec![1.0, f64::NAN],
+                },
+                "problem 4: field `q[1]`: not a finite number",
+            ),
+            (
+                Lcp {
+                    m: vec![1.0; 3],
+                    q: vec![1.0, 2.0],
+                },
+                "problem 4: field `M`: has 3 entries, expected n² = 4",
+            ),
+        ];
+        for (lcp, want) in cases {
+            assert_eq!(lcp.validate("problem 4").unwrap_err().to_string(), want);
+            let e = lcp.validate(format_args!("problem {i}")).unwrap_err();
+            assert_eq!(e.to_string(), want);
+        }
+        let mut p = crate::friction::FrictionProblem {
+            w: vec![0.0; 9],
+            q: vec![0.0; 3],
+            mu: vec![-0.5],
+        };
+        let want = "problem 4: field `mu[0]`: -0.5 is not a finite number ≥ 0";
+        assert_eq!(p.validate("problem 4").unwrap_err().to_string(), want);
+        let e = p.validate(format_args!("problem {i}")).unwrap_err();
+        assert_eq!(e.to_string(), want);
+        p.mu[0] = 0.5;
+        p.w[5] = f64::INFINITY;
+        let e = p.validate(format_args!("problem {i}")).unwrap_err();
+        assert_eq!(e.to_string(), "problem 4: field `W[1][2]`: not a finite number");
     }
 }

@@ -44,7 +44,7 @@ pub struct SceneSolution {
 }
 
 /// Build phase: validated scene → islands, contact rows and island LCPs.
-pub fn build(scene: &Scene, item: &str) -> Result<(Vec<Island>, Vec<ContactRow>, Vec<Lcp>), Error> {
+pub fn build(scene: &Scene, item: impl std::fmt::Display) -> Result<(Vec<Island>, Vec<ContactRow>, Vec<Lcp>), Error> {
     scene.validate(item)?;
     let islands = find_islands(scene);
     let rows = assemble_contacts(scene);

@@ -6,6 +6,8 @@
 //! given in the world frame. A body with inv_mass 0 and inv_inertia 0 is
 //! static; a contact's `b` may be absent, meaning the static world.
 
+use std::fmt::Display;
+
 use glam::{DMat3, DVec3};
 use serde::{Deserialize, Serialize};
 
@@ -150,10 +152,12 @@ impl Body {
         self.inv_mass == 0.0 && self.inv_inertia.iter().flatten().all(|&v| v == 0.0)
     }
 
-    /// Checks the body's fields; `item` names it in errors.
+    /// Checks the body's fields; `item` names it in errors (rendered only
+    /// when a check fails: pass `format_args!(..)` rather than `&format!(..)`).
     // Long (about 90 lines) on purpose: one check per field, in the order of
     // the format, each naming the field.
-    pub fn validate(&self, item: &str) -> Result<(), Error> {
+    pub fn validate(&self, item: impl Display) -> Result<(), Error> {
+        let item = &item;
         if !self.inv_mass.is_finite() {
             return Err(Error::invalid(item, "inv_mass", "not a finite number"));
         }
@@ -296,8 +300,10 @@ impl Contact {
         DVec3::from_array(self.normal)
     }
 
-    /// Checks the contact against the scene's bodies; `item` names it in errors.
-    pub fn validate(&self, item: &str, bodies: &[Body]) -> Result<(), Error> {
+    /// Checks the contact against the scene's bodies; `item` names it in
+    /// errors (rendered only when a check fails).
+    pub fn validate(&self, item: impl Display, bodies: &[Body]) -> Result<(), Error> {
+        let item = &item;
         let nb = bodies.len();
         if self.a >= nb {
             return Err(Error::invalid(
@@ -369,7 +375,7 @@ impl Contact {
 
 impl Contact {
     /// Checks `friction` and `tangent`; `item` names the contact.
-    fn validate_friction(&self, item: &str) -> Result<(), Error> {
+    fn validate_friction(&self, item: &impl Display) -> Result<(), Error> {
         if !self.friction.is_finite() || self.friction < 0.0 {
             return Err(Error::invalid(
                 item,
@@ -414,13 +420,15 @@ impl Scene {
     }
 
     /// Checks every body and contact; `item` names the scene in errors
-    /// (e.g. "scene 3"). The first failure is returned.
-    pub fn validate(&self, item: &str) -> Result<(), Error> {
+    /// (e.g. "scene 3", or `format_args!("scene {i}")`: names are rendered
+    /// only when a check fails, so a passing check allocates nothing).
+    /// The first failure is returned.
+    pub fn validate(&self, item: impl Display) -> Result<(), Error> {
         for (i, b) in self.bodies.iter().enumerate() {
-            b.validate(&format!("{item}, body {i}"))?;
+            b.validate(format_args!("{item}, body {i}"))?;
         }
         for (i, c) in self.contacts.iter().enumerate() {
-            c.validate(&format!("{item}, contact {i}"), &self.bodies)?;
+            c.validate(format_args!("{item}, contact {i}"), &self.bodies)?;
         }
         Ok(())
     }
@@ -519,5 +527,61 @@ mod tests {
         let (t1, t2) = c.tangents();
         assert_eq!((t1, t2), (DVec3::Z, DVec3::X));
         assert!(s(c).validate("scene 0").is_ok());
+    }
+
+    /// The error texts, byte for byte, whether the scene is named by a
+    /// `&str` or by `format_args!` (rendered only when a check fails).
+    #[test]
+    fn error_texts_are_exact() {
+        let scene = |b: Body, c: Contact| Scene {
+            bodies: vec![ball(), b],
+            contacts: vec![ground_contact(), c],
+        };
+        let mut bad_body = ball();
+        bad_body.inv_mass = -1.0;
+        let mut zero_normal = ground_contact();
+        zero_normal.normal = [0.0; 3];
+        let mut no_body = ground_contact();
+        no_body.b = Some(7);
+        let mut rough = ground_contact();
+        rough.friction = -0.5;
+        let mut bad_tangent = ground_contact();
+        bad_tangent.tangent = Some([1.0, f64::NAN, 0.0]);
+        let cases = [
+            (
+                scene(bad_body, ground_contact()),
+                "scene 3, body 1: field `inv_mass`: -1 is negative",
+            ),
+            (
+                scene(ball(), zero_normal),
+                "scene 3, contact 1: field `normal`: zero vector",
+            ),
+            (
+                scene(ball(), no_body),
+                "scene 3, contact 1: field `b`: body index 7 out of range (scene has 2 bodies)",
+            ),
+            (
+                scene(ball(), rough),
+                "scene 3, contact 1: field `friction`: -0.5 is not a finite number ≥ 0",
+            ),
+            (
+                scene(ball(), bad_tangent),
+                "scene 3, contact 1: field `tangent[1]`: not a finite number",
+            ),
+        ];
+        let i = 3;
+        for (s, want) in cases {
+            assert_eq!(s.validate("scene 3").unwrap_err().to_string(), want);
+            let e = s.validate(format_args!("scene {i}")).unwrap_err();
+            assert_eq!(e.to_string(), want);
+        }
+        let mut b = ball();
+        b.inv_inertia[1][0] = 1.0;
+        assert_eq!(
+            b.validate(format_args!("scene {i}, body {}", 0))
+                .unwrap_err()
+                .to_string(),
+            "scene 3, body 0: field `inv_inertia`: not symmetric: [1][0] = 1 but [0][1] = 0"
+        );
     }
 }

@@ -56,8 +56,9 @@ impl FrictionProblem {
     }
 
     /// Checks that q has 3k entries for the k coefficients, W is 3k × 3k,
-    /// every entry is finite and every μ ≥ 0. `item` names the problem.
-    pub fn validate(&self, item: &str) -> Result<(), Error> {
+    /// every entry is finite and every μ ≥ 0. `item` names the problem
+    /// (rendered only when a check fails: pass `format_args!("problem {i}")`).
+    pub fn validate(&self, item: impl std::fmt::Display) -> Result<(), Error> {
         let k = self.mu.len();
         if k == 0 {
             return Err(Error::invalid(item, "mu", "no contacts (k = 0)"));

@@ -274,7 +274,7 @@ pub fn solve_projected_batch(
     let start = |i: usize| warm.and_then(|w| w.get(i)).map(Vec::as_slice);
     for (i, p) in problems.iter().enumerate() {
         if p.validate("problem").is_ok() {
-            check_warm(&format!("problem {i}"), p, start(i))?;
+            check_warm(format_args!("problem {i}"), p, start(i))?;
         }
     }
     let threads = if threads == 0 {
@@ -294,7 +294,7 @@ pub fn solve_projected_batch(
 
 /// A warm start must have 3k finite entries.
 pub(crate) fn check_warm(
-    item: &str,
+    item: impl std::fmt::Display,
     problem: &FrictionProblem,
     r0: Option<&[f64]>,
 ) -> Result<(), Error> {

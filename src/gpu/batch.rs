@@ -301,7 +301,7 @@ fn settle_on_cpu(
         gpu: None,
         gpu_z: Vec::new(),
     };
-    if lcp.validate(&format!("problem {i}")).is_err() {
+    if lcp.validate(format_args!("problem {i}")).is_err() {
         let s = LcpSolution::invalid(lcp.q.len());
         return Ok(outcome(s, SolvedOn::Invalid, None, Solver::Enum));
     }

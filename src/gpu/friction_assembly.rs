@@ -113,7 +113,7 @@ pub fn assemble_friction_on_gpu(
     gpu: &GpuSettings,
 ) -> Result<Vec<Vec<FrictionIsland>>, Error> {
     for (i, s) in scenes.iter().enumerate() {
-        s.validate(&format!("scene {i}"))?;
+        s.validate(format_args!("scene {i}"))?;
     }
     let limits = GpuSolveSettings {
         max_binding_bytes: gpu.max_binding_bytes,

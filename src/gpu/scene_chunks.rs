@@ -163,7 +163,7 @@ pub(super) fn prepare(scenes: &[Scene]) -> Result<Vec<Prepared>, Error> {
         .iter()
         .enumerate()
         .map(|(i, s)| {
-            let (islands, rows, lcps) = build(s, &format!("scene {i}"))?;
+            let (islands, rows, lcps) = build(s, format_args!("scene {i}"))?;
             Ok(Prepared {
                 islands,
                 rows,

@@ -53,7 +53,7 @@ pub(super) fn parse_friction_json(
         .into_iter()
         .enumerate()
         .map(|(i, p)| {
-            let item = format!("problem {i}");
+            let item = format_args!("problem {i}");
             let n = p.q.len();
             if let Some(r) = p.w.iter().position(|row| row.len() != n) {
                 return Err(Error::invalid(

@@ -87,7 +87,7 @@ fn checked_items(path: &str, input: JsonInput) -> Result<Input, Error> {
                 return Err(Error::invalid(path, "scenes", "empty list"));
             }
             for (i, s) in scenes.iter().enumerate() {
-                s.validate(&format!("scene {i}"))?;
+                s.validate(format_args!("scene {i}"))?;
             }
             Ok(Input::Scenes(scenes))
         }

@@ -399,7 +399,7 @@ impl Solver {
     pub fn solve_scenes(&mut self, scenes: &[Scene]) -> Result<Report, Error> {
         let start = Instant::now();
         for (i, s) in scenes.iter().enumerate() {
-            s.validate(&format!("scene {i}"))?;
+            s.validate(format_args!("scene {i}"))?;
         }
         let mut report = self.solve_built_scenes(scenes)?;
         report.timings.total = start.elapsed().as_secs_f64();
