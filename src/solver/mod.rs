@@ -43,7 +43,7 @@ pub use world_repair::Repairs;
 pub use cost::{cache_dir, CostModel, CALIBRATION_SIZES};
 
 use crate::gpu::{self, GpuContext, Precision};
-use crate::islands::find_islands;
+use crate::build::Built;
 use crate::lcp::Lcp;
 use crate::prediction::WarmStart;
 use crate::report::{Device, DeviceKind, IslandReport, Report};
@@ -423,14 +423,21 @@ impl Solver {
         Ok(report)
     }
 
-    /// Checked scenes without friction: the LCP path.
+    /// Checked scenes without friction: the LCP path. Each scene is built
+    /// once ([`Built`]); the warm bases, the cost model's sizes and the
+    /// solve (GPU, or CPU) take what was built.
     fn frictionless_scenes(&mut self, scenes: &[Scene]) -> Result<Report, Error> {
+        let t = Instant::now();
+        let refs: Vec<&Scene> = scenes.iter().collect();
+        let built = Built::all(&refs, self.threads);
+        let build = t.elapsed().as_secs_f64();
         // Per scene, per island: the warm basis of its contacts' ids.
         let warm: Vec<Vec<Option<u32>>> = if self.settings.warm_start {
             scenes
                 .iter()
-                .map(|s| {
-                    find_islands(s)
+                .zip(&built)
+                .map(|(s, b)| {
+                    b.islands
                         .iter()
                         .map(|isl| self.warm_basis(&contact_ids(s, &isl.contacts)))
                         .collect()
@@ -440,20 +447,15 @@ impl Solver {
             Vec::new()
         };
         let mut report = None;
-        let (use_gpu, why) = if self.cost.is_some() {
-            let sizes: Vec<usize> = scenes
-                .iter()
-                .flat_map(|s| find_islands(s).into_iter().map(|i| i.contacts.len()))
-                .collect();
-            self.gpu_for(sizes.into_iter())
-        } else {
-            self.gpu_for(std::iter::empty())
-        };
+        let sizes = built
+            .iter()
+            .flat_map(|b| b.islands.iter().map(|i| i.contacts.len()));
+        let (use_gpu, why) = self.gpu_for(sizes);
         if let Some(ctx) = self.gpu.clone().filter(|_| use_gpu) {
             let on_gpu = if self.settings.all_solutions {
-                self.all_solutions_scenes_on_gpu(&ctx, scenes)
+                self.all_solutions_scenes_on_gpu(&ctx, scenes, &built)
             } else {
-                self.scenes_on_gpu(&ctx, scenes, &warm)
+                self.scenes_on_gpu(&ctx, scenes, &built, &warm)
             };
             match on_gpu {
                 Ok(r) => report = Some(r),
@@ -463,8 +465,9 @@ impl Solver {
         }
         let mut report = match report {
             Some(r) => r,
-            None => self.scenes_on_cpu(scenes, &warm)?,
+            None => self.scenes_on_cpu(scenes, &built, &warm)?,
         };
+        report.timings.build = build;
         if self.cost.is_some() {
             report.choice = why;
         }
