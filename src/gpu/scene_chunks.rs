@@ -57,7 +57,7 @@ pub(super) fn scene_bytes(scene: &Scene, p: &Built, sb: u64) -> [u64; 5] {
 /// enumeration; `tree(s, k)`: it runs the tree kernel first (the table is
 /// sorted by n, then by this).
 pub(super) fn pack_chunk(
-    scenes: &[Scene],
+    scenes: &[&Scene],
     prepared: &[Built],
     members: &[usize],
     settled: &dyn Fn(usize, usize) -> bool,
@@ -66,7 +66,7 @@ pub(super) fn pack_chunk(
     let mut c = Chunk::default();
     let mut entries: Vec<(usize, usize, usize)> = Vec::new(); // (n, position in chunk, island)
     for &s in members {
-        let scene = &scenes[s];
+        let scene = scenes[s];
         let fb = (c.bodies.len() / BODY) as u32;
         let fc = c.ids.len() as u32;
         c.scenes.push(s);
@@ -117,7 +117,7 @@ pub(super) fn pack_chunk(
 /// Splits the scenes into chunks under the binding limit; scenes too large
 /// for one chunk on their own are returned apart.
 pub(super) fn plan(
-    scenes: &[Scene],
+    scenes: &[&Scene],
     prepared: &[Built],
     max_bytes: u64,
     sb: u64,

@@ -250,9 +250,10 @@ pub fn assemble_on_gpu(
     settings: &GpuSolveSettings,
 ) -> Result<GpuAssembly, Error> {
     let prepared = check_and_build(scenes)?;
+    let scenes: Vec<&Scene> = scenes.iter().collect();
     let pipelines = ctx.pipelines()?;
     let (max_bytes, max_groups) = limits_for(ctx, settings);
-    let (chunks, alone) = plan(scenes, &prepared, max_bytes, ctx.precision().bytes());
+    let (chunks, alone) = plan(&scenes, &prepared, max_bytes, ctx.precision().bytes());
     if !alone.is_empty() {
         return Err(Error::Unsupported(format!(
             "scene {} is too large for one GPU buffer",
@@ -265,7 +266,7 @@ pub fn assemble_on_gpu(
         .map(|p| vec![None; p.islands.len()])
         .collect();
     for members in chunks {
-        let c = pack_chunk(scenes, &prepared, &members, &|_, _| false, &|_, _| {
+        let c = pack_chunk(&scenes, &prepared, &members, &|_, _| false, &|_, _| {
             TreeRoute::Off
         });
         let out = assemble_and_enumerate(ctx, &pipelines, &c, max_groups, None)?;
@@ -298,7 +299,8 @@ pub fn solve_scenes(
     settings: &GpuSolveSettings,
 ) -> Result<GpuSceneResult, Error> {
     let built = check_and_build(scenes)?;
-    solve_scenes_warm(ctx, scenes, &built, None, settings)
+    let scenes: Vec<&Scene> = scenes.iter().collect();
+    solve_scenes_warm(ctx, &scenes, &built, None, settings)
 }
 
 /// Checks every scene (an error names it) and builds it.
@@ -322,7 +324,7 @@ pub(crate) fn check_and_build(scenes: &[Scene]) -> Result<Vec<Built>, Error> {
 /// (the impulse stage reads every row) but does not enumerate them.
 pub fn solve_scenes_warm(
     ctx: &GpuContext,
-    scenes: &[Scene],
+    scenes: &[&Scene],
     built: &[Built],
     warm: Option<&[Vec<Option<u32>>]>,
     settings: &GpuSolveSettings,
@@ -379,7 +381,7 @@ type Solved = Vec<Vec<Option<(LcpSolution, Method, SolvedOn, SolvePath)>>>;
 /// What [`solve_scenes_warm`]'s steps share.
 struct SceneRun<'a> {
     ctx: &'a GpuContext,
-    scenes: &'a [Scene],
+    scenes: &'a [&'a Scene],
     settings: &'a GpuSolveSettings,
     pipelines: std::sync::Arc<Pipelines>,
     tolerances: wgpu::Buffer,

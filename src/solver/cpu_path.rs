@@ -97,7 +97,7 @@ impl Solver {
     /// the warm basis (empty: none).
     pub(super) fn scenes_on_cpu(
         &self,
-        scenes: &[Scene],
+        scenes: &[&Scene],
         built: &[Built],
         warm: &[Vec<Option<u32>>],
     ) -> Result<Report, Error> {
@@ -116,7 +116,7 @@ impl Solver {
     /// impulses. The report's device is the solver's.
     pub(super) fn scenes_with(
         &self,
-        scenes: &[Scene],
+        scenes: &[&Scene],
         built: &[Built],
         solve: impl FnOnce(&[(usize, usize)], &[&Lcp]) -> Result<Vec<Solved>, Error>,
     ) -> Result<Report, Error> {

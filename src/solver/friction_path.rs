@@ -91,6 +91,9 @@ impl Solver {
     /// CPU in f64 over every core with `settings.friction_method`; the
     /// results are in [`Report::friction`]. Every problem is checked first
     /// (an error names the first bad one and its field).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming the first bad problem and its field.
     pub fn solve_friction(&mut self, problems: &[FrictionProblem]) -> Result<Report, Error> {
         self.solve_friction_warm(problems, None)
     }
@@ -99,6 +102,10 @@ impl Solver {
     /// contact of each problem (`ids[i].len() == problems[i].contacts()`),
     /// stable across calls: with `settings.warm_start` each contact starts
     /// from its reaction of the last call.
+    ///
+    /// # Errors
+    /// Those of [`Solver::solve_friction`], and [`Error::Invalid`] where
+    /// `ids` has not one entry per problem or per contact.
     pub fn solve_friction_keyed(
         &mut self,
         problems: &[FrictionProblem],
@@ -230,7 +237,7 @@ impl Solver {
     pub(super) fn scenes_with_friction(&mut self, scenes: &[Scene]) -> Result<Report, Error> {
         let (with, without): (Vec<usize>, Vec<usize>) =
             (0..scenes.len()).partition(|&i| scenes[i].has_friction());
-        let plain: Vec<Scene> = without.iter().map(|&i| scenes[i].clone()).collect();
+        let plain: Vec<&Scene> = without.iter().map(|&i| &scenes[i]).collect();
         let mut report = if plain.is_empty() {
             let mut r = Report::new(Vec::new(), Vec::new(), self.device(), self.choice.clone());
             r.fallback = self.fallback.clone();

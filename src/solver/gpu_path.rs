@@ -52,7 +52,7 @@ impl Solver {
     pub(super) fn scenes_on_gpu(
         &self,
         ctx: &GpuContext,
-        scenes: &[Scene],
+        scenes: &[&Scene],
         built: &[Built],
         warm: &[Vec<Option<u32>>],
     ) -> Result<Report, Error> {
@@ -84,7 +84,7 @@ impl Solver {
     pub(super) fn all_solutions_scenes_on_gpu(
         &self,
         ctx: &GpuContext,
-        scenes: &[Scene],
+        scenes: &[&Scene],
         built: &[Built],
     ) -> Result<Report, Error> {
         let mut figures = ScreenFigures::default();

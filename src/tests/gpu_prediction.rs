@@ -186,7 +186,8 @@ fn scene_prediction_on_and_off_agree() {
         .map(|s| on.islands[s.islands.clone()].iter().map(|i| i.solution.basis).collect())
         .collect();
     let built = check_and_build(&scenes).unwrap();
-    let hot = solve_scenes_warm(&ctx, &scenes, &built, Some(&warm), &Default::default()).unwrap();
+    let refs: Vec<&Scene> = scenes.iter().collect();
+    let hot = solve_scenes_warm(&ctx, &refs, &built, Some(&warm), &Default::default()).unwrap();
     println!("warm:\n{}", hot.report);
     assert!(hot.report.path_count(SolvePath::WarmStart) > 0);
     for (a, b) in on.scenes.iter().zip(&hot.scenes) {
