@@ -36,12 +36,14 @@ impl Scene {
     /// LCPs, assembled in f64: what [`crate::Solver::solve_scenes`] solves.
     pub fn islands(&self, item: &str) -> Result<Vec<IslandProblem>, crate::Error> {
         self.validate(item)?;
-        let rows = crate::cpu::assembly::assemble_contacts(self);
-        Ok(find_islands(self)
+        let built = crate::build::Built::new(self);
+        Ok(built
+            .islands
             .into_iter()
-            .map(|isl| IslandProblem {
-                lcp: crate::cpu::assembly::assemble_island(self, &rows, &isl),
+            .zip(built.lcps)
+            .map(|(isl, lcp)| IslandProblem {
                 contacts: isl.contacts,
+                lcp,
             })
             .collect())
     }

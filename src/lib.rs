@@ -43,6 +43,7 @@
 
 #![warn(missing_docs)]
 
+pub(crate) mod build;
 pub(crate) mod cpu;
 pub mod error;
 pub mod friction;
@@ -52,7 +53,6 @@ pub mod io;
 pub(crate) mod islands;
 pub mod lcp;
 pub(crate) mod linalg;
-pub(crate) mod pipeline;
 pub(crate) mod prediction;
 pub mod report;
 pub mod scene;

@@ -49,6 +49,22 @@ pub enum SolvePath {
     Lemke,
 }
 
+/// The report's path of an island settled this way on the CPU (the one
+/// map between the two).
+impl From<SolvePath> for crate::report::SolvePath {
+    fn from(p: SolvePath) -> Self {
+        use crate::report::SolvePath as Path;
+        match p {
+            SolvePath::Separating => Path::Separating,
+            SolvePath::SingleContact => Path::SingleContact,
+            SolvePath::WarmStart => Path::WarmStart,
+            SolvePath::PredictedBasis => Path::PredictedBasis,
+            SolvePath::Enumerated => Path::EnumeratedCpu,
+            SolvePath::Lemke => Path::Lemke,
+        }
+    }
+}
+
 impl SolvePath {
     pub const ALL: [SolvePath; 6] = [
         SolvePath::Separating,
@@ -347,7 +363,7 @@ mod tests {
         assert!(!psd(vec![1.0, 0.5, -0.5, 1.0])); // not symmetric
                                                   // A box resting on 4 coplanar contacts: rank 3 of 4.
         let scene = crate::generate::box_on_ground(1.0, 0.5);
-        let lcps = crate::pipeline::build(&scene, "scene").unwrap().2;
+        let lcps = crate::tests::reference::build(&scene, "scene").unwrap().2;
         assert!(lcps
             .iter()
             .all(|l| is_positive_semidefinite(l) && !is_positive_definite(l)));

@@ -285,12 +285,15 @@ pub struct FrictionIsland {
 /// Every island of a validated scene with its frictional problem (what the
 /// friction path of [`crate::Solver::solve_scenes`] solves).
 pub fn friction_islands(scene: &Scene) -> Vec<FrictionIsland> {
-    let rows = assemble_friction_contacts(scene);
-    crate::islands::find_islands(scene)
+    let built = crate::build::FrictionBuilt::new(scene);
+    let problems = built.problems(scene);
+    built
+        .islands
         .into_iter()
-        .map(|isl| FrictionIsland {
-            problem: assemble_friction_island(scene, &rows, &isl),
+        .zip(problems)
+        .map(|(isl, problem)| FrictionIsland {
             contacts: isl.contacts,
+            problem,
         })
         .collect()
 }

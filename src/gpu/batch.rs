@@ -27,7 +27,7 @@ use crate::cpu::enumeration_tree::TREE_MAX_N;
 use crate::lcp::{Lcp, LcpSolution};
 use crate::prediction::{prediction, SolvePath, Unsettled};
 use crate::cpu::lemke::{lemke, LemkeSettings};
-use crate::pipeline::Solver;
+use crate::settings::Method;
 use crate::gpu::validation::{validate_island, BatchReport, GpuVerdict, Verdict};
 use crate::Error;
 
@@ -139,6 +139,22 @@ pub enum SolvedOn {
 }
 
 impl SolvedOn {
+    /// The report's path of an island solved here; `path`: its prediction
+    /// case where it was settled by prediction.
+    pub(crate) fn path(self, path: Option<SolvePath>) -> crate::report::SolvePath {
+        use crate::report::SolvePath as Path;
+        match (self, path) {
+            (SolvedOn::Gpu, _) => Path::EnumeratedGpu,
+            (SolvedOn::Repaired, _) => Path::Repaired,
+            (SolvedOn::CpuFallback, _) => Path::Lemke,
+            (SolvedOn::Invalid, _) => Path::Invalid,
+            (SolvedOn::Predicted, Some(p)) => p.into(),
+            // The GPU backend names the prediction case of every island it
+            // settled that way; none is left without one.
+            (SolvedOn::Predicted, None) => Path::PredictedBasis,
+        }
+    }
+
     pub fn name(self) -> &'static str {
         match self {
             SolvedOn::Gpu => "gpu",
@@ -160,7 +176,7 @@ pub struct IslandOutcome {
     /// validated) or Lemke; None for a problem that failed its checks.
     pub path: Option<SolvePath>,
     /// The algorithm whose answer this is: Enum (GPU or CPU) or Lemke.
-    pub solver: Solver,
+    pub solver: Method,
     /// What the GPU's enumeration stage reported (None when it did not run).
     pub gpu: Option<BasisResult>,
     /// The GPU's own z, before the f64 polish (empty when it did not run).
@@ -303,18 +319,18 @@ fn settle_on_cpu(
     };
     if lcp.validate(format_args!("problem {i}")).is_err() {
         let s = LcpSolution::invalid(lcp.q.len());
-        return Ok(outcome(s, SolvedOn::Invalid, None, Solver::Enum));
+        return Ok(outcome(s, SolvedOn::Invalid, None, Method::Enumeration));
     }
     if lcp.n() > MAX_GPU_N {
         let s = lemke(lcp, &settings.lemke);
         let path = Some(SolvePath::Lemke);
-        return Ok(outcome(s, SolvedOn::CpuFallback, path, Solver::Lemke));
+        return Ok(outcome(s, SolvedOn::CpuFallback, path, Method::Lemke));
     }
     if !settings.predict {
         return Err(Unsettled { definite: None });
     }
     let (path, s) = prediction(lcp, warm, &settings.enumeration)?;
-    Ok(outcome(s, SolvedOn::Predicted, Some(path), Solver::Enum))
+    Ok(outcome(s, SolvedOn::Predicted, Some(path), Method::Enumeration))
 }
 
 /// Solves a batch of LCPs: islands with n ≤ 16 by enumeration on the GPU,
@@ -389,7 +405,7 @@ pub fn solve_lcp_batch_warm(
             solution: checked.solution,
             solved_on,
             path: Some(SolvePath::Enumerated),
-            solver: Solver::Enum,
+            solver: Method::Enumeration,
             gpu: Some(o.result),
             gpu_z: o.z,
         });

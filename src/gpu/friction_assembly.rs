@@ -22,7 +22,7 @@ use super::layout::{ContactBodies, PackedIsland, Slot, ROW};
 use super::{GpuContext, GpuSolveSettings};
 use crate::friction::assembly::FrictionIsland;
 use crate::friction::FrictionProblem;
-use crate::islands::find_islands;
+use crate::islands::{find_islands, Island};
 use crate::scene::{Contact, Scene};
 use crate::settings::GpuSettings;
 use crate::Error;
@@ -54,9 +54,9 @@ struct Packed {
 }
 
 impl Packed {
-    /// Adds scene `s` (validated): its bodies, its direction contacts, and
-    /// one table entry of 3k rows per island.
-    fn add(&mut self, s: usize, scene: &Scene) {
+    /// Adds scene `s` (validated) and its `islands`: its bodies, its
+    /// direction contacts, and one table entry of 3k rows per island.
+    fn add(&mut self, s: usize, scene: &Scene, islands: &[Island]) {
         let fb = (self.bodies.len() / super::layout::BODY) as u32;
         let fc = self.ids.len() as u32;
         for b in &scene.bodies {
@@ -67,7 +67,7 @@ impl Packed {
                 pack_contact(&dc, &scene.bodies, fb, &mut self.ids, &mut self.contacts);
             }
         }
-        for island in find_islands(scene) {
+        for island in islands {
             let n = 3 * island.len();
             let index = self.table.len() as u32;
             self.table.push(PackedIsland {
@@ -115,6 +115,20 @@ pub fn assemble_friction_on_gpu(
     for (i, s) in scenes.iter().enumerate() {
         s.validate(format_args!("scene {i}"))?;
     }
+    let refs: Vec<&Scene> = scenes.iter().collect();
+    let islands: Vec<Vec<Island>> = scenes.iter().map(find_islands).collect();
+    let islands: Vec<&[Island]> = islands.iter().map(Vec::as_slice).collect();
+    assemble_built_friction_on_gpu(ctx, &refs, &islands, gpu)
+}
+
+/// [`assemble_friction_on_gpu`] for checked scenes and their islands
+/// (`islands[s]`: scene s's, as built), checked by nobody again.
+pub(crate) fn assemble_built_friction_on_gpu(
+    ctx: &GpuContext,
+    scenes: &[&Scene],
+    islands: &[&[Island]],
+    gpu: &GpuSettings,
+) -> Result<Vec<Vec<FrictionIsland>>, Error> {
     let limits = GpuSolveSettings {
         max_binding_bytes: gpu.max_binding_bytes,
         max_workgroups: gpu.max_workgroups,
@@ -126,7 +140,7 @@ pub fn assemble_friction_on_gpu(
     let mut chunk = Packed::default();
     for (s, scene) in scenes.iter().enumerate() {
         let mut alone = Packed::default();
-        alone.add(s, scene);
+        alone.add(s, scene, islands[s]);
         let own = alone.bytes(sb);
         if own.iter().any(|&b| b > max_bytes) {
             return Err(Error::Unsupported(format!(
@@ -138,7 +152,7 @@ pub fn assemble_friction_on_gpu(
             run_chunk(ctx, &chunk, max_groups, &mut out)?;
             chunk = Packed::default();
         }
-        chunk.add(s, scene);
+        chunk.add(s, scene, islands[s]);
     }
     if !chunk.table.is_empty() {
         run_chunk(ctx, &chunk, max_groups, &mut out)?;

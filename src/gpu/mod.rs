@@ -73,14 +73,14 @@ pub mod scenes;
 pub(crate) mod shaders;
 pub(crate) mod validation;
 
-pub use batch::{solve_lcp_batch_warm, EnumerationKernel, GpuSolveSettings, SolvedOn};
+pub use batch::{solve_lcp_batch_warm, EnumerationKernel, GpuSolveSettings};
 pub use context::{
     list_adapters, AdapterSummary, BackendChoice, GpuContext, GpuOptions, Precision, INSTALL_HINT,
 };
 pub use scenes::solve_scenes_warm;
 // The one-shot forms and raw results, for the stage tests.
 #[cfg(test)]
-pub use batch::{solve_lcp_batch, GpuBatchResult};
+pub use batch::{solve_lcp_batch, GpuBatchResult, SolvedOn};
 #[cfg(test)]
 pub use scenes::solve_scenes;
 

@@ -1,4 +1,4 @@
-//! Scenes prepared on the CPU and packed into chunks under the device's
+//! Scenes built on the CPU ([`Built`]) and packed into chunks under the device's
 //! binding limit: what `scenes.rs` uploads.
 
 use super::kernel::TreeRoute;
@@ -6,19 +6,8 @@ use super::layout::{
     pack_body, pack_contact, BasisResult, ContactBodies, PackedIsland, Slot, BODY, ROW, VELOCITY,
 };
 use super::MAX_GPU_N;
-use crate::cpu::assembly::ContactRow;
-use crate::islands::Island;
-use crate::lcp::Lcp;
-use crate::pipeline::build;
+use crate::build::Built;
 use crate::scene::Scene;
-use crate::Error;
-
-/// A scene prepared on the CPU: islands, f64 rows and f64 LCPs.
-pub(super) struct Prepared {
-    pub(super) islands: Vec<Island>,
-    pub(super) rows: Vec<ContactRow>,
-    pub(super) lcps: Vec<Lcp>,
-}
 
 /// The packed buffers of a chunk of scenes.
 #[derive(Default)]
@@ -45,7 +34,7 @@ pub(super) struct Chunk {
 }
 
 /// Bytes of the largest buffer a scene needs (see [`Chunk`]).
-pub(super) fn scene_bytes(scene: &Scene, p: &Prepared, sb: u64) -> [u64; 5] {
+pub(super) fn scene_bytes(scene: &Scene, p: &Built, sb: u64) -> [u64; 5] {
     let nb = scene.bodies.len() as u64;
     let nc = scene.contacts.len() as u64;
     let small = p.islands.iter().filter(|i| i.len() <= MAX_GPU_N);
@@ -68,8 +57,8 @@ pub(super) fn scene_bytes(scene: &Scene, p: &Prepared, sb: u64) -> [u64; 5] {
 /// enumeration; `tree(s, k)`: it runs the tree kernel first (the table is
 /// sorted by n, then by this).
 pub(super) fn pack_chunk(
-    scenes: &[Scene],
-    prepared: &[Prepared],
+    scenes: &[&Scene],
+    prepared: &[Built],
     members: &[usize],
     settled: &dyn Fn(usize, usize) -> bool,
     tree: &dyn Fn(usize, usize) -> TreeRoute,
@@ -77,7 +66,7 @@ pub(super) fn pack_chunk(
     let mut c = Chunk::default();
     let mut entries: Vec<(usize, usize, usize)> = Vec::new(); // (n, position in chunk, island)
     for &s in members {
-        let scene = &scenes[s];
+        let scene = scenes[s];
         let fb = (c.bodies.len() / BODY) as u32;
         let fc = c.ids.len() as u32;
         c.scenes.push(s);
@@ -128,8 +117,8 @@ pub(super) fn pack_chunk(
 /// Splits the scenes into chunks under the binding limit; scenes too large
 /// for one chunk on their own are returned apart.
 pub(super) fn plan(
-    scenes: &[Scene],
-    prepared: &[Prepared],
+    scenes: &[&Scene],
+    prepared: &[Built],
     max_bytes: u64,
     sb: u64,
 ) -> (Vec<Vec<usize>>, Vec<usize>) {
@@ -156,19 +145,4 @@ pub(super) fn plan(
         chunks.push(cur);
     }
     (chunks, alone)
-}
-
-pub(super) fn prepare(scenes: &[Scene]) -> Result<Vec<Prepared>, Error> {
-    scenes
-        .iter()
-        .enumerate()
-        .map(|(i, s)| {
-            let (islands, rows, lcps) = build(s, format_args!("scene {i}"))?;
-            Ok(Prepared {
-                islands,
-                rows,
-                lcps,
-            })
-        })
-        .collect()
 }

@@ -23,29 +23,31 @@ use super::layout::{
     NO_BODY, ROW, VELOCITY,
 };
 use super::pipelines::{Pipelines, Tolerances};
-use super::scene_chunks::{pack_chunk, plan, prepare, Chunk, Prepared};
+use super::scene_chunks::{pack_chunk, plan, Chunk};
 use super::{GpuContext, MAX_GPU_N};
+use crate::build::Built;
 use crate::cpu::assembly::ContactRow;
 use crate::cpu::impulses::{apply_impulses, BodyVelocity};
 use crate::lcp::{Lcp, LcpSolution};
-use crate::pipeline::{IslandResult, SceneSolution};
 use crate::prediction::{prediction, SolvePath};
+use crate::report::{IslandReport, SceneReport};
 use crate::scene::Scene;
 use crate::cpu::lemke::lemke;
-use crate::pipeline::Solver;
+use crate::settings::Method;
 use crate::gpu::validation::{validate_island, BatchReport, GpuVerdict, Verdict};
 use crate::Error;
 
 /// Scenes after the impact, with where each island was solved.
 #[derive(Clone, Debug)]
 pub struct GpuSceneResult {
-    /// The same shape as the CPU path's result, scene by scene.
-    pub scenes: Vec<SceneSolution>,
-    /// Per scene, per island (in `SceneSolution::islands` order).
+    /// Every island of every scene, scene after scene, in `find_islands`
+    /// order: the door's reports (method, path, validated solution).
+    pub islands: Vec<IslandReport>,
+    /// Per scene: impulses, velocities after them (the f64 twin's) and its
+    /// islands' range in `islands`.
+    pub scenes: Vec<SceneReport>,
+    /// Per scene, per island: where it was solved.
     pub solved_on: Vec<Vec<SolvedOn>>,
-    /// Per scene, per island: how it was settled (a prediction case,
-    /// Enumerated or Lemke).
-    pub paths: Vec<Vec<SolvePath>>,
     pub report: BatchReport,
     /// Largest |GPU velocity − f64 velocity| / (1 + |f64 velocity|) of the
     /// impulse stage over every body.
@@ -247,10 +249,11 @@ pub fn assemble_on_gpu(
     scenes: &[Scene],
     settings: &GpuSolveSettings,
 ) -> Result<GpuAssembly, Error> {
-    let prepared = prepare(scenes)?;
+    let prepared = check_and_build(scenes)?;
+    let scenes: Vec<&Scene> = scenes.iter().collect();
     let pipelines = ctx.pipelines()?;
     let (max_bytes, max_groups) = limits_for(ctx, settings);
-    let (chunks, alone) = plan(scenes, &prepared, max_bytes, ctx.precision().bytes());
+    let (chunks, alone) = plan(&scenes, &prepared, max_bytes, ctx.precision().bytes());
     if !alone.is_empty() {
         return Err(Error::Unsupported(format!(
             "scene {} is too large for one GPU buffer",
@@ -263,7 +266,7 @@ pub fn assemble_on_gpu(
         .map(|p| vec![None; p.islands.len()])
         .collect();
     for members in chunks {
-        let c = pack_chunk(scenes, &prepared, &members, &|_, _| false, &|_, _| {
+        let c = pack_chunk(&scenes, &prepared, &members, &|_, _| false, &|_, _| {
             TreeRoute::Off
         });
         let out = assemble_and_enumerate(ctx, &pipelines, &c, max_groups, None)?;
@@ -295,17 +298,34 @@ pub fn solve_scenes(
     scenes: &[Scene],
     settings: &GpuSolveSettings,
 ) -> Result<GpuSceneResult, Error> {
-    solve_scenes_warm(ctx, scenes, None, settings)
+    let built = check_and_build(scenes)?;
+    let scenes: Vec<&Scene> = scenes.iter().collect();
+    solve_scenes_warm(ctx, &scenes, &built, None, settings)
 }
 
-/// [`solve_scenes`] with warm bases: `warm[s][k]` is the basis of island k
-/// of scene s (in `find_islands` order) from the previous frame, if any.
+/// Checks every scene (an error names it) and builds it.
+pub(crate) fn check_and_build(scenes: &[Scene]) -> Result<Vec<Built>, Error> {
+    scenes
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            s.validate(format_args!("scene {i}"))?;
+            Ok(Built::new(s))
+        })
+        .collect()
+}
+
+/// [`solve_scenes`] for checked scenes and what was built of them
+/// (`built[s]`: scene s's islands, rows and LCPs), with warm bases:
+/// `warm[s][k]` is the basis of island k of scene s (in `find_islands`
+/// order) from the previous frame, if any.
 /// With `settings.predict` (default), islands that need no enumeration are
 /// settled on the CPU from its f64 assembly; the GPU still assembles them
 /// (the impulse stage reads every row) but does not enumerate them.
 pub fn solve_scenes_warm(
     ctx: &GpuContext,
-    scenes: &[Scene],
+    scenes: &[&Scene],
+    built: &[Built],
     warm: Option<&[Vec<Option<u32>>]>,
     settings: &GpuSolveSettings,
 ) -> Result<GpuSceneResult, Error> {
@@ -315,9 +335,9 @@ pub fn solve_scenes_warm(
             "all_solutions is not supported on the GPU; use the CPU backend".into(),
         ));
     }
-    let prepared = prepare(scenes)?;
+    let prepared = built;
     let (max_bytes, max_groups) = limits_for(ctx, settings);
-    let (chunks, alone) = plan(scenes, &prepared, max_bytes, ctx.precision().bytes());
+    let (chunks, alone) = plan(scenes, prepared, max_bytes, ctx.precision().bytes());
     let mut run = SceneRun {
         ctx,
         scenes,
@@ -356,19 +376,19 @@ pub fn solve_scenes_warm(
 }
 
 /// Per scene, per island: the solution, its solver and where it came from.
-type Solved = Vec<Vec<Option<(LcpSolution, Solver, SolvedOn, SolvePath)>>>;
+type Solved = Vec<Vec<Option<(LcpSolution, Method, SolvedOn, SolvePath)>>>;
 
 /// What [`solve_scenes_warm`]'s steps share.
 struct SceneRun<'a> {
     ctx: &'a GpuContext,
-    scenes: &'a [Scene],
+    scenes: &'a [&'a Scene],
     settings: &'a GpuSolveSettings,
     pipelines: std::sync::Arc<Pipelines>,
     tolerances: wgpu::Buffer,
     max_groups: u32,
     kernel_plan: KernelPlan,
     report: BatchReport,
-    prepared: Vec<Prepared>,
+    prepared: &'a [Built],
     solved: Solved,
     /// Per scene: the impulse stage's velocities (8 scalars per body).
     gpu_velocities: Vec<Option<Vec<f64>>>,
@@ -414,7 +434,7 @@ impl SceneRun<'_> {
     /// on the CPU, impulses on the GPU.
     fn chunk(&mut self, members: &[usize]) -> Result<(), Error> {
         let t0 = Instant::now();
-        let (prepared, predicted, definite) = (&self.prepared, &self.predicted, &self.definite);
+        let (prepared, predicted, definite) = (self.prepared, &self.predicted, &self.definite);
         let c = pack_chunk(
             self.scenes,
             prepared,
@@ -477,7 +497,7 @@ impl SceneRun<'_> {
         for &(s, k) in &c.keys {
             if let Some((path, sol)) = self.predicted[s][k].take() {
                 self.report.record_predicted(path, &sol);
-                self.solved[s][k] = Some((sol, Solver::Enum, SolvedOn::Predicted, path));
+                self.solved[s][k] = Some((sol, Method::Enumeration, SolvedOn::Predicted, path));
             }
         }
         for ((rec, &(s, k)), res) in c.enum_table.iter().zip(&c.enum_keys).zip(&out.results) {
@@ -495,7 +515,7 @@ impl SceneRun<'_> {
             } else {
                 SolvedOn::Gpu
             };
-            self.solved[s][k] = Some((checked.solution, Solver::Enum, on, SolvePath::Enumerated));
+            self.solved[s][k] = Some((checked.solution, Method::Enumeration, on, SolvePath::Enumerated));
         }
         for &s in &c.scenes {
             for (k, isl) in self.prepared[s].islands.iter().enumerate() {
@@ -503,39 +523,38 @@ impl SceneRun<'_> {
                     let sol = lemke(&self.prepared[s].lcps[k], &settings.lemke);
                     self.report.record_cpu_fallback(&sol);
                     self.solved[s][k] =
-                        Some((sol, Solver::Lemke, SolvedOn::CpuFallback, SolvePath::Lemke));
+                        Some((sol, Method::Lemke, SolvedOn::CpuFallback, SolvePath::Lemke));
                 }
             }
         }
         Ok(())
     }
 
-    /// Every scene's solution in the CPU path's shape; the f64 twin's
+    /// Every scene's report in the CPU path's shape; the f64 twin's
     /// velocities are kept, the GPU's checked against them.
     fn finish(self) -> Result<GpuSceneResult, Error> {
         let mut solved = self.solved;
         let mut max_velocity_deviation = 0.0f64;
+        let mut islands = Vec::new();
         let mut out_scenes = Vec::with_capacity(self.scenes.len());
         let mut solved_on = Vec::with_capacity(self.scenes.len());
-        let mut paths = Vec::with_capacity(self.scenes.len());
         for (s, (scene, p)) in self.scenes.iter().zip(self.prepared).enumerate() {
+            let first = islands.len();
             let mut impulses = vec![0.0; scene.contacts.len()];
-            let mut results = Vec::with_capacity(p.islands.len());
             let mut on = Vec::with_capacity(p.islands.len());
-            let mut path_of = Vec::with_capacity(p.islands.len());
-            for ((island, lcp), slot) in p.islands.into_iter().zip(p.lcps).zip(&mut solved[s]) {
-                let (solution, solver, where_, path) = slot
+            for (island, slot) in p.islands.iter().zip(&mut solved[s]) {
+                let (solution, method, where_, path) = slot
                     .take()
                     .ok_or_else(|| Error::Gpu(format!("scene {s}: an island got no result")))?;
                 for (&c, &zi) in island.contacts.iter().zip(&solution.z) {
                     impulses[c] = zi;
                 }
                 on.push(where_);
-                path_of.push(path);
-                results.push(IslandResult {
-                    contacts: island.contacts,
-                    solver,
-                    lcp,
+                islands.push(IslandReport {
+                    scene: Some(s),
+                    contacts: island.contacts.as_slice().into(),
+                    method,
+                    path: where_.path(Some(path)),
                     solution,
                 });
             }
@@ -544,19 +563,18 @@ impl SceneRun<'_> {
                 let dev = velocity_deviation(&bodies, v);
                 max_velocity_deviation = max_velocity_deviation.max(dev);
             }
-            out_scenes.push(SceneSolution {
+            out_scenes.push(SceneReport {
                 impulses,
                 bodies,
-                islands: results,
-                rows: p.rows,
+                islands: first..islands.len(),
+                friction: None,
             });
             solved_on.push(on);
-            paths.push(path_of);
         }
         Ok(GpuSceneResult {
+            islands,
             scenes: out_scenes,
             solved_on,
-            paths,
             report: self.report,
             max_velocity_deviation,
         })

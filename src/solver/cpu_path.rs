@@ -4,11 +4,10 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
 use super::{check_solution, warm_basis, Solver};
-use crate::cpu::assembly::{assemble_contacts, assemble_island};
 use crate::cpu::batch::{parallel_fill, parallel_map};
 use crate::cpu::enumeration::{enumerate, feasible_basis_into, MAX_ENUMERATION_N};
 use crate::cpu::impulses::apply_impulses;
-use crate::islands::find_islands;
+use crate::build::Built;
 use crate::lcp::{Lcp, LcpSolution, Status};
 use crate::prediction::{self, predict_into};
 use crate::report::{IslandReport, Report, SceneReport, SolvePath};
@@ -93,14 +92,16 @@ impl Solver {
         Ok(r)
     }
 
-    /// The CPU path for checked scenes: every island of every scene over
-    /// the cores. `warm`: per scene, per island, the warm basis (empty: none).
+    /// The CPU path for checked scenes, from what was built of them: every
+    /// island of every scene over the cores. `warm`: per scene, per island,
+    /// the warm basis (empty: none).
     pub(super) fn scenes_on_cpu(
         &self,
-        scenes: &[Scene],
+        scenes: &[&Scene],
+        built: &[Built],
         warm: &[Vec<Option<u32>>],
     ) -> Result<Report, Error> {
-        self.scenes_with(scenes, |index, lcps| {
+        self.scenes_with(scenes, built, |index, lcps| {
             Ok(parallel_map(index.len(), self.threads, |j| {
                 let (s, k) = index[j];
                 let w = warm.get(s).and_then(|w| w[k]);
@@ -109,58 +110,47 @@ impl Solver {
         })
     }
 
-    /// Checked scenes in phases: build (islands and assembly, on the CPU),
-    /// solve (`solve` gets every island of every scene, flattened, as
-    /// (scene, island) and its LCP, and returns one result per island, in
-    /// order), impulses. The report's device is the solver's.
+    /// Checked scenes, from what was built of them, in phases: solve
+    /// (`solve` gets every island of every scene, flattened, as (scene,
+    /// island) and its LCP, and returns one result per island, in order),
+    /// impulses. The report's device is the solver's.
     pub(super) fn scenes_with(
         &self,
-        scenes: &[Scene],
+        scenes: &[&Scene],
+        built: &[Built],
         solve: impl FnOnce(&[(usize, usize)], &[&Lcp]) -> Result<Vec<Solved>, Error>,
     ) -> Result<Report, Error> {
-        let t = Instant::now();
-        let built = parallel_map(scenes.len(), self.threads, |i| {
-            let s = &scenes[i];
-            let islands = find_islands(s);
-            let rows = assemble_contacts(s);
-            let lcps: Vec<Lcp> = islands
-                .iter()
-                .map(|isl| assemble_island(s, &rows, isl))
-                .collect();
-            (islands, rows, lcps)
-        });
-        let build = t.elapsed().as_secs_f64();
         let t = Instant::now();
         // Every island of every scene, flattened: (scene, island).
         let index: Vec<(usize, usize)> = built
             .iter()
             .enumerate()
-            .flat_map(|(s, b)| (0..b.2.len()).map(move |k| (s, k)))
+            .flat_map(|(s, b)| (0..b.lcps.len()).map(move |k| (s, k)))
             .collect();
-        let lcps: Vec<&Lcp> = index.iter().map(|&(s, k)| &built[s].2[k]).collect();
+        let lcps: Vec<&Lcp> = index.iter().map(|&(s, k)| &built[s].lcps[k]).collect();
         let solved = solve(&index, &lcps)?;
         let solve = t.elapsed().as_secs_f64();
         let t = Instant::now();
         let mut islands = Vec::with_capacity(index.len());
         let mut out = Vec::with_capacity(scenes.len());
         let mut solved = solved.into_iter();
-        for (s, (scene, (isl, rows, _))) in scenes.iter().zip(built).enumerate() {
+        for (s, (scene, b)) in scenes.iter().zip(built).enumerate() {
             let first = islands.len();
             let mut impulses = vec![0.0; scene.contacts.len()];
-            for island in isl {
+            for island in &b.islands {
                 let (method, path, solution) = solved.next().expect("one result per island");
                 for (&c, &zi) in island.contacts.iter().zip(&solution.z) {
                     impulses[c] = zi;
                 }
                 islands.push(IslandReport {
                     scene: Some(s),
-                    contacts: island.contacts.into(),
+                    contacts: island.contacts.iter().copied().collect(),
                     method,
                     path,
                     solution,
                 });
             }
-            let bodies = apply_impulses(scene, &rows, &impulses);
+            let bodies = apply_impulses(scene, &b.rows, &impulses);
             out.push(SceneReport {
                 impulses,
                 bodies,
@@ -169,7 +159,6 @@ impl Solver {
             });
         }
         let mut report = self.cpu_report(islands, out);
-        report.timings.build = build;
         report.timings.solve = solve;
         report.timings.impulses = t.elapsed().as_secs_f64();
         Ok(report)
@@ -245,7 +234,7 @@ pub(super) fn solve_island(
             if s.predict && !s.all_solutions {
                 let mut how = prediction::SolvePath::Separating;
                 if predict_into(lcp, warm, &e, &mut how, out) {
-                    (*method, *path) = (Method::Enumeration, prediction_path(how));
+                    (*method, *path) = (Method::Enumeration, how.into());
                     return;
                 }
             }
@@ -351,15 +340,4 @@ fn checked_basis(
         ..Default::default()
     };
     feasible_basis_into(lcp, mask, e, counters, || true, out)
-}
-
-pub(super) fn prediction_path(p: prediction::SolvePath) -> SolvePath {
-    match p {
-        prediction::SolvePath::Separating => SolvePath::Separating,
-        prediction::SolvePath::SingleContact => SolvePath::SingleContact,
-        prediction::SolvePath::WarmStart => SolvePath::WarmStart,
-        prediction::SolvePath::PredictedBasis => SolvePath::PredictedBasis,
-        prediction::SolvePath::Enumerated => SolvePath::EnumeratedCpu,
-        prediction::SolvePath::Lemke => SolvePath::Lemke,
-    }
 }

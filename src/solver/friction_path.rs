@@ -12,17 +12,17 @@ use std::time::Instant;
 use super::Solver;
 use crate::cpu::batch::parallel_map;
 use crate::friction::assembly::{
-    apply_friction_impulses, assemble_friction_contacts, assemble_friction_island, world_impulse,
-    FrictionContactRows,
+    apply_friction_impulses, world_impulse, FrictionContactRows,
 };
 use crate::friction::solve::from_projected;
 use crate::friction::{
     solve_friction_problem, FrictionMethod, FrictionProblem, FrictionSolution, ProjectedGpuFigures,
 };
 use crate::gpu::friction::solve_projected_on_gpu_against;
-use crate::gpu::friction_assembly::assemble_friction_on_gpu;
+use crate::gpu::friction_assembly::assemble_built_friction_on_gpu;
 use crate::gpu::GpuContext;
-use crate::islands::{find_islands, Island};
+use crate::build::FrictionBuilt;
+use crate::islands::Island;
 use crate::report::{ContactImpulse, FrictionIslandReport, Report, SceneFriction, SceneReport};
 use crate::scene::Scene;
 use crate::Error;
@@ -91,6 +91,9 @@ impl Solver {
     /// CPU in f64 over every core with `settings.friction_method`; the
     /// results are in [`Report::friction`]. Every problem is checked first
     /// (an error names the first bad one and its field).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming the first bad problem and its field.
     pub fn solve_friction(&mut self, problems: &[FrictionProblem]) -> Result<Report, Error> {
         self.solve_friction_warm(problems, None)
     }
@@ -99,6 +102,10 @@ impl Solver {
     /// contact of each problem (`ids[i].len() == problems[i].contacts()`),
     /// stable across calls: with `settings.warm_start` each contact starts
     /// from its reaction of the last call.
+    ///
+    /// # Errors
+    /// Those of [`Solver::solve_friction`], and [`Error::Invalid`] where
+    /// `ids` has not one entry per problem or per contact.
     pub fn solve_friction_keyed(
         &mut self,
         problems: &[FrictionProblem],
@@ -230,7 +237,7 @@ impl Solver {
     pub(super) fn scenes_with_friction(&mut self, scenes: &[Scene]) -> Result<Report, Error> {
         let (with, without): (Vec<usize>, Vec<usize>) =
             (0..scenes.len()).partition(|&i| scenes[i].has_friction());
-        let plain: Vec<Scene> = without.iter().map(|&i| scenes[i].clone()).collect();
+        let plain: Vec<&Scene> = without.iter().map(|&i| &scenes[i]).collect();
         let mut report = if plain.is_empty() {
             let mut r = Report::new(Vec::new(), Vec::new(), self.device(), self.choice.clone());
             r.fallback = self.fallback.clone();
@@ -322,23 +329,18 @@ impl Solver {
         report: &mut Report,
     ) -> Result<(Vec<SceneReport>, Vec<FrictionIslandReport>), Error> {
         let t = Instant::now();
-        let mut built: Vec<(Vec<Island>, Vec<FrictionContactRows>, Vec<FrictionProblem>)> =
+        let mut built: Vec<(FrictionBuilt, Vec<FrictionProblem>)> =
             parallel_map(scenes.len(), self.threads, |i| {
-                let s = scenes[i];
-                let islands = find_islands(s);
-                let rows = assemble_friction_contacts(s);
-                let problems = islands
-                    .iter()
-                    .map(|isl| assemble_friction_island(s, &rows, isl))
-                    .collect();
-                (islands, rows, problems)
+                let b = FrictionBuilt::new(scenes[i]);
+                let problems = b.problems(scenes[i]);
+                (b, problems)
             });
         report.timings.build += t.elapsed().as_secs_f64();
         let t = Instant::now();
         let mut problems = Vec::new();
         let mut warm = Vec::new();
         for (s, b) in built.iter_mut().enumerate() {
-            for island in &b.0 {
+            for island in &b.0.islands {
                 let ids: Vec<Option<u64>> = island
                     .contacts
                     .iter()
@@ -351,14 +353,16 @@ impl Solver {
                         .flatten(),
                 );
             }
-            problems.append(&mut b.2);
+            problems.append(&mut b.1);
         }
         let settings = self.settings.friction();
         let (use_gpu, mut went) = self.friction_on_gpu(settings.method);
         let mut solved = None;
         if let Some(ctx) = self.gpu.clone().filter(|_| use_gpu && !problems.is_empty()) {
             let on_gpu = super::gpu_path::guarded(|| {
-                self.friction_islands_on_gpu(&ctx, scenes, &problems, &warm)
+                let islands: Vec<&[Island]> =
+                    built.iter().map(|b| b.0.islands.as_slice()).collect();
+                self.friction_islands_on_gpu(&ctx, scenes, &islands, &problems, &warm)
             });
             match on_gpu {
                 Ok((solutions, figures, assembly)) => {
@@ -390,7 +394,7 @@ impl Solver {
 
     /// The frictional islands of `scenes` (in order, `problems` their f64
     /// assembly, `warm` their starts) on the GPU: assembled there
-    /// ([`assemble_friction_on_gpu`]; a scene too large for one buffer
+    /// ([`assemble_built_friction_on_gpu`]; a scene too large for one buffer
     /// makes the CPU's assembly the shader's input), iterated there by the
     /// projected method, every answer judged in f64 against `problems` and
     /// polished or repaired on the CPU where it misses the tolerance.
@@ -400,11 +404,12 @@ impl Solver {
         &self,
         ctx: &GpuContext,
         scenes: &[&Scene],
+        islands: &[&[Island]],
         problems: &[FrictionProblem],
         warm: &[Option<Vec<f64>>],
     ) -> Result<(Vec<FrictionSolution>, ProjectedGpuFigures, String), Error> {
-        let owned: Vec<Scene> = scenes.iter().map(|s| (*s).clone()).collect();
-        let (on_gpu, assembly) = match assemble_friction_on_gpu(ctx, &owned, &self.settings.gpu) {
+        let assembled = assemble_built_friction_on_gpu(ctx, scenes, islands, &self.settings.gpu);
+        let (on_gpu, assembly) = match assembled {
             Ok(per_scene) => {
                 let on_gpu: Vec<FrictionProblem> =
                     per_scene.into_iter().flatten().map(|f| f.problem).collect();
@@ -454,7 +459,7 @@ impl Solver {
     fn friction_scene_reports(
         &self,
         scenes: &[&Scene],
-        built: Vec<(Vec<Island>, Vec<FrictionContactRows>, Vec<FrictionProblem>)>,
+        built: Vec<(FrictionBuilt, Vec<FrictionProblem>)>,
         solved: Vec<FrictionSolution>,
         warm: &[Option<Vec<f64>>],
     ) -> (Vec<SceneReport>, Vec<FrictionIslandReport>) {
@@ -464,11 +469,11 @@ impl Solver {
         let mut local = Vec::with_capacity(scenes.len());
         let mut solved = solved.into_iter().zip(warm);
         let mut built = built;
-        for (s, (scene, (isl, _, _))) in scenes.iter().zip(&mut built).enumerate() {
+        for (s, (scene, (b, _))) in scenes.iter().zip(&mut built).enumerate() {
             let first = islands.len();
             let mut r = vec![[0.0; 3]; scene.contacts.len()];
             let mut u = vec![[0.0; 3]; scene.contacts.len()];
-            for island in isl.iter_mut() {
+            for island in b.islands.iter_mut() {
                 let (solution, w) = solved.next().expect("one result per island");
                 for (i, &c) in island.contacts.iter().enumerate() {
                     r[c].copy_from_slice(&solution.r[3 * i..3 * i + 3]);
@@ -484,7 +489,7 @@ impl Solver {
             local.push((r, u, first..islands.len()));
         }
         let out = parallel_map(scenes.len(), self.threads, |s| {
-            let (scene, rows, (r, u, range)) = (scenes[s], &built[s].1, &local[s]);
+            let (scene, rows, (r, u, range)) = (scenes[s], &built[s].0.rows, &local[s]);
             SceneReport {
                 impulses: r.iter().map(|ri| ri[0]).collect(),
                 bodies: apply_friction_impulses(scene, rows, r),

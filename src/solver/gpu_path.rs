@@ -2,7 +2,8 @@
 //! validated on the CPU in f64.
 
 use super::Solver;
-use crate::gpu::{self, GpuContext, SolvedOn};
+use crate::build::Built;
+use crate::gpu::{self, GpuContext};
 use crate::lcp::Lcp;
 use crate::prediction;
 use crate::report::{GpuFigures, IslandReport, Report, SceneReport, SolvePath};
@@ -11,7 +12,7 @@ use crate::settings::Method;
 use crate::gpu::validation::BatchReport;
 use crate::Error;
 
-use super::cpu_path::{lcp_islands, prediction_path, solve_on_cpu, Solved};
+use super::cpu_path::{lcp_islands, solve_on_cpu, Solved};
 use crate::cpu::batch::parallel_map;
 use crate::cpu::enumeration::enumerate_screened;
 use crate::gpu::all_bases::{screen_all_bases, ScreenFigures, Screened};
@@ -39,48 +40,26 @@ impl Solver {
                 } else {
                     Method::Enumeration
                 },
-                path: gpu_path(o.solved_on, o.path),
+                path: o.solved_on.path(o.path),
                 solution: o.solution,
             })
             .collect();
         Ok(self.gpu_report(islands, Vec::new(), &r.report, 0.0))
     }
 
-    /// Checked scenes on the GPU. `warm`: per scene, per island, the warm
-    /// basis (empty: none).
+    /// Checked scenes on the GPU, from what was built of them. `warm`:
+    /// per scene, per island, the warm basis (empty: none).
     pub(super) fn scenes_on_gpu(
         &self,
         ctx: &GpuContext,
-        scenes: &[Scene],
+        scenes: &[&Scene],
+        built: &[Built],
         warm: &[Vec<Option<u32>>],
     ) -> Result<Report, Error> {
         let gs = self.settings.gpu_solve();
         let warm = (!warm.is_empty()).then_some(warm);
-        let r = guarded(|| gpu::solve_scenes_warm(ctx, scenes, warm, &gs))?;
-        let mut islands = Vec::new();
-        let mut out = Vec::with_capacity(r.scenes.len());
-        for (s, (sol, on)) in r.scenes.into_iter().zip(&r.solved_on).enumerate() {
-            let first = islands.len();
-            for (k, isl) in sol.islands.into_iter().enumerate() {
-                islands.push(IslandReport {
-                    scene: Some(s),
-                    contacts: isl.contacts.into(),
-                    method: match isl.solver {
-                        crate::pipeline::Solver::Lemke => Method::Lemke,
-                        _ => Method::Enumeration,
-                    },
-                    path: gpu_path(on[k], Some(r.paths[s][k])),
-                    solution: isl.solution,
-                });
-            }
-            out.push(SceneReport {
-                impulses: sol.impulses,
-                bodies: sol.bodies,
-                islands: first..islands.len(),
-                friction: None,
-            });
-        }
-        Ok(self.gpu_report(islands, out, &r.report, r.max_velocity_deviation))
+        let r = guarded(|| gpu::solve_scenes_warm(ctx, scenes, built, warm, &gs))?;
+        Ok(self.gpu_report(r.islands, r.scenes, &r.report, r.max_velocity_deviation))
     }
 
     /// `all_solutions` for LCPs on the GPU ([`Self::all_solutions_on_gpu`]).
@@ -105,10 +84,11 @@ impl Solver {
     pub(super) fn all_solutions_scenes_on_gpu(
         &self,
         ctx: &GpuContext,
-        scenes: &[Scene],
+        scenes: &[&Scene],
+        built: &[Built],
     ) -> Result<Report, Error> {
         let mut figures = ScreenFigures::default();
-        let mut r = self.scenes_with(scenes, |_, lcps| {
+        let mut r = self.scenes_with(scenes, built, |_, lcps| {
             let (solved, f) = self.all_solutions_on_gpu(ctx, lcps)?;
             figures = f;
             Ok(solved)
@@ -189,20 +169,6 @@ fn add_screen_figures(r: &mut Report, f: ScreenFigures) {
         dispatches: f.dispatches,
         ..GpuFigures::default()
     });
-}
-
-/// The path of an island the GPU backend returned.
-fn gpu_path(on: SolvedOn, path: Option<prediction::SolvePath>) -> SolvePath {
-    match (on, path) {
-        (SolvedOn::Gpu, _) => SolvePath::EnumeratedGpu,
-        (SolvedOn::Repaired, _) => SolvePath::Repaired,
-        (SolvedOn::CpuFallback, _) => SolvePath::Lemke,
-        (SolvedOn::Invalid, _) => SolvePath::Invalid,
-        (SolvedOn::Predicted, Some(p)) => prediction_path(p),
-        // The GPU backend names the prediction case of every island it
-        // settled that way; none is left without one.
-        (SolvedOn::Predicted, None) => SolvePath::PredictedBasis,
-    }
 }
 
 /// Runs a GPU call, turning a panic inside it into [`Error::Gpu`]: on a lost

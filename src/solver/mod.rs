@@ -43,7 +43,7 @@ pub use world_repair::Repairs;
 pub use cost::{cache_dir, CostModel, CALIBRATION_SIZES};
 
 use crate::gpu::{self, GpuContext, Precision};
-use crate::islands::find_islands;
+use crate::build::Built;
 use crate::lcp::Lcp;
 use crate::prediction::WarmStart;
 use crate::report::{Device, DeviceKind, IslandReport, Report};
@@ -90,6 +90,9 @@ pub struct Solver {
 impl Solver {
     /// Checks the settings and opens the device they ask for. Device trouble
     /// is not an error (see the module docs); a setting out of range is.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming the setting out of range.
     pub fn new(settings: Settings) -> Result<Self, Error> {
         settings.validate()?;
         let threads = match settings.threads {
@@ -116,6 +119,9 @@ impl Solver {
 
     /// A GPU solver on a device the caller opened (tests pass their own
     /// adapter through this seam). `settings.backend` is taken as Gpu.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming the setting out of range.
     pub fn with_device(mut settings: Settings, device: GpuContext) -> Result<Self, Error> {
         settings.backend = Backend::Gpu;
         settings.validate()?;
@@ -318,6 +324,11 @@ impl Solver {
     /// checked first (an error names the first bad one). Enumeration on the
     /// CPU backend refuses n > 20 (an error naming the problem); after device
     /// trouble or on the GPU such problems go to Lemke.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming the first bad problem and its field;
+    /// [`Error::Unsupported`] for enumeration of n > 20 on the CPU backend.
+    /// Device trouble is not an error (the CPU takes the batch).
     pub fn solve_lcps(&mut self, lcps: &[Lcp]) -> Result<Report, Error> {
         self.solve_lcps_warm(lcps, None)
     }
@@ -326,6 +337,10 @@ impl Solver {
     /// each problem (`ids[i].len() == lcps[i].n()`), stable across calls: with
     /// `settings.warm_start` each problem starts from the basis its contacts
     /// had in the last call.
+    ///
+    /// # Errors
+    /// Those of [`Solver::solve_lcps`], and [`Error::Invalid`] where `ids`
+    /// has not one entry per problem or per row.
     pub fn solve_lcps_keyed(&mut self, lcps: &[Lcp], ids: &[Vec<u64>]) -> Result<Report, Error> {
         if ids.len() != lcps.len() {
             return Err(Error::invalid(
@@ -396,6 +411,11 @@ impl Solver {
     /// for a projected `friction_method` with `Backend::Gpu`, else on the
     /// CPU; `Report::choice` says which); the others are solved as without
     /// friction.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming the first bad scene, its contact or body
+    /// and the field. Device trouble is not an error (the CPU takes the
+    /// batch).
     pub fn solve_scenes(&mut self, scenes: &[Scene]) -> Result<Report, Error> {
         let start = Instant::now();
         for (i, s) in scenes.iter().enumerate() {
@@ -418,19 +438,26 @@ impl Solver {
             report.timings.total = start.elapsed().as_secs_f64();
             return Ok(report);
         }
-        let mut report = self.frictionless_scenes(scenes)?;
+        let refs: Vec<&Scene> = scenes.iter().collect();
+        let mut report = self.frictionless_scenes(&refs)?;
         report.timings.total = start.elapsed().as_secs_f64();
         Ok(report)
     }
 
-    /// Checked scenes without friction: the LCP path.
-    fn frictionless_scenes(&mut self, scenes: &[Scene]) -> Result<Report, Error> {
+    /// Checked scenes without friction: the LCP path. Each scene is built
+    /// once ([`Built`]); the warm bases, the cost model's sizes and the
+    /// solve (GPU, or CPU) take what was built.
+    fn frictionless_scenes(&mut self, scenes: &[&Scene]) -> Result<Report, Error> {
+        let t = Instant::now();
+        let built = Built::all(scenes, self.threads);
+        let build = t.elapsed().as_secs_f64();
         // Per scene, per island: the warm basis of its contacts' ids.
         let warm: Vec<Vec<Option<u32>>> = if self.settings.warm_start {
             scenes
                 .iter()
-                .map(|s| {
-                    find_islands(s)
+                .zip(&built)
+                .map(|(s, b)| {
+                    b.islands
                         .iter()
                         .map(|isl| self.warm_basis(&contact_ids(s, &isl.contacts)))
                         .collect()
@@ -440,20 +467,15 @@ impl Solver {
             Vec::new()
         };
         let mut report = None;
-        let (use_gpu, why) = if self.cost.is_some() {
-            let sizes: Vec<usize> = scenes
-                .iter()
-                .flat_map(|s| find_islands(s).into_iter().map(|i| i.contacts.len()))
-                .collect();
-            self.gpu_for(sizes.into_iter())
-        } else {
-            self.gpu_for(std::iter::empty())
-        };
+        let sizes = built
+            .iter()
+            .flat_map(|b| b.islands.iter().map(|i| i.contacts.len()));
+        let (use_gpu, why) = self.gpu_for(sizes);
         if let Some(ctx) = self.gpu.clone().filter(|_| use_gpu) {
             let on_gpu = if self.settings.all_solutions {
-                self.all_solutions_scenes_on_gpu(&ctx, scenes)
+                self.all_solutions_scenes_on_gpu(&ctx, scenes, &built)
             } else {
-                self.scenes_on_gpu(&ctx, scenes, &warm)
+                self.scenes_on_gpu(&ctx, scenes, &built, &warm)
             };
             match on_gpu {
                 Ok(r) => report = Some(r),
@@ -463,8 +485,9 @@ impl Solver {
         }
         let mut report = match report {
             Some(r) => r,
-            None => self.scenes_on_cpu(scenes, &warm)?,
+            None => self.scenes_on_cpu(scenes, &built, &warm)?,
         };
+        report.timings.build = build;
         if self.cost.is_some() {
             report.choice = why;
         }

@@ -13,11 +13,10 @@ use super::world_path::Solved as Results;
 use super::world_path::{max_error, Item, Stepped, WorldStepReport};
 use super::world_repair::{repair_island, Repairs};
 use super::Solver;
-use crate::cpu::assembly::{assemble_contacts, assemble_island};
+use crate::build::Built;
 use crate::cpu::batch::parallel_fill_by;
 use crate::cpu::enumeration::{solve_basis, BasisOutcome, MAX_ENUMERATION_N};
 use crate::cpu::impulses::{apply_impulses, BodyVelocity};
-use crate::islands::find_islands;
 use crate::lcp::{Counters, Lcp, LcpSolution, Status};
 use crate::report::{IslandReport, Report, SceneReport, SolvePath};
 use crate::scene::Scene;
@@ -99,12 +98,11 @@ impl Solver {
     ) -> Stepped {
         let t0 = Instant::now();
         let scene = &item.prepared.scene;
-        let islands = find_islands(scene);
-        let rows = assemble_contacts(scene);
-        let lcps: Vec<Lcp> = islands
-            .iter()
-            .map(|isl| assemble_island(scene, &rows, isl))
-            .collect();
+        let Built {
+            islands,
+            rows,
+            lcps,
+        } = Built::new(scene);
         let warm = self.settings.warm_start;
         let id = |c: &usize| scene.contacts[*c].id.unwrap_or(u64::MAX);
         let hints: Vec<Option<u32>> = islands

@@ -21,10 +21,11 @@ use super::Solver;
 use crate::cpu::assembly::{assemble_contacts, assemble_island};
 use crate::cpu::impulses::BodyVelocity;
 use crate::friction::assembly::{
-    apply_friction_impulses, assemble_friction_contacts, assemble_friction_island_into,
+    apply_friction_impulses, assemble_friction_island_into,
 };
 use crate::friction::{solve_friction_problem, FrictionProblem};
-use crate::islands::{find_islands, Island};
+use crate::build::FrictionBuilt;
+use crate::islands::Island;
 use crate::report::{FrictionIslandReport, SceneFriction, SceneReport};
 use crate::scene::Scene;
 use crate::settings::Settings;
@@ -96,8 +97,7 @@ impl Solver {
     ) -> Stepped {
         let t0 = Instant::now();
         let scene = &item.prepared.scene;
-        let islands = find_islands(scene);
-        let rows = assemble_friction_contacts(scene);
+        let FrictionBuilt { islands, rows } = FrictionBuilt::new(scene);
         let warm = self.settings.warm_start;
         let starts: Vec<Option<Vec<f64>>> = islands
             .iter()

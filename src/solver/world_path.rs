@@ -138,6 +138,10 @@ impl Solver {
     /// The same world gives the same trajectory alone or in a batch (bit for
     /// bit on the CPU: each island is solved on its own, warm start is per
     /// world, contact ids carry the world's index).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming the first bad world, its body and the
+    /// field, or `dt`; no world moves then.
     pub fn step_worlds(&mut self, worlds: &mut [World], dt: f64) -> Result<StepReport, Error> {
         if !dt.is_finite() || dt <= 0.0 {
             return Err(Error::invalid(

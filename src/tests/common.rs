@@ -6,7 +6,7 @@
 use std::path::PathBuf;
 
 use crate::cpu::enumeration::EnumerationSettings;
-use crate::pipeline::{solve, Solver, SolverSettings};
+use crate::tests::reference::{solve, Solver, SolverSettings};
 use crate::{Lcp, LcpSolution};
 
 pub use super::skip::{fc3d_dir, siconos_dir, skip, Lack};
@@ -209,7 +209,7 @@ pub fn physical_islands(seed: u64, count: usize, max_n: usize) -> Vec<Lcp> {
     }
     let mut lcps: Vec<Lcp> = scenes
         .iter()
-        .flat_map(|s| crate::pipeline::build(s, "scene").unwrap().2)
+        .flat_map(|s| crate::tests::reference::build(s, "scene").unwrap().2)
         .filter(|l| l.n() <= max_n)
         .collect();
     lcps.extend(seed_002_problems());

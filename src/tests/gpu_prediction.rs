@@ -7,7 +7,7 @@
 
 use crate::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};
 use crate::gpu::batch::solve_lcp_batch_warm;
-use crate::gpu::scenes::solve_scenes_warm;
+use crate::gpu::scenes::{check_and_build, solve_scenes_warm};
 use crate::gpu::{
     solve_lcp_batch, solve_scenes, GpuBatchResult, GpuSolveSettings, Precision, SolvedOn,
 };
@@ -31,7 +31,7 @@ fn scenes(count: usize) -> Vec<Scene> {
 fn lcps(count: usize) -> Vec<Lcp> {
     let mut out: Vec<Lcp> = scenes(count)
         .iter()
-        .flat_map(|s| crate::pipeline::build(s, "scene").unwrap().2)
+        .flat_map(|s| crate::tests::reference::build(s, "scene").unwrap().2)
         .collect();
     // One separating island, one single contact, one invalid problem.
     out.push(Lcp::new(vec![2.0, 1.0, 1.0, 2.0], vec![1.0, 0.5]).unwrap());
@@ -163,7 +163,8 @@ fn scene_prediction_on_and_off_agree() {
     assert_eq!(on.report.statuses, off.report.statuses);
     let mut predicted = 0;
     for (s, (a, b)) in on.scenes.iter().zip(&off.scenes).enumerate() {
-        for (k, (x, y)) in a.islands.iter().zip(&b.islands).enumerate() {
+        let (a, b) = (&on.islands[a.islands.clone()], &off.islands[b.islands.clone()]);
+        for (k, (x, y)) in a.iter().zip(b).enumerate() {
             assert_eq!(x.solution.status, y.solution.status, "scene {s} island {k}");
             let scale = x.solution.z.iter().fold(1.0f64, |m, v| m.max(v.abs()));
             for (p, q) in x.solution.z.iter().zip(&y.solution.z) {
@@ -182,13 +183,16 @@ fn scene_prediction_on_and_off_agree() {
     let warm: Vec<Vec<Option<u32>>> = on
         .scenes
         .iter()
-        .map(|s| s.islands.iter().map(|i| i.solution.basis).collect())
+        .map(|s| on.islands[s.islands.clone()].iter().map(|i| i.solution.basis).collect())
         .collect();
-    let hot = solve_scenes_warm(&ctx, &scenes, Some(&warm), &Default::default()).unwrap();
+    let built = check_and_build(&scenes).unwrap();
+    let refs: Vec<&Scene> = scenes.iter().collect();
+    let hot = solve_scenes_warm(&ctx, &refs, &built, Some(&warm), &Default::default()).unwrap();
     println!("warm:\n{}", hot.report);
     assert!(hot.report.path_count(SolvePath::WarmStart) > 0);
     for (a, b) in on.scenes.iter().zip(&hot.scenes) {
-        for (x, y) in a.islands.iter().zip(&b.islands) {
+        let (a, b) = (&on.islands[a.islands.clone()], &hot.islands[b.islands.clone()]);
+        for (x, y) in a.iter().zip(b) {
             if x.solution.basis == y.solution.basis {
                 assert_eq!(x.solution.z, y.solution.z);
             }

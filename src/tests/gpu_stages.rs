@@ -13,7 +13,7 @@ use crate::gpu::layout::{
 use crate::gpu::scenes::assemble_on_gpu;
 use crate::gpu::{GpuSolveSettings, Precision};
 use crate::islands::find_islands;
-use crate::pipeline::build;
+use crate::tests::reference::build;
 use crate::{Body, Contact, Lcp, Scene};
 
 use super::common::gpu_context as context;

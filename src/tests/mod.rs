@@ -5,6 +5,7 @@
 //! and of the recorded output are in `tests/`.)
 
 pub(crate) mod common;
+pub(crate) mod reference;
 pub(crate) mod skip;
 
 mod device_trouble;

@@ -13,8 +13,8 @@ use crate::generate::{
     ball_body, box_body, box_on_ground, random_island, random_scene, seed_chain, Rng,
 };
 use crate::islands::{find_islands, Island};
-use crate::pipeline::solve_scene;
-use crate::pipeline::{solve, Solver, SolverSettings};
+use crate::tests::reference::solve_scene;
+use crate::tests::reference::{solve, Solver, SolverSettings};
 use crate::{Contact, Scene, Status};
 use glam::{DMat3, DVec3};
 

@@ -8,8 +8,8 @@ use super::physics::*;
 use crate::cpu::impulses::BodyVelocity;
 use crate::generate::{ball_body, box_body, random_island, random_scene, Rng};
 use crate::islands::find_islands;
-use crate::pipeline::solve_scene;
-use crate::pipeline::Solver;
+use crate::tests::reference::solve_scene;
+use crate::tests::reference::Solver;
 use crate::{Scene, Status};
 use glam::{DMat3, DVec3};
 

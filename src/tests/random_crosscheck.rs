@@ -19,8 +19,8 @@ use super::common::{is_positive_definite, run, w_rel_diff, z_rel_diff};
 use crate::generate::{random_island, Rng};
 use crate::io::parse_json;
 use crate::io::siconos::parse_dat;
-use crate::pipeline::build;
-use crate::pipeline::Solver;
+use crate::tests::reference::build;
+use crate::tests::reference::Solver;
 use crate::{Lcp, Status};
 use proptest::prelude::*;
 
@@ -100,8 +100,8 @@ fn enumeration_and_lemke_agree_on_random_islands() {
 /// Jᵀ(z₁ − z₂) = 0). Enumeration and Lemke must agree on both.
 #[test]
 fn enumeration_and_lemke_agree_on_demo_world_islands() {
-    use crate::pipeline::solve_scene;
-    use crate::pipeline::SolverSettings;
+    use crate::tests::reference::solve_scene;
+    use crate::tests::reference::SolverSettings;
     let mut rng = Rng::new(0xDE30);
     let (mut islands, mut singular, mut max_dw, mut max_dv) = (0, 0, 0.0f64, 0.0f64);
     for k in 0..300 {
@@ -194,7 +194,7 @@ fn lemke_agrees_with_enumeration_on_small_random_lcps() {
         let n = 1 + k % 7;
         let (integer, psd) = (k % 2 == 0, k % 3 == 0);
         let lcp = random_lcp(&mut rng, n, integer, psd);
-        let e = crate::pipeline::solve(&lcp, &common::all_solutions_settings()).unwrap();
+        let e = crate::tests::reference::solve(&lcp, &common::all_solutions_settings()).unwrap();
         let l = run(&lcp, Solver::Lemke);
         let set = e.solution_set.clone().unwrap();
         let what = format!("LCP {k}: M = {:?}, q = {:?}, enum {set:?}", lcp.m, lcp.q);

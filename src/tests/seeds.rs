@@ -11,7 +11,7 @@
 
 use super::common::{all_solutions_settings, run, SOLVERS};
 use crate::cpu::enumeration::{solve_basis, BasisOutcome, EnumerationSettings};
-use crate::pipeline::{solve, Solver};
+use crate::tests::reference::{solve, Solver};
 use crate::{Lcp, LcpSolution, SolutionSet, Status};
 
 /// Asserts that `sol` is a solution with the expected z (and w when given) to

@@ -15,7 +15,7 @@ use crate::cpu::enumeration::distinct_solutions;
 use crate::io::siconos::parse_dat;
 use crate::io::{read_input, Input};
 use crate::cpu::pgs::PgsSettings;
-use crate::pipeline::{solve, Solver, SolverSettings};
+use crate::tests::reference::{solve, Solver, SolverSettings};
 use crate::{Lcp, SolutionSet, Status};
 use serde_json::Value;
 

@@ -1,17 +1,14 @@
-//! The CPU path for whole scenes, in named phases: build (islands and
-//! assembly), solve (one LCP per island), write back (impulses applied to the
-//! bodies). With it, the tests' reference vocabulary: one LCP solved by one
-//! algorithm ([`Solver`], [`SolverSettings`], [`solve`]), one scene island
-//! by island ([`solve_scene`]); the library's door is [`crate::Solver`].
+//! The tests' reference: one LCP solved by one algorithm ([`Solver`],
+//! [`SolverSettings`], [`solve`]), one scene island by island
+//! ([`solve_scene`]), the library's build ([`crate::build::Built`]) and
+//! solvers called directly; the batched and GPU solves are compared with
+//! it. The library's door is [`crate::Solver`].
 
-// `solve_scene` (one scene, one island at a time) is the reference the
-// tests compare batched and GPU solves with.
-#![cfg_attr(not(test), allow(dead_code))]
-
-use crate::cpu::assembly::{assemble_contacts, assemble_island, ContactRow};
+use crate::build::Built;
+use crate::islands::Island;
+use crate::cpu::assembly::ContactRow;
 use crate::cpu::enumeration::MAX_ENUMERATION_N;
 use crate::cpu::impulses::{apply_impulses, BodyVelocity};
-use crate::islands::{find_islands, Island};
 use crate::lcp::{Lcp, LcpSolution};
 use crate::scene::Scene;
 use crate::Error;
@@ -43,16 +40,11 @@ pub struct SceneSolution {
     pub rows: Vec<ContactRow>,
 }
 
-/// Build phase: validated scene → islands, contact rows and island LCPs.
-pub fn build(scene: &Scene, item: impl std::fmt::Display) -> Result<(Vec<Island>, Vec<ContactRow>, Vec<Lcp>), Error> {
+/// Checks a scene and builds it: islands, contact rows and island LCPs.
+pub fn build(scene: &Scene, item: &str) -> Result<(Vec<Island>, Vec<ContactRow>, Vec<Lcp>), Error> {
     scene.validate(item)?;
-    let islands = find_islands(scene);
-    let rows = assemble_contacts(scene);
-    let lcps = islands
-        .iter()
-        .map(|isl| assemble_island(scene, &rows, isl))
-        .collect();
-    Ok((islands, rows, lcps))
+    let b = Built::new(scene);
+    Ok((b.islands, b.rows, b.lcps))
 }
 
 /// Solves one scene on the CPU: every island with the chosen solver
@@ -108,7 +100,6 @@ pub enum Solver {
 
 impl Solver {
     /// The name used in the tests' messages.
-    #[cfg(test)]
     pub fn name(self) -> &'static str {
         match self {
             Solver::Enum => "enum",
@@ -145,7 +136,6 @@ impl Default for SolverSettings {
 
 impl SolverSettings {
     /// Default settings for `solver` (the tests' shorthand).
-    #[cfg(test)]
     pub fn with_solver(solver: Solver) -> Self {
         SolverSettings {
             solver,
