@@ -451,6 +451,9 @@ mod tests {
         p.mu[0] = 0.5;
         p.w[5] = f64::INFINITY;
         let e = p.validate(format_args!("problem {i}")).unwrap_err();
-        assert_eq!(e.to_string(), "problem 4: field `W[1][2]`: not a finite number");
+        assert_eq!(
+            e.to_string(),
+            "problem 4: field `W[1][2]`: not a finite number"
+        );
     }
 }

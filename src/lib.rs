@@ -62,6 +62,7 @@ pub mod solver;
 pub mod world;
 
 pub use cpu::impulses::BodyVelocity;
+pub use cpu::lemke::{lemke, lemke_textbook_basis, LemkeSettings};
 pub use error::Error;
 pub use friction::{
     FrictionMethod, FrictionProblem, FrictionResiduals, FrictionSettings, FrictionSolution,
@@ -79,7 +80,6 @@ pub use short_vec::{ShortVec, SHORT_INLINE};
 pub use solver::world_path::{StepReport, StepTimings, WorldStepReport};
 pub use solver::Repairs;
 pub use solver::{CostModel, Solver};
-pub use cpu::lemke::{lemke, lemke_textbook_basis, LemkeSettings};
 pub use world::{RigidBody, Shape, World};
 
 /// Every adapter wgpu finds on `api` (for `lcpbatch info`); empty when none.

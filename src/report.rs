@@ -659,7 +659,10 @@ mod tests {
     #[test]
     fn appended_parts_are_the_whole() {
         let mut rng = Rng::new(7);
-        let mut scenes = vec![random_scene(&mut rng, 3, 5, 10.0), box_stack(3, 0.5, 0.1, 0.0)];
+        let mut scenes = vec![
+            random_scene(&mut rng, 3, 5, 10.0),
+            box_stack(3, 0.5, 0.1, 0.0),
+        ];
         scenes.push(box_on_ground(1.0, 0.0));
         scenes.push(random_scene(&mut rng, 4, 6, 100.0));
         scenes.push(box_stack(2, 0.3, 0.2, 0.01));
@@ -674,11 +677,17 @@ mod tests {
             assert_eq!(joined.friction_statuses, whole.friction_statuses);
             assert_eq!(joined.max_coulomb_error, whole.max_coulomb_error);
             let scene_of = |r: &super::Report| -> Vec<_> {
-                r.islands.iter().map(|i| (i.scene, i.solution.z.to_vec())).collect()
+                r.islands
+                    .iter()
+                    .map(|i| (i.scene, i.solution.z.to_vec()))
+                    .collect()
             };
             assert_eq!(scene_of(&joined), scene_of(&whole), "cut {cut}");
             let friction_of = |r: &super::Report| -> Vec<_> {
-                r.friction.iter().map(|i| (i.scene, i.contacts.clone())).collect()
+                r.friction
+                    .iter()
+                    .map(|i| (i.scene, i.contacts.clone()))
+                    .collect()
             };
             assert_eq!(friction_of(&joined), friction_of(&whole), "cut {cut}");
             for (a, b) in joined.scenes.iter().zip(&whole.scenes) {

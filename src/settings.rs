@@ -6,13 +6,13 @@
 //! names the field, e.g. `settings: pivot_tol: 2 is not in [0, 1)`.
 
 use crate::cpu::enumeration::EnumerationSettings;
+use crate::cpu::lemke::LemkeSettings;
+use crate::cpu::pgs::PgsSettings;
 use crate::friction::{FrictionMethod, FrictionSettings};
 use crate::gpu::{GpuOptions, GpuSolveSettings};
 use crate::linalg::PIVOT_TOL;
-use crate::cpu::lemke::LemkeSettings;
-use crate::cpu::pgs::PgsSettings;
-use std::str::FromStr;
 use crate::Error;
+use std::str::FromStr;
 
 /// Where islands are solved.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -120,7 +120,12 @@ impl FromStr for Backend {
 
 impl Method {
     /// Every method.
-    pub const ALL: [Method; 4] = [Method::Auto, Method::Enumeration, Method::Lemke, Method::Pgs];
+    pub const ALL: [Method; 4] = [
+        Method::Auto,
+        Method::Enumeration,
+        Method::Lemke,
+        Method::Pgs,
+    ];
 }
 
 impl FromStr for Method {
@@ -582,7 +587,12 @@ mod tests {
 
     #[test]
     fn method_parses_its_names() {
-        round_trip(&Method::ALL, Method::name, "method", "auto, enum, lemke, pgs");
+        round_trip(
+            &Method::ALL,
+            Method::name,
+            "method",
+            "auto, enum, lemke, pgs",
+        );
     }
 
     #[test]
@@ -597,7 +607,12 @@ mod tests {
 
     #[test]
     fn precision_parses_its_names() {
-        round_trip(&Precision::ALL, Precision::name, "precision", "auto, f32, f64");
+        round_trip(
+            &Precision::ALL,
+            Precision::name,
+            "precision",
+            "auto, f32, f64",
+        );
         // The environment's spelling is any case.
         assert_eq!(Precision::parse("F64").unwrap(), Precision::F64);
     }

@@ -82,14 +82,17 @@ impl Args<'_> {
         if let Some(t) = self.pgs_tolerance {
             s.pgs_tolerance = t;
         }
-        s.friction_method = self.friction_method.to_ascii_lowercase().parse::<FrictionMethod>()
+        s.friction_method = self
+            .friction_method
+            .to_ascii_lowercase()
+            .parse::<FrictionMethod>()
             .map_err(|_| {
-            bad(
-                "friction_method",
-                self.friction_method,
-                "'auto', 'nsgs', 'newton', 'jacobi', 'pgs', 'apgd'",
-            )
-        })?;
+                bad(
+                    "friction_method",
+                    self.friction_method,
+                    "'auto', 'nsgs', 'newton', 'jacobi', 'pgs', 'apgd'",
+                )
+            })?;
         if let Some(t) = self.friction_tolerance {
             s.friction_tolerance = t;
         }

@@ -65,14 +65,10 @@ impl NativeSolver {
         ids: Option<Vec<Vec<u64>>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let ranges = batch::chunks(lcps.iter().map(Lcp::n));
-        let (r, count) = self.run_chunks(
-            py,
-            ranges,
-            |s, r| match &ids {
-                Some(ids) => s.solve_lcps_keyed(&lcps[r.clone()], &ids[r]),
-                None => s.solve_lcps(&lcps[r]),
-            },
-        )?;
+        let (r, count) = self.run_chunks(py, ranges, |s, r| match &ids {
+            Some(ids) => s.solve_lcps_keyed(&lcps[r.clone()], &ids[r]),
+            None => s.solve_lcps(&lcps[r]),
+        })?;
         let d = PyDict::new(py);
         batch::islands_into(py, &d, &r.islands)?;
         d.set_item("report", report::to_dict(py, &r, count)?)?;
@@ -86,14 +82,10 @@ impl NativeSolver {
         ids: Option<Vec<Vec<u64>>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let ranges = friction::chunks(problems.iter().map(FrictionProblem::contacts));
-        let (r, count) = self.run_chunks(
-            py,
-            ranges,
-            |s, r| match &ids {
-                Some(ids) => s.solve_friction_keyed(&problems[r.clone()], &ids[r]),
-                None => s.solve_friction(&problems[r]),
-            },
-        )?;
+        let (r, count) = self.run_chunks(py, ranges, |s, r| match &ids {
+            Some(ids) => s.solve_friction_keyed(&problems[r.clone()], &ids[r]),
+            None => s.solve_friction(&problems[r]),
+        })?;
         let d = PyDict::new(py);
         friction::problems_into(py, &d, &r.friction)?;
         d.set_item("report", report::to_dict(py, &r, count)?)?;
@@ -218,8 +210,7 @@ impl NativeSolver {
             .map(|(i, s)| s.scene(i))
             .collect::<PyResult<_>>()?;
         let ranges = scenes::chunks(&scenes);
-        let (r, count) =
-            self.run_chunks(py, ranges, |s, r| s.solve_scenes(&scenes[r]))?;
+        let (r, count) = self.run_chunks(py, ranges, |s, r| s.solve_scenes(&scenes[r]))?;
         let d = PyDict::new(py);
         scenes::scenes_into(py, &d, &scenes, &r)?;
         d.set_item("report", report::to_dict(py, &r, count)?)?;

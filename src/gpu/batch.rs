@@ -24,11 +24,11 @@ use super::pipelines::Tolerances;
 use super::{GpuContext, Precision, MAX_GPU_N};
 use crate::cpu::enumeration::EnumerationSettings;
 use crate::cpu::enumeration_tree::TREE_MAX_N;
+use crate::cpu::lemke::{lemke, LemkeSettings};
+use crate::gpu::validation::{validate_island, BatchReport, GpuVerdict, Verdict};
 use crate::lcp::{Lcp, LcpSolution};
 use crate::prediction::{prediction, SolvePath, Unsettled};
-use crate::cpu::lemke::{lemke, LemkeSettings};
 use crate::settings::Method;
-use crate::gpu::validation::{validate_island, BatchReport, GpuVerdict, Verdict};
 use crate::Error;
 
 /// Default GPU tolerances in f32 (f64 shaders use the CPU's): accept more
@@ -330,7 +330,12 @@ fn settle_on_cpu(
         return Err(Unsettled { definite: None });
     }
     let (path, s) = prediction(lcp, warm, &settings.enumeration)?;
-    Ok(outcome(s, SolvedOn::Predicted, Some(path), Method::Enumeration))
+    Ok(outcome(
+        s,
+        SolvedOn::Predicted,
+        Some(path),
+        Method::Enumeration,
+    ))
 }
 
 /// Solves a batch of LCPs: islands with n ≤ 16 by enumeration on the GPU,

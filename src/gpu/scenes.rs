@@ -28,13 +28,13 @@ use super::{GpuContext, MAX_GPU_N};
 use crate::build::Built;
 use crate::cpu::assembly::ContactRow;
 use crate::cpu::impulses::{apply_impulses, BodyVelocity};
+use crate::cpu::lemke::lemke;
+use crate::gpu::validation::{validate_island, BatchReport, GpuVerdict, Verdict};
 use crate::lcp::{Lcp, LcpSolution};
 use crate::prediction::{prediction, SolvePath};
 use crate::report::{IslandReport, SceneReport};
 use crate::scene::Scene;
-use crate::cpu::lemke::lemke;
 use crate::settings::Method;
-use crate::gpu::validation::{validate_island, BatchReport, GpuVerdict, Verdict};
 use crate::Error;
 
 /// Scenes after the impact, with where each island was solved.
@@ -515,7 +515,12 @@ impl SceneRun<'_> {
             } else {
                 SolvedOn::Gpu
             };
-            self.solved[s][k] = Some((checked.solution, Method::Enumeration, on, SolvePath::Enumerated));
+            self.solved[s][k] = Some((
+                checked.solution,
+                Method::Enumeration,
+                on,
+                SolvePath::Enumerated,
+            ));
         }
         for &s in &c.scenes {
             for (k, isl) in self.prepared[s].islands.iter().enumerate() {

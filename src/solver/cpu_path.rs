@@ -4,18 +4,18 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
 use super::{check_solution, warm_basis, Solver};
+use crate::build::Built;
 use crate::cpu::batch::{parallel_fill, parallel_map};
 use crate::cpu::enumeration::{enumerate, feasible_basis_into, MAX_ENUMERATION_N};
 use crate::cpu::impulses::apply_impulses;
-use crate::build::Built;
+use crate::cpu::lemke::{lemke, lemke_textbook_basis};
+use crate::cpu::pgs::pgs;
 use crate::lcp::{Lcp, LcpSolution, Status};
 use crate::prediction::{self, predict_into};
 use crate::report::{IslandReport, Report, SceneReport, SolvePath};
 use crate::scene::Scene;
 use crate::settings::{Backend, Method, Settings};
 use crate::short_vec::ShortVec;
-use crate::cpu::lemke::{lemke, lemke_textbook_basis};
-use crate::cpu::pgs::pgs;
 use crate::Error;
 
 impl Solver {

@@ -10,10 +10,9 @@ use std::hash::{BuildHasherDefault, Hasher};
 use std::time::Instant;
 
 use super::Solver;
+use crate::build::FrictionBuilt;
 use crate::cpu::batch::parallel_map;
-use crate::friction::assembly::{
-    apply_friction_impulses, world_impulse, FrictionContactRows,
-};
+use crate::friction::assembly::{apply_friction_impulses, world_impulse, FrictionContactRows};
 use crate::friction::solve::from_projected;
 use crate::friction::{
     solve_friction_problem, FrictionMethod, FrictionProblem, FrictionSolution, ProjectedGpuFigures,
@@ -21,7 +20,6 @@ use crate::friction::{
 use crate::gpu::friction::solve_projected_on_gpu_against;
 use crate::gpu::friction_assembly::assemble_built_friction_on_gpu;
 use crate::gpu::GpuContext;
-use crate::build::FrictionBuilt;
 use crate::islands::Island;
 use crate::report::{ContactImpulse, FrictionIslandReport, Report, SceneFriction, SceneReport};
 use crate::scene::Scene;

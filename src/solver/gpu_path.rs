@@ -3,13 +3,13 @@
 
 use super::Solver;
 use crate::build::Built;
+use crate::gpu::validation::BatchReport;
 use crate::gpu::{self, GpuContext};
 use crate::lcp::Lcp;
 use crate::prediction;
 use crate::report::{GpuFigures, IslandReport, Report, SceneReport, SolvePath};
 use crate::scene::Scene;
 use crate::settings::Method;
-use crate::gpu::validation::BatchReport;
 use crate::Error;
 
 use super::cpu_path::{lcp_islands, solve_on_cpu, Solved};

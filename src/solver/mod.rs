@@ -42,8 +42,8 @@ pub use world_repair::Repairs;
 
 pub use cost::{cache_dir, CostModel, CALIBRATION_SIZES};
 
-use crate::gpu::{self, GpuContext, Precision};
 use crate::build::Built;
+use crate::gpu::{self, GpuContext, Precision};
 use crate::lcp::Lcp;
 use crate::prediction::WarmStart;
 use crate::report::{Device, DeviceKind, IslandReport, Report};

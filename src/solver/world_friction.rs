@@ -18,13 +18,11 @@ use super::world_path::Solved as Results;
 use super::world_path::{max_error, Item, Stepped};
 use super::world_repair::{reapply, repair_island, Repairs};
 use super::Solver;
+use crate::build::FrictionBuilt;
 use crate::cpu::assembly::{assemble_contacts, assemble_island};
 use crate::cpu::impulses::BodyVelocity;
-use crate::friction::assembly::{
-    apply_friction_impulses, assemble_friction_island_into,
-};
+use crate::friction::assembly::{apply_friction_impulses, assemble_friction_island_into};
 use crate::friction::{solve_friction_problem, FrictionProblem};
-use crate::build::FrictionBuilt;
 use crate::islands::Island;
 use crate::report::{FrictionIslandReport, SceneFriction, SceneReport};
 use crate::scene::Scene;

@@ -32,10 +32,10 @@ use serde::Serialize;
 use super::cpu_path::solve_on_cpu;
 use crate::cpu::assembly::ContactRow;
 use crate::cpu::impulses::BodyVelocity;
+use crate::cpu::pgs::pgs;
 use crate::lcp::{Lcp, LcpSolution, Status};
 use crate::scene::Scene;
 use crate::settings::{Method, Settings};
-use crate::cpu::pgs::pgs;
 
 /// Unsolved islands of a step, by what their bodies got instead (see the
 /// module docs of `world_repair`).

@@ -163,7 +163,10 @@ fn scene_prediction_on_and_off_agree() {
     assert_eq!(on.report.statuses, off.report.statuses);
     let mut predicted = 0;
     for (s, (a, b)) in on.scenes.iter().zip(&off.scenes).enumerate() {
-        let (a, b) = (&on.islands[a.islands.clone()], &off.islands[b.islands.clone()]);
+        let (a, b) = (
+            &on.islands[a.islands.clone()],
+            &off.islands[b.islands.clone()],
+        );
         for (k, (x, y)) in a.iter().zip(b).enumerate() {
             assert_eq!(x.solution.status, y.solution.status, "scene {s} island {k}");
             let scale = x.solution.z.iter().fold(1.0f64, |m, v| m.max(v.abs()));
@@ -183,7 +186,12 @@ fn scene_prediction_on_and_off_agree() {
     let warm: Vec<Vec<Option<u32>>> = on
         .scenes
         .iter()
-        .map(|s| on.islands[s.islands.clone()].iter().map(|i| i.solution.basis).collect())
+        .map(|s| {
+            on.islands[s.islands.clone()]
+                .iter()
+                .map(|i| i.solution.basis)
+                .collect()
+        })
         .collect();
     let built = check_and_build(&scenes).unwrap();
     let refs: Vec<&Scene> = scenes.iter().collect();
@@ -191,7 +199,10 @@ fn scene_prediction_on_and_off_agree() {
     println!("warm:\n{}", hot.report);
     assert!(hot.report.path_count(SolvePath::WarmStart) > 0);
     for (a, b) in on.scenes.iter().zip(&hot.scenes) {
-        let (a, b) = (&on.islands[a.islands.clone()], &hot.islands[b.islands.clone()]);
+        let (a, b) = (
+            &on.islands[a.islands.clone()],
+            &hot.islands[b.islands.clone()],
+        );
         for (x, y) in a.iter().zip(b) {
             if x.solution.basis == y.solution.basis {
                 assert_eq!(x.solution.z, y.solution.z);

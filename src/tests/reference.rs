@@ -5,16 +5,16 @@
 //! it. The library's door is [`crate::Solver`].
 
 use crate::build::Built;
-use crate::islands::Island;
 use crate::cpu::assembly::ContactRow;
 use crate::cpu::enumeration::MAX_ENUMERATION_N;
+use crate::cpu::enumeration::{enumerate, EnumerationSettings};
 use crate::cpu::impulses::{apply_impulses, BodyVelocity};
+use crate::cpu::lemke::{lemke, LemkeSettings};
+use crate::cpu::pgs::{pgs, PgsSettings};
+use crate::islands::Island;
 use crate::lcp::{Lcp, LcpSolution};
 use crate::scene::Scene;
 use crate::Error;
-use crate::cpu::enumeration::{enumerate, EnumerationSettings};
-use crate::cpu::lemke::{lemke, LemkeSettings};
-use crate::cpu::pgs::{pgs, PgsSettings};
 
 /// One island's problem and result.
 #[derive(Clone, Debug)]

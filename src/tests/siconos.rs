@@ -12,9 +12,9 @@ use std::path::Path;
 
 use super::common::{all_solutions_settings, run, siconos_dir, w_rel_diff, z_rel_diff};
 use crate::cpu::enumeration::distinct_solutions;
+use crate::cpu::pgs::PgsSettings;
 use crate::io::siconos::parse_dat;
 use crate::io::{read_input, Input};
-use crate::cpu::pgs::PgsSettings;
 use crate::tests::reference::{solve, Solver, SolverSettings};
 use crate::{Lcp, SolutionSet, Status};
 use serde_json::Value;

@@ -211,7 +211,12 @@ struct SolveArgs {
     /// Input file (.json or .dat).
     file: PathBuf,
     /// Method for every problem or island without friction.
-    #[arg(long = "method", visible_alias = "solver", value_enum, default_value = "auto")]
+    #[arg(
+        long = "method",
+        visible_alias = "solver",
+        value_enum,
+        default_value = "auto"
+    )]
     solver: SolverArg,
     /// Method for every problem or island with friction (contacts with
     /// μ > 0, friction batches, FrictionContact3D files).
