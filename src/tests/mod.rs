@@ -9,6 +9,7 @@ pub(crate) mod reference;
 pub(crate) mod skip;
 
 mod device_trouble;
+mod door;
 mod friction;
 mod friction_conformance;
 mod gpu_all_solutions;
@@ -27,6 +28,7 @@ mod gpu_workgroup;
 mod physics;
 mod physics_invariance;
 mod random_crosscheck;
+mod report_algebra;
 mod seeds;
 mod siconos;
 mod stress;
