@@ -26,66 +26,9 @@
 use std::collections::HashMap;
 use std::hash::{BuildHasher, Hasher, RandomState};
 
-use serde::Serialize;
-
 use crate::cpu::enumeration::{feasible_basis_into, EnumerationSettings, MAX_ENUMERATION_N};
 use crate::lcp::{Counters, Lcp, LcpSolution, Status};
-
-/// How an island was settled; every batch reports a count of each.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum SolvePath {
-    /// q ≥ 0: no impulse needed.
-    Separating,
-    /// n = 1, closed form.
-    SingleContact,
-    /// The caller's basis from the previous frame was still valid.
-    WarmStart,
-    /// The basis of the approaching contacts was valid and M positive definite.
-    PredictedBasis,
-    /// Exhaustive enumeration (CPU or GPU).
-    Enumerated,
-    /// Too large to enumerate: Lemke on the CPU.
-    Lemke,
-}
-
-/// The report's path of an island settled this way on the CPU (the one
-/// map between the two).
-impl From<SolvePath> for crate::report::SolvePath {
-    fn from(p: SolvePath) -> Self {
-        use crate::report::SolvePath as Path;
-        match p {
-            SolvePath::Separating => Path::Separating,
-            SolvePath::SingleContact => Path::SingleContact,
-            SolvePath::WarmStart => Path::WarmStart,
-            SolvePath::PredictedBasis => Path::PredictedBasis,
-            SolvePath::Enumerated => Path::EnumeratedCpu,
-            SolvePath::Lemke => Path::Lemke,
-        }
-    }
-}
-
-impl SolvePath {
-    pub const ALL: [SolvePath; 6] = [
-        SolvePath::Separating,
-        SolvePath::SingleContact,
-        SolvePath::WarmStart,
-        SolvePath::PredictedBasis,
-        SolvePath::Enumerated,
-        SolvePath::Lemke,
-    ];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            SolvePath::Separating => "separating",
-            SolvePath::SingleContact => "single_contact",
-            SolvePath::WarmStart => "warm_start",
-            SolvePath::PredictedBasis => "predicted_basis",
-            SolvePath::Enumerated => "enumerated",
-            SolvePath::Lemke => "lemke",
-        }
-    }
-}
+use crate::report::SolvePath;
 
 /// Is the symmetric part of M positive definite? Cholesky of (M + Mᵀ)/2 with
 /// a pivot threshold of n·ε times the largest diagonal entry: a matrix
@@ -256,37 +199,25 @@ pub(crate) fn predict_into(
     steps(lcp, warm_basis, settings, path, None, out)
 }
 
-/// An island prediction could not settle, and what it learnt of M on the
-/// way: whether M is positive definite (its step 4), which the caller's
-/// choice of enumeration needs too; None when the step did not run.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Unsettled {
-    pub definite: Option<bool>,
-}
-
-/// [`predict`], keeping what it learnt of an island it could not settle.
-pub fn prediction(
+/// [`predict_into`], keeping what it learnt of an island it could not
+/// settle: `Err` with whether M is positive definite (its step 4, which the
+/// GPU's choice of enumeration kernel needs too; None when the step did not
+/// run), `out` untouched.
+pub(crate) fn prediction_into(
     lcp: &Lcp,
     warm_basis: Option<u32>,
     settings: &EnumerationSettings,
-) -> Result<(SolvePath, LcpSolution), Unsettled> {
-    let mut path = SolvePath::Separating;
+    path: &mut SolvePath,
+    out: &mut LcpSolution,
+) -> Result<(), Option<bool>> {
     let mut definite = None;
-    let mut solution = LcpSolution::invalid(0);
-    match steps(
-        lcp,
-        warm_basis,
-        settings,
-        &mut path,
-        Some(&mut definite),
-        &mut solution,
-    ) {
-        true => Ok((path, solution)),
-        false => Err(Unsettled { definite }),
+    match steps(lcp, warm_basis, settings, path, Some(&mut definite), out) {
+        true => Ok(()),
+        false => Err(definite),
     }
 }
 
-/// The steps of [`prediction`]: whether one settled the island, its
+/// The steps of [`prediction_into`]: whether one settled the island, its
 /// solution written into `out` and in `path` the step that gave it (`out`
 /// untouched when none did). With `learn`, M's definiteness is tested on
 /// every island that reaches step 4 and written there; without, only

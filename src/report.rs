@@ -384,6 +384,17 @@ pub struct GpuFigures {
     /// Scenes: largest relative deviation of the GPU's impulse stage from
     /// its f64 twin.
     pub max_velocity_deviation: f64,
+    /// Seconds of the GPU phase's parts, as the host sees them: planning
+    /// the chunks (sorting by size, the tree kernel's routes), writing M
+    /// and q into the device's buffers, the kernels (submission to the end
+    /// of the last round, waits included) and reading the answers back.
+    pub pack_seconds: f64,
+    /// See [`Self::pack_seconds`].
+    pub upload_seconds: f64,
+    /// See [`Self::pack_seconds`].
+    pub kernel_seconds: f64,
+    /// See [`Self::pack_seconds`].
+    pub readback_seconds: f64,
 }
 
 impl AddAssign for GpuFigures {
@@ -397,6 +408,10 @@ impl AddAssign for GpuFigures {
         self.tree_undecided += b.tree_undecided;
         self.max_gpu_error = self.max_gpu_error.max(b.max_gpu_error);
         self.max_velocity_deviation = self.max_velocity_deviation.max(b.max_velocity_deviation);
+        self.pack_seconds += b.pack_seconds;
+        self.upload_seconds += b.upload_seconds;
+        self.kernel_seconds += b.kernel_seconds;
+        self.readback_seconds += b.readback_seconds;
     }
 }
 

@@ -6,6 +6,7 @@
 //! names the field, e.g. `settings: pivot_tol: 2 is not in [0, 1)`.
 
 use crate::cpu::enumeration::EnumerationSettings;
+use crate::cpu::enumeration_tree::TREE_MAX_N;
 use crate::cpu::lemke::LemkeSettings;
 use crate::cpu::pgs::PgsSettings;
 use crate::friction::{FrictionMethod, FrictionSettings};
@@ -267,7 +268,7 @@ impl Default for GpuSettings {
             api: BackendChoice::Auto,
             precision: Precision::Auto,
             kernel: EnumerationKernel::Auto,
-            tree_max_n: GpuSolveSettings::default().tree_max_n,
+            tree_max_n: TREE_MAX_N,
             max_binding_bytes: None,
             max_workgroups: None,
             round_budget: None,
@@ -552,6 +553,7 @@ impl Settings {
             predict: self.predict,
             kernel: self.gpu.kernel,
             tree_max_n: self.gpu.tree_max_n,
+            tolerance: self.tolerance,
             ..GpuSolveSettings::default()
         }
     }

@@ -8,10 +8,17 @@
 //! and buffer limits ([`super::buffers`]), and each dispatch into ranges of
 //! at most 65,535 workgroups ([`super::dispatch`]); the caller sees one
 //! result per island, in its order.
+//!
+//! The host's share runs on every core, in blocks of consecutive islands
+//! ([`BLOCK`]) written where the report keeps them: one pass checks each
+//! problem, looks up its warm basis and settles what needs no GPU
+//! (prediction, Lemke above n = 16), then the rest is packed straight into
+//! the device's buffers (in parallel, in the shader's precision), and after
+//! the kernels a second pass checks each answer in f64
+//! ([`super::validation`]). Nothing is allocated per island for n ≤ 8.
 
-// Stage entry points (`enumerate_on_gpu`, the GPU's raw
-// verdicts in `IslandOutcome`) serve the stage tests and the benches of
-// single kernels; the Solver calls `solve_lcp_batch_warm`.
+// The stage entry point `enumerate_on_gpu` (the GPU's raw verdicts)
+// serves the stage tests; the Solver calls `solve_lcp_batch`.
 #![cfg_attr(not(test), allow(dead_code))]
 
 use std::time::Instant;
@@ -21,14 +28,18 @@ use super::enumeration::EnumerationJob;
 pub use super::kernel::{EnumerationKernel, KernelPlan, TreeRoute};
 use super::layout::BasisResult;
 use super::pipelines::Tolerances;
+use super::validation::{check_answer, GpuVerdict, Verdict};
 use super::{GpuContext, Precision, MAX_GPU_N};
+use crate::cpu::batch::parallel_fill_by;
 use crate::cpu::enumeration::EnumerationSettings;
 use crate::cpu::enumeration_tree::TREE_MAX_N;
 use crate::cpu::lemke::{lemke, LemkeSettings};
-use crate::gpu::validation::{validate_island, BatchReport, GpuVerdict, Verdict};
 use crate::lcp::{Lcp, LcpSolution};
-use crate::prediction::{prediction, SolvePath, Unsettled};
+use crate::prediction::prediction_into;
+use crate::report::{Device, GpuFigures, IslandReport, Report, SolvePath};
 use crate::settings::Method;
+use crate::short_vec::ShortVec;
+use crate::solver::check_solution;
 use crate::Error;
 
 /// Default GPU tolerances in f32 (f64 shaders use the CPU's): accept more
@@ -73,6 +84,11 @@ pub struct GpuSolveSettings {
     /// Largest island the tree kernel takes (default [`TREE_MAX_N`]; values
     /// above it act as it; 0 turns the tree off).
     pub tree_max_n: usize,
+    /// The door's final check: an answer whose error exceeds this is a
+    /// numerical failure (default: [`crate::Settings`]'s, 1e-8).
+    pub tolerance: f64,
+    /// Threads of the host's passes (default: every core).
+    pub threads: usize,
 }
 
 impl Default for GpuSolveSettings {
@@ -89,6 +105,8 @@ impl Default for GpuSolveSettings {
             predict: true,
             kernel: EnumerationKernel::Auto,
             tree_max_n: TREE_MAX_N,
+            tolerance: crate::Settings::default().tolerance,
+            threads: std::thread::available_parallelism().map_or(1, |n| n.get()),
         }
     }
 }
@@ -121,75 +139,6 @@ impl GpuSolveSettings {
     }
 }
 
-/// Where an island's answer came from.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum SolvedOn {
-    /// The GPU's basis, valid in f64 (polished), or the GPU's "no
-    /// solution" confirmed on the CPU.
-    Gpu,
-    /// The GPU's answer failed the f64 check; the CPU enumeration solved it.
-    Repaired,
-    /// n > 16: solved on the CPU by Lemke.
-    CpuFallback,
-    /// Settled on the CPU by prediction before the GPU (see
-    /// [`IslandOutcome::path`] for which case).
-    Predicted,
-    /// The problem failed its checks (status InvalidInput).
-    Invalid,
-}
-
-impl SolvedOn {
-    /// The report's path of an island solved here; `path`: its prediction
-    /// case where it was settled by prediction.
-    pub(crate) fn path(self, path: Option<SolvePath>) -> crate::report::SolvePath {
-        use crate::report::SolvePath as Path;
-        match (self, path) {
-            (SolvedOn::Gpu, _) => Path::EnumeratedGpu,
-            (SolvedOn::Repaired, _) => Path::Repaired,
-            (SolvedOn::CpuFallback, _) => Path::Lemke,
-            (SolvedOn::Invalid, _) => Path::Invalid,
-            (SolvedOn::Predicted, Some(p)) => p.into(),
-            // The GPU backend names the prediction case of every island it
-            // settled that way; none is left without one.
-            (SolvedOn::Predicted, None) => Path::PredictedBasis,
-        }
-    }
-
-    pub fn name(self) -> &'static str {
-        match self {
-            SolvedOn::Gpu => "gpu",
-            SolvedOn::Repaired => "repaired",
-            SolvedOn::CpuFallback => "cpu_fallback",
-            SolvedOn::Predicted => "predicted",
-            SolvedOn::Invalid => "invalid",
-        }
-    }
-}
-
-/// One island's result.
-#[derive(Clone, Debug)]
-pub struct IslandOutcome {
-    /// The validated solution (z, w and residuals in f64).
-    pub solution: LcpSolution,
-    pub solved_on: SolvedOn,
-    /// How the island was settled: a prediction case, Enumerated (GPU,
-    /// validated) or Lemke; None for a problem that failed its checks.
-    pub path: Option<SolvePath>,
-    /// The algorithm whose answer this is: Enum (GPU or CPU) or Lemke.
-    pub solver: Method,
-    /// What the GPU's enumeration stage reported (None when it did not run).
-    pub gpu: Option<BasisResult>,
-    /// The GPU's own z, before the f64 polish (empty when it did not run).
-    pub gpu_z: Vec<f64>,
-}
-
-/// Results in the caller's order and the batch's report.
-#[derive(Clone, Debug)]
-pub struct GpuBatchResult {
-    pub islands: Vec<IslandOutcome>,
-    pub report: BatchReport,
-}
-
 /// Output of the enumeration stage for one island, before validation.
 #[derive(Clone, Debug, PartialEq)]
 pub struct EnumerationOutput {
@@ -198,18 +147,21 @@ pub struct EnumerationOutput {
     pub z: Vec<f64>,
 }
 
-/// What one GPU run did (for the report and the benches).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct RunStats {
-    pub chunks: usize,
-    pub dispatches: usize,
-    /// Enumeration rounds (summed over chunks).
-    pub rounds: usize,
-    /// Seconds of upload + dispatch + readback.
-    pub seconds: f64,
-    /// Islands the tree kernel decided, and those it left to elimination.
-    pub tree_decided: usize,
-    pub tree_undecided: usize,
+/// What the enumeration stage gave for a list of islands: per island, in
+/// the list's order, its record and where its z starts in `z`.
+pub(crate) struct Answers {
+    results: Vec<BasisResult>,
+    z_at: Vec<usize>,
+    /// Every chunk's z, in the shader's precision widened to f64.
+    z: Vec<f64>,
+}
+
+impl Answers {
+    /// Island `pos`'s record and z (of `n` entries; empty if out of range).
+    pub(crate) fn of(&self, pos: usize, n: usize) -> (&BasisResult, &[f64]) {
+        let at = self.z_at[pos];
+        (&self.results[pos], self.z.get(at..at + n).unwrap_or(&[]))
+    }
 }
 
 /// Runs the enumeration stage alone on every problem (each must be valid
@@ -219,20 +171,30 @@ pub fn enumerate_on_gpu(
     ctx: &GpuContext,
     lcps: &[&Lcp],
     settings: &GpuSolveSettings,
-) -> Result<(Vec<EnumerationOutput>, RunStats), Error> {
-    enumerate_known(ctx, lcps, &[], settings)
+) -> Result<(Vec<EnumerationOutput>, GpuFigures), Error> {
+    let (answers, figures) = enumerate_known(ctx, lcps, &[], settings)?;
+    let out = (0..lcps.len())
+        .map(|i| {
+            let (result, z) = answers.of(i, lcps[i].n());
+            EnumerationOutput {
+                result: *result,
+                z: z.to_vec(),
+            }
+        })
+        .collect();
+    Ok((out, figures))
 }
 
 /// [`enumerate_on_gpu`] with `definite[i]`: whether island i's M is
 /// positive definite, where prediction found out (empty: nothing known).
+/// The figures' seconds: packing, upload, kernels, readback.
 fn enumerate_known(
     ctx: &GpuContext,
     lcps: &[&Lcp],
     definite: &[Option<bool>],
     settings: &GpuSolveSettings,
-) -> Result<(Vec<EnumerationOutput>, RunStats), Error> {
-    let start = Instant::now();
-    let mut stats = RunStats::default();
+) -> Result<(Answers, GpuFigures), Error> {
+    let mut figures = GpuFigures::default();
     check_gpu_sizes(lcps)?;
     let precision = ctx.precision();
     let pipelines = ctx.pipelines()?;
@@ -240,21 +202,24 @@ fn enumerate_known(
     let (max_bytes, max_groups) = limits_for(ctx, settings);
     let plan = KernelPlan::new(ctx, settings);
 
-    let mut out = vec![
-        EnumerationOutput {
-            result: BasisResult::default(),
-            z: Vec::new(),
-        };
-        lcps.len()
-    ];
+    let t = Instant::now();
     let tree: Vec<TreeRoute> = lcps
         .iter()
         .enumerate()
         .map(|(i, l)| plan.tree_for(l, definite.get(i).copied().flatten()))
         .collect();
-    for chunk in pack_chunks(lcps, &tree, max_bytes, precision.bytes()) {
+    let chunks = pack_chunks(lcps, &tree, max_bytes, precision.bytes());
+    figures.pack_seconds += t.elapsed().as_secs_f64();
+    let mut answers = Answers {
+        results: vec![BasisResult::default(); lcps.len()],
+        z_at: vec![0; lcps.len()],
+        z: Vec::new(),
+    };
+    for chunk in chunks {
         let run = ctx.scoped("enumeration", || {
-            let (islands, values) = chunk.upload(ctx, precision);
+            let t = Instant::now();
+            let (islands, values) = chunk.upload(ctx, lcps, precision, settings.threads)?;
+            figures.upload_seconds += t.elapsed().as_secs_f64();
             let job = EnumerationJob {
                 ctx,
                 pipelines: &pipelines,
@@ -268,25 +233,16 @@ fn enumerate_known(
             };
             job.run(ctx.encoder("enumeration"), true)
         })??;
+        let base = answers.z.len();
         for ((&i, rec), res) in chunk.order.iter().zip(&chunk.table).zip(&run.results) {
-            let (z0, n) = (rec.z as usize, rec.n as usize);
-            out[i] = EnumerationOutput {
-                result: *res,
-                z: run
-                    .z
-                    .get(z0..z0 + n)
-                    .map(<[f64]>::to_vec)
-                    .unwrap_or_default(),
-            };
+            answers.results[i] = *res;
+            answers.z_at[i] = base + rec.z as usize;
         }
-        stats.chunks += 1;
-        stats.dispatches += run.dispatches;
-        stats.rounds += run.rounds;
-        stats.tree_decided += run.tree_decided;
-        stats.tree_undecided += run.tree_undecided;
+        answers.z.extend_from_slice(&run.z);
+        figures += run.figures;
+        figures.chunks += 1;
     }
-    stats.seconds = start.elapsed().as_secs_f64();
-    Ok((out, stats))
+    Ok((answers, figures))
 }
 
 fn check_gpu_sizes(lcps: &[&Lcp]) -> Result<(), Error> {
@@ -301,132 +257,201 @@ fn check_gpu_sizes(lcps: &[&Lcp]) -> Result<(), Error> {
     Ok(())
 }
 
-/// Problem i settled on the CPU: invalid, n > [`MAX_GPU_N`] (Lemke), or
-/// by prediction (with `settings.predict`); else what prediction learnt.
-fn settle_on_cpu(
-    i: usize,
+/// Islands of a batch one thread takes at a time in the host's passes.
+const BLOCK: usize = 256;
+
+/// A thread's share of a batch in the host's passes: consecutive islands,
+/// their reports, and those of them left to the GPU.
+struct Block<'a> {
+    /// Index of the first island in the batch.
+    first: usize,
+    islands: &'a mut [IslandReport],
+    /// (island, whether its M is positive definite where prediction found
+    /// out) for each island left to the GPU, in order.
+    pending: Vec<(usize, Option<bool>)>,
+    /// Position of the first of them in the GPU's list.
+    gpu_first: usize,
+    /// The answers kept (polished) and the largest error of the GPU's own z.
+    polished: usize,
+    max_gpu_error: f64,
+    /// A failure of the f64 check (none is expected: n ≤ 16).
+    error: Option<Error>,
+}
+
+/// Splits `islands` into [`Block`]s.
+fn blocks(islands: &mut [IslandReport]) -> Vec<Block<'_>> {
+    islands
+        .chunks_mut(BLOCK)
+        .enumerate()
+        .map(|(b, islands)| Block {
+            first: b * BLOCK,
+            islands,
+            pending: Vec::new(),
+            gpu_first: 0,
+            polished: 0,
+            max_gpu_error: 0.0,
+            error: None,
+        })
+        .collect()
+}
+
+/// Checked problem `lcp` settled on the CPU into `out` where it can be
+/// (n > [`MAX_GPU_N`] by Lemke; with `settings.predict`, what prediction
+/// settles), the final check applied; else `Err` with what prediction
+/// learnt of M (whether it is positive definite, if it found out).
+/// `out.scene` and `out.contacts` are the caller's.
+pub(crate) fn settle_on_cpu(
     lcp: &Lcp,
     warm: Option<u32>,
     settings: &GpuSolveSettings,
-) -> Result<IslandOutcome, Unsettled> {
-    let outcome = |solution, solved_on, path, solver| IslandOutcome {
-        solution,
-        solved_on,
-        path,
-        solver,
-        gpu: None,
-        gpu_z: Vec::new(),
-    };
-    if lcp.validate(format_args!("problem {i}")).is_err() {
-        let s = LcpSolution::invalid(lcp.q.len());
-        return Ok(outcome(s, SolvedOn::Invalid, None, Method::Enumeration));
-    }
+    out: &mut IslandReport,
+) -> Result<(), Option<bool>> {
+    out.method = Method::Enumeration;
     if lcp.n() > MAX_GPU_N {
-        let s = lemke(lcp, &settings.lemke);
-        let path = Some(SolvePath::Lemke);
-        return Ok(outcome(s, SolvedOn::CpuFallback, path, Method::Lemke));
+        (out.method, out.path) = (Method::Lemke, SolvePath::Lemke);
+        out.solution = lemke(lcp, &settings.lemke);
+    } else if !settings.predict {
+        return Err(None);
+    } else {
+        prediction_into(
+            lcp,
+            warm,
+            &settings.enumeration,
+            &mut out.path,
+            &mut out.solution,
+        )?;
     }
-    if !settings.predict {
-        return Err(Unsettled { definite: None });
-    }
-    let (path, s) = prediction(lcp, warm, &settings.enumeration)?;
-    Ok(outcome(
-        s,
-        SolvedOn::Predicted,
-        Some(path),
-        Method::Enumeration,
-    ))
+    check_solution(&mut out.solution, settings.tolerance);
+    Ok(())
 }
 
-/// Solves a batch of LCPs: islands with n ≤ 16 by enumeration on the GPU,
-/// each answer validated in f64 on the CPU (polished, or repaired by the CPU
-/// enumeration), larger ones by Lemke on the CPU. Problems that fail their
-/// checks get status InvalidInput. Results come back in the caller's order.
-/// With `settings.predict`, islands that need no enumeration are settled on
-/// the CPU first and never uploaded (see [`solve_lcp_batch_warm`]).
+/// The GPU's answer for `lcp` (its record and z) checked in f64 into `out`
+/// ([`check_answer`]), path and method set, the final check applied.
+/// Returns the verdict and the error of the GPU's own z.
+pub(crate) fn settle_from_gpu(
+    lcp: &Lcp,
+    (result, z): (&BasisResult, &[f64]),
+    settings: &GpuSolveSettings,
+    exact_twin: bool,
+    out: &mut IslandReport,
+) -> Result<(Verdict, f64), Error> {
+    let verdict = GpuVerdict::of(result, z);
+    let checked = check_answer(
+        lcp,
+        &verdict,
+        &settings.enumeration,
+        exact_twin,
+        &mut out.solution,
+    )?;
+    out.method = Method::Enumeration;
+    out.path = match checked.0 {
+        Verdict::Repaired => SolvePath::Repaired,
+        _ => SolvePath::EnumeratedGpu,
+    };
+    check_solution(&mut out.solution, settings.tolerance);
+    Ok(checked)
+}
+
+/// [`solve_lcp_batch_warm`] without warm bases.
 pub fn solve_lcp_batch(
     ctx: &GpuContext,
     lcps: &[Lcp],
     settings: &GpuSolveSettings,
-) -> Result<GpuBatchResult, Error> {
-    solve_lcp_batch_warm(ctx, lcps, None, settings)
+) -> Result<Report, Error> {
+    solve_lcp_batch_warm(ctx, lcps, &|_| None, settings)
 }
 
-/// [`solve_lcp_batch`] with warm bases: `warm[i]` is island i's basis from
-/// the previous frame, if the caller has one (used by prediction only, so
-/// ignored when `settings.predict` is false).
+/// Solves a batch of LCPs (see the module docs): islands with n ≤ 16 by
+/// enumeration on the GPU, each answer checked in f64 on the CPU (polished,
+/// or repaired by the CPU enumeration), larger ones by Lemke on the CPU,
+/// those that need no enumeration settled first by prediction (with
+/// `settings.predict`; `warm(i)`: problem i's basis from the last call, if
+/// the caller has one). A problem that fails its checks gets path and
+/// status invalid. The report's islands are in the caller's order, each
+/// through the door's final check (`settings.tolerance`); its choice is
+/// left empty for the caller.
 pub fn solve_lcp_batch_warm(
     ctx: &GpuContext,
     lcps: &[Lcp],
-    warm: Option<&[Option<u32>]>,
+    warm: &(dyn Fn(usize) -> Option<u32> + Sync),
     settings: &GpuSolveSettings,
-) -> Result<GpuBatchResult, Error> {
+) -> Result<Report, Error> {
     settings.enumeration.validate()?;
     if settings.enumeration.all_solutions {
         return Err(Error::Unsupported(
             "all_solutions is not supported on the GPU; use the CPU backend".into(),
         ));
     }
-    let mut report = BatchReport::new(ctx.adapter_info().name.clone(), ctx.precision());
-    let mut slots: Vec<Option<IslandOutcome>> = vec![None; lcps.len()];
-    let mut on_gpu: Vec<usize> = Vec::new();
-    // Per island on the GPU: whether M is positive definite, if prediction found out.
-    let mut definite: Vec<Option<bool>> = Vec::new();
-    let warm_of = |i: usize| warm.and_then(|w| w.get(i).copied().flatten());
-    let t_predict = Instant::now();
-    for (i, lcp) in lcps.iter().enumerate() {
-        match settle_on_cpu(i, lcp, warm_of(i), settings) {
-            Ok(outcome) => slots[i] = Some(outcome),
-            Err(unsettled) => {
-                on_gpu.push(i);
-                definite.push(unsettled.definite);
+    let threads = settings.threads;
+    let mut islands: Vec<IslandReport> = Vec::with_capacity(lcps.len());
+    islands.resize_with(lcps.len(), || IslandReport {
+        scene: None,
+        contacts: ShortVec::new(),
+        method: Method::Enumeration,
+        path: SolvePath::Invalid,
+        solution: LcpSolution::invalid(0),
+    });
+    let mut blocks = blocks(&mut islands);
+    let t = Instant::now();
+    parallel_fill_by(&mut blocks, threads, 1, |_, b| {
+        for (j, island) in b.islands.iter_mut().enumerate() {
+            let i = b.first + j;
+            island.contacts = ShortVec::indices(lcps[i].n());
+            // The problem's name is formatted only by the caller's error.
+            if lcps[i].validate("problem").is_err() {
+                island.solution = LcpSolution::invalid(lcps[i].q.len());
+            } else if let Err(definite) = settle_on_cpu(&lcps[i], warm(i), settings, island) {
+                b.pending.push((i, definite));
             }
         }
-    }
-    report.prediction_seconds = t_predict.elapsed().as_secs_f64();
-    let refs: Vec<&Lcp> = on_gpu.iter().map(|&i| &lcps[i]).collect();
-    let (outputs, stats) = enumerate_known(ctx, &refs, &definite, settings)?;
-    report.gpu_seconds = stats.seconds;
-    report.chunks = stats.chunks;
-    report.dispatches = stats.dispatches;
-    report.rounds = stats.rounds;
-    report.tree_decided = stats.tree_decided;
-    report.tree_undecided = stats.tree_undecided;
-    let start = Instant::now();
-    for (&i, o) in on_gpu.iter().zip(outputs) {
-        let verdict = GpuVerdict::of(&o.result, &o.z);
-        let checked = validate_island(
-            &lcps[i],
-            &verdict,
-            &settings.enumeration,
-            settings.exact_twin(ctx.precision()),
-        )?;
-        report.record_gpu(&checked);
-        let solved_on = match checked.verdict {
-            Verdict::Polished | Verdict::ConfirmedNoSolution => SolvedOn::Gpu,
-            Verdict::Repaired => SolvedOn::Repaired,
-        };
-        slots[i] = Some(IslandOutcome {
-            solution: checked.solution,
-            solved_on,
-            path: Some(SolvePath::Enumerated),
-            solver: Method::Enumeration,
-            gpu: Some(o.result),
-            gpu_z: o.z,
-        });
-    }
-    report.validation_seconds = start.elapsed().as_secs_f64();
-    let islands: Vec<IslandOutcome> = slots
-        .into_iter()
-        .map(|s| s.ok_or_else(|| Error::Gpu("an island got no result".into())))
-        .collect::<Result<_, _>>()?;
-    for o in &islands {
-        match (o.solved_on, o.path) {
-            (SolvedOn::CpuFallback, _) => report.record_cpu_fallback(&o.solution),
-            (SolvedOn::Invalid, _) => report.record_invalid(),
-            (SolvedOn::Predicted, Some(p)) => report.record_predicted(p, &o.solution),
-            _ => {}
+    });
+    let prediction = t.elapsed().as_secs_f64();
+    let mut on_gpu: Vec<&Lcp> = Vec::new();
+    let mut definite = Vec::new();
+    for b in &mut blocks {
+        b.gpu_first = on_gpu.len();
+        for &(i, d) in &b.pending {
+            on_gpu.push(&lcps[i]);
+            definite.push(d);
         }
     }
-    Ok(GpuBatchResult { islands, report })
+    let t = Instant::now();
+    let (answers, mut figures) = enumerate_known(ctx, &on_gpu, &definite, settings)?;
+    let gpu = t.elapsed().as_secs_f64();
+    let t = Instant::now();
+    let exact = settings.exact_twin(ctx.precision());
+    parallel_fill_by(&mut blocks, threads, 1, |_, b| {
+        for k in 0..b.pending.len() {
+            let i = b.pending[k].0;
+            let answer = answers.of(b.gpu_first + k, lcps[i].n());
+            let island = &mut b.islands[i - b.first];
+            match settle_from_gpu(&lcps[i], answer, settings, exact, island) {
+                Ok((verdict, gpu_error)) => {
+                    b.polished += (verdict == Verdict::Polished) as usize;
+                    if gpu_error > b.max_gpu_error {
+                        b.max_gpu_error = gpu_error;
+                    }
+                }
+                Err(e) => b.error = Some(e),
+            }
+        }
+    });
+    let validation = t.elapsed().as_secs_f64();
+    let mut polished = 0;
+    for b in &mut blocks {
+        if let Some(e) = b.error.take() {
+            return Err(e);
+        }
+        polished += b.polished;
+        figures.max_gpu_error = figures.max_gpu_error.max(b.max_gpu_error);
+    }
+    drop(blocks);
+    let mut r = Report::new(islands, Vec::new(), Device::of(ctx), String::new());
+    r.counts.polished = polished;
+    r.counts.cpu_fallback = r.counts.lemke;
+    r.timings.prediction = prediction;
+    r.timings.gpu = gpu;
+    r.timings.validation = validation;
+    r.gpu = Some(figures);
+    Ok(r)
 }

@@ -5,8 +5,9 @@ use wgpu::util::DeviceExt;
 
 use super::batch::GpuSolveSettings;
 use super::kernel::TreeRoute;
-use super::layout::{scalars_to_bytes, BasisResult, PackedIsland};
+use super::layout::{BasisResult, PackedIsland};
 use super::{GpuContext, Precision};
+use crate::cpu::batch::parallel_fill_by;
 use crate::lcp::Lcp;
 use crate::Error;
 
@@ -259,7 +260,7 @@ pub(crate) fn limits_for(ctx: &GpuContext, settings: &GpuSolveSettings) -> (u64,
     (bind.max(1024), groups.max(1))
 }
 
-/// A chunk of an LCP batch, packed for the enumeration stage.
+/// A chunk of an LCP batch, planned for the enumeration stage.
 pub(crate) struct PackedChunk {
     /// The caller's indices of the chunk's islands, sorted by n, then by
     /// `tree`.
@@ -267,28 +268,65 @@ pub(crate) struct PackedChunk {
     pub(crate) table: Vec<PackedIsland>,
     /// Per table entry: how it goes through the tree kernel.
     pub(crate) tree: Vec<TreeRoute>,
-    /// M (row-major) then q of every island, in f64.
-    data: Vec<f64>,
+    /// Scalars of M (row-major) then q of every island, in all.
+    values: usize,
 }
 
+/// Islands packed by one thread at a time.
+const PACK_BLOCK: usize = 1024;
+
 impl PackedChunk {
-    /// (islands, values) storage buffers.
+    /// (islands, values) storage buffers: `values` holds each island's M
+    /// (row-major) and q in the shader's precision, packed by up to
+    /// `threads` threads and copied once into the mapped buffer.
     pub(crate) fn upload(
         &self,
         ctx: &GpuContext,
+        lcps: &[&Lcp],
         precision: Precision,
-    ) -> (wgpu::Buffer, wgpu::Buffer) {
+        threads: usize,
+    ) -> Result<(wgpu::Buffer, wgpu::Buffer), Error> {
         // islands: the chunk's island table, sorted by n.
         let islands = ctx.storage("islands", bytemuck::cast_slice(&self.table));
         // values: every island's M (row-major) and q, in the shader's precision.
-        let values = ctx.storage("values", &scalars_to_bytes(&self.data, precision));
-        (islands, values)
+        let sb = precision.bytes() as usize;
+        let mut bytes = vec![0u8; self.values * sb];
+        // The bytes cut at island boundaries, PACK_BLOCK islands a piece.
+        let mut rest = bytes.as_mut_slice();
+        let mut pieces = Vec::with_capacity(self.order.len().div_ceil(PACK_BLOCK));
+        for block in self.order.chunks(PACK_BLOCK) {
+            let len: usize = block.iter().map(|&i| lcps[i].n() * (lcps[i].n() + 1)).sum();
+            let (piece, tail) = std::mem::take(&mut rest).split_at_mut(len * sb);
+            pieces.push((block, piece));
+            rest = tail;
+        }
+        parallel_fill_by(&mut pieces, threads, 1, |_, (block, piece)| {
+            let scalars = block
+                .iter()
+                .flat_map(|&i| lcps[i].m.iter().chain(&lcps[i].q));
+            match precision {
+                Precision::F64 => {
+                    for (b, &v) in piece.chunks_exact_mut(8).zip(scalars) {
+                        b.copy_from_slice(&v.to_le_bytes());
+                    }
+                }
+                _ => {
+                    for (b, &v) in piece.chunks_exact_mut(4).zip(scalars) {
+                        b.copy_from_slice(&(v as f32).to_le_bytes());
+                    }
+                }
+            }
+        });
+        let values = ctx.storage_filled("values", bytes.len() as u64, |view| {
+            view.slice(..bytes.len()).copy_from_slice(&bytes);
+        })?;
+        Ok((islands, values))
     }
 }
 
 /// Sorts the islands by n (one dispatch per size: no island waits on a
 /// larger one), then by `tree` (the tree kernel's islands together), and
-/// packs them into chunks whose buffers stay under `max_bytes`.
+/// plans chunks whose buffers stay under `max_bytes`.
 pub(crate) fn pack_chunks(
     lcps: &[&Lcp],
     tree: &[TreeRoute],
@@ -319,25 +357,23 @@ pub(crate) fn pack_chunks(
             end += 1;
         }
         let mut table = Vec::with_capacity(end - at);
-        let mut data = Vec::with_capacity(values as usize);
-        let mut zoff = 0u32;
+        let (mut data, mut zoff) = (0u32, 0u32);
         for &i in &order[at..end] {
-            let l = lcps[i];
+            let n = lcps[i].n() as u32;
             table.push(PackedIsland {
-                n: l.n() as u32,
-                data: data.len() as u32,
+                n,
+                data,
                 z: zoff,
                 contacts: 0,
             });
-            data.extend_from_slice(&l.m);
-            data.extend_from_slice(&l.q);
-            zoff += l.n() as u32;
+            data += n * n + n;
+            zoff += n;
         }
         chunks.push(PackedChunk {
             order: order[at..end].to_vec(),
             tree: order[at..end].iter().map(|&i| route(i)).collect(),
             table,
-            data,
+            values: values as usize,
         });
         at = end;
     }

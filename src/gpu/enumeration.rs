@@ -7,18 +7,19 @@ use super::kernel::{EnumerationKernel, KernelPlan, TreeRoute};
 use super::layout::{scalars_from_bytes, BasisResult, PackedIsland, TREE_DECIDED, TREE_UNDECIDED};
 use super::pipelines::{Pipelines, Stage};
 use super::{GpuContext, MAX_GPU_N};
+use crate::report::GpuFigures;
 use crate::Error;
+
+use std::time::Instant;
 
 /// What the enumeration stage gave for a table of islands.
 pub(crate) struct EnumerationRun {
     pub results: Vec<BasisResult>,
     /// z of every island at its table offset, in the shader's precision.
     pub z: Vec<f64>,
-    pub dispatches: usize,
-    pub rounds: usize,
-    /// Islands the tree kernel decided, and those it left to elimination.
-    pub tree_decided: usize,
-    pub tree_undecided: usize,
+    /// Dispatches, rounds, the tree kernel's decisions, and the seconds of
+    /// the kernels (submission to the last round's end) and of the readback.
+    pub figures: GpuFigures,
 }
 
 /// One enumeration over `table` (sorted by n, then by `tree`; M and q in
@@ -89,22 +90,24 @@ impl<'a> EnumerationJob<'a> {
         let mut run = EnumerationRun {
             results: Vec::new(),
             z: Vec::new(),
-            dispatches: 0,
-            rounds: 0,
-            tree_decided: 0,
-            tree_undecided: 0,
+            figures: GpuFigures::default(),
         };
+        let t = Instant::now();
         if self.table.is_empty() {
             // Nothing to enumerate (prediction settled every island): run what
             // the encoder holds (assembly) and wait.
             self.ctx.submit_and_read(encoder, &[])?;
+            run.figures.kernel_seconds = t.elapsed().as_secs_f64();
             return Ok(run);
         }
         let out = self.outputs();
         let buckets = self.buckets(&out)?;
         let encoder = self.rounds(&out, &buckets, encoder, &mut run)?;
+        run.figures.kernel_seconds = t.elapsed().as_secs_f64();
         if read_back {
+            let t = Instant::now();
             self.read(&out, encoder, &mut run)?;
+            run.figures.readback_seconds = t.elapsed().as_secs_f64();
         }
         Ok(run)
     }
@@ -206,25 +209,25 @@ impl<'a> EnumerationJob<'a> {
                 for &b in &active {
                     let bucket = &buckets[b];
                     match &bucket.tree {
-                        Some(t) if run.rounds + r == 0 => {
+                        Some(t) if run.figures.rounds + r == 0 => {
                             let stage = self.pipelines.tree(ctx, bucket.n as usize)?;
                             ctx.record(&mut encoder, stage, t);
-                            run.dispatches += t.len();
+                            run.figures.dispatches += t.len();
                         }
                         _ => {
                             ctx.record(&mut encoder, self.size_stage(bucket.n)?, &bucket.ranges);
-                            run.dispatches += bucket.ranges.len();
+                            run.figures.dispatches += bucket.ranges.len();
                         }
                     }
                 }
             }
-            run.rounds += per_submit;
+            run.figures.rounds += per_submit;
             let counts = ctx.submit_and_read(encoder, &[(&out.unfinished, UNFINISHED_BYTES)])?;
             let counts: &[u32] = bytemuck::try_cast_slice(&counts[0])
                 .map_err(|e| Error::Gpu(format!("unfinished counts: {e}")))?;
             active.retain(|&b| counts.get(buckets[b].n as usize).copied().unwrap_or(0) > 0);
             // Every round visits at least one basis of every unfinished island.
-            if run.rounds > (1 << MAX_GPU_N) + 1 {
+            if run.figures.rounds > (1 << MAX_GPU_N) + 1 {
                 return Err(Error::Gpu(
                     "enumeration made no progress (rounds exceed 2^16)".into(),
                 ));
@@ -261,8 +264,8 @@ impl<'a> EnumerationJob<'a> {
                 .filter(|&(i, r)| self.route(i) != TreeRoute::Off && r._pad1 == v)
                 .count()
         };
-        run.tree_decided = tree_count(TREE_DECIDED);
-        run.tree_undecided = tree_count(TREE_UNDECIDED);
+        run.figures.tree_decided = tree_count(TREE_DECIDED);
+        run.figures.tree_undecided = tree_count(TREE_UNDECIDED);
         Ok(())
     }
 }

@@ -73,17 +73,42 @@ pub mod scenes;
 pub(crate) mod shaders;
 pub(crate) mod validation;
 
+#[cfg(test)]
+pub use batch::solve_lcp_batch;
 pub use batch::{solve_lcp_batch_warm, EnumerationKernel, GpuSolveSettings};
 pub use context::{
     list_adapters, AdapterSummary, BackendChoice, GpuContext, GpuOptions, Precision, INSTALL_HINT,
 };
 pub use scenes::solve_scenes_warm;
-// The one-shot forms and raw results, for the stage tests.
-#[cfg(test)]
-pub use batch::{solve_lcp_batch, GpuBatchResult, SolvedOn};
+// The one-shot form, for the stage tests.
 #[cfg(test)]
 pub use scenes::solve_scenes;
 
 /// Largest island the GPU enumerates (2¹⁶ bases per island). Larger islands
 /// go to the CPU (Lemke) and are reported as `cpu_fallback`.
 pub const MAX_GPU_N: usize = 16;
+
+impl crate::report::Device {
+    /// The device `ctx` as a report names it: hardware or software, the
+    /// adapter in words (name, backend, type, how chosen, precision).
+    pub(crate) fn of(ctx: &GpuContext) -> Self {
+        use crate::report::DeviceKind;
+        let a = ctx.adapter_info();
+        crate::report::Device {
+            kind: if a.software {
+                DeviceKind::SoftwareGpu
+            } else {
+                DeviceKind::HardwareGpu
+            },
+            name: format!(
+                "{} ({}, {}; {}; {})",
+                a.name,
+                a.backend,
+                a.device_type,
+                ctx.selection(),
+                ctx.precision().name()
+            ),
+            precision: ctx.precision(),
+        }
+    }
+}

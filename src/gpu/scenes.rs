@@ -14,7 +14,7 @@
 
 use std::time::Instant;
 
-use super::batch::{solve_lcp_batch_warm, GpuSolveSettings, SolvedOn};
+use super::batch::{settle_from_gpu, settle_on_cpu, solve_lcp_batch_warm, GpuSolveSettings};
 use super::buffers::limits_for;
 use super::enumeration::EnumerationJob;
 use super::kernel::{KernelPlan, TreeRoute};
@@ -24,35 +24,17 @@ use super::layout::{
 };
 use super::pipelines::{Pipelines, Tolerances};
 use super::scene_chunks::{pack_chunk, plan, Chunk};
-use super::{GpuContext, MAX_GPU_N};
+use super::GpuContext;
 use crate::build::Built;
 use crate::cpu::assembly::ContactRow;
+use crate::cpu::batch::parallel_map;
 use crate::cpu::impulses::{apply_impulses, BodyVelocity};
-use crate::cpu::lemke::lemke;
-use crate::gpu::validation::{validate_island, BatchReport, GpuVerdict, Verdict};
+use crate::gpu::validation::Verdict;
 use crate::lcp::{Lcp, LcpSolution};
-use crate::prediction::{prediction, SolvePath};
-use crate::report::{IslandReport, SceneReport};
+use crate::report::{Device, GpuFigures, IslandReport, Report, SceneReport, SolvePath};
 use crate::scene::Scene;
 use crate::settings::Method;
 use crate::Error;
-
-/// Scenes after the impact, with where each island was solved.
-#[derive(Clone, Debug)]
-pub struct GpuSceneResult {
-    /// Every island of every scene, scene after scene, in `find_islands`
-    /// order: the door's reports (method, path, validated solution).
-    pub islands: Vec<IslandReport>,
-    /// Per scene: impulses, velocities after them (the f64 twin's) and its
-    /// islands' range in `islands`.
-    pub scenes: Vec<SceneReport>,
-    /// Per scene, per island: where it was solved.
-    pub solved_on: Vec<Vec<SolvedOn>>,
-    pub report: BatchReport,
-    /// Largest |GPU velocity − f64 velocity| / (1 + |f64 velocity|) of the
-    /// impulse stage over every body.
-    pub max_velocity_deviation: f64,
-}
 
 /// The GPU's assembly stage output, unpacked (for comparison with the twin).
 #[derive(Clone, Debug)]
@@ -76,10 +58,8 @@ struct StageOutput {
     rows: Option<Vec<f64>>,
     values: Option<Vec<f64>>,
     resident: Resident,
-    dispatches: usize,
-    rounds: usize,
-    /// Islands the tree kernel decided, and those it left to elimination.
-    tree: (usize, usize),
+    /// Dispatches, rounds, the tree kernel's decisions, seconds.
+    figures: GpuFigures,
 }
 
 /// Submission 1: assembly (contacts, islands) and, given a plan and the
@@ -149,16 +129,15 @@ fn assemble_and_enumerate(
                     max_groups,
                     plan,
                 };
-                let run = job.run(encoder, true)?;
+                let mut run = job.run(encoder, true)?;
+                run.figures.dispatches += dispatches;
                 return Ok(StageOutput {
                     results: run.results,
                     z: run.z,
                     rows: None,
                     values: None,
                     resident: Resident { bodies, rows },
-                    dispatches: dispatches + run.dispatches,
-                    rounds: run.rounds,
-                    tree: (run.tree_decided, run.tree_undecided),
+                    figures: run.figures,
                 });
             }
             let got =
@@ -170,9 +149,10 @@ fn assemble_and_enumerate(
                 rows: got.next().map(|b| scalars_from_bytes(&b, precision)),
                 values: got.next().map(|b| scalars_from_bytes(&b, precision)),
                 resident: Resident { bodies, rows },
-                dispatches,
-                rounds: 0,
-                tree: (0, 0),
+                figures: GpuFigures {
+                    dispatches,
+                    ..GpuFigures::default()
+                },
             })
         },
     )?
@@ -297,7 +277,7 @@ pub fn solve_scenes(
     ctx: &GpuContext,
     scenes: &[Scene],
     settings: &GpuSolveSettings,
-) -> Result<GpuSceneResult, Error> {
+) -> Result<Report, Error> {
     let built = check_and_build(scenes)?;
     let scenes: Vec<&Scene> = scenes.iter().collect();
     solve_scenes_warm(ctx, &scenes, &built, None, settings)
@@ -321,269 +301,180 @@ pub(crate) fn check_and_build(scenes: &[Scene]) -> Result<Vec<Built>, Error> {
 /// order) from the previous frame, if any.
 /// With `settings.predict` (default), islands that need no enumeration are
 /// settled on the CPU from its f64 assembly; the GPU still assembles them
-/// (the impulse stage reads every row) but does not enumerate them.
+/// (the impulse stage reads every row) but does not enumerate them. The
+/// host's passes (prediction, the f64 check of the answers, the impulses'
+/// f64 twin) run on `settings.threads` threads. The report's islands are
+/// scene after scene, each through the door's final check; its choice is
+/// left empty for the caller.
 pub fn solve_scenes_warm(
     ctx: &GpuContext,
     scenes: &[&Scene],
     built: &[Built],
     warm: Option<&[Vec<Option<u32>>]>,
     settings: &GpuSolveSettings,
-) -> Result<GpuSceneResult, Error> {
+) -> Result<Report, Error> {
     settings.enumeration.validate()?;
     if settings.enumeration.all_solutions {
         return Err(Error::Unsupported(
             "all_solutions is not supported on the GPU; use the CPU backend".into(),
         ));
     }
-    let prepared = built;
+    let threads = settings.threads;
     let (max_bytes, max_groups) = limits_for(ctx, settings);
-    let (chunks, alone) = plan(scenes, prepared, max_bytes, ctx.precision().bytes());
-    let mut run = SceneRun {
-        ctx,
-        scenes,
-        settings,
-        pipelines: ctx.pipelines()?,
-        tolerances: ctx.scoped("tolerances", || {
-            Tolerances::new(ctx.precision(), settings).upload(ctx)
-        })?,
-        max_groups,
-        kernel_plan: KernelPlan::new(ctx, settings),
-        report: BatchReport::new(ctx.adapter_info().name.clone(), ctx.precision()),
-        solved: prepared
-            .iter()
-            .map(|p| vec![None; p.islands.len()])
-            .collect(),
-        gpu_velocities: vec![None; scenes.len()],
-        predicted: Vec::new(),
-        definite: Vec::new(),
-        prepared,
-    };
-    run.predict(warm, &alone);
+    let (chunks, alone) = plan(scenes, built, max_bytes, ctx.precision().bytes());
+    // Every island of every scene, scene after scene: first[s] is scene s's first.
+    let mut first = Vec::with_capacity(scenes.len() + 1);
+    let mut index = Vec::new();
+    for (s, b) in built.iter().enumerate() {
+        first.push(index.len());
+        index.extend((0..b.lcps.len()).map(|k| (s, k)));
+    }
+    first.push(index.len());
+    let warm_of = |s: usize, k: usize| warm.and_then(|w| w.get(s)?.get(k).copied().flatten());
+    let in_alone: Vec<bool> = (0..scenes.len()).map(|s| alone.contains(&s)).collect();
+    let mut figures = GpuFigures::default();
+    let mut polished = 0;
+
+    // Prediction (and Lemke above n = 16) on the CPU's f64 assembly; each
+    // island left to the GPU keeps what prediction learnt of its M (None:
+    // settled, or in a scene solved as an LCP batch below).
+    let t = Instant::now();
+    let settled = parallel_map(index.len(), threads, |j| {
+        let (s, k) = index[j];
+        let mut island = IslandReport {
+            scene: Some(s),
+            contacts: built[s].islands[k].contacts.as_slice().into(),
+            method: Method::Enumeration,
+            path: SolvePath::EnumeratedGpu,
+            solution: LcpSolution::invalid(0),
+        };
+        let left = match in_alone[s] {
+            true => None,
+            false => settle_on_cpu(&built[s].lcps[k], warm_of(s, k), settings, &mut island).err(),
+        };
+        (island, left)
+    });
+    let (mut islands, left): (Vec<IslandReport>, Vec<Option<Option<bool>>>) =
+        settled.into_iter().unzip();
+    let prediction = t.elapsed().as_secs_f64();
+
+    let pipelines = ctx.pipelines()?;
+    let tolerances = ctx.scoped("tolerances", || {
+        Tolerances::new(ctx.precision(), settings).upload(ctx)
+    })?;
+    let kernel_plan = KernelPlan::new(ctx, settings);
+    let exact = settings.exact_twin(ctx.precision());
+    let mut gpu_velocities: Vec<Option<Vec<f64>>> = vec![None; scenes.len()];
+    let (mut gpu, mut validation) = (0.0, 0.0);
     for members in chunks {
-        run.chunk(&members)?;
-    }
-    // Scenes too large for one buffer: their islands as an LCP batch.
-    for &s in &alone {
-        let w = warm.and_then(|w| w.get(s)).map(Vec::as_slice);
-        let r = solve_lcp_batch_warm(ctx, &run.prepared[s].lcps, w, settings)?;
-        run.report.merge(&r.report);
-        for (k, o) in r.islands.into_iter().enumerate() {
-            let path = o.path.unwrap_or(SolvePath::Enumerated);
-            run.solved[s][k] = Some((o.solution, o.solver, o.solved_on, path));
-        }
-    }
-    run.finish()
-}
-
-/// Per scene, per island: the solution, its solver and where it came from.
-type Solved = Vec<Vec<Option<(LcpSolution, Method, SolvedOn, SolvePath)>>>;
-
-/// What [`solve_scenes_warm`]'s steps share.
-struct SceneRun<'a> {
-    ctx: &'a GpuContext,
-    scenes: &'a [&'a Scene],
-    settings: &'a GpuSolveSettings,
-    pipelines: std::sync::Arc<Pipelines>,
-    tolerances: wgpu::Buffer,
-    max_groups: u32,
-    kernel_plan: KernelPlan,
-    report: BatchReport,
-    prepared: &'a [Built],
-    solved: Solved,
-    /// Per scene: the impulse stage's velocities (8 scalars per body).
-    gpu_velocities: Vec<Option<Vec<f64>>>,
-    /// Per scene, per island: the solution prediction settled, or whether
-    /// M is positive definite where prediction found out (for the tree
-    /// kernel's route).
-    predicted: Vec<Vec<Option<(SolvePath, LcpSolution)>>>,
-    definite: Vec<Vec<Option<bool>>>,
-}
-
-impl SceneRun<'_> {
-    /// Prediction, on the f64 assembly, for every island the GPU would enumerate.
-    fn predict(&mut self, warm: Option<&[Vec<Option<u32>>]>, alone: &[usize]) {
-        let t_predict = Instant::now();
-        let settings = self.settings;
-        (self.predicted, self.definite) = self
-            .prepared
-            .iter()
-            .enumerate()
-            .map(|(s, p)| {
-                p.lcps
-                    .iter()
-                    .enumerate()
-                    .map(|(k, lcp)| {
-                        if !settings.predict || lcp.n() > MAX_GPU_N || alone.contains(&s) {
-                            return (None, None);
-                        }
-                        let w = warm
-                            .and_then(|w| w.get(s))
-                            .and_then(|v| v.get(k).copied().flatten());
-                        match prediction(lcp, w, &settings.enumeration) {
-                            Ok(settled) => (Some(settled), None),
-                            Err(unsettled) => (None, unsettled.definite),
-                        }
-                    })
-                    .unzip()
-            })
-            .unzip();
-        self.report.prediction_seconds += t_predict.elapsed().as_secs_f64();
-    }
-
-    /// One chunk of scenes: assembly and enumeration on the GPU, validation
-    /// on the CPU, impulses on the GPU.
-    fn chunk(&mut self, members: &[usize]) -> Result<(), Error> {
-        let t0 = Instant::now();
-        let (prepared, predicted, definite) = (self.prepared, &self.predicted, &self.definite);
+        let t = Instant::now();
         let c = pack_chunk(
-            self.scenes,
-            prepared,
-            members,
-            &|s, k| predicted[s][k].is_some(),
-            &|s, k| match predicted[s][k] {
-                Some(_) => TreeRoute::Off,
-                None => self
-                    .kernel_plan
-                    .tree_for(&prepared[s].lcps[k], definite[s][k]),
+            scenes,
+            built,
+            &members,
+            &|s, k| left[first[s] + k].is_none(),
+            &|s, k| match left[first[s] + k] {
+                None => TreeRoute::Off,
+                Some(definite) => kernel_plan.tree_for(&built[s].lcps[k], definite),
             },
         );
-        let enumerate = Some((&self.kernel_plan, &self.tolerances));
-        let out =
-            assemble_and_enumerate(self.ctx, &self.pipelines, &c, self.max_groups, enumerate)?;
-        let report = &mut self.report;
-        report.gpu_seconds += t0.elapsed().as_secs_f64();
-        report.chunks += 1;
-        report.dispatches += out.dispatches;
-        report.rounds += out.rounds;
-        report.tree_decided += out.tree.0;
-        report.tree_undecided += out.tree.1;
-        let t1 = Instant::now();
-        self.settle(&c, &out)?;
-        self.report.validation_seconds += t1.elapsed().as_secs_f64();
+        let enumerate = Some((&kernel_plan, &tolerances));
+        let out = assemble_and_enumerate(ctx, &pipelines, &c, max_groups, enumerate)?;
+        figures += out.figures;
+        figures.chunks += 1;
+        gpu += t.elapsed().as_secs_f64();
+
+        // The chunk's GPU answers checked in f64, in parallel, then put in place.
+        let t = Instant::now();
+        let checked = parallel_map(c.enum_keys.len(), threads, |j| {
+            let ((s, k), rec) = (c.enum_keys[j], &c.enum_table[j]);
+            let (z0, n) = (rec.z as usize, rec.n as usize);
+            let answer = (&out.results[j], out.z.get(z0..z0 + n).unwrap_or(&[]));
+            let mut island = IslandReport {
+                solution: LcpSolution::invalid(0),
+                ..islands[first[s] + k].clone()
+            };
+            settle_from_gpu(&built[s].lcps[k], answer, settings, exact, &mut island)
+                .map(|(verdict, gpu_error)| (island, verdict, gpu_error))
+        });
+        for (j, r) in checked.into_iter().enumerate() {
+            let (island, verdict, gpu_error) = r?;
+            let (s, k) = c.enum_keys[j];
+            islands[first[s] + k] = island;
+            polished += (verdict == Verdict::Polished) as usize;
+            if gpu_error > figures.max_gpu_error {
+                figures.max_gpu_error = gpu_error;
+            }
+        }
+        validation += t.elapsed().as_secs_f64();
+
         // Impulses of the chunk's contacts, validated, to the impulse stage.
-        let t2 = Instant::now();
+        let t = Instant::now();
         let mut z = vec![0.0; c.ids.len()];
         for (pos, &s) in c.scenes.iter().enumerate() {
             let fc = c.first_contact[pos] as usize;
-            for (k, isl) in self.prepared[s].islands.iter().enumerate() {
-                if let Some((sol, _, _, _)) = &self.solved[s][k] {
-                    for (&ct, &zi) in isl.contacts.iter().zip(&sol.z) {
-                        z[fc + ct] = zi;
-                    }
+            for isl in &islands[first[s]..first[s + 1]] {
+                for (&ct, &zi) in isl.contacts.iter().zip(&isl.solution.z) {
+                    z[fc + ct] = zi;
                 }
             }
         }
-        let vel = apply_on_gpu(
-            self.ctx,
-            &self.pipelines,
-            &c,
-            &out.resident,
-            &z,
-            self.max_groups,
-        )?;
-        self.report.gpu_seconds += t2.elapsed().as_secs_f64();
+        let vel = apply_on_gpu(ctx, &pipelines, &c, &out.resident, &z, max_groups)?;
+        gpu += t.elapsed().as_secs_f64();
         for (pos, &s) in c.scenes.iter().enumerate() {
             let fb = c.first_body[pos] as usize;
-            let nb = self.scenes[s].bodies.len();
-            self.gpu_velocities[s] = Some(vel[fb * VELOCITY..(fb + nb) * VELOCITY].to_vec());
+            let nb = scenes[s].bodies.len();
+            gpu_velocities[s] = Some(vel[fb * VELOCITY..(fb + nb) * VELOCITY].to_vec());
         }
-        Ok(())
+    }
+    // Scenes too large for one buffer: their islands as an LCP batch.
+    for &s in &alone {
+        let w = |k: usize| warm_of(s, k);
+        let r = solve_lcp_batch_warm(ctx, &built[s].lcps, &w, settings)?;
+        for (k, isl) in r.islands.into_iter().enumerate() {
+            let mine = &mut islands[first[s] + k];
+            (mine.method, mine.path, mine.solution) = (isl.method, isl.path, isl.solution);
+        }
+        figures += r.gpu.unwrap_or_default();
+        polished += r.counts.polished;
+        gpu += r.timings.gpu;
+        validation += r.timings.validation;
     }
 
-    /// The chunk's islands: predicted, validated GPU answers, Lemke above
-    /// [`MAX_GPU_N`].
-    fn settle(&mut self, c: &Chunk, out: &StageOutput) -> Result<(), Error> {
-        let settings = self.settings;
-        for &(s, k) in &c.keys {
-            if let Some((path, sol)) = self.predicted[s][k].take() {
-                self.report.record_predicted(path, &sol);
-                self.solved[s][k] = Some((sol, Method::Enumeration, SolvedOn::Predicted, path));
+    // Every scene's impulses and velocities: the f64 twin's, the GPU's
+    // checked against them.
+    let t = Instant::now();
+    let finished = parallel_map(scenes.len(), threads, |s| {
+        let mut impulses = vec![0.0; scenes[s].contacts.len()];
+        for isl in &islands[first[s]..first[s + 1]] {
+            for (&c, &zi) in isl.contacts.iter().zip(&isl.solution.z) {
+                impulses[c] = zi;
             }
         }
-        for ((rec, &(s, k)), res) in c.enum_table.iter().zip(&c.enum_keys).zip(&out.results) {
-            let (z0, n) = (rec.z as usize, rec.n as usize);
-            let verdict = GpuVerdict::of(res, out.z.get(z0..z0 + n).unwrap_or(&[]));
-            let checked = validate_island(
-                &self.prepared[s].lcps[k],
-                &verdict,
-                &settings.enumeration,
-                settings.exact_twin(self.ctx.precision()),
-            )?;
-            self.report.record_gpu(&checked);
-            let on = if checked.verdict == Verdict::Repaired {
-                SolvedOn::Repaired
-            } else {
-                SolvedOn::Gpu
-            };
-            self.solved[s][k] = Some((
-                checked.solution,
-                Method::Enumeration,
-                on,
-                SolvePath::Enumerated,
-            ));
-        }
-        for &s in &c.scenes {
-            for (k, isl) in self.prepared[s].islands.iter().enumerate() {
-                if isl.len() > MAX_GPU_N {
-                    let sol = lemke(&self.prepared[s].lcps[k], &settings.lemke);
-                    self.report.record_cpu_fallback(&sol);
-                    self.solved[s][k] =
-                        Some((sol, Method::Lemke, SolvedOn::CpuFallback, SolvePath::Lemke));
-                }
-            }
-        }
-        Ok(())
-    }
-
-    /// Every scene's report in the CPU path's shape; the f64 twin's
-    /// velocities are kept, the GPU's checked against them.
-    fn finish(self) -> Result<GpuSceneResult, Error> {
-        let mut solved = self.solved;
-        let mut max_velocity_deviation = 0.0f64;
-        let mut islands = Vec::new();
-        let mut out_scenes = Vec::with_capacity(self.scenes.len());
-        let mut solved_on = Vec::with_capacity(self.scenes.len());
-        for (s, (scene, p)) in self.scenes.iter().zip(self.prepared).enumerate() {
-            let first = islands.len();
-            let mut impulses = vec![0.0; scene.contacts.len()];
-            let mut on = Vec::with_capacity(p.islands.len());
-            for (island, slot) in p.islands.iter().zip(&mut solved[s]) {
-                let (solution, method, where_, path) = slot
-                    .take()
-                    .ok_or_else(|| Error::Gpu(format!("scene {s}: an island got no result")))?;
-                for (&c, &zi) in island.contacts.iter().zip(&solution.z) {
-                    impulses[c] = zi;
-                }
-                on.push(where_);
-                islands.push(IslandReport {
-                    scene: Some(s),
-                    contacts: island.contacts.as_slice().into(),
-                    method,
-                    path: where_.path(Some(path)),
-                    solution,
-                });
-            }
-            let bodies: Vec<BodyVelocity> = apply_impulses(scene, &p.rows, &impulses);
-            if let Some(v) = &self.gpu_velocities[s] {
-                let dev = velocity_deviation(&bodies, v);
-                max_velocity_deviation = max_velocity_deviation.max(dev);
-            }
-            out_scenes.push(SceneReport {
-                impulses,
-                bodies,
-                islands: first..islands.len(),
-                friction: None,
-            });
-            solved_on.push(on);
-        }
-        Ok(GpuSceneResult {
-            islands,
-            scenes: out_scenes,
-            solved_on,
-            report: self.report,
-            max_velocity_deviation,
-        })
-    }
+        let bodies: Vec<BodyVelocity> = apply_impulses(scenes[s], &built[s].rows, &impulses);
+        let deviation = gpu_velocities[s]
+            .as_ref()
+            .map_or(0.0, |v| velocity_deviation(&bodies, v));
+        let report = SceneReport {
+            impulses,
+            bodies,
+            islands: first[s]..first[s + 1],
+            friction: None,
+        };
+        (report, deviation)
+    });
+    let (out_scenes, deviations): (Vec<SceneReport>, Vec<f64>) = finished.into_iter().unzip();
+    figures.max_velocity_deviation = deviations.into_iter().fold(0.0, f64::max);
+    let impulses = t.elapsed().as_secs_f64();
+    let mut r = Report::new(islands, out_scenes, Device::of(ctx), String::new());
+    r.counts.polished = polished;
+    r.counts.cpu_fallback = r.counts.lemke;
+    r.timings.prediction = prediction;
+    r.timings.gpu = gpu;
+    r.timings.validation = validation;
+    r.timings.impulses = impulses;
+    r.gpu = Some(figures);
+    Ok(r)
 }
 
 /// Largest |GPU velocity − f64 velocity| / (1 + |f64 velocity|) over `bodies`.

@@ -11,7 +11,7 @@ use crate::cpu::impulses::apply_impulses;
 use crate::cpu::lemke::{lemke, lemke_textbook_basis};
 use crate::cpu::pgs::pgs;
 use crate::lcp::{Lcp, LcpSolution, Status};
-use crate::prediction::{self, predict_into};
+use crate::prediction::predict_into;
 use crate::report::{IslandReport, Report, SceneReport, SolvePath};
 use crate::scene::Scene;
 use crate::settings::{Backend, Method, Settings};
@@ -232,9 +232,9 @@ pub(super) fn solve_island(
         Method::Auto | Method::Enumeration => {
             let e = s.enumeration();
             if s.predict && !s.all_solutions {
-                let mut how = prediction::SolvePath::Separating;
+                let mut how = SolvePath::Separating;
                 if predict_into(lcp, warm, &e, &mut how, out) {
-                    (*method, *path) = (Method::Enumeration, how.into());
+                    (*method, *path) = (Method::Enumeration, how);
                     return;
                 }
             }

@@ -1,13 +1,11 @@
 //! The GPU path of the [`Solver`]: enumeration on the device, every answer
 //! validated on the CPU in f64.
 
-use super::Solver;
+use super::{warm_basis, Solver};
 use crate::build::Built;
-use crate::gpu::validation::BatchReport;
 use crate::gpu::{self, GpuContext};
 use crate::lcp::Lcp;
-use crate::prediction;
-use crate::report::{GpuFigures, IslandReport, Report, SceneReport, SolvePath};
+use crate::report::{GpuFigures, Report, SolvePath};
 use crate::scene::Scene;
 use crate::settings::Method;
 use crate::Error;
@@ -19,32 +17,27 @@ use crate::gpu::all_bases::{screen_all_bases, ScreenFigures, Screened};
 use crate::gpu::MAX_GPU_N;
 
 impl Solver {
-    /// Checked LCPs on the GPU; a panic inside wgpu becomes [`Error::Gpu`].
+    /// LCPs on the GPU, each checked and (with `keys` and
+    /// `settings.warm_start`) given its warm basis in the host's parallel
+    /// pass; an error names the first bad problem. A panic inside wgpu
+    /// becomes [`Error::Gpu`].
     pub(super) fn lcps_on_gpu(
         &self,
         ctx: &GpuContext,
         lcps: &[Lcp],
-        warm: Option<&[Option<u32>]>,
+        keys: Option<&[&[u64]]>,
     ) -> Result<Report, Error> {
-        let gs = self.settings.gpu_solve();
-        let r = guarded(|| gpu::solve_lcp_batch_warm(ctx, lcps, warm, &gs))?;
-        let islands = r
-            .islands
-            .into_iter()
-            .enumerate()
-            .map(|(i, o)| IslandReport {
-                scene: None,
-                contacts: (0..lcps[i].n()).collect(),
-                method: if o.path == Some(prediction::SolvePath::Lemke) {
-                    Method::Lemke
-                } else {
-                    Method::Enumeration
-                },
-                path: o.solved_on.path(o.path),
-                solution: o.solution,
-            })
-            .collect();
-        Ok(self.gpu_report(islands, Vec::new(), &r.report, 0.0))
+        let mut gs = self.settings.gpu_solve();
+        gs.threads = self.threads;
+        let (settings, memory) = (&self.settings, &self.warm);
+        let warm = |i: usize| keys.and_then(|k| warm_basis(settings, memory, k[i]));
+        let r = guarded(|| gpu::solve_lcp_batch_warm(ctx, lcps, &warm, &gs))?;
+        if r.counts.invalid > 0 {
+            for (i, lcp) in lcps.iter().enumerate() {
+                lcp.validate(&format!("problem {i}"))?;
+            }
+        }
+        Ok(self.gpu_report(r))
     }
 
     /// Checked scenes on the GPU, from what was built of them. `warm`:
@@ -56,10 +49,11 @@ impl Solver {
         built: &[Built],
         warm: &[Vec<Option<u32>>],
     ) -> Result<Report, Error> {
-        let gs = self.settings.gpu_solve();
+        let mut gs = self.settings.gpu_solve();
+        gs.threads = self.threads;
         let warm = (!warm.is_empty()).then_some(warm);
         let r = guarded(|| gpu::solve_scenes_warm(ctx, scenes, built, warm, &gs))?;
-        Ok(self.gpu_report(r.islands, r.scenes, &r.report, r.max_velocity_deviation))
+        Ok(self.gpu_report(r))
     }
 
     /// `all_solutions` for LCPs on the GPU ([`Self::all_solutions_on_gpu`]).
@@ -68,6 +62,12 @@ impl Solver {
         ctx: &GpuContext,
         lcps: &[Lcp],
     ) -> Result<Report, Error> {
+        for (i, lcp) in lcps.iter().enumerate() {
+            // The item's name is formatted only for the error.
+            if lcp.validate("problem").is_err() {
+                lcp.validate(&format!("problem {i}"))?;
+            }
+        }
         let refs: Vec<&Lcp> = lcps.iter().collect();
         let t = std::time::Instant::now();
         let (solved, figures) = self.all_solutions_on_gpu(ctx, &refs)?;
@@ -131,29 +131,10 @@ impl Solver {
         Ok((solved.into_iter().collect::<Result<_, _>>()?, figures))
     }
 
-    fn gpu_report(
-        &self,
-        mut islands: Vec<IslandReport>,
-        scenes: Vec<SceneReport>,
-        b: &BatchReport,
-        max_velocity_deviation: f64,
-    ) -> Report {
-        self.check(&mut islands);
-        let mut r = Report::new(islands, scenes, self.device(), self.choice.clone());
-        r.counts.polished = b.polished;
-        r.counts.cpu_fallback = b.cpu_fallback;
-        r.timings.prediction = b.prediction_seconds;
-        r.timings.gpu = b.gpu_seconds;
-        r.timings.validation = b.validation_seconds;
-        r.gpu = Some(GpuFigures {
-            chunks: b.chunks,
-            dispatches: b.dispatches,
-            rounds: b.rounds,
-            tree_decided: b.tree_decided,
-            tree_undecided: b.tree_undecided,
-            max_gpu_error: b.max_gpu_error,
-            max_velocity_deviation,
-        });
+    /// A GPU backend's report as the door gives it: the device and why.
+    fn gpu_report(&self, mut r: Report) -> Report {
+        r.device = self.device();
+        r.choice = self.choice.clone();
         r
     }
 }

@@ -253,25 +253,7 @@ impl Solver {
     /// else the CPU.
     pub fn device(&self) -> Device {
         match self.gpu.as_deref() {
-            Some(ctx) => {
-                let a = ctx.adapter_info();
-                Device {
-                    kind: if a.software {
-                        DeviceKind::SoftwareGpu
-                    } else {
-                        DeviceKind::HardwareGpu
-                    },
-                    name: format!(
-                        "{} ({}, {}; {}; {})",
-                        a.name,
-                        a.backend,
-                        a.device_type,
-                        ctx.selection(),
-                        ctx.precision().name()
-                    ),
-                    precision: ctx.precision(),
-                }
-            }
+            Some(ctx) => Device::of(ctx),
             None => self.cpu_device(),
         }
     }
@@ -367,17 +349,11 @@ impl Solver {
         let mut report = None;
         let (use_gpu, why) = self.gpu_for(lcps.iter().map(Lcp::n));
         if let Some(ctx) = self.gpu.clone().filter(|_| use_gpu) {
-            for (i, lcp) in lcps.iter().enumerate() {
-                // The item's name is formatted only for the error.
-                if lcp.validate("problem").is_err() {
-                    lcp.validate(&format!("problem {i}"))?;
-                }
-            }
-            let warm = self.warm_bases(keys);
             let on_gpu = if self.settings.all_solutions {
                 self.all_solutions_lcps_on_gpu(&ctx, lcps)
             } else {
-                self.lcps_on_gpu(&ctx, lcps, warm.as_deref())
+                let keys = keys.filter(|_| self.settings.warm_start);
+                self.lcps_on_gpu(&ctx, lcps, keys)
             };
             match on_gpu {
                 Ok(r) => report = Some(r),
@@ -385,8 +361,8 @@ impl Solver {
                 Err(e) => return Err(e),
             }
         }
-        // The CPU path checks each problem and looks up its warm basis on
-        // the threads that solve it.
+        // Both paths check each problem and look up its warm basis on the
+        // threads that solve it.
         let mut report = match report {
             Some(r) => r,
             None => self.lcps_on_cpu(lcps, keys)?,
@@ -515,11 +491,6 @@ impl Solver {
         }
     }
 
-    fn warm_bases(&self, keys: Option<&[&[u64]]>) -> Option<Vec<Option<u32>>> {
-        let keys = keys.filter(|_| self.settings.warm_start)?;
-        Some(keys.iter().map(|k| self.warm_basis(k)).collect())
-    }
-
     fn warm_basis(&self, ids: &[u64]) -> Option<u32> {
         warm_basis(&self.settings, &self.warm, ids)
     }
@@ -540,7 +511,7 @@ impl Solver {
 /// The check of [`Solver::check`] on one answer: a solution whose z, w or
 /// error is not finite, or whose error is above `tolerance`, becomes
 /// `numerical_failure`.
-pub(super) fn check_solution(s: &mut crate::LcpSolution, tolerance: f64) {
+pub(crate) fn check_solution(s: &mut crate::LcpSolution, tolerance: f64) {
     if s.status.is_solution() && !s.passes_check(tolerance) {
         s.status = crate::Status::NumericalFailure;
     }

@@ -7,12 +7,12 @@ use std::time::Instant;
 use crate::cpu::enumeration::{enumerate, EnumerationSettings};
 use crate::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};
 use crate::gpu::{
-    solve_lcp_batch, solve_scenes, GpuContext, GpuOptions, GpuSolveSettings, Precision, SolvedOn,
+    solve_lcp_batch, solve_scenes, GpuContext, GpuOptions, GpuSolveSettings, Precision,
 };
 use crate::io::{read_input, Input};
 use crate::tests::reference::solve_scene;
 use crate::tests::reference::SolverSettings;
-use crate::{Lcp, Scene, Status};
+use crate::{Lcp, Scene, SolvePath, Status};
 
 /// A fresh context at `precision`. No adapter fails the test with the
 /// install hint: GPU tests never skip.
@@ -72,14 +72,15 @@ fn scenes_against_cpu(precision: Precision) -> Option<(usize, usize)> {
         .map(|(i, s)| solve_scene(s, &SolverSettings::default(), &format!("scene {i}")).unwrap())
         .collect();
     let cpu_s = t.elapsed().as_secs_f64();
-    println!("{}", gpu.report);
+    println!("{gpu}");
+    let figures = gpu.gpu.unwrap_or_default();
     println!(
         "{precision:?}: {count} islands in {} scenes; GPU path {gpu_s:.2} s, CPU path {cpu_s:.2} s; impulse stage deviation {:.2e}",
         scenes.len(),
-        gpu.max_velocity_deviation
+        figures.max_velocity_deviation
     );
     assert!(count >= 20_000);
-    assert_eq!(gpu.report.islands, count);
+    assert_eq!(gpu.islands.len(), count);
     let mut by_n = [0usize; 13];
     let mut differing_bases = 0;
     for (s, (g, c)) in gpu.scenes.iter().zip(&cpu).enumerate() {
@@ -114,7 +115,7 @@ fn scenes_against_cpu(precision: Precision) -> Option<(usize, usize)> {
                     "scene {s} island {k}: unique solution but GPU basis {:?} vs CPU {:?} ({:?})",
                     gi.solution.basis,
                     ci.solution.basis,
-                    gpu.solved_on[s][k]
+                    g_islands[k].path
                 );
                 differing_bases += 1;
             }
@@ -154,11 +155,11 @@ fn scenes_against_cpu(precision: Precision) -> Option<(usize, usize)> {
         1e-4
     };
     assert!(
-        gpu.max_velocity_deviation <= tol,
+        figures.max_velocity_deviation <= tol,
         "impulse stage deviation {:e}",
-        gpu.max_velocity_deviation
+        figures.max_velocity_deviation
     );
-    Some((count, gpu.report.repaired))
+    Some((count, gpu.counts.repaired))
 }
 
 #[test]
@@ -211,12 +212,12 @@ fn siconos_batch_matches_the_cpu() {
     }
     assert!(lcps.len() >= 20, "{} problems", lcps.len());
     let r = solve_lcp_batch(&ctx, &lcps, &GpuSolveSettings::default()).unwrap();
-    println!("{}", r.report);
+    println!("{r}");
     let mut on_gpu = 0;
     for ((name, lcp), o) in names.iter().zip(&lcps).zip(&r.islands) {
         let n = lcp.n();
         if n > 16 {
-            assert_eq!(o.solved_on, SolvedOn::CpuFallback, "{name}");
+            assert_eq!(o.path, SolvePath::Lemke, "{name}");
             let cpu = lclemke(lcp);
             assert_eq!(o.solution.status, cpu.status, "{name}: Lemke status");
             println!("{name}: n = {n} → CPU Lemke: {}", o.solution.status);
@@ -248,19 +249,15 @@ fn siconos_batch_matches_the_cpu() {
         }
         println!(
             "{name}: n = {n}, {} on {} (CPU: {}, {:?}), error {:.1e}",
-            o.solution.status,
-            o.solved_on.name(),
-            cpu.status,
-            all.solution_set,
-            o.solution.residuals.error
+            o.solution.status, o.path, cpu.status, all.solution_set, o.solution.residuals.error
         );
     }
     assert_eq!(on_gpu, 18);
-    assert_eq!(r.report.cpu_fallback, 2);
+    assert_eq!(r.counts.cpu_fallback, 2);
     // Observed on lavapipe: 0 repaired (f64 shaders).
-    println!("Siconos: repaired {}", r.report.repaired);
+    println!("Siconos: repaired {}", r.counts.repaired);
     if ctx.precision() == Precision::F64 {
-        assert_eq!(r.report.repaired, 0);
+        assert_eq!(r.counts.repaired, 0);
     }
 }
 
@@ -305,24 +302,28 @@ fn split_batches_give_the_same_answers() {
         },
     )
     .unwrap();
-    println!("whole: {}\nsplit: {}", whole.report, split.report);
-    assert_eq!(whole.report.chunks, 1);
-    assert!(split.report.chunks > 10, "{} chunks", split.report.chunks);
-    assert!(split.report.dispatches > whole.report.dispatches);
-    assert_eq!(whole.report.invalid, 2);
+    println!("whole: {whole}\nsplit: {split}");
+    let (w, sp) = (whole.gpu.unwrap_or_default(), split.gpu.unwrap_or_default());
+    assert_eq!(w.chunks, 1);
+    assert!(sp.chunks > 10, "{} chunks", sp.chunks);
+    assert!(sp.dispatches > w.dispatches);
+    assert_eq!(whole.counts.invalid, 2);
     for (i, (a, b)) in whole.islands.iter().zip(&split.islands).enumerate() {
-        assert_eq!(a.gpu, b.gpu, "problem {i}");
+        // The GPU's verdict: its basis and counters (bases visited, singular).
+        assert_eq!(a.path, b.path, "problem {i}");
+        assert_eq!(a.solution.basis, b.solution.basis, "problem {i}");
+        assert_eq!(a.solution.counters, b.solution.counters, "problem {i}");
         assert_eq!(a.solution.status, b.solution.status, "problem {i}");
         assert_eq!(a.solution.z, b.solution.z, "problem {i}");
     }
     let last = &whole.islands[whole.islands.len() - 1];
     assert_eq!(last.solution.status, Status::InvalidInput);
-    assert_eq!(last.solved_on, SolvedOn::Invalid);
+    assert_eq!(last.path, SolvePath::Invalid);
     // Sizes 13…16 were on the GPU too.
     assert!(whole
         .islands
         .iter()
-        .any(|o| o.solution.z.len() == 16 && o.solved_on != SolvedOn::CpuFallback));
+        .any(|o| o.solution.z.len() == 16 && o.path != SolvePath::Lemke));
 }
 
 /// Scenes split into many chunks give the same answers as one chunk.
@@ -343,8 +344,9 @@ fn split_scene_batches_give_the_same_answers() {
         },
     )
     .unwrap();
-    println!("whole: {}\nsplit: {}", whole.report, split.report);
-    assert!(split.report.chunks > whole.report.chunks);
+    println!("whole: {whole}\nsplit: {split}");
+    let (w, sp) = (whole.gpu.unwrap_or_default(), split.gpu.unwrap_or_default());
+    assert!(sp.chunks > w.chunks);
     for (a, b) in whole.scenes.iter().zip(&split.scenes) {
         assert_eq!(a.impulses, b.impulses);
         assert_eq!(a.bodies, b.bodies);

@@ -8,11 +8,8 @@
 use crate::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};
 use crate::gpu::batch::solve_lcp_batch_warm;
 use crate::gpu::scenes::{check_and_build, solve_scenes_warm};
-use crate::gpu::{
-    solve_lcp_batch, solve_scenes, GpuBatchResult, GpuSolveSettings, Precision, SolvedOn,
-};
-use crate::prediction::SolvePath;
-use crate::{Lcp, Scene};
+use crate::gpu::{solve_lcp_batch, solve_scenes, GpuSolveSettings, Precision};
+use crate::{Lcp, Report, Scene, SolvePath};
 
 use super::common::gpu_context as context;
 
@@ -43,32 +40,46 @@ fn lcps(count: usize) -> Vec<Lcp> {
     out
 }
 
-fn paths_add_up(r: &GpuBatchResult) {
-    let rep = &r.report;
-    let sum: usize = rep.paths.iter().sum();
-    assert_eq!(sum + rep.invalid, rep.islands, "{rep}");
-    assert_eq!(rep.islands, r.islands.len());
-    assert_eq!(
-        rep.path_count(SolvePath::Enumerated),
-        rep.polished + rep.confirmed_no_solution + rep.repaired
-    );
-    let predicted = r
-        .islands
-        .iter()
-        .filter(|o| o.solved_on == SolvedOn::Predicted)
-        .count();
-    assert_eq!(predicted, rep.predicted);
+/// Islands settled by prediction.
+fn predicted(r: &Report) -> usize {
+    r.islands.iter().filter(|i| i.path.is_prediction()).count()
+}
+
+fn paths_add_up(r: &Report) {
+    let c = &r.counts;
+    let named = c.named();
+    let count = |name: &str| {
+        named
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map_or(0, |(_, k)| *k)
+    };
+    let sum: usize = SolvePath::ALL.iter().map(|p| count(p.name())).sum();
+    assert_eq!(sum, r.islands.len(), "{r}");
+    assert!(c.polished <= c.enumerated_gpu, "{r}");
     for p in SolvePath::ALL {
-        let n = r.islands.iter().filter(|o| o.path == Some(p)).count();
-        assert_eq!(n, rep.path_count(p), "{}", p.name());
+        let n = r.islands.iter().filter(|o| o.path == p).count();
+        assert_eq!(n, count(p.name()), "{}", p.name());
     }
-    // Predicted islands never reached the GPU.
+    // The GPU backend settles islands by prediction, on the GPU, by repair,
+    // by Lemke (n > 16), or finds them invalid; nothing else.
     for o in &r.islands {
-        assert_eq!(o.gpu.is_some(), o.path == Some(SolvePath::Enumerated));
+        assert!(
+            o.path.is_prediction()
+                || matches!(
+                    o.path,
+                    SolvePath::EnumeratedGpu
+                        | SolvePath::Repaired
+                        | SolvePath::Lemke
+                        | SolvePath::Invalid
+                ),
+            "{}",
+            o.path
+        );
     }
 }
 
-fn same_results(a: &GpuBatchResult, b: &GpuBatchResult) {
+fn same_results(a: &Report, b: &Report) {
     let mut bitwise = 0;
     for (i, (x, y)) in a.islands.iter().zip(&b.islands).enumerate() {
         assert_eq!(x.solution.status, y.solution.status, "island {i}");
@@ -100,28 +111,31 @@ fn on_and_off(precision: Precision) {
         },
     )
     .unwrap();
-    println!("on:\n{}\noff:\n{}", on.report, off.report);
+    println!("on:\n{on}\noff:\n{off}");
     paths_add_up(&on);
     paths_add_up(&off);
-    assert_eq!(off.report.predicted, 0);
-    assert!(on.report.path_count(SolvePath::Separating) > 0);
-    assert!(on.report.path_count(SolvePath::SingleContact) > 0);
-    assert!(on.report.path_count(SolvePath::PredictedBasis) > 0);
-    assert!(on.report.path_count(SolvePath::Enumerated) > 0);
-    assert_eq!(on.report.path_count(SolvePath::WarmStart), 0);
-    assert_eq!(on.report.statuses, off.report.statuses);
+    assert_eq!(predicted(&off), 0);
+    assert!(on.counts.separating > 0);
+    assert!(on.counts.single_contact > 0);
+    assert!(on.counts.predicted_basis > 0);
+    assert!(on.counts.enumerated_gpu > 0);
+    assert_eq!(on.counts.warm_start, 0);
+    assert_eq!(on.statuses, off.statuses);
     same_results(&on, &off);
 
     // Warm start from the cold bases: every island with a basis is settled
     // without enumeration, with the same z.
     let warm: Vec<Option<u32>> = on.islands.iter().map(|o| o.solution.basis).collect();
-    let hot = solve_lcp_batch_warm(&ctx, &lcps, Some(&warm), &Default::default()).unwrap();
-    println!("warm:\n{}", hot.report);
+    let hot = solve_lcp_batch_warm(&ctx, &lcps, &|i| warm[i], &Default::default()).unwrap();
+    println!("warm:\n{hot}");
     paths_add_up(&hot);
-    assert!(hot.report.path_count(SolvePath::WarmStart) > 0);
+    assert!(hot.counts.warm_start > 0);
     for (i, (c, h)) in on.islands.iter().zip(&hot.islands).enumerate() {
         if c.solution.basis.is_some() {
-            assert_ne!(h.path, Some(SolvePath::Enumerated), "island {i}");
+            assert!(
+                !matches!(h.path, SolvePath::EnumeratedGpu | SolvePath::Repaired),
+                "island {i}"
+            );
         }
     }
     same_results(&on, &hot);
@@ -155,12 +169,11 @@ fn scene_prediction_on_and_off_agree() {
         },
     )
     .unwrap();
-    println!("on:\n{}\noff:\n{}", on.report, off.report);
-    assert!(on.report.predicted > 0);
-    assert_eq!(off.report.predicted, 0);
-    let sum: usize = on.report.paths.iter().sum();
-    assert_eq!(sum, on.report.islands);
-    assert_eq!(on.report.statuses, off.report.statuses);
+    println!("on:\n{on}\noff:\n{off}");
+    assert!(predicted(&on) > 0);
+    assert_eq!(predicted(&off), 0);
+    paths_add_up(&on);
+    assert_eq!(on.statuses, off.statuses);
     let mut predicted = 0;
     for (s, (a, b)) in on.scenes.iter().zip(&off.scenes).enumerate() {
         let (a, b) = (
@@ -176,12 +189,12 @@ fn scene_prediction_on_and_off_agree() {
             if x.solution.basis == y.solution.basis {
                 assert_eq!(x.solution.z, y.solution.z, "scene {s} island {k}");
             }
-            if on.solved_on[s][k] == SolvedOn::Predicted {
+            if x.path.is_prediction() {
                 predicted += 1;
             }
         }
     }
-    assert_eq!(predicted, on.report.predicted);
+    assert_eq!(predicted, self::predicted(&on));
     // Warm from the cold bases.
     let warm: Vec<Vec<Option<u32>>> = on
         .scenes
@@ -196,8 +209,8 @@ fn scene_prediction_on_and_off_agree() {
     let built = check_and_build(&scenes).unwrap();
     let refs: Vec<&Scene> = scenes.iter().collect();
     let hot = solve_scenes_warm(&ctx, &refs, &built, Some(&warm), &Default::default()).unwrap();
-    println!("warm:\n{}", hot.report);
-    assert!(hot.report.path_count(SolvePath::WarmStart) > 0);
+    println!("warm:\n{hot}");
+    assert!(hot.counts.warm_start > 0);
     for (a, b) in on.scenes.iter().zip(&hot.scenes) {
         let (a, b) = (
             &on.islands[a.islands.clone()],

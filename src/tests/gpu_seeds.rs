@@ -1,7 +1,8 @@
 //! The seeds' worked examples through the GPU, in f64 and in f32.
 
-use crate::gpu::{solve_lcp_batch, GpuSolveSettings, Precision, SolvedOn};
-use crate::{Lcp, Status};
+use crate::gpu::batch::enumerate_on_gpu;
+use crate::gpu::{solve_lcp_batch, GpuSolveSettings, Precision};
+use crate::{Lcp, SolvePath, Status};
 
 /// A fresh context at `precision`; a missing adapter fails the test with the
 /// install hint (GPU tests never skip).
@@ -50,12 +51,15 @@ fn check(precision: Precision) {
         ..Default::default()
     };
     let r = solve_lcp_batch(&ctx, &lcps, &gs).unwrap();
-    println!("{}", r.report);
+    println!("{r}");
+    // The stage's own output: the GPU's z before the f64 polish.
+    let refs: Vec<&Lcp> = lcps.iter().collect();
+    let (raw, _) = enumerate_on_gpu(&ctx, &refs, &gs).unwrap();
     for (k, ((_, z, w), o)) in cases.iter().zip(&r.islands).enumerate() {
         assert_eq!(o.solution.status, Status::Solved, "seed case {k}");
         assert_eq!(
-            o.solved_on,
-            SolvedOn::Gpu,
+            o.path,
+            SolvePath::EnumeratedGpu,
             "seed case {k} must be answered by the GPU"
         );
         for i in 0..z.len() {
@@ -76,15 +80,15 @@ fn check(precision: Precision) {
                 1e-5
             };
             assert!(
-                (o.gpu_z[i] - z[i]).abs() < tol * 4.0,
+                (raw[k].z[i] - z[i]).abs() < tol * 4.0,
                 "case {k} gpu z {:?}",
-                o.gpu_z
+                raw[k].z
             );
         }
         assert!(o.solution.residuals.error < 1e-14);
     }
-    assert_eq!(r.report.polished, 3);
-    assert_eq!(r.report.repaired, 0);
+    assert_eq!(r.counts.polished, 3);
+    assert_eq!(r.counts.repaired, 0);
 }
 
 #[test]
