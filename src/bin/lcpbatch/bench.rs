@@ -50,6 +50,10 @@ pub struct BenchRow {
     pub statuses: BTreeMap<String, usize>,
     /// Islands per path, and what validation did.
     pub note: String,
+    /// GPU rows: microseconds per island in each phase of the call, in
+    /// order (host preparation: the checks, warm bases, prediction; the GPU
+    /// phase's parts; the f64 check; the rest: report and door).
+    pub phases_us_per_island: Vec<(String, f64)>,
 }
 
 impl BenchRow {
@@ -72,11 +76,28 @@ impl BenchRow {
             .iter()
             .map(|(p, c)| format!("{p}={c}"))
             .collect();
-        if let Some(g) = &report.gpu {
+        let mut phases = Vec::new();
+        if let Some(g) = report.gpu.as_ref().filter(|_| report.on_gpu()) {
             note.push(format!(
                 "tree decided={} undecided={}; gpu's own max error {:.1e}",
                 g.tree_decided, g.tree_undecided, g.max_gpu_error
             ));
+            let t = &report.timings;
+            let parts = g.pack_seconds + g.upload_seconds + g.kernel_seconds + g.readback_seconds;
+            let per = 1e6 / report.islands.len().max(1) as f64;
+            phases = [
+                ("host preparation", t.prediction),
+                ("pack", g.pack_seconds),
+                ("upload", g.upload_seconds),
+                ("kernels", g.kernel_seconds),
+                ("readback", g.readback_seconds),
+                ("other GPU host work", (t.gpu - parts).max(0.0)),
+                ("f64 check", t.validation),
+                ("report and door", (seconds - t.prediction - t.gpu - t.validation).max(0.0)),
+            ]
+            .into_iter()
+            .map(|(name, secs)| (name.to_string(), secs * per))
+            .collect();
         }
         BenchRow {
             family: family.name().into(),
@@ -94,6 +115,7 @@ impl BenchRow {
             max_error: errors.last().copied().unwrap_or(0.0),
             statuses,
             note: note.join(" "),
+            phases_us_per_island: phases,
         }
     }
 }
@@ -363,6 +385,21 @@ fn print_table(rows: &[BenchRow]) {
             st.join(" "),
             r.note
         );
+    }
+    let gpu_rows: Vec<&BenchRow> = rows
+        .iter()
+        .filter(|r| !r.phases_us_per_island.is_empty())
+        .collect();
+    if !gpu_rows.is_empty() {
+        println!("\nGPU rows, µs per island by phase (host side; kernels include the waits):");
+    }
+    for r in gpu_rows {
+        let phases: Vec<String> = r
+            .phases_us_per_island
+            .iter()
+            .map(|(name, us)| format!("{name} {us:.2}"))
+            .collect();
+        println!("{:<17} {:<28} {}", r.family, r.solver, phases.join(", "));
     }
 }
 
