@@ -5,36 +5,33 @@
 
 use std::path::PathBuf;
 
-use crate::cpu::enumeration::EnumerationSettings;
-use crate::tests::reference::{solve, Solver, SolverSettings};
+use crate::settings::{Backend, Method, Settings};
+use crate::tests::reference::solve;
 use crate::{Lcp, LcpSolution};
 
 pub use super::skip::{fc3d_dir, siconos_dir, skip, Lack};
 
-/// Default settings of `solver`.
-pub fn settings(solver: Solver) -> SolverSettings {
-    SolverSettings::with_solver(solver)
+/// Default settings of `method` on the CPU.
+pub fn settings(method: Method) -> Settings {
+    Settings::new(Backend::Cpu, method)
 }
 
 /// Enumeration visiting every basis.
-pub fn all_solutions_settings() -> SolverSettings {
-    SolverSettings {
-        solver: Solver::Enum,
-        enumeration: EnumerationSettings {
-            all_solutions: true,
-            ..Default::default()
-        },
-        ..Default::default()
+pub fn all_solutions_settings() -> Settings {
+    Settings {
+        all_solutions: true,
+        ..settings(Method::Enumeration)
     }
 }
 
-/// Solves with `solver`'s default settings; panics on an `Error` (the tests
+/// Solves with `method`'s default settings; panics on an `Error` (the tests
 /// only hand solvers problems they accept).
-pub fn run(lcp: &Lcp, solver: Solver) -> LcpSolution {
-    solve(lcp, &settings(solver)).unwrap_or_else(|e| panic!("{}: {e}", solver.name()))
+pub fn run(lcp: &Lcp, method: Method) -> LcpSolution {
+    solve(lcp, &settings(method)).unwrap_or_else(|e| panic!("{}: {e}", method.name()))
 }
 
-pub const SOLVERS: [Solver; 3] = [Solver::Enum, Solver::Lemke, Solver::Pgs];
+/// The algorithms the reference solves with.
+pub const METHODS: [Method; 3] = [Method::Enumeration, Method::Lemke, Method::Pgs];
 
 /// ‖v‖∞.
 pub fn inf_norm(v: &[f64]) -> f64 {

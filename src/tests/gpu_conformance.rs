@@ -11,8 +11,7 @@ use crate::gpu::{
 };
 use crate::io::{read_input, Input};
 use crate::tests::reference::solve_scene;
-use crate::tests::reference::SolverSettings;
-use crate::{Lcp, Scene, SolvePath, Status};
+use crate::{Lcp, Method, Scene, SolvePath, Status};
 
 /// A fresh context at `precision`. No adapter fails the test with the
 /// install hint: GPU tests never skip.
@@ -69,7 +68,7 @@ fn scenes_against_cpu(precision: Precision) -> Option<(usize, usize)> {
     let cpu: Vec<_> = scenes
         .iter()
         .enumerate()
-        .map(|(i, s)| solve_scene(s, &SolverSettings::default(), &format!("scene {i}")).unwrap())
+        .map(|(_, s)| solve_scene(s, &super::common::settings(Method::Enumeration)).unwrap())
         .collect();
     let cpu_s = t.elapsed().as_secs_f64();
     println!("{gpu}");
@@ -102,7 +101,9 @@ fn scenes_against_cpu(precision: Precision) -> Option<(usize, usize)> {
             if gi.solution.basis != ci.solution.basis {
                 // Allowed only where the island has more than one solution.
                 let all = enumerate(
-                    &ci.lcp,
+                    &crate::tests::reference::build(&scenes[s], "scene")
+                        .unwrap()
+                        .2[k],
                     &EnumerationSettings {
                         all_solutions: true,
                         ..Default::default()
@@ -128,7 +129,7 @@ fn scenes_against_cpu(precision: Precision) -> Option<(usize, usize)> {
                 }
             }
         }
-        for (a, b) in g.bodies.iter().zip(&c.bodies) {
+        for (a, b) in g.bodies.iter().zip(&c.scenes[0].bodies) {
             if g_islands
                 .iter()
                 .zip(&c.islands)

@@ -6,21 +6,17 @@
 
 use super::common;
 
-use super::common::{inf_norm, w_scale, SOLVERS};
+use super::common::{inf_norm, settings, w_scale, METHODS};
 use crate::cpu::assembly::{assemble_contacts, assemble_island};
 use crate::cpu::impulses::{apply_impulses, relative_normal_velocities, BodyVelocity};
 use crate::generate::{
     ball_body, box_body, box_on_ground, random_island, random_scene, seed_chain, Rng,
 };
 use crate::islands::{find_islands, Island};
-use crate::tests::reference::solve_scene;
-use crate::tests::reference::{solve, Solver, SolverSettings};
+use crate::settings::Method;
+use crate::tests::reference::{build, solve, solve_scene};
 use crate::{Contact, Scene, Status};
 use glam::{DMat3, DVec3};
-
-pub(super) fn settings(s: Solver) -> SolverSettings {
-    SolverSettings::with_solver(s)
-}
 
 pub(super) fn contact(a: usize, b: Option<usize>, point: DVec3, normal: DVec3, e: f64) -> Contact {
     Contact {
@@ -100,11 +96,11 @@ pub(super) fn equal_balls_head_on_with_full_restitution_exchange_velocities() {
             // n from b (left) to a (right).
             contacts: vec![contact(1, Some(0), DVec3::X * 0.5, DVec3::X, 1.0)],
         };
-        for s in SOLVERS {
-            let sol = solve_scene(&scene, &settings(s), "balls").unwrap();
+        for s in METHODS {
+            let sol = solve_scene(&scene, &settings(s)).unwrap();
             assert_eq!(sol.islands[0].solution.status, Status::Solved);
-            let tol = if s == Solver::Pgs { 1e-9 } else { 1e-14 };
-            let v = &sol.bodies;
+            let tol = if s == Method::Pgs { 1e-9 } else { 1e-14 };
+            let v = &sol.scenes[0].bodies;
             assert!((v[0].velocity[0] - vb).abs() < tol, "{}: {v:?}", s.name());
             assert!((v[1].velocity[0] - va).abs() < tol, "{}: {v:?}", s.name());
             for b in v {
@@ -112,7 +108,7 @@ pub(super) fn equal_balls_head_on_with_full_restitution_exchange_velocities() {
                 assert_eq!(&b.velocity[1..], &[0.0, 0.0]);
             }
             // Impulse m (va − vb) (1 + ε) / 2 with m = 2, ε = 1.
-            assert!((sol.impulses[0] - 2.0 * (va - vb)).abs() < tol * 10.0);
+            assert!((sol.scenes[0].impulses[0] - 2.0 * (va - vb)).abs() < tol * 10.0);
         }
     }
 }
@@ -159,10 +155,10 @@ pub(super) fn momentum_is_conserved_in_two_body_impacts() {
         let scene = two_body_impact(&mut rng);
         let about = rng.vector(5.0);
         let before = momenta(&scene, &initial_velocities(&scene), about);
-        for s in [Solver::Enum, Solver::Lemke] {
-            let sol = solve_scene(&scene, &settings(s), "impact").unwrap();
+        for s in [Method::Enumeration, Method::Lemke] {
+            let sol = solve_scene(&scene, &settings(s)).unwrap();
             assert!(sol.islands[0].solution.status.is_solution());
-            let after = momenta(&scene, &sol.bodies, about);
+            let after = momenta(&scene, &sol.scenes[0].bodies, about);
             let scale = before.2.max(after.2);
             let dp = (after.0 - before.0).length() / scale;
             let dl = (after.1 - before.1).length() / scale;
@@ -188,20 +184,20 @@ pub(super) fn inelastic_impacts_lose_exactly_half_z_m_z() {
         let mut scene = random_island(&mut rng, n, 100.0);
         scene.contacts.iter_mut().for_each(|c| c.restitution = 0.0);
         let ke0 = kinetic_energy(&scene, &initial_velocities(&scene));
-        for s in [Solver::Enum, Solver::Lemke] {
-            let sol = solve_scene(&scene, &settings(s), "island").unwrap();
+        let lcp = &build(&scene, "island").unwrap().2[0];
+        for s in [Method::Enumeration, Method::Lemke] {
+            let sol = solve_scene(&scene, &settings(s)).unwrap();
             let isl = &sol.islands[0];
             assert!(isl.solution.status.is_solution());
             let z = &isl.solution.z;
-            let mz = isl
-                .lcp
+            let mz = lcp
                 .w(z)
                 .iter()
-                .zip(&isl.lcp.q)
+                .zip(&lcp.q)
                 .map(|(w, q)| w - q)
                 .collect::<Vec<_>>();
             let zmz: f64 = z.iter().zip(&mz).map(|(a, b)| a * b).sum();
-            let ke1 = kinetic_energy(&scene, &sol.bodies);
+            let ke1 = kinetic_energy(&scene, &sol.scenes[0].bodies);
             let rel = ((ke1 - ke0) + 0.5 * zmz).abs() / ke0;
             max_rel = max_rel.max(rel);
             assert!(
@@ -228,9 +224,9 @@ pub(super) fn a_single_elastic_contact_keeps_kinetic_energy() {
         let mut scene = random_island(&mut rng, 1, 100.0);
         scene.contacts[0].restitution = 1.0;
         let ke0 = kinetic_energy(&scene, &initial_velocities(&scene));
-        for s in SOLVERS {
-            let sol = solve_scene(&scene, &settings(s), "island").unwrap();
-            let ke1 = kinetic_energy(&scene, &sol.bodies);
+        for s in METHODS {
+            let sol = solve_scene(&scene, &settings(s)).unwrap();
+            let ke1 = kinetic_energy(&scene, &sol.scenes[0].bodies);
             assert!(
                 (ke1 - ke0).abs() <= 1e-12 * ke0,
                 "island {k} ({}): {ke0} → {ke1}",
@@ -245,8 +241,9 @@ pub(super) fn a_single_elastic_contact_keeps_kinetic_energy() {
 }
 
 pub(super) fn sol_z(scene: &Scene) -> f64 {
-    solve_scene(scene, &settings(Solver::Enum), "s")
+    solve_scene(scene, &settings(Method::Enumeration))
         .unwrap()
+        .scenes[0]
         .impulses[0]
 }
 
@@ -257,8 +254,8 @@ pub(super) fn a_box_landing_flat_on_four_contacts() {
     for speed in [0.0, 0.1, 1.0, 7.5] {
         for e in [0.0, 0.3, 1.0] {
             let scene = box_on_ground(speed, e);
-            for s in SOLVERS {
-                let sol = solve_scene(&scene, &settings(s), "box").unwrap();
+            for s in METHODS {
+                let sol = solve_scene(&scene, &settings(s)).unwrap();
                 let isl = &sol.islands[0];
                 let what = format!("{} speed {speed} ε {e}", s.name());
                 assert!(
@@ -272,18 +269,21 @@ pub(super) fn a_box_landing_flat_on_four_contacts() {
                     isl.solution.residuals
                 );
                 assert!(
-                    sol.impulses.iter().all(|z| z.is_finite() && *z >= 0.0),
+                    sol.scenes[0]
+                        .impulses
+                        .iter()
+                        .all(|z| z.is_finite() && *z >= 0.0),
                     "{what}: {:?}",
-                    sol.impulses
+                    sol.scenes[0].impulses
                 );
-                let b = &sol.bodies[1];
+                let b = &sol.scenes[0].bodies[1];
                 assert!(b
                     .velocity
                     .iter()
                     .chain(&b.angular_velocity)
                     .all(|v| v.is_finite()));
                 // Bounces straight up at ε·speed without spinning; total impulse m(1 + ε)·speed.
-                let tol = if s == Solver::Pgs { 1e-8 } else { 1e-12 } * speed.max(1.0);
+                let tol = if s == Method::Pgs { 1e-8 } else { 1e-12 } * speed.max(1.0);
                 assert!((b.velocity[1] - e * speed).abs() <= tol, "{what}: {b:?}");
                 assert!(
                     b.velocity[0].abs() <= tol && b.velocity[2].abs() <= tol,
@@ -293,23 +293,24 @@ pub(super) fn a_box_landing_flat_on_four_contacts() {
                     b.angular_velocity.iter().all(|w| w.abs() <= tol),
                     "{what}: {b:?}"
                 );
-                let total: f64 = sol.impulses.iter().sum();
+                let total: f64 = sol.scenes[0].impulses.iter().sum();
                 assert!(
                     (total - (1.0 + e) * speed).abs() <= tol,
                     "{what}: Σz = {total}"
                 );
                 // The ground does not move.
-                assert_eq!(sol.bodies[0].velocity, [0.0; 3]);
+                assert_eq!(sol.scenes[0].bodies[0].velocity, [0.0; 3]);
             }
         }
     }
     // The singularity is real: enumeration of every basis finds a continuum.
     let scene = box_on_ground(1.0, 0.5);
-    let isl = &solve_scene(&scene, &common::all_solutions_settings(), "box")
+    let isl = &solve_scene(&scene, &common::all_solutions_settings())
         .unwrap()
         .islands[0];
     assert_eq!(isl.solution.status, Status::MultipleSolutions);
-    assert!(!common::is_positive_definite(&isl.lcp, 1e-8));
+    let lcp = &build(&scene, "box").unwrap().2[0];
+    assert!(!common::is_positive_definite(lcp, 1e-8));
 }
 
 /// Solves the scene's LCP over all its contacts at once (one "island" holding
@@ -337,14 +338,18 @@ pub(super) fn whole_equals_islands(scene: &Scene, what: &str) -> (f64, f64) {
             }
         }
     }
-    let solver = if n <= 20 { Solver::Enum } else { Solver::Lemke };
+    let solver = if n <= 20 {
+        Method::Enumeration
+    } else {
+        Method::Lemke
+    };
     let whole = solve(&lcp, &settings(solver)).unwrap();
     assert!(
         whole.status.is_solution(),
         "{what}: whole scene {}",
         whole.status
     );
-    let by_island = solve_scene(scene, &settings(Solver::Enum), what).unwrap();
+    let by_island = solve_scene(scene, &settings(Method::Enumeration)).unwrap();
     let mut w_islands = vec![f64::NAN; n];
     for r in &by_island.islands {
         assert!(r.solution.status.is_solution(), "{what}");
@@ -352,7 +357,7 @@ pub(super) fn whole_equals_islands(scene: &Scene, what: &str) -> (f64, f64) {
             w_islands[c] = w;
         }
     }
-    let zmax = inf_norm(&whole.z).max(inf_norm(&by_island.impulses));
+    let zmax = inf_norm(&whole.z).max(inf_norm(&by_island.scenes[0].impulses));
     let dw = common::max_diff(&whole.w, &w_islands) / w_scale(&lcp, zmax);
     let v_whole = apply_impulses(scene, &rows, &whole.z);
     let flat = |v: &[BodyVelocity]| -> Vec<f64> {
@@ -360,7 +365,7 @@ pub(super) fn whole_equals_islands(scene: &Scene, what: &str) -> (f64, f64) {
             .flat_map(|b| b.velocity.into_iter().chain(b.angular_velocity))
             .collect()
     };
-    let (a, b) = (flat(&v_whole), flat(&by_island.bodies));
+    let (a, b) = (flat(&v_whole), flat(&by_island.scenes[0].bodies));
     let v0 = flat(&initial_velocities(scene));
     let dv = common::max_diff(&a, &b) / inf_norm(&a).max(inf_norm(&v0)).max(f64::MIN_POSITIVE);
     assert!(dw <= 1e-9 && dv <= 1e-9, "{what}: dw {dw:.1e}, dv {dv:.1e}");
@@ -377,10 +382,10 @@ pub(super) fn the_seed_chain_island_by_island_equals_the_whole_scene() {
         // leaves at −ε times its approach speed.
         let rows = assemble_contacts(&scene);
         assert!(rows.iter().all(|r| r.v_rel < 0.0));
-        let sol = solve_scene(&scene, &settings(Solver::Enum), "chain").unwrap();
-        let after = relative_normal_velocities(&scene, &sol.bodies);
+        let sol = solve_scene(&scene, &settings(Method::Enumeration)).unwrap();
+        let after = relative_normal_velocities(&scene, &sol.scenes[0].bodies);
         for (i, r) in rows.iter().enumerate() {
-            if sol.impulses[i] > 0.0 {
+            if sol.scenes[0].impulses[i] > 0.0 {
                 assert!(
                     (after[i] + e * r.v_rel).abs() < 1e-12,
                     "ε {e} contact {i}: {after:?}"
@@ -413,10 +418,7 @@ pub(super) fn diagonal_of_m_is_n_k_n() {
     for k in 0..1000 {
         let scene = random_island(&mut rng, 1 + k % 10, 100.0);
         let rows = assemble_contacts(&scene);
-        let lcp = &solve_scene(&scene, &settings(Solver::Enum), "i")
-            .unwrap()
-            .islands[0]
-            .lcp;
+        let lcp = &build(&scene, "i").unwrap().2[0];
         for (i, (c, r)) in scene.contacts.iter().zip(&rows).enumerate() {
             let n = c.normal();
             let nkn = n.dot(r.k * n);
@@ -441,14 +443,15 @@ pub(super) fn active_contacts_obey_newtons_law_after_the_solve() {
     let (mut active_approaching, mut active_separating) = (0, 0);
     for k in 0..3000 {
         let scene = random_island(&mut rng, 1 + k % 10, 100.0);
-        for s in [Solver::Enum, Solver::Lemke] {
-            let sol = solve_scene(&scene, &settings(s), "island").unwrap();
+        let (_, rows, lcps) = build(&scene, "island").unwrap();
+        for s in [Method::Enumeration, Method::Lemke] {
+            let sol = solve_scene(&scene, &settings(s)).unwrap();
             let isl = &sol.islands[0];
             assert!(isl.solution.status.is_solution());
-            let after = relative_normal_velocities(&scene, &sol.bodies);
-            let tol = 1e-9 * w_scale(&isl.lcp, inf_norm(&isl.solution.z));
+            let after = relative_normal_velocities(&scene, &sol.scenes[0].bodies);
+            let tol = 1e-9 * w_scale(&lcps[0], inf_norm(&isl.solution.z));
             for (i, c) in scene.contacts.iter().enumerate() {
-                let v0 = sol.rows[i].v_rel;
+                let v0 = rows[i].v_rel;
                 let e = c.restitution;
                 // Everywhere: v_rel⁺ = v_rel⁻ + (Mz)_i = w − ε min(v_rel⁻, 0)
                 // (the applied impulses agree with the LCP's M z + q).
@@ -458,9 +461,9 @@ pub(super) fn active_contacts_obey_newtons_law_after_the_solve() {
                     "island {k} contact {i}: v⁺ {} w {w} v⁻ {v0} ε {e}",
                     after[i]
                 );
-                if sol.impulses[i] > 0.0 {
+                if sol.scenes[0].impulses[i] > 0.0 {
                     let target = if v0 < 0.0 { -e * v0 } else { 0.0 };
-                    if s == Solver::Enum {
+                    if s == Method::Enumeration {
                         if v0 < 0.0 {
                             active_approaching += 1;
                         } else {

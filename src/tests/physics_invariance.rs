@@ -3,21 +3,22 @@
 //! shifted by a common drift change the impulses as they must.
 
 use super::common;
-use super::common::inf_norm;
+use super::common::{inf_norm, settings};
 use super::physics::*;
 use crate::cpu::impulses::BodyVelocity;
 use crate::generate::{ball_body, box_body, random_island, random_scene, Rng};
 use crate::islands::find_islands;
-use crate::tests::reference::solve_scene;
-use crate::tests::reference::Solver;
+use crate::settings::Method;
+use crate::tests::reference::{build, solve_scene};
 use crate::{Scene, Status};
 use glam::{DMat3, DVec3};
 
 /// Impulses of a scene through the pipeline (enumeration), checked solved.
 fn impulses(scene: &Scene) -> (Vec<f64>, Vec<BodyVelocity>) {
-    let sol = solve_scene(scene, &settings(Solver::Enum), "scene").unwrap();
+    let mut sol = solve_scene(scene, &settings(Method::Enumeration)).unwrap();
     assert!(sol.islands.iter().all(|i| i.solution.status.is_solution()));
-    (sol.impulses, sol.bodies)
+    let s = sol.scenes.swap_remove(0);
+    (s.impulses, s.bodies)
 }
 
 fn rotate(r: DMat3, v: [f64; 3]) -> [f64; 3] {
@@ -159,10 +160,7 @@ fn pinned_bodies_couple_their_contacts() {
     };
     assert_eq!(find_islands(&scene).len(), 1);
     whole_equals_islands(&scene, "pinned");
-    let lcp = &solve_scene(&scene, &settings(Solver::Enum), "p")
-        .unwrap()
-        .islands[0]
-        .lcp;
+    let lcp = &build(&scene, "p").unwrap().2[0];
     assert!(
         lcp.at(0, 1) != 0.0,
         "the pinned body couples contacts 0 and 1"
@@ -176,11 +174,11 @@ fn islands_beyond_the_enumeration_limit_go_to_lemke() {
     let mut rng = Rng::new(41);
     for n in [21, 24, 30] {
         let scene = random_island(&mut rng, n, 100.0);
-        let sol = solve_scene(&scene, &settings(Solver::Enum), "big").unwrap();
+        let sol = solve_scene(&scene, &settings(Method::Enumeration)).unwrap();
         assert_eq!(sol.islands.len(), 1);
         let isl = &sol.islands[0];
-        assert_eq!(isl.lcp.n(), n);
-        assert_eq!(isl.solver, Solver::Lemke, "n = {n}");
+        assert_eq!(isl.contacts.len(), n);
+        assert_eq!(isl.method, Method::Lemke, "n = {n}");
         assert_eq!(isl.solution.status, Status::Solved, "n = {n}");
         assert!(
             isl.solution.residuals.error <= 1e-12,
@@ -190,8 +188,8 @@ fn islands_beyond_the_enumeration_limit_go_to_lemke() {
     }
     // At n = 20 enumeration itself runs.
     let scene = random_island(&mut rng, 20, 100.0);
-    let sol = solve_scene(&scene, &settings(Solver::Enum), "20").unwrap();
-    assert_eq!(sol.islands[0].solver, Solver::Enum);
+    let sol = solve_scene(&scene, &settings(Method::Enumeration)).unwrap();
+    assert_eq!(sol.islands[0].method, Method::Enumeration);
     assert!(sol.islands[0].solution.status.is_solution());
 }
 
@@ -210,26 +208,29 @@ fn a_wedged_ball_with_restitution_has_no_newton_solution() {
             contact(0, None, DVec3::new(0.5, 0.0, 0.0), -DVec3::X, e),
         ],
     };
-    let sol = solve_scene(&walls(0.5), &settings(Solver::Enum), "wedged").unwrap();
+    let sol = solve_scene(&walls(0.5), &settings(Method::Enumeration)).unwrap();
     assert_eq!(sol.islands[0].solution.status, Status::NoSolution);
-    assert_eq!(sol.impulses, vec![0.0, 0.0]);
+    assert_eq!(sol.scenes[0].impulses, vec![0.0, 0.0]);
     assert_eq!(
-        sol.bodies[0].velocity,
+        sol.scenes[0].bodies[0].velocity,
         [-2.0, 0.0, 0.0],
         "unchanged, not NaN"
     );
-    let sol = solve_scene(&walls(0.5), &settings(Solver::Lemke), "wedged").unwrap();
+    let sol = solve_scene(&walls(0.5), &settings(Method::Lemke)).unwrap();
     assert_eq!(sol.islands[0].solution.status, Status::RayTermination);
-    assert!(sol.bodies[0].velocity.iter().all(|v| v.is_finite()));
+    assert!(sol.scenes[0].bodies[0]
+        .velocity
+        .iter()
+        .all(|v| v.is_finite()));
     // ε = 0: it stops dead (a continuum of impulse pairs, one velocity).
-    for s in [Solver::Enum, Solver::Lemke, Solver::Pgs] {
-        let sol = solve_scene(&walls(0.0), &settings(s), "wedged").unwrap();
+    for s in [Method::Enumeration, Method::Lemke, Method::Pgs] {
+        let sol = solve_scene(&walls(0.0), &settings(s)).unwrap();
         assert!(sol.islands[0].solution.status.is_solution(), "{}", s.name());
         assert!(
-            sol.bodies[0].velocity[0].abs() < 1e-9,
+            sol.scenes[0].bodies[0].velocity[0].abs() < 1e-9,
             "{}: {:?}",
             s.name(),
-            sol.bodies[0]
+            sol.scenes[0].bodies[0]
         );
     }
 }

@@ -15,12 +15,12 @@
 
 use super::common;
 
-use super::common::{is_positive_definite, run, w_rel_diff, z_rel_diff};
+use super::common::{is_positive_definite, run, settings, w_rel_diff, z_rel_diff};
 use crate::generate::{random_island, Rng};
 use crate::io::parse_json;
 use crate::io::siconos::parse_dat;
+use crate::settings::Method;
 use crate::tests::reference::build;
-use crate::tests::reference::Solver;
 use crate::{Lcp, Status};
 use proptest::prelude::*;
 
@@ -48,8 +48,8 @@ fn enumeration_and_lemke_agree_on_random_islands() {
         assert_eq!(islands.len(), 1, "random_island makes one island");
         let lcp = &lcps[0];
         assert_eq!(lcp.n(), n);
-        let e = run(lcp, Solver::Enum);
-        let l = run(lcp, Solver::Lemke);
+        let e = run(lcp, Method::Enumeration);
+        let l = run(lcp, Method::Lemke);
         let pd = is_positive_definite(lcp, PD_TOL);
         let dw = w_rel_diff(lcp, &e.z, &e.w, &l.z, &l.w);
         let dz = z_rel_diff(&e.z, &l.z);
@@ -101,16 +101,16 @@ fn enumeration_and_lemke_agree_on_random_islands() {
 #[test]
 fn enumeration_and_lemke_agree_on_demo_world_islands() {
     use crate::tests::reference::solve_scene;
-    use crate::tests::reference::SolverSettings;
     let mut rng = Rng::new(0xDE30);
     let (mut islands, mut singular, mut max_dw, mut max_dv) = (0, 0, 0.0f64, 0.0f64);
     for k in 0..300 {
         let scene = crate::generate::demo_world(&mut rng);
-        let e = solve_scene(&scene, &SolverSettings::with_solver(Solver::Enum), "demo").unwrap();
-        let l = solve_scene(&scene, &SolverSettings::with_solver(Solver::Lemke), "demo").unwrap();
-        for (ie, il) in e.islands.iter().zip(&l.islands) {
+        let e = solve_scene(&scene, &settings(Method::Enumeration)).unwrap();
+        let l = solve_scene(&scene, &settings(Method::Lemke)).unwrap();
+        let lcps = build(&scene, "demo").unwrap().2;
+        assert_eq!(e.islands.len(), lcps.len());
+        for ((ie, il), lcp) in e.islands.iter().zip(&l.islands).zip(&lcps) {
             islands += 1;
-            let lcp = &ie.lcp;
             if !is_positive_definite(lcp, PD_TOL) {
                 singular += 1;
             }
@@ -140,7 +140,7 @@ fn enumeration_and_lemke_agree_on_demo_world_islands() {
                 .flat_map(|b| b.velocity.into_iter().chain(b.angular_velocity))
                 .collect()
         };
-        let (ve, vl) = (flat(&e.bodies), flat(&l.bodies));
+        let (ve, vl) = (flat(&e.scenes[0].bodies), flat(&l.scenes[0].bodies));
         let scale = common::inf_norm(&ve).max(common::inf_norm(&vl)).max(1e-300);
         let dv = common::max_diff(&ve, &vl) / scale;
         max_dv = max_dv.max(dv);
@@ -195,7 +195,7 @@ fn lemke_agrees_with_enumeration_on_small_random_lcps() {
         let (integer, psd) = (k % 2 == 0, k % 3 == 0);
         let lcp = random_lcp(&mut rng, n, integer, psd);
         let e = crate::tests::reference::solve(&lcp, &common::all_solutions_settings()).unwrap();
-        let l = run(&lcp, Solver::Lemke);
+        let l = run(&lcp, Method::Lemke);
         let set = e.solution_set.clone().unwrap();
         let what = format!("LCP {k}: M = {:?}, q = {:?}, enum {set:?}", lcp.m, lcp.q);
         if e.status.is_solution() {
@@ -263,7 +263,7 @@ fn lemke_terminates_on_degenerate_lcps() {
         vec![-1.0, -1.0, 1.0, -1.0],
     )
     .unwrap();
-    let l = run(&lcp, Solver::Lemke);
+    let l = run(&lcp, Method::Lemke);
     assert!(
         matches!(l.status, Status::Solved | Status::RayTermination),
         "{:?} {:?}",
@@ -279,7 +279,7 @@ fn lemke_terminates_on_degenerate_lcps() {
     for k in 0..20_000 {
         let n = 1 + k % 7;
         let lcp = random_lcp(&mut rng, n, k % 2 == 0, k % 3 == 0);
-        if run(&lcp, Solver::Lemke).status == Status::NotConverged {
+        if run(&lcp, Method::Lemke).status == Status::NotConverged {
             capped.push(k);
         }
     }
@@ -315,8 +315,8 @@ fn enumeration_verdicts_do_not_depend_on_scale() {
                 lcp.q.iter().map(|v| v * sq).collect(),
             )
             .unwrap();
-            let a = run(lcp, Solver::Enum);
-            let b = run(&scaled, Solver::Enum);
+            let a = run(lcp, Method::Enumeration);
+            let b = run(&scaled, Method::Enumeration);
             assert_eq!(a.status, b.status, "problem {k}, M × {sm:e}, q × {sq:e}");
             assert_eq!(a.basis, b.basis, "problem {k}, M × {sm:e}, q × {sq:e}");
             let back: Vec<f64> = b.z.iter().map(|z| z * sm / sq).collect();

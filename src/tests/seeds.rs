@@ -9,9 +9,10 @@
 //! - seed 001's exercises: the QP, the 1-D interval QP, the coupled 2×2 NCP,
 //!   the friction-disc projections and the one-step DVI.
 
-use super::common::{all_solutions_settings, run, SOLVERS};
+use super::common::{all_solutions_settings, run, METHODS};
 use crate::cpu::enumeration::{solve_basis, BasisOutcome, EnumerationSettings};
-use crate::tests::reference::{solve, Solver};
+use crate::settings::Method;
+use crate::tests::reference::solve;
 use crate::{Lcp, LcpSolution, SolutionSet, Status};
 
 /// Asserts that `sol` is a solution with the expected z (and w when given) to
@@ -44,10 +45,10 @@ fn assert_solution(what: &str, sol: &LcpSolution, z: &[f64], w: Option<&[f64]>, 
 /// Tolerance per solver: the exact solvers to rounding, PGS to its stopping
 /// tolerance (error measure 1e-10, so z to about 1e-9 on these well-scaled
 /// examples).
-fn tol(solver: Solver) -> f64 {
-    match solver {
-        Solver::Enum | Solver::Lemke => 1e-12,
-        Solver::Pgs => 1e-8,
+fn tol(method: Method) -> f64 {
+    match method {
+        Method::Auto | Method::Enumeration | Method::Lemke => 1e-12,
+        Method::Pgs => 1e-8,
     }
 }
 
@@ -66,7 +67,7 @@ fn assert_unique(what: &str, lcp: &Lcp) {
 #[test]
 fn seed_000_two_by_two() {
     let lcp = Lcp::new(vec![2.0, 1.0, 1.0, 2.0], vec![-5.0, -6.0]).unwrap();
-    for s in SOLVERS {
+    for s in METHODS {
         let sol = run(&lcp, s);
         assert_eq!(sol.status, Status::Solved, "{}", s.name());
         assert_solution(
@@ -95,7 +96,7 @@ const LEMKE_M: [f64; 9] = [0.0, -1.0, 2.0, 2.0, 0.0, -2.0, -1.0, 1.0, 0.0];
 #[test]
 fn seed_002_lemke_walkthrough_as_its_equations_read() {
     let lcp = Lcp::new(LEMKE_M.to_vec(), vec![-3.0, 6.0, -1.0]).unwrap();
-    for s in [Solver::Enum, Solver::Lemke] {
+    for s in [Method::Enumeration, Method::Lemke] {
         let sol = run(&lcp, s);
         assert_eq!(sol.status, Status::Solved, "{}", s.name());
         assert_solution(
@@ -108,16 +109,16 @@ fn seed_002_lemke_walkthrough_as_its_equations_read() {
         assert_eq!(sol.basis, Some(0b110), "{}: basis (z2, z3)", s.name());
     }
     // Lemke's walk in the seed takes 5 pivots: z0 in, z1 in, z3 in, w1 in, z2 in.
-    assert_eq!(run(&lcp, Solver::Lemke).counters.pivots, 5);
+    assert_eq!(run(&lcp, Method::Lemke).counters.pivots, 5);
     assert_unique("seed 002", &lcp);
     // M_11 = 0: PGS cannot divide by it and says so.
-    assert_eq!(run(&lcp, Solver::Pgs).status, Status::InvalidInput);
+    assert_eq!(run(&lcp, Method::Pgs).status, Status::InvalidInput);
 }
 
 #[test]
 fn seed_002_with_the_printed_q() {
     let lcp = Lcp::new(LEMKE_M.to_vec(), vec![-3.0, 6.0, 1.0]).unwrap();
-    for s in [Solver::Enum, Solver::Lemke] {
+    for s in [Method::Enumeration, Method::Lemke] {
         let sol = run(&lcp, s);
         assert_eq!(sol.status, Status::Solved, "{}", s.name());
         // w = M z + q = (−3 + 3, 6 + 2 − 3, 1 − 1) = (0, 5, 0).
@@ -143,7 +144,7 @@ fn seed_001_qp_exercise() {
         ([-1.0, -1.0], [0.5, 0.125]),
     ] {
         let lcp = Lcp::new(q_mat.clone(), c.to_vec()).unwrap();
-        for s in SOLVERS {
+        for s in METHODS {
             let sol = run(&lcp, s);
             assert_eq!(sol.status, Status::Solved, "{} c = {c:?}", s.name());
             assert_solution(s.name(), &sol, &x, Some(&[0.0, 0.0]), tol(s));
@@ -165,7 +166,7 @@ fn seed_001_interval_qp() {
     // the LCP z = (x, λ), M = [[1, 1], [−1, 0]], q = (−3, 2)
     // (the QP's KKT LCP [[Q, Aᵀ], [−A, 0]], (c, b) for A = [1], b = 2).
     let lcp = Lcp::new(vec![1.0, 1.0, -1.0, 0.0], vec![-3.0, 2.0]).unwrap();
-    for s in [Solver::Enum, Solver::Lemke] {
+    for s in [Method::Enumeration, Method::Lemke] {
         let sol = run(&lcp, s);
         assert_eq!(sol.status, Status::Solved, "{}", s.name());
         // x = 2, λ = 1 (the force the bound exerts), w = 0.
@@ -174,7 +175,7 @@ fn seed_001_interval_qp() {
     }
     assert_unique("seed 001 interval", &lcp);
     // M_22 = 0: not a problem PGS can take.
-    assert_eq!(run(&lcp, Solver::Pgs).status, Status::InvalidInput);
+    assert_eq!(run(&lcp, Method::Pgs).status, Status::InvalidInput);
     // The projection view of the seed: proj_[0,2](3) = 2.
     assert_eq!(project_interval(3.0, 0.0, 2.0), 2.0);
 }
@@ -204,7 +205,7 @@ fn seed_001_coupled_ncp_by_active_set() {
     assert_eq!(*mask, 0b01, "x1 free, x2 = 0");
     assert!((z[0] - 0.5).abs() < 1e-15 && z[1] == 0.0, "{z:?}");
     assert!(w[0].abs() < 1e-15 && (w[1] - 1.5).abs() < 1e-15, "{w:?}");
-    for s in SOLVERS {
+    for s in METHODS {
         let sol = run(&lcp, s);
         assert_eq!(sol.status, Status::Solved, "{}", s.name());
         assert_solution(s.name(), &sol, &[0.5, 0.0], Some(&[0.0, 1.5]), tol(s));
@@ -269,7 +270,7 @@ fn seed_001_one_step_dvi() {
     let v_plus = |v: f64, gamma: f64| v - g * dt + gamma / m;
     // The seed's case: at rest on the ground, γ = m g Δt = 0.1 and v⁺ = 0.
     let lcp = dvi(0.0);
-    for s in SOLVERS {
+    for s in METHODS {
         let sol = run(&lcp, s);
         assert_eq!(sol.status, Status::Solved, "{}", s.name());
         assert!(
@@ -283,7 +284,7 @@ fn seed_001_one_step_dvi() {
     }
     // Moving away fast enough (v = 1 > gΔt): no impulse, v⁺ = v − gΔt.
     let lcp = dvi(1.0);
-    for s in SOLVERS {
+    for s in METHODS {
         let sol = run(&lcp, s);
         assert_eq!(sol.status, Status::Solved, "{}", s.name());
         assert_eq!(sol.z[0], 0.0, "{}", s.name());

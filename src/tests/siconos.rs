@@ -10,12 +10,15 @@ use super::common;
 use std::collections::BTreeMap;
 use std::path::Path;
 
-use super::common::{all_solutions_settings, run, siconos_dir, w_rel_diff, z_rel_diff};
+use super::common::{
+    all_solutions_settings, run, settings, siconos_dir, w_rel_diff, z_rel_diff, METHODS,
+};
 use crate::cpu::enumeration::distinct_solutions;
 use crate::cpu::pgs::PgsSettings;
 use crate::io::siconos::parse_dat;
 use crate::io::{read_input, Input};
-use crate::tests::reference::{solve, Solver, SolverSettings};
+use crate::settings::Method;
+use crate::tests::reference::solve;
 use crate::{Lcp, SolutionSet, Status};
 use serde_json::Value;
 
@@ -288,7 +291,7 @@ fn enumeration_finds_the_documented_solution_sets() {
 /// Lemke on one problem: a ray where Siconos expects LEMKE to fail, else a
 /// solution that matches the reference.
 fn check_lemke(p: &Problem) {
-    let sol = run(&p.lcp, Solver::Lemke);
+    let sol = run(&p.lcp, Method::Lemke);
     eprintln!(
         "{:34} n = {:2}  lemke: {:16} pivots {:5} error {:.1e}",
         p.name,
@@ -352,7 +355,7 @@ fn pgs_statuses_and_errors() {
     let Some(dir) = siconos_dir() else { return };
     let defaults = PgsSettings::default();
     for p in load(&dir) {
-        let sol = run(&p.lcp, Solver::Pgs);
+        let sol = run(&p.lcp, Method::Pgs);
         eprintln!(
             "{:34} n = {:2}  pgs: {:14} sweeps {:5} error {:.1e}",
             p.name,
@@ -399,8 +402,8 @@ fn every_problem_reads_and_the_statuses_are_summarised() {
     let mut table = BTreeMap::new();
     for p in load(&dir) {
         let mut row = Vec::new();
-        for s in [Solver::Enum, Solver::Lemke, Solver::Pgs] {
-            match solve(&p.lcp, &SolverSettings::with_solver(s)) {
+        for s in METHODS {
+            match solve(&p.lcp, &settings(s)) {
                 Ok(sol) => row.push(format!(
                     "{}:{}({:.0e})",
                     s.name(),

@@ -93,7 +93,10 @@ impl BenchRow {
                 ("readback", g.readback_seconds),
                 ("other GPU host work", (t.gpu - parts).max(0.0)),
                 ("f64 check", t.validation),
-                ("report and door", (seconds - t.prediction - t.gpu - t.validation).max(0.0)),
+                (
+                    "report and door",
+                    (seconds - t.prediction - t.gpu - t.validation).max(0.0),
+                ),
             ]
             .into_iter()
             .map(|(name, secs)| (name.to_string(), secs * per))
