@@ -6,7 +6,8 @@
 //! w = M z + q ≥ 0,   z ≥ 0,   zᵀw = 0
 //! ```
 //!
-//! (seed 000, last section). [`Lcp`] holds (M, q); [`LcpSolution`] carries the
+//! (Cottle, Pang & Stone, *The Linear Complementarity Problem*, 1992, §1.1).
+//! [`Lcp`] holds (M, q); [`LcpSolution`] carries the
 //! answer, its [`Status`], its [`Residuals`] and the work [`Counters`] of the
 //! solver that produced it. The status says what the solve found; an
 //! [`crate::Error`] says why a solve could not run at all.
@@ -391,7 +392,7 @@ mod tests {
 
     #[test]
     fn error_measure_is_zero_on_a_solution_and_unscaled_for_tiny_q() {
-        // 2x2 example of seed 000: z = (4/3, 7/3), w = 0.
+        // M = [[2, 1], [1, 2]], q = (−5, −6): z = (4/3, 7/3), w = 0.
         let lcp = Lcp::new(vec![2.0, 1.0, 1.0, 2.0], vec![-5.0, -6.0]).unwrap();
         let r = lcp.residuals(&[4.0 / 3.0, 7.0 / 3.0]);
         assert!(r.error < 1e-15, "{r:?}");

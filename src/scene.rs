@@ -1,10 +1,11 @@
 //! Bodies and contacts: the scene a user hands in, and its checks.
 //!
-//! Conventions (seed 000): the normal n of a contact points from body b to
-//! body a; r = contact point − centre of mass; a point's velocity is
-//! ṗ = v + ω × r; the impulse is +z n on a and −z n on b. Inverse inertia is
-//! given in the world frame. A body with inv_mass 0 and inv_inertia 0 is
-//! static; a contact's `b` may be absent, meaning the static world.
+//! Conventions (those of impulse-based contact, e.g. Baraff 1994, Mirtich
+//! 1996): the normal n of a contact points from body b to body a;
+//! r = contact point − centre of mass; a point's velocity is ṗ = v + ω × r;
+//! the impulse is +z n on a and −z n on b. Inverse inertia is given in the
+//! world frame. A body with inv_mass 0 and inv_inertia 0 is static; a
+//! contact's `b` may be absent, meaning the static world.
 
 use std::fmt::Display;
 
@@ -73,11 +74,11 @@ pub struct Contact {
     pub id: Option<u64>,
     /// A velocity bias b added to the contact's q (m/s): q = v_rel +
     /// ε min(v_rel, 0) + b ([`crate::cpu::assembly::normal_q`]). Time
-    /// stepping puts the gap here, b = φ/Δt (seed 001 §四: 0 ≤ γ_n ⊥ φ/Δt +
-    /// v_n⁺ ≥ 0): a contact φ apart may close the gap within the step, a
-    /// penetrating one (φ < 0) is pushed out by −φ/Δt. Optional, 0 when
-    /// absent (and then not written, so frictionless single-frame outputs
-    /// are unchanged).
+    /// stepping puts the gap here, b = φ/Δt (Stewart & Trinkle 1996:
+    /// 0 ≤ γ_n ⊥ φ/Δt + v_n⁺ ≥ 0): a contact φ apart may close the gap
+    /// within the step, a penetrating one (φ < 0) is pushed out by −φ/Δt.
+    /// Optional, 0 when absent (and then not written, so frictionless
+    /// single-frame outputs are unchanged).
     #[serde(default, skip_serializing_if = "is_zero")]
     pub bias: f64,
     /// Coulomb's friction coefficient μ ≥ 0 (finite; default 0: frictionless,

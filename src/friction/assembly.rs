@@ -8,7 +8,7 @@
 //!
 //! # Derivation
 //! A direction d at the contact (d = n, t₁ or t₂) has, like the normal of
-//! the frictionless problem (`src/cpu/assembly.rs`, seed 000), the Jacobian
+//! the frictionless problem (`src/cpu/assembly.rs`, its derivation), the Jacobian
 //! row J_d = [d, r_a × d, −d, −r_b × d] and the response M⁻¹ J_dᵀ; so each
 //! direction is assembled by [`assemble_contact`] with d in place of n, and
 //! W's entry for direction α of contact i and β of contact j is

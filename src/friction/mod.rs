@@ -8,10 +8,11 @@
 //! Delassus matrix (3k × 3k) and q its free velocity (restitution on the
 //! normal only).
 //!
-//! The Coulomb problem (seed 001, section 三, and Siconos' fc3d): for every
-//! contact, r_i in the cone K_i = {‖r_t‖ ≤ μ_i r_n}, De Saxcé's modified
-//! velocity ũ_i = u_i + μ_i ‖u_t,i‖ e_n in the dual cone K_i*, and
-//! r_i · ũ_i = 0. The cone complementarity problem of Anitescu–Tasora drops
+//! The Coulomb problem (De Saxcé & Feng 1991; Acary & Brogliato,
+//! *Numerical Methods for Nonsmooth Dynamical Systems*, 2008; Siconos'
+//! fc3d): for every contact, r_i in the cone K_i = {‖r_t‖ ≤ μ_i r_n},
+//! De Saxcé's modified velocity ũ_i = u_i + μ_i ‖u_t,i‖ e_n in the dual
+//! cone K_i*, and r_i · ũ_i = 0. The cone complementarity problem of Anitescu–Tasora drops
 //! the μ‖u_t‖ term (a convex problem: min ½ rᵀW r + qᵀr over the cones);
 //! a sliding contact then gains the normal velocity μ‖u_t‖.
 

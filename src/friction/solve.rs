@@ -41,8 +41,8 @@ pub enum FrictionMethod {
     Jacobi,
     /// Projected Gauss–Seidel sweeps, as [`Self::Jacobi`] otherwise.
     Pgs,
-    /// Accelerated projected gradient (APGD with restarts, seed 001), as
-    /// [`Self::Jacobi`] otherwise.
+    /// Accelerated projected gradient (APGD with restarts: Mazhar, Heyn,
+    /// Negrut & Tasora, ACM TOG 2015), as [`Self::Jacobi`] otherwise.
     Apgd,
 }
 

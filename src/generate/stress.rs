@@ -25,7 +25,8 @@ pub enum Family {
     /// Boxes resting on the ground and stacked, 4 coplanar contacts per face:
     /// rank-deficient M.
     RestingStacks,
-    /// Chains of bodies as in the seed's figure 7, up to n = 16.
+    /// Chains of bodies in a row, each touching the next (as
+    /// [`super::seed_chain`]), up to n = 16.
     Chains,
     /// Random non-symmetric matrices that are not P-matrices: several solutions or none.
     NonSymmetric,
@@ -169,7 +170,8 @@ fn stack(levels: usize, rng: &mut Rng) -> Scene {
 }
 
 /// A chain of boxes along x with `n` contacts in all: one or two contacts per
-/// interface, the first body pushed into the others (seed figure 7 extended).
+/// interface, the first body pushed into the others ([`super::seed_chain`]
+/// extended).
 fn chain(n: usize, rng: &mut Rng) -> Scene {
     let mut bodies = Vec::new();
     let mut contacts = Vec::new();

@@ -7,7 +7,8 @@
 //! ids (which vertex, which face) under our control so that contact ids
 //! persist across steps for warm start.
 //!
-//! Conventions (seed 000): the normal points from body b to body a; the
+//! Conventions (those of [`crate::scene`] and the README's scene format):
+//! the normal points from body b to body a; the
 //! point is midway between the two surfaces; φ is the distance between the
 //! surfaces along the normal.
 

@@ -1,7 +1,8 @@
 //! Worlds in time: rigid bodies (spheres and boxes; static planes and
 //! boxes), their poses and velocities, gravity and materials; contact
-//! generation each step ([`collide`]); the step itself (seed 001 §四, DVI)
-//! is [`crate::Solver::step_worlds`], built from [`step`].
+//! generation each step ([`collide`]); the step itself (a time-stepping
+//! discretisation of the differential variational inequality of contact:
+//! Stewart & Trinkle 1996, Anitescu & Potra 1997; Pang & Stewart 2008) is [`crate::Solver::step_worlds`], built from [`step`].
 //!
 //! # Conventions
 //! - Poses: `position` is the centre of mass, `orientation` a unit
