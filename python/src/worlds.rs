@@ -5,7 +5,7 @@
 
 use lcpbatch::world::format::{parse_worlds, worlds_to_json};
 use lcpbatch::world::generate::{standard_world, WorldKind};
-use lcpbatch::{World, WorldStepReport};
+use lcpbatch::world::{World, WorldStepReport};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray2, PyReadonlyArray2};
 use pyo3::exceptions::PyValueError;
@@ -103,9 +103,9 @@ impl NativeWorld {
             .bodies
             .iter()
             .map(|b| match b.shape {
-                lcpbatch::Shape::Sphere { .. } => "sphere",
-                lcpbatch::Shape::Box { .. } => "box",
-                lcpbatch::Shape::Plane { .. } => "plane",
+                lcpbatch::world::Shape::Sphere { .. } => "sphere",
+                lcpbatch::world::Shape::Box { .. } => "box",
+                lcpbatch::world::Shape::Plane { .. } => "plane",
             })
             .collect()
     }

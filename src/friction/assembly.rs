@@ -301,7 +301,8 @@ pub fn friction_islands(scene: &Scene) -> Vec<FrictionIsland> {
 impl Scene {
     /// Checks the scene (errors name `item`) and returns its islands with
     /// their frictional problems, assembled in f64 (μ = 0 contacts included).
-    pub fn friction_islands(&self, item: &str) -> Result<Vec<FrictionIsland>, crate::Error> {
+    #[cfg(test)]
+    pub(crate) fn friction_islands(&self, item: &str) -> Result<Vec<FrictionIsland>, crate::Error> {
         self.validate(item)?;
         Ok(friction_islands(self))
     }
@@ -337,6 +338,7 @@ pub fn apply_friction_impulses(
 
 /// Local velocity (u_n, u_t₁, u_t₂) of every contact from the bodies'
 /// velocities: each direction's (ṗ_a − ṗ_b)·d.
+#[cfg(test)]
 pub fn local_velocities(scene: &Scene, velocities: &[BodyVelocity]) -> Vec<[f64; 3]> {
     scene
         .contacts

@@ -12,7 +12,7 @@
 //! point is midway between the two surfaces; φ is the distance between the
 //! surfaces along the normal.
 
-use glam::{DMat3, DQuat, DVec3};
+use glam::{DMat3, DVec3};
 
 use super::{RigidBody, Shape};
 
@@ -137,7 +137,8 @@ impl Placed {
     }
 
     /// A shape at `centre` rotated by `q`.
-    pub fn new(shape: Shape, centre: DVec3, q: DQuat) -> Self {
+    #[cfg(test)]
+    pub fn new(shape: Shape, centre: DVec3, q: glam::DQuat) -> Self {
         Placed {
             shape,
             centre,
@@ -340,6 +341,7 @@ pub(super) fn reduce_to_four(hits: Manifold) -> Manifold {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use glam::DQuat;
 
     fn close(a: DVec3, b: DVec3) -> bool {
         (a - b).length() < 1e-12
