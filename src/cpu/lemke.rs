@@ -63,7 +63,7 @@ fn with_workspace<T>(f: impl FnOnce(&mut Workspace) -> T) -> T {
 /// Solves `lcp` with Lemke's algorithm. Statuses: `Solved`, `RayTermination`,
 /// `NotConverged` (pivot cap). The counters carry the pivot count.
 ///
-/// If the pivoting path cycles (see [`PathEnd::Cycled`]), the run starts over
+/// If the pivoting path cycles (see `PathEnd::Cycled`), the run starts over
 /// on q perturbed by 1e-10·‖q‖∞ (then 1e-7·‖q‖∞) with distinct weights per
 /// row, which breaks the ties rounding decided; the final basis is then
 /// re-solved with the true q, and the error reported is the true problem's.

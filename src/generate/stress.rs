@@ -350,6 +350,10 @@ mod tests {
 
 /// The Siconos problems of `dir` (a folder of `.dat` files) with n ≤ 16,
 /// each scaled by 1e-6 and by 1e6 (M and q together: same z, w scaled).
+///
+/// # Errors
+/// [`crate::Error::Io`] when `dir` or a file in it cannot be read; the
+/// errors of [`crate::io::read_input`] for a malformed file.
 pub fn siconos_scaled(dir: &std::path::Path) -> Result<Vec<(String, StressCase)>, crate::Error> {
     let mut files: Vec<_> = std::fs::read_dir(dir)
         .map_err(|source| crate::Error::Io {
