@@ -22,7 +22,10 @@ pub(crate) struct NativeWorld {
 }
 
 /// (N, D) rows from each body's `f`.
-fn rows<const D: usize>(w: &World, f: impl Fn(&lcpbatch::RigidBody) -> [f64; D]) -> Array2<f64> {
+fn rows<const D: usize>(
+    w: &World,
+    f: impl Fn(&lcpbatch::world::RigidBody) -> [f64; D],
+) -> Array2<f64> {
     let flat: Vec<f64> = w.bodies.iter().flat_map(f).collect();
     Array2::from_shape_vec((w.bodies.len(), D), flat).expect("N rows of D")
 }
