@@ -29,15 +29,12 @@ use cpu_time::time_steps;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use std::collections::HashMap;
 
-use lcpbatch::friction::assembly::friction_islands;
-use lcpbatch::friction::solve_friction_problem;
+use lcpbatch::friction::{solve_friction_problem, FrictionSettings};
 use lcpbatch::generate::friction::{friction_batch, FrictionFamily};
 use lcpbatch::generate::Rng;
+use lcpbatch::internals::{friction_islands, prepare};
 use lcpbatch::world::generate::{standard_world, WorldKind};
-use lcpbatch::world::step::prepare;
-use lcpbatch::{
-    Backend, FrictionMethod, FrictionProblem, FrictionSettings, Settings, Solver, Status, World,
-};
+use lcpbatch::{Backend, FrictionMethod, FrictionProblem, Settings, Solver, Status, World};
 
 const ISLANDS: usize = 1000;
 const SIZES: [usize; 7] = [1, 2, 3, 4, 8, 12, 16];

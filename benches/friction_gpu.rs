@@ -4,7 +4,7 @@
 //! (default 1e-8 in f64, 1e-5 in f32) with every GPU answer validated in
 //! f64 on the CPU (polish and repair included in the time). Fixed-seed
 //! random islands of k contacts from random contact Jacobians
-//! (`lcpbatch::friction::random::random_problems`), 10,000 islands at
+//! (`lcpbatch::internals::random_problems`), 10,000 islands at
 //! k = 1 and 4, fewer at 8 and 16 where a GPU batch of 10,000 takes many
 //! seconds on a software adapter (`BATCHES`; `LCPBATCH_FRICTION_BENCH_K=1,4`
 //! picks sizes). Jacobi runs at k = 1 only (at k = 4 some islands stop at
@@ -17,11 +17,12 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use lcpbatch::friction::random::random_problems;
-use lcpbatch::friction::{
-    solve_projected_batch, solve_projected_on_gpu, ProjectedMethod, ProjectedSettings,
+use lcpbatch::device::GpuContext;
+use lcpbatch::internals::{
+    random_problems, solve_projected_batch, solve_projected_on_gpu, ProjectedMethod,
+    ProjectedSettings,
 };
-use lcpbatch::{FrictionProblem, GpuContext, GpuSettings, Precision};
+use lcpbatch::{FrictionProblem, GpuSettings, Precision};
 
 /// (k, islands per batch).
 const BATCHES: [(usize, usize); 4] = [(1, 10_000), (4, 10_000), (8, 2_000), (16, 500)];

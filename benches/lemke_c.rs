@@ -8,10 +8,11 @@
 //!   ground and stacked, rank-deficient M).
 //!
 //! Rows: `c` (pivots; z and w read from the final tableau, nothing checked),
-//! `rust_path` (`lcpbatch::lemke_textbook_basis`: the same pivots, the final
-//! basis read from the tableau, nothing checked: the like of `c`), `rust`
-//! (`lcpbatch::lemke`: the same textbook path, then its basis re-solved
-//! from the data, the better z kept, and the residuals), `auto_1t` and
+//! `rust_path` (`lcpbatch::internals::lemke_textbook_basis`: the same
+//! pivots, the final basis read from the tableau, nothing checked: the like
+//! of `c`), `rust` (`lcpbatch::internals::lemke`: the same textbook path,
+//! then its basis re-solved from the data, the better z kept, and the
+//! residuals), `auto_1t` and
 //! `auto_2t` (the default CPU path: prediction, Lemke's basis re-solved and
 //! checked in f64, the report). Throughput in problems per second.
 //!
@@ -22,9 +23,8 @@ use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use lcpbatch::generate::{stress, Rng};
-use lcpbatch::{
-    lemke, lemke_textbook_basis, Backend, Lcp, LemkeSettings, Method, Settings, Solver, Status,
-};
+use lcpbatch::internals::{lemke, lemke_textbook_basis, LemkeSettings};
+use lcpbatch::{Backend, Lcp, Method, Settings, Solver, Status};
 
 extern "C" {
     fn lemke_c_work_size(n: i32) -> usize;

@@ -5,13 +5,14 @@ use std::path::PathBuf;
 /// Every error names the item and the field at fault, so that a user can
 /// find the bad number in a file of thousands.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum Error {
     /// A value failed a check: `item` is e.g. "scene 0, contact 3", `field` e.g. "normal".
     #[error("{item}: field `{field}`: {reason}")]
     Invalid {
         /// The item at fault, e.g. "scene 0, contact 3" or "problem 4".
         item: String,
-        /// The field at fault, e.g. "normal" or "M[0][1]".
+        /// The field at fault, e.g. `normal` or `M[0][1]`.
         field: String,
         /// What is wrong with it.
         reason: String,

@@ -34,7 +34,7 @@ impl Scene {
     /// Checks the scene (errors name `item`, e.g. "scene 3", with the
     /// contact or body and the field) and returns its islands with their
     /// LCPs, assembled in f64: what [`crate::Solver::solve_scenes`] solves.
-    pub fn islands(&self, item: &str) -> Result<Vec<IslandProblem>, crate::Error> {
+    pub(crate) fn islands(&self, item: &str) -> Result<Vec<IslandProblem>, crate::Error> {
         self.validate(item)?;
         let built = crate::build::Built::new(self);
         Ok(built

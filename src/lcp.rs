@@ -6,7 +6,8 @@
 //! w = M z + q ≥ 0,   z ≥ 0,   zᵀw = 0
 //! ```
 //!
-//! (seed 000, last section). [`Lcp`] holds (M, q); [`LcpSolution`] carries the
+//! (Cottle, Pang & Stone, *The Linear Complementarity Problem*, 1992, §1.1).
+//! [`Lcp`] holds (M, q); [`LcpSolution`] carries the
 //! answer, its [`Status`], its [`Residuals`] and the work [`Counters`] of the
 //! solver that produced it. The status says what the solve found; an
 //! [`crate::Error`] says why a solve could not run at all.
@@ -26,6 +27,9 @@ pub struct Lcp {
 
 impl Lcp {
     /// Builds an LCP from a row-major matrix and q, checking shapes and finiteness.
+    ///
+    /// # Errors
+    /// Those of [`Self::validate`], naming the item "problem".
     pub fn new(m: Vec<f64>, q: Vec<f64>) -> Result<Self, crate::Error> {
         let lcp = Lcp { m, q };
         lcp.validate("problem")?;
@@ -33,6 +37,10 @@ impl Lcp {
     }
 
     /// Builds an LCP from rows, as the JSON batch format stores it.
+    ///
+    /// # Errors
+    /// [`crate::Error::Invalid`] when a row or the number of rows is not
+    /// `q.len()`, or an entry is not finite.
     pub fn from_rows(rows: &[Vec<f64>], q: Vec<f64>) -> Result<Self, crate::Error> {
         let n = q.len();
         for (i, row) in rows.iter().enumerate() {
@@ -69,6 +77,10 @@ impl Lcp {
     /// Checks that M is n×n and every entry of M and q is finite. `item` names
     /// the problem in the error message (rendered only when a check fails:
     /// pass `format_args!("problem {i}")`, not `&format!(..)`).
+    ///
+    /// # Errors
+    /// [`crate::Error::Invalid`] naming `item` and the field (`q`, `M`,
+    /// `M[i][j]`, `q[i]`).
     pub fn validate(&self, item: impl std::fmt::Display) -> Result<(), crate::Error> {
         let n = self.q.len();
         if n == 0 {
@@ -101,7 +113,7 @@ impl Lcp {
         Ok(())
     }
 
-    /// w = M z + q (inline up to [`crate::SHORT_INLINE`] rows: nothing allocated).
+    /// w = M z + q (inline up to [`crate::short_vec::SHORT_INLINE`] rows: nothing allocated).
     pub fn w(&self, z: &[f64]) -> ShortVec<f64> {
         let mut w = ShortVec::from_elem(0.0, self.n());
         self.w_into(z, &mut w);
@@ -201,6 +213,7 @@ impl Residuals {
 /// solve could not run.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum Status {
     /// A solution was found (and, when all bases were visited, it is the only one).
     Solved,
@@ -280,6 +293,7 @@ pub enum SolutionSet {
 
 /// Work a solver did, for comparing solvers and for benchmarks.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct Counters {
     /// Complementary bases whose principal system was formed (enumeration).
     pub bases_visited: u64,
@@ -304,11 +318,12 @@ pub struct BasisSolution {
 
 /// The result of one LCP solve.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct LcpSolution {
     /// What the solve found.
     pub status: Status,
     /// The impulses (or the last iterate when the status is not a solution;
-    /// zeros when nothing was found). Inline up to [`crate::SHORT_INLINE`]
+    /// zeros when nothing was found). Inline up to [`crate::short_vec::SHORT_INLINE`]
     /// entries: a batch of small problems allocates nothing per answer.
     pub z: ShortVec<f64>,
     /// w = M z + q for the z above.
@@ -391,7 +406,7 @@ mod tests {
 
     #[test]
     fn error_measure_is_zero_on_a_solution_and_unscaled_for_tiny_q() {
-        // 2x2 example of seed 000: z = (4/3, 7/3), w = 0.
+        // M = [[2, 1], [1, 2]], q = (−5, −6): z = (4/3, 7/3), w = 0.
         let lcp = Lcp::new(vec![2.0, 1.0, 1.0, 2.0], vec![-5.0, -6.0]).unwrap();
         let r = lcp.residuals(&[4.0 / 3.0, 7.0 / 3.0]);
         assert!(r.error < 1e-15, "{r:?}");

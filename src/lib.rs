@@ -34,18 +34,27 @@
 //! # Ok::<(), lcpbatch::Error>(())
 //! ```
 //!
-//! The path of the data: [`scene`] (bodies and contacts) → [`islands`]
+//! The path of the data: a [`Scene`] (bodies and contacts) → islands
 //! (independent groups of contacts) → assembly (K matrices, Jacobian rows,
 //! each island's (M, q); `shaders/assembly.wgsl` and its CPU twin) →
 //! prediction (islands that need no enumeration) → enumeration of the
 //! complementary bases (GPU kernels and their CPU twins), Lemke or PGS →
-//! validation in f64 → impulses. [`io`] reads and writes the file formats.
+//! validation in f64 → impulses (ARCHITECTURE.md has the stage table).
+//!
+//! The face: the door ([`Solver`], [`Settings`] and its enums, [`Report`]
+//! and [`Error`]), the model it takes ([`Lcp`], [`Scene`], [`Body`],
+//! [`Contact`], [`FrictionProblem`], [`World`]), and modules for the rest:
+//! [`report`] (the parts of a report), [`lcp`] (solutions and residuals),
+//! [`friction`] (Coulomb's problem, its settings and errors), [`world`]
+//! (bodies in time, world files, standard worlds, step reports), [`io`]
+//! (the file formats), [`generate`] (seeded test scenes and problems) and
+//! [`device`] (adapters, the GPU context, the cost model).
 
 #![warn(missing_docs)]
 
 pub(crate) mod build;
 pub(crate) mod cpu;
-pub mod error;
+pub(crate) mod error;
 pub mod friction;
 pub mod generate;
 pub(crate) mod gpu;
@@ -55,40 +64,58 @@ pub mod lcp;
 pub(crate) mod linalg;
 pub(crate) mod prediction;
 pub mod report;
-pub mod scene;
-pub mod settings;
+pub(crate) mod scene;
+pub(crate) mod settings;
 pub mod short_vec;
-pub mod solver;
+pub(crate) mod solver;
 pub mod world;
 
-pub use cpu::impulses::BodyVelocity;
-pub use cpu::lemke::{lemke, lemke_textbook_basis, LemkeSettings};
+// The face: the door, its settings, what it reports, the model it takes.
 pub use error::Error;
-pub use friction::{
-    FrictionMethod, FrictionProblem, FrictionResiduals, FrictionSettings, FrictionSolution,
-};
-pub use gpu::{AdapterSummary, BackendChoice, EnumerationKernel, GpuContext, Precision};
-pub use islands::IslandProblem;
-pub use lcp::{Lcp, LcpSolution, Residuals, SolutionSet, Status};
-pub use report::{
-    ContactImpulse, Device, DeviceKind, FrictionIslandReport, GpuFigures, IslandReport, PathCounts,
-    Report, SceneFriction, SceneReport, SolvePath, Timings,
-};
+pub use friction::{FrictionMethod, FrictionProblem};
+pub use gpu::{BackendChoice, EnumerationKernel, Precision};
+pub use lcp::{Lcp, Status};
+pub use report::Report;
 pub use scene::{Body, Contact, Scene};
 pub use settings::{Backend, GpuSettings, Method, Settings};
-pub use short_vec::{ShortVec, SHORT_INLINE};
-pub use solver::world_path::{StepReport, StepTimings, WorldStepReport};
-pub use solver::Repairs;
-pub use solver::{CostModel, Solver};
-pub use world::{RigidBody, Shape, World};
+pub use short_vec::ShortVec;
+pub use solver::world_path::StepReport;
+pub use solver::Solver;
+pub use world::World;
 
-/// Every adapter wgpu finds on `api` (for `lcpbatch info`); empty when none.
-pub fn list_adapters(api: BackendChoice) -> Vec<AdapterSummary> {
-    gpu::list_adapters(api)
+// Paths inside the crate that name these from the root.
+pub(crate) use lcp::LcpSolution;
+pub(crate) use solver::CostModel;
+#[cfg(test)]
+pub(crate) use {
+    gpu::GpuContext,
+    lcp::SolutionSet,
+    report::{DeviceKind, SolvePath},
+};
+
+/// The compute device: the adapters wgpu finds, the GPU context a
+/// [`Solver`] opens (or is handed, [`Solver::with_device`]), and the cost
+/// model by which [`Backend::Auto`] chooses between the CPU and the GPU.
+pub mod device {
+    pub use crate::gpu::{list_adapters, AdapterSummary, GpuContext, INSTALL_HINT};
+    pub use crate::solver::{cache_dir, CostModel, CALIBRATION_SIZES};
 }
 
-/// How to install a software GPU adapter, for messages.
-pub const INSTALL_HINT: &str = gpu::INSTALL_HINT;
+/// Side doors for the benches and the command-line tool: inner solvers and
+/// steps, timed or called one by one. Not part of the public API: no
+/// stability promised.
+#[doc(hidden)]
+pub mod internals {
+    pub use crate::cpu::lemke::{lemke, lemke_textbook_basis, LemkeSettings};
+    pub use crate::friction::assembly::{friction_islands, FrictionIsland};
+    pub use crate::friction::projected::{
+        solve_projected_batch, ProjectedMethod, ProjectedSettings, ProjectedSolution,
+    };
+    pub use crate::friction::random::random_problems;
+    pub use crate::gpu::friction::solve_projected_on_gpu;
+    pub use crate::gpu::friction_assembly::assemble_friction_on_gpu;
+    pub use crate::world::step::{prepare, Prepared};
+}
 
 #[cfg(test)]
 mod tests;

@@ -12,7 +12,7 @@
 use std::fmt;
 use std::ops::AddAssign;
 
-use crate::cpu::impulses::BodyVelocity;
+pub use crate::cpu::impulses::BodyVelocity;
 use crate::friction::{FrictionMethod, FrictionSolution};
 use crate::gpu::Precision;
 use crate::lcp::{LcpSolution, Status};
@@ -22,6 +22,7 @@ use crate::short_vec::ShortVec;
 /// How an island was settled.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum SolvePath {
     /// q ≥ 0: no impulse needed (prediction).
     Separating,
@@ -98,11 +99,12 @@ impl fmt::Display for SolvePath {
 
 /// One island's (or one LCP's) result.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct IslandReport {
     /// The scene it belongs to (None for an LCP batch).
     pub scene: Option<usize>,
     /// The scene's contact indices in the order of the LCP's rows (for an
-    /// LCP batch: 0..n). Inline up to [`crate::SHORT_INLINE`] contacts, as
+    /// LCP batch: 0..n). Inline up to [`crate::short_vec::SHORT_INLINE`] contacts, as
     /// the solution's z and w: a batch of small islands allocates nothing
     /// per island.
     pub contacts: ShortVec<usize>,
@@ -129,6 +131,7 @@ impl IslandReport {
 
 /// One scene after the impact.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct SceneReport {
     /// Normal impulse of every contact, in the scene's order.
     pub impulses: Vec<f64>,
@@ -145,6 +148,7 @@ pub struct SceneReport {
 
 /// A scene's frictional results.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct SceneFriction {
     /// One per contact, in the scene's order.
     pub contacts: Vec<ContactImpulse>,
@@ -174,6 +178,7 @@ pub struct ContactImpulse {
 
 /// One frictional island's (or one [`crate::FrictionProblem`]'s) result.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct FrictionIslandReport {
     /// The scene it belongs to (None for a batch of problems).
     pub scene: Option<usize>,
@@ -203,6 +208,7 @@ impl FrictionIslandReport {
 
 /// Islands per path, and what validation did to the GPU's answers.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+#[non_exhaustive]
 pub struct PathCounts {
     /// q ≥ 0: no impulse.
     pub separating: usize,
@@ -294,6 +300,7 @@ impl AddAssign for PathCounts {
 
 /// Seconds per phase of one call (0 for a phase that did not run).
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
+#[non_exhaustive]
 pub struct Timings {
     /// Scenes: checks, islands and assembly (on the GPU path, the CPU's f64
     /// assembly that validation uses).
@@ -356,6 +363,7 @@ pub enum DeviceKind {
 
 /// Where the batch was solved.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct Device {
     /// CPU, hardware GPU or software adapter.
     pub kind: DeviceKind,
@@ -368,6 +376,7 @@ pub struct Device {
 
 /// GPU-only figures of a batch.
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
+#[non_exhaustive]
 pub struct GpuFigures {
     /// Parts the batch was split into under the device's limits.
     pub chunks: usize,
@@ -458,6 +467,7 @@ fn add_tally(
 
 /// Everything a call found; see the module docs.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct Report {
     /// One per LCP (in the caller's order), or per island of each scene
     /// (scene by scene, islands in the order of [`crate::Scene`]'s contact graph).
@@ -635,12 +645,28 @@ impl fmt::Display for Report {
                 .filter(|(_, c)| *c > 0)
                 .map(|(s, c)| format!("{s} {c}"))
                 .collect();
-            writeln!(
-                f,
-                "{} frictional islands (CPU, f64): {}",
-                self.friction.len(),
-                statuses.join(", ")
-            )?;
+            // Where they ran, in the solver's words: every path ends `choice`
+            // with "friction: <method> on the CPU (why)" or "… on the GPU",
+            // then its counts; the first clause is that. Wherever they ran,
+            // each answer's Coulomb error was computed in f64.
+            let went = self
+                .choice
+                .rsplit_once("friction: ")
+                .map(|(_, w)| w.split(", ").next().unwrap_or(w))
+                .filter(|w| !w.is_empty());
+            match went {
+                Some(went) => write!(
+                    f,
+                    "{} frictional islands ({went}; checked in f64): ",
+                    self.friction.len()
+                )?,
+                None => write!(
+                    f,
+                    "{} frictional islands (checked in f64): ",
+                    self.friction.len()
+                )?,
+            }
+            writeln!(f, "{}", statuses.join(", "))?;
             match self.max_coulomb_error {
                 Some((e, i)) => writeln!(f, "max Coulomb error: {e:.3e} (frictional island {i})")?,
                 None => writeln!(f, "max Coulomb error: none (no frictional island solved)")?,

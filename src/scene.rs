@@ -1,10 +1,11 @@
 //! Bodies and contacts: the scene a user hands in, and its checks.
 //!
-//! Conventions (seed 000): the normal n of a contact points from body b to
-//! body a; r = contact point − centre of mass; a point's velocity is
-//! ṗ = v + ω × r; the impulse is +z n on a and −z n on b. Inverse inertia is
-//! given in the world frame. A body with inv_mass 0 and inv_inertia 0 is
-//! static; a contact's `b` may be absent, meaning the static world.
+//! Conventions (those of impulse-based contact, e.g. Baraff 1994, Mirtich
+//! 1996): the normal n of a contact points from body b to body a;
+//! r = contact point − centre of mass; a point's velocity is ṗ = v + ω × r;
+//! the impulse is +z n on a and −z n on b. Inverse inertia is given in the
+//! world frame. A body with inv_mass 0 and inv_inertia 0 is static; a
+//! contact's `b` may be absent, meaning the static world.
 
 use std::fmt::Display;
 
@@ -72,12 +73,12 @@ pub struct Contact {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub id: Option<u64>,
     /// A velocity bias b added to the contact's q (m/s): q = v_rel +
-    /// ε min(v_rel, 0) + b ([`crate::cpu::assembly::normal_q`]). Time
-    /// stepping puts the gap here, b = φ/Δt (seed 001 §四: 0 ≤ γ_n ⊥ φ/Δt +
-    /// v_n⁺ ≥ 0): a contact φ apart may close the gap within the step, a
-    /// penetrating one (φ < 0) is pushed out by −φ/Δt. Optional, 0 when
-    /// absent (and then not written, so frictionless single-frame outputs
-    /// are unchanged).
+    /// ε min(v_rel, 0) + b (`normal_q` in `src/cpu/assembly.rs`). Time
+    /// stepping puts the gap here, b = φ/Δt (Stewart & Trinkle 1996:
+    /// 0 ≤ γ_n ⊥ φ/Δt + v_n⁺ ≥ 0): a contact φ apart may close the gap
+    /// within the step, a penetrating one (φ < 0) is pushed out by −φ/Δt.
+    /// Optional, 0 when absent (and then not written, so frictionless
+    /// single-frame outputs are unchanged).
     #[serde(default, skip_serializing_if = "is_zero")]
     pub bias: f64,
     /// Coulomb's friction coefficient μ ≥ 0 (finite; default 0: frictionless,
@@ -86,8 +87,8 @@ pub struct Contact {
     #[serde(default, skip_serializing_if = "is_zero")]
     pub friction: f64,
     /// The first tangent t₁ of the contact's friction frame, given by the
-    /// caller (unit and orthogonal to the normal, to [`NORMAL_TOL`]); then
-    /// t₂ = n × t₁. Default None: [`tangent_basis`] of the
+    /// caller (unit and orthogonal to the normal, to 1e-6); then
+    /// t₂ = n × t₁. Default None: the tangent basis of the
     /// normal. Only the directions of the reported tangential impulse
     /// components depend on it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -154,6 +155,9 @@ impl Body {
 
     /// Checks the body's fields; `item` names it in errors (rendered only
     /// when a check fails: pass `format_args!(..)` rather than `&format!(..)`).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `item` and the first field at fault.
     // Long (about 90 lines) on purpose: one check per field, in the order of
     // the format, each naming the field.
     pub fn validate(&self, item: impl Display) -> Result<(), Error> {
@@ -278,7 +282,7 @@ impl Contact {
     }
 
     /// The contact's friction frame (t₁, t₂): the caller's tangent t₁ with
-    /// t₂ = n × t₁, or [`tangent_basis`] of the normal.
+    /// t₂ = n × t₁, or the tangent basis of the normal.
     /// Right-handed: t₁ × t₂ = n.
     pub fn tangents(&self) -> (DVec3, DVec3) {
         let n = self.normal();
@@ -302,6 +306,10 @@ impl Contact {
 
     /// Checks the contact against the scene's bodies; `item` names it in
     /// errors (rendered only when a check fails).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `item` and the first field at fault (a body
+    /// index out of range among them).
     pub fn validate(&self, item: impl Display, bodies: &[Body]) -> Result<(), Error> {
         let item = &item;
         let nb = bodies.len();
@@ -423,6 +431,9 @@ impl Scene {
     /// (e.g. "scene 3", or `format_args!("scene {i}")`: names are rendered
     /// only when a check fails, so a passing check allocates nothing).
     /// The first failure is returned.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming the scene, its body or contact, and the field.
     pub fn validate(&self, item: impl Display) -> Result<(), Error> {
         for (i, b) in self.bodies.iter().enumerate() {
             b.validate(format_args!("{item}, body {i}"))?;

@@ -281,6 +281,9 @@ impl GpuSettings {
     /// `LCPBATCH_GPU_BACKEND` (auto, vulkan, gl, metal, dx12) and
     /// `LCPBATCH_GPU_PRECISION` (auto, f32, f64). A bad value is an error
     /// naming the variable.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming the variable whose value is not one of those.
     pub fn from_env() -> Result<Self, Error> {
         let o = GpuOptions::from_env()?;
         Ok(GpuSettings {
@@ -298,15 +301,6 @@ impl GpuSettings {
             precision: self.precision,
             ..GpuOptions::default()
         }
-    }
-}
-
-impl crate::GpuContext {
-    /// Opens the adapter and device `settings` ask for (the seam through
-    /// which a caller, a test for one, hands its own device to
-    /// [`crate::Solver::with_device`]). `Error::Gpu` when there is none.
-    pub fn open(settings: &GpuSettings) -> Result<Self, Error> {
-        crate::GpuContext::new(&settings.options())
     }
 }
 
@@ -368,8 +362,12 @@ pub struct Settings {
     /// (default 1e-8); otherwise its status is `numerical_failure`. In (0, 1).
     pub tolerance: f64,
     /// The algorithm for islands with friction (default
-    /// [`FrictionMethod::Auto`]: NSGS then Alart–Curnier Newton). Islands
-    /// with friction are solved on the CPU in f64 on every backend.
+    /// [`FrictionMethod::Auto`]: NSGS then Alart–Curnier Newton). They are
+    /// solved on the CPU in f64, except with [`Backend::Gpu`] and a projected
+    /// method (`jacobi`, `pgs`, `apgd`): the GPU iterates islands of up to 16
+    /// contacts in its precision and the CPU checks every answer in f64,
+    /// polishing or re-solving it where it misses the tolerance
+    /// ([`crate::Report::choice`] says where they went).
     pub friction_method: FrictionMethod,
     /// A frictional island is `solved` only when its Coulomb error (Siconos'
     /// fc3d error with De Saxcé's correction) is at most this (default 1e-8);
@@ -432,6 +430,9 @@ impl Settings {
     }
 
     /// Checks every field; the error names the first one out of range.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming the first field out of range.
     pub fn validate(&self) -> Result<(), Error> {
         if let Some(m) = &self.cost_model {
             m.validate()?;

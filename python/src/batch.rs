@@ -13,7 +13,9 @@
 
 use std::ops::Range;
 
-use lcpbatch::{IslandReport, Lcp, SolutionSet};
+use lcpbatch::lcp::SolutionSet;
+use lcpbatch::report::IslandReport;
+use lcpbatch::Lcp;
 use numpy::ndarray::{Array2, ArrayView1, ArrayView2, ArrayView3, Axis};
 use numpy::{IntoPyArray, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3};
 use pyo3::exceptions::PyValueError;

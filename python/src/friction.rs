@@ -9,7 +9,8 @@
 
 use std::ops::Range;
 
-use lcpbatch::{FrictionIslandReport, FrictionProblem};
+use lcpbatch::report::FrictionIslandReport;
+use lcpbatch::FrictionProblem;
 use numpy::ndarray::{ArrayView1, ArrayView2};
 use numpy::{IntoPyArray, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3};
 use pyo3::exceptions::PyValueError;

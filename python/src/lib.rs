@@ -61,7 +61,7 @@ pub(crate) fn guard<T>(f: impl FnOnce() -> PyResult<T>) -> PyResult<T> {
 #[pyo3(signature = (api = "auto"))]
 fn adapters<'py>(py: Python<'py>, api: &str) -> PyResult<Vec<Bound<'py, PyDict>>> {
     let api = lcpbatch::BackendChoice::parse(api).map_err(to_py_err)?;
-    let found = py.detach(|| guard(|| Ok(lcpbatch::list_adapters(api))))?;
+    let found = py.detach(|| guard(|| Ok(lcpbatch::device::list_adapters(api))))?;
     found
         .into_iter()
         .map(|a| {

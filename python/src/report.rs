@@ -3,7 +3,8 @@
 //! A long batch is solved in chunks (so that Ctrl-C is seen between them);
 //! the caller sees one report, the chunks' joined by [`Report::append`].
 
-use lcpbatch::{DeviceKind, GpuFigures, Report, SolvePath, Status};
+use lcpbatch::report::{DeviceKind, GpuFigures, SolvePath};
+use lcpbatch::{Report, Status};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 

@@ -5,7 +5,7 @@
 
 use lcpbatch::world::format::{parse_worlds, worlds_to_json};
 use lcpbatch::world::generate::{standard_world, WorldKind};
-use lcpbatch::{World, WorldStepReport};
+use lcpbatch::world::{World, WorldStepReport};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray2, PyReadonlyArray2};
 use pyo3::exceptions::PyValueError;
@@ -22,7 +22,10 @@ pub(crate) struct NativeWorld {
 }
 
 /// (N, D) rows from each body's `f`.
-fn rows<const D: usize>(w: &World, f: impl Fn(&lcpbatch::RigidBody) -> [f64; D]) -> Array2<f64> {
+fn rows<const D: usize>(
+    w: &World,
+    f: impl Fn(&lcpbatch::world::RigidBody) -> [f64; D],
+) -> Array2<f64> {
     let flat: Vec<f64> = w.bodies.iter().flat_map(f).collect();
     Array2::from_shape_vec((w.bodies.len(), D), flat).expect("N rows of D")
 }
@@ -103,9 +106,9 @@ impl NativeWorld {
             .bodies
             .iter()
             .map(|b| match b.shape {
-                lcpbatch::Shape::Sphere { .. } => "sphere",
-                lcpbatch::Shape::Box { .. } => "box",
-                lcpbatch::Shape::Plane { .. } => "plane",
+                lcpbatch::world::Shape::Sphere { .. } => "sphere",
+                lcpbatch::world::Shape::Box { .. } => "box",
+                lcpbatch::world::Shape::Plane { .. } => "plane",
             })
             .collect()
     }

@@ -1,7 +1,8 @@
 //! Assembly: per contact its K matrix, Jacobian row and q; per island the LCP
 //! (M, q). CPU twin of `shaders/assembly.wgsl`, in f64.
 //!
-//! # Derivation (seed 000)
+//! # Derivation (impulse-based contact: Mirtich 1996; Guendelman, Bridson
+//! & Fedkiw 2003)
 //! A unit impulse +n at the contact point on body a changes its velocity by
 //! Δv = m_a⁻¹ n and Δω = I_a⁻¹ (r_a × n); body b gets the opposite. The
 //! point velocity ṗ = v + ω × r changes accordingly, so the relative normal
@@ -15,12 +16,12 @@
 //! where only bodies shared by contacts i and j contribute. Written out per
 //! shared body X with signs s = +1 when X is a and −1 when X is b:
 //! M_ij = Σ_X s_i s_j (m_X⁻¹ n_i·n_j + (r_X,i × n_i)ᵀ I_X⁻¹ (r_X,j × n_j)).
-//! On the diagonal this is the seed's effective mass n_iᵀ K_i n_i with
+//! On the diagonal this is n_iᵀ K_i n_i, with K the collision matrix
 //! K = (m_a⁻¹ + m_b⁻¹) E − (r_a* I_a⁻¹ r_a* + r_b* I_b⁻¹ r_b*), r* the cross
 //! product matrix (r × x = r* x).
 //!
 //! q_i = v_rel,i + ε_i min(v_rel,i, 0) + b_i ([`normal_q`]): Newton's
-//! restitution on approaching contacts ((1 + ε) v_rel⁻ in the seed), none on
+//! restitution on approaching contacts (v_rel⁺ ≥ −ε v_rel⁻), none on
 //! separating ones, plus the contact's velocity bias b_i (time stepping puts
 //! the gap there, b = φ/Δt; 0 for a single frame).
 
@@ -61,7 +62,7 @@ pub fn cross_matrix(r: DVec3) -> DMat3 {
 /// q = v_rel + ε min(v_rel, 0) + b.
 ///
 /// w = Mz + q ≥ 0 then reads v_rel⁺ ≥ −ε v_rel⁻ − b: Newton's restitution on
-/// approach, and with b = φ/Δt seed 001's DVI gap condition
+/// approach, and with b = φ/Δt the time stepper's gap condition
 /// φ + Δt v_rel⁺ ≥ 0 (the time stepper chooses ε and b per contact; see
 /// `crate::world::step`).
 #[inline]

@@ -1,5 +1,7 @@
-//! Exhaustive enumeration of the 2ⁿ complementary bases (seed 000, last
-//! section): the CPU twin of `shaders/enumeration.wgsl`, in f64.
+//! Exhaustive enumeration of the 2ⁿ complementary bases (the complementary
+//! cones of Murty, *Linear Complementarity, Linear and Nonlinear
+//! Programming*, 1988, ch. 1; Cottle–Pang–Stone 1992, ch. 1): the CPU twin
+//! of `shaders/enumeration.wgsl`, in f64.
 //!
 //! A complementary basis is a set S ⊆ {0..n}: z_i is basic for i ∈ S (w_i = 0)
 //! and w_i is basic for i ∉ S (z_i = 0). Then

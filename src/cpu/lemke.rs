@@ -1,5 +1,6 @@
-//! Lemke's complementary pivoting algorithm (seed 002), with a lexicographic
-//! ratio test so that it cannot cycle on degenerate problems.
+//! Lemke's complementary pivoting algorithm (Lemke 1965; Cottle–Pang–Stone
+//! 1992, §4.4), with a lexicographic ratio test so that it cannot cycle on
+//! degenerate problems.
 //!
 //! The artificial variable z0 with covering vector e = (1, …, 1) turns the
 //! LCP into w − M z − e z0 = q. The tableau holds B⁻¹[I, −M, −e | q] for the
@@ -62,7 +63,7 @@ fn with_workspace<T>(f: impl FnOnce(&mut Workspace) -> T) -> T {
 /// Solves `lcp` with Lemke's algorithm. Statuses: `Solved`, `RayTermination`,
 /// `NotConverged` (pivot cap). The counters carry the pivot count.
 ///
-/// If the pivoting path cycles (see [`PathEnd::Cycled`]), the run starts over
+/// If the pivoting path cycles (see `PathEnd::Cycled`), the run starts over
 /// on q perturbed by 1e-10·‖q‖∞ (then 1e-7·‖q‖∞) with distinct weights per
 /// row, which breaks the ties rounding decided; the final basis is then
 /// re-solved with the true q, and the error reported is the true problem's.
@@ -469,7 +470,8 @@ mod tests {
 
     #[test]
     fn seed_002_walkthrough() {
-        // Seed 002's equations use q = (−3, 6, −1): z = (0, 1, 3), w = (2, 0, 0).
+        // A 3×3 worked by hand through Lemke's pivots, q = (−3, 6, −1):
+        // z = (0, 1, 3), w = (2, 0, 0).
         let m = vec![0.0, -1.0, 2.0, 2.0, 0.0, -2.0, -1.0, 1.0, 0.0];
         let lcp = Lcp::new(m.clone(), vec![-3.0, 6.0, -1.0]).unwrap();
         let sol = lemke(&lcp, &LemkeSettings::default());

@@ -1,4 +1,5 @@
-//! Projected Gauss–Seidel: the projection view of seed 001. Each sweep
+//! Projected Gauss–Seidel (Cottle–Pang–Stone 1992, ch. 5, projected SOR
+//! with ω = 1): the LCP as a projection on the orthant. Each sweep
 //! projects every z_i onto [0, ∞) after a Gauss–Seidel step on row i,
 //!
 //! ```text

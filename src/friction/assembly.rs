@@ -8,7 +8,7 @@
 //!
 //! # Derivation
 //! A direction d at the contact (d = n, t₁ or t₂) has, like the normal of
-//! the frictionless problem (`src/cpu/assembly.rs`, seed 000), the Jacobian
+//! the frictionless problem (`src/cpu/assembly.rs`, its derivation), the Jacobian
 //! row J_d = [d, r_a × d, −d, −r_b × d] and the response M⁻¹ J_dᵀ; so each
 //! direction is assembled by [`assemble_contact`] with d in place of n, and
 //! W's entry for direction α of contact i and β of contact j is
@@ -301,7 +301,8 @@ pub fn friction_islands(scene: &Scene) -> Vec<FrictionIsland> {
 impl Scene {
     /// Checks the scene (errors name `item`) and returns its islands with
     /// their frictional problems, assembled in f64 (μ = 0 contacts included).
-    pub fn friction_islands(&self, item: &str) -> Result<Vec<FrictionIsland>, crate::Error> {
+    #[cfg(test)]
+    pub(crate) fn friction_islands(&self, item: &str) -> Result<Vec<FrictionIsland>, crate::Error> {
         self.validate(item)?;
         Ok(friction_islands(self))
     }
@@ -337,6 +338,7 @@ pub fn apply_friction_impulses(
 
 /// Local velocity (u_n, u_t₁, u_t₂) of every contact from the bodies'
 /// velocities: each direction's (ṗ_a − ṗ_b)·d.
+#[cfg(test)]
 pub fn local_velocities(scene: &Scene, velocities: &[BodyVelocity]) -> Vec<[f64; 3]> {
     scene
         .contacts

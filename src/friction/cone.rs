@@ -1,5 +1,7 @@
 //! The friction cone of one contact: the Euclidean projections on the cone
-//! and on the disc of seed 001 (the tangent basis is [`crate::scene`]'s).
+//! ‖r_t‖ ≤ μ r_n and on the disc ‖r_t‖ ≤ μ r_n of a given r_n (the
+//! projections of the cone complementarity iterations, Anitescu & Tasora
+//! 2010). The tangent basis is [`crate::scene`]'s.
 
 pub use crate::scene::tangent_basis;
 
@@ -34,10 +36,11 @@ pub fn project_on_cone(x: [f64; 3], mu: f64) -> [f64; 3] {
     }
 }
 
-/// Seed 001's closed form: for a normal impulse γ_n and a sliding velocity
-/// v_T, the tangential impulse of maximum dissipation (γ_T minimising
-/// γ_T · v_T over the disc ‖γ_T‖ ≤ μ γ_n) is γ_T = −μ γ_n v_T / ‖v_T‖, on the
-/// disc's boundary, opposing the slide. For v_T = 0 every point of the disc
+/// Maximal dissipation in closed form (Stewart & Trinkle 1996; Anitescu &
+/// Tasora 2010): for a normal impulse γ_n and a sliding velocity v_T, the
+/// tangential impulse of maximum dissipation (γ_T minimising γ_T · v_T over
+/// the disc ‖γ_T‖ ≤ μ γ_n) is γ_T = −μ γ_n v_T / ‖v_T‖, on the disc's
+/// boundary, opposing the slide. For v_T = 0 every point of the disc
 /// dissipates nothing; this returns 0. A negative γ_n counts as 0.
 #[inline]
 pub fn project_on_disc(v_t: [f64; 2], mu: f64, gamma_n: f64) -> [f64; 2] {
@@ -56,7 +59,8 @@ mod tests {
 
     #[test]
     fn the_seeds_disc_examples() {
-        // Seed 001, section 三: v_T = (3, −4), μ = 0.5, γ_n = 10 → (−3, 4).
+        // Worked by hand: v_T = (3, −4), μ = 0.5, γ_n = 10 → (−3, 4), on the
+        // disc's boundary.
         let g = project_on_disc([3.0, -4.0], 0.5, 10.0);
         assert!(
             (g[0] + 3.0).abs() < 1e-15 && (g[1] - 4.0).abs() < 1e-15,

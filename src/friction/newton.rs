@@ -117,6 +117,7 @@ fn half_squared(v: &[f64]) -> f64 {
 }
 
 /// The Newton scalings ρ_i = 1 / W_ii,nn (1 when not positive).
+#[cfg(test)]
 pub fn scalings(p: &FrictionProblem) -> Vec<f64> {
     let mut ws = Workspace::default();
     ws.prepare(p, &vec![0.0; p.dim()]);

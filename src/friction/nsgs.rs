@@ -9,32 +9,9 @@
 //! with W. Before a sweep count is reported as converged, u is recomputed
 //! exactly and the error checked again (the updates' rounding drifts).
 
-use super::local::{solve_contact, Block};
+use super::local::solve_contact;
 use super::problem::FrictionProblem;
 use super::workspace::Workspace;
-
-pub use super::workspace::diagonal_block;
-
-/// One sweep over the contacts in order, updating `r` in place, u = W r + q
-/// recomputed for each contact (the reference sweep; the solvers use the
-/// incremental one of the module docs).
-pub fn nsgs_sweep(p: &FrictionProblem, blocks: &[Block], r: &mut [f64]) {
-    let n = p.dim();
-    for (i, block) in blocks.iter().enumerate() {
-        // The local free velocity: q_i + Σ_{j ≠ i} W_ij r_j, i.e. the row
-        // times r minus the own block's part.
-        let mut local = [0.0; 3];
-        for (a, l) in local.iter_mut().enumerate() {
-            let row = &p.w[(3 * i + a) * n..(3 * i + a + 1) * n];
-            let full: f64 = row.iter().zip(&*r).map(|(x, y)| x * y).sum();
-            let own: f64 = (0..3).map(|b| block[a][b] * r[3 * i + b]).sum();
-            *l = p.q[3 * i + a] + full - own;
-        }
-        let current = [r[3 * i], r[3 * i + 1], r[3 * i + 2]];
-        let ri = solve_contact(block, local, p.mu[i], current);
-        r[3 * i..3 * i + 3].copy_from_slice(&ri);
-    }
-}
 
 /// One sweep with `ws.u` = W r + q kept current (see the module docs).
 fn sweep(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64]) {
@@ -106,13 +83,4 @@ pub(crate) fn nsgs_in(
         error = ws.error(p, r);
     }
     (sweeps, error)
-}
-
-/// NSGS from `r` (a warm start or zeros) until the Coulomb error is at most
-/// `tolerance` or `max_sweeps` sweeps ran: (sweeps, error of the last r).
-/// One contact is exact after one sweep.
-pub fn nsgs(p: &FrictionProblem, r: &mut [f64], max_sweeps: u64, tolerance: f64) -> (u64, f64) {
-    let mut ws = Workspace::default();
-    ws.prepare(p, r);
-    nsgs_in(p, &mut ws, r, max_sweeps, tolerance, None)
 }

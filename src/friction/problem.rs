@@ -20,6 +20,9 @@ pub struct FrictionProblem {
 
 impl FrictionProblem {
     /// Builds a problem, checking shapes and values (see [`Self::validate`]).
+    ///
+    /// # Errors
+    /// Those of [`Self::validate`], naming the item "problem".
     pub fn new(w: Vec<f64>, q: Vec<f64>, mu: Vec<f64>) -> Result<Self, Error> {
         let p = FrictionProblem { w, q, mu };
         p.validate("problem")?;
@@ -58,6 +61,10 @@ impl FrictionProblem {
     /// Checks that q has 3k entries for the k coefficients, W is 3k × 3k,
     /// every entry is finite and every μ ≥ 0. `item` names the problem
     /// (rendered only when a check fails: pass `format_args!("problem {i}")`).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `item` and the first field at fault (`mu`,
+    /// `q`, `W`, or the entry at fault, e.g. `mu[2]` or `W[0][1]`).
     pub fn validate(&self, item: impl std::fmt::Display) -> Result<(), Error> {
         let k = self.mu.len();
         if k == 0 {

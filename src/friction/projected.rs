@@ -98,6 +98,9 @@ impl ProjectedMethod {
     }
 
     /// The method named `name` (`jacobi`, `pgs`, `apgd`).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] when `name` is none of them.
     pub fn parse(name: &str) -> Result<Self, Error> {
         Self::ALL
             .into_iter()
@@ -118,8 +121,8 @@ pub struct ProjectedSettings {
     /// The iteration (default [`ProjectedMethod::Apgd`]).
     pub method: ProjectedMethod,
     /// Largest acceptable cone error (normalised as Siconos' error, see
-    /// [`FrictionResiduals::cone_error`]). None (default): [`F64_TOLERANCE`]
-    /// on the CPU and for f64 shaders, [`F32_TOLERANCE`] for f32 shaders.
+    /// [`FrictionResiduals::cone_error`]). None (default): `F64_TOLERANCE`
+    /// on the CPU and for f64 shaders, `F32_TOLERANCE` for f32 shaders.
     /// When given: finite and > 0.
     pub tolerance: Option<f64>,
     /// Iterations (sweeps for Jacobi and Gauss–Seidel) before giving up with
@@ -143,6 +146,9 @@ impl Default for ProjectedSettings {
 
 impl ProjectedSettings {
     /// Checks every field; the error names it.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming the first field out of range.
     pub fn validate(&self) -> Result<(), Error> {
         if let Some(t) = self.tolerance {
             if !(t.is_finite() && t > 0.0) {
@@ -244,6 +250,7 @@ impl ProjectedSolution {
 /// Solves one island's CCP from `r0` (3k; None: 0) with `settings`
 /// (tolerance in f64). Errors: settings or problem failing their checks,
 /// r0 of the wrong length or not finite.
+#[cfg(test)]
 pub fn solve_projected(
     problem: &FrictionProblem,
     r0: Option<&[f64]>,
@@ -264,6 +271,10 @@ pub fn solve_projected(
 /// order. `warm[i]`, where given, is island i's start. A problem that fails
 /// its checks gets status `InvalidInput`; a bad warm start or bad settings
 /// are an error naming it.
+///
+/// # Errors
+/// [`Error::Invalid`] for settings out of range or a warm start of the wrong
+/// length or not finite (naming the island).
 pub fn solve_projected_batch(
     problems: &[FrictionProblem],
     warm: Option<&[Vec<f64>]>,

@@ -96,7 +96,7 @@ pub fn random_problem(rng: &mut Rng, k: usize, mass_ratio: f64) -> FrictionProbl
     FrictionProblem { w, q, mu }
 }
 
-/// `count` islands of `k` contacts each ([`random_problem`], mass ratios 1,
+/// `count` islands of `k` contacts each (`random_problem`, mass ratios 1,
 /// 10 and 100 in turn) from `seed`.
 pub fn random_problems(seed: u64, count: usize, k: usize) -> Vec<FrictionProblem> {
     let mut rng = Rng::new(seed);

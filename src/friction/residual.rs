@@ -12,6 +12,7 @@ const SCRATCH: usize = 48;
 
 /// The numbers that judge a reaction r (u = W r + q recomputed).
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
+#[non_exhaustive]
 pub struct FrictionResiduals {
     /// Siconos' fc3d error (Coulomb, De Saxcé's correction):
     /// ‖r − P_K(r − u − μ‖u_t‖ e_n)‖ / max(‖q‖, ‖r‖, ‖u‖), not divided when

@@ -35,14 +35,14 @@ pub enum FrictionMethod {
     /// start or r = 0, until the error is at most the tolerance.
     Newton,
     /// Projected Jacobi sweeps over contacts on the cone complementarity
-    /// model of Anitescu–Tasora ([`super::projected`]; on the GPU too),
+    /// model of Anitescu–Tasora (`friction::projected`; on the GPU too),
     /// judged by that model's residual `cone_error`, not the Coulomb error
     /// (which the report gives beside it: the model's distance from Coulomb).
     Jacobi,
     /// Projected Gauss–Seidel sweeps, as [`Self::Jacobi`] otherwise.
     Pgs,
-    /// Accelerated projected gradient (APGD with restarts, seed 001), as
-    /// [`Self::Jacobi`] otherwise.
+    /// Accelerated projected gradient (APGD with restarts: Mazhar, Heyn,
+    /// Negrut & Tasora, ACM TOG 2015), as [`Self::Jacobi`] otherwise.
     Apgd,
 }
 
@@ -121,6 +121,7 @@ impl Default for FrictionSettings {
 
 /// One island's frictional answer.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct FrictionSolution {
     /// `solved` (finite, Coulomb error ≤ tolerance), `not_converged` (the
     /// error reached is in `residuals`) or `numerical_failure` (not finite).

@@ -222,9 +222,10 @@ pub fn box_on_ground(speed: f64, restitution: f64) -> Scene {
     }
 }
 
-/// The seed's figure 7: four bodies in a row, bodies 1 and 2 touching at two
-/// points, 2–3 and 3–4 at one each (contacts p1…p4), all moving together so
-/// that every contact approaches.
+/// The textbook case of coupled contacts (each impulse changes the other
+/// contacts' velocities): four bodies in a row, bodies 1 and 2 touching at
+/// two points, 2–3 and 3–4 at one each (contacts p1…p4), all moving
+/// together so that every contact approaches.
 pub fn seed_chain(restitution: f64) -> Scene {
     let mut bodies = Vec::new();
     for i in 0..4 {

@@ -25,7 +25,8 @@ pub enum Family {
     /// Boxes resting on the ground and stacked, 4 coplanar contacts per face:
     /// rank-deficient M.
     RestingStacks,
-    /// Chains of bodies as in the seed's figure 7, up to n = 16.
+    /// Chains of bodies in a row, each touching the next (as
+    /// [`super::seed_chain`]), up to n = 16.
     Chains,
     /// Random non-symmetric matrices that are not P-matrices: several solutions or none.
     NonSymmetric,
@@ -169,7 +170,8 @@ fn stack(levels: usize, rng: &mut Rng) -> Scene {
 }
 
 /// A chain of boxes along x with `n` contacts in all: one or two contacts per
-/// interface, the first body pushed into the others (seed figure 7 extended).
+/// interface, the first body pushed into the others ([`super::seed_chain`]
+/// extended).
 fn chain(n: usize, rng: &mut Rng) -> Scene {
     let mut bodies = Vec::new();
     let mut contacts = Vec::new();
@@ -348,6 +350,10 @@ mod tests {
 
 /// The Siconos problems of `dir` (a folder of `.dat` files) with n ≤ 16,
 /// each scaled by 1e-6 and by 1e6 (M and q together: same z, w scaled).
+///
+/// # Errors
+/// [`crate::Error::Io`] when `dir` or a file in it cannot be read; the
+/// errors of [`crate::io::read_input`] for a malformed file.
 pub fn siconos_scaled(dir: &std::path::Path) -> Result<Vec<(String, StressCase)>, crate::Error> {
     let mut files: Vec<_> = std::fs::read_dir(dir)
         .map_err(|source| crate::Error::Io {

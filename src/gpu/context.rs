@@ -355,6 +355,17 @@ impl std::fmt::Debug for GpuContext {
 }
 
 impl GpuContext {
+    /// Opens the adapter and device `settings` ask for (the seam through
+    /// which a caller, a test for one, hands its own device to
+    /// [`crate::Solver::with_device`]).
+    ///
+    /// # Errors
+    /// [`Error::Gpu`] when there is no adapter, or the one named or the
+    /// precision asked for is unavailable.
+    pub fn open(settings: &crate::GpuSettings) -> Result<Self, Error> {
+        GpuContext::new(&settings.options())
+    }
+
     /// Picks an adapter (a forced one, else hardware with HighPerformance,
     /// else a software adapter), opens a device with the adapter's own
     /// limits, and installs the error handler. Error::Gpu when there is no

@@ -28,6 +28,10 @@ pub fn is_fc3d(text: &str) -> bool {
 
 /// Parses the text of a FrictionContact3D `.dat` file; `path` names it in
 /// errors, with the line and the field.
+///
+/// # Errors
+/// [`Error::Dat`] naming the line and the field where the text is malformed
+/// or a number not finite, or the problem's check that failed.
 pub fn parse_fc3d(path: &str, text: &str) -> Result<FrictionProblem, Error> {
     let mut t = Tokens::new(path, text);
     let d = t.int("d (dimension of the contact space)", MAX_DAT_N)?;

@@ -54,6 +54,11 @@ enum JsonInput {
 
 /// Parses JSON text holding a scene, `{"scenes": [...]}` or
 /// `{"problems": [...]}`, and checks every item. `path` names the file in errors.
+///
+/// # Errors
+/// [`Error::Json`] (line and column) when the text is not JSON of one of
+/// these shapes; [`Error::Invalid`] naming the first item and field that
+/// fail their checks.
 pub fn parse_json(path: &str, text: &str) -> Result<Input, Error> {
     match typed(text) {
         Some(input) => checked_items(path, input),
@@ -476,6 +481,10 @@ struct ScenesFile {
 
 /// Reads an input file: `.dat` as Siconos (FrictionContact3D when its
 /// header says so, see [`fc3d::is_fc3d`], else an LCP), anything else as JSON.
+///
+/// # Errors
+/// [`Error::Io`] when the file cannot be read; [`Error::Dat`] for a
+/// malformed `.dat` file; those of [`parse_json`] otherwise.
 pub fn read_input(path: &Path) -> Result<Input, Error> {
     let text = std::fs::read_to_string(path).map_err(|source| Error::Io {
         path: path.to_path_buf(),
@@ -498,6 +507,10 @@ pub fn read_input(path: &Path) -> Result<Input, Error> {
 
 /// Writes `text` to `path` atomically: a temporary file beside it, renamed
 /// into place, so that a failure leaves no partial output.
+///
+/// # Errors
+/// [`Error::Io`] when the temporary file cannot be written or renamed;
+/// [`Error::Invalid`] when `path` names no file.
 pub fn write_atomically(path: &Path, text: &str) -> Result<(), Error> {
     let io = |source| Error::Io {
         path: path.to_path_buf(),

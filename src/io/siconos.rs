@@ -77,6 +77,10 @@ impl<'a> Tokens<'a> {
 }
 
 /// Parses the text of a .dat file; `path` names it in errors.
+///
+/// # Errors
+/// [`Error::Dat`] naming the line and the field where the text is malformed
+/// or a number not finite.
 pub fn parse_dat(path: &str, text: &str) -> Result<Lcp, Error> {
     let mut t = Tokens::new(path, text);
     let n = t.int("n", MAX_DAT_N)?;

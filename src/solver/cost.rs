@@ -58,6 +58,9 @@ pub struct CostModel {
 
 impl CostModel {
     /// Checks shapes and values (finite, ≥ 0; sizes ascending, ≥ 1).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `settings: cost_model` and the field at fault.
     pub fn validate(&self) -> Result<(), Error> {
         let bad = |field: &str, why: &str| Err(Error::invalid("settings: cost_model", field, why));
         let k = self.sizes.len();
@@ -174,6 +177,10 @@ pub(super) fn store(dir: &Path, model: &CostModel) -> Result<PathBuf, Error> {
 impl CostModel {
     /// Writes the model to [`cache_dir`], where later solvers on the same
     /// device and thread count find it; returns the file.
+    ///
+    /// # Errors
+    /// [`Error::Unsupported`] when there is no cache folder; [`Error::Io`]
+    /// when it or the file cannot be written.
     pub fn save(&self) -> Result<PathBuf, Error> {
         let dir = cache_dir().ok_or_else(|| {
             Error::Unsupported("no cache folder: set LCPBATCH_CACHE_DIR or HOME".into())
@@ -200,7 +207,10 @@ impl Solver {
     }
 
     /// Measures this solver's CPU and GPU paths by island size (see the
-    /// module docs); needs a GPU open. `Error::Gpu` on device trouble.
+    /// module docs); needs a GPU open.
+    ///
+    /// # Errors
+    /// [`Error::Gpu`] without a GPU open or on device trouble.
     pub fn calibrate(&mut self) -> Result<CostModel, Error> {
         let Some(ctx) = self.gpu.clone() else {
             return Err(Error::Gpu("calibration needs a GPU".into()));

@@ -383,7 +383,7 @@ impl Solver {
     /// field). Islands above the enumeration's limit go to Lemke. Scenes
     /// with friction (any contact with μ > 0) go, every island of them, to
     /// the friction path ([`Report::friction`],
-    /// [`SceneReport::friction`](crate::SceneReport::friction); on the GPU
+    /// [`SceneReport::friction`](crate::report::SceneReport::friction); on the GPU
     /// for a projected `friction_method` with `Backend::Gpu`, else on the
     /// CPU; `Report::choice` says which); the others are solved as without
     /// friction.

@@ -44,6 +44,7 @@ use crate::Error;
 
 /// One world after a step.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+#[non_exhaustive]
 pub struct WorldStepReport {
     /// Kinetic energy (J) after the step.
     pub kinetic: f64,
@@ -69,6 +70,7 @@ pub struct WorldStepReport {
 /// Seconds per phase of one step (wall time; within pass 2, each phase's
 /// share of the pass as the threads measured it).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+#[non_exhaustive]
 pub struct StepTimings {
     /// The worlds' checks, gravity, broad and narrow phase, the scenes (all
     /// worlds; one pass over the cores).
@@ -82,6 +84,7 @@ pub struct StepTimings {
 
 /// What one step of a batch of worlds found.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct StepReport {
     /// One per world, in the caller's order.
     pub worlds: Vec<WorldStepReport>,

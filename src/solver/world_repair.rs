@@ -40,6 +40,7 @@ use crate::settings::{Method, Settings};
 /// Unsolved islands of a step, by what their bodies got instead (see the
 /// module docs of `world_repair`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+#[non_exhaustive]
 pub struct Repairs {
     /// Re-solved exactly without friction (normal impulses, checked).
     pub exact: usize,

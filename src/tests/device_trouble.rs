@@ -18,8 +18,9 @@ pub(super) fn scenes() -> Vec<Scene> {
     s
 }
 
-/// Island LCPs of all sizes 1..=9 plus two hand-made ones (seed 002's, and
-/// seed 000's 2×2).
+/// Island LCPs of all sizes 1..=9 plus two hand-made ones (a 3×3 with a
+/// zero diagonal that Lemke's method solves by hand, and the 2×2
+/// M = [[2, 1], [1, 2]], q = (−5, −6)).
 pub(super) fn lcps() -> Vec<Lcp> {
     let mut rng = Rng::new(12);
     let mut v: Vec<Lcp> = (1..=9)

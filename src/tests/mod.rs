@@ -1,6 +1,6 @@
 //! The crate's tests that reach past the public face: each GPU stage against
-//! its CPU twin, the CPU solvers against the seeds' worked examples and the
-//! Siconos problems, physics identities, stress families, device trouble.
+//! its CPU twin, the CPU solvers against worked examples of the LCP texts
+//! and the Siconos problems, physics identities, stress families, device trouble.
 //! Shared helpers live in [`common`]. (The tests of the command-line tool
 //! and of the recorded output are in `tests/`.)
 

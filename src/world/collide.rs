@@ -7,11 +7,12 @@
 //! ids (which vertex, which face) under our control so that contact ids
 //! persist across steps for warm start.
 //!
-//! Conventions (seed 000): the normal points from body b to body a; the
+//! Conventions (those of [`crate::scene`] and the README's scene format):
+//! the normal points from body b to body a; the
 //! point is midway between the two surfaces; φ is the distance between the
 //! surfaces along the normal.
 
-use glam::{DMat3, DQuat, DVec3};
+use glam::{DMat3, DVec3};
 
 use super::{RigidBody, Shape};
 
@@ -136,7 +137,8 @@ impl Placed {
     }
 
     /// A shape at `centre` rotated by `q`.
-    pub fn new(shape: Shape, centre: DVec3, q: DQuat) -> Self {
+    #[cfg(test)]
+    pub fn new(shape: Shape, centre: DVec3, q: glam::DQuat) -> Self {
         Placed {
             shape,
             centre,
@@ -339,6 +341,7 @@ pub(super) fn reduce_to_four(hits: Manifold) -> Manifold {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use glam::DQuat;
 
     fn close(a: DVec3, b: DVec3) -> bool {
         (a - b).length() < 1e-12

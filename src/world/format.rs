@@ -22,6 +22,10 @@ use crate::Error;
 const UNIT_TOL: f64 = 1e-6;
 
 /// Parses a world file's text; `path` names the file in errors.
+///
+/// # Errors
+/// [`Error::Json`] when the text is not JSON; [`Error::Invalid`] naming the
+/// world, the body and the field that fail their checks.
 pub fn parse_worlds(path: &str, text: &str) -> Result<Vec<World>, Error> {
     let value = crate::io::strict::parse_object(path, text, item_of)?;
     let obj = value.as_object().expect("parse_object checked");

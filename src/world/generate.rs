@@ -59,6 +59,10 @@ impl WorldKind {
 
     /// Parses `KIND` or `KIND:SIZE` (e.g. `stack:5`); the error names the
     /// item `what` and lists the kinds.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `what` for an unknown kind or a size that is
+    /// not a whole number in 1..=4096.
     pub fn parse(what: &str, text: &str) -> Result<(WorldKind, usize), Error> {
         let (name, size) = text.split_once(':').unwrap_or((text, ""));
         let kind = WorldKind::ALL

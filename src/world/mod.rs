@@ -1,7 +1,11 @@
 //! Worlds in time: rigid bodies (spheres and boxes; static planes and
 //! boxes), their poses and velocities, gravity and materials; contact
-//! generation each step ([`collide`]); the step itself (seed 001 §四, DVI)
-//! is [`crate::Solver::step_worlds`], built from [`step`].
+//! generation each step (`collide`); the step itself (a time-stepping
+//! discretisation of the differential variational inequality of contact:
+//! Stewart & Trinkle 1996, Anitescu & Potra 1997; Pang & Stewart 2008) is
+//! [`crate::Solver::step_worlds`], built from `step`, and reports a
+//! [`StepReport`]; world files are read and written by [`format`](mod@format), the
+//! standard worlds built by [`generate`].
 //!
 //! # Conventions
 //! - Poses: `position` is the centre of mass, `orientation` a unit
@@ -21,12 +25,15 @@ use serde::{Deserialize, Serialize};
 
 use crate::Error;
 
-pub mod broad;
-pub mod collide;
+pub(crate) mod broad;
+pub(crate) mod collide;
 mod collide_box;
 pub mod format;
 pub mod generate;
-pub mod step;
+pub(crate) mod step;
+
+pub use crate::solver::world_path::{StepReport, StepTimings, WorldStepReport};
+pub use crate::solver::Repairs;
 
 /// The shape of a body, in its own frame.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -317,6 +324,9 @@ impl World {
     }
 
     /// Checks every field; `item` names the world in errors ("world 3").
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `item`, the body and the field.
     pub fn validate(&self, item: &str) -> Result<(), Error> {
         format::validate_world(self, item)
     }

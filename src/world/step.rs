@@ -1,10 +1,13 @@
-//! The step's parts that belong to one world (seed 001 §四, DVI,
-//! semi-implicit); [`crate::Solver::step_worlds`] runs them for a batch:
+//! The step's parts that belong to one world (a semi-implicit time step of
+//! the contact DVI: Stewart & Trinkle 1996, Anitescu & Potra 1997);
+//! [`crate::Solver::step_worlds`] runs them for a batch:
 //!
 //! 1. [`prepare`]: v* = v + Δt g for the awake dynamic bodies; contacts from
 //!    collision with the signed gap φ; a [`Scene`] whose contacts carry the
 //!    bias φ/Δt, so that the door's LCP w = Mγ + q ≥ 0 ⊥ γ ≥ 0 with
-//!    q = J v* + φ/Δt is seed 001's 0 ≤ γ_n ⊥ φ/Δt + v_n⁺ ≥ 0.
+//!    q = J v* + φ/Δt is the time-stepping condition 0 ≤ γ_n ⊥ φ/Δt + v_n⁺ ≥ 0
+//!    (the gap φ + Δt v_n⁺ at the step's end is ≥ 0, and an impulse acts only
+//!    where it is 0).
 //! 2. The door solves every world's islands in one batch.
 //! 3. [`finish`]: v ← the door's velocities after the impulses; x += Δt v;
 //!    q ← normalise(q + ½ Δt (ω, 0) ⊗ q); sleep counters.

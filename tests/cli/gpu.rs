@@ -16,7 +16,7 @@ fn ok(args: &[&str]) -> String {
     assert!(
         out.status.success(),
         "lcpbatch {args:?} failed: {err}\n(no GPU adapter? {})",
-        lcpbatch::INSTALL_HINT
+        lcpbatch::device::INSTALL_HINT
     );
     String::from_utf8(out.stdout).expect("utf-8")
 }

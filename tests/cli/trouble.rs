@@ -5,9 +5,10 @@
 use std::path::PathBuf;
 use std::process::{Command, Output};
 
+use lcpbatch::device::list_adapters;
 use lcpbatch::generate::families::island_lcps;
 use lcpbatch::generate::{demo_world, random_island, seed_chain, Rng};
-use lcpbatch::{list_adapters, BackendChoice, Lcp, Scene};
+use lcpbatch::{BackendChoice, Lcp, Scene};
 
 use super::common::{skip, Lack};
 

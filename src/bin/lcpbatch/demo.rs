@@ -1,7 +1,9 @@
 //! `lcpbatch demo`: the main job (many instances' islands solved on the chosen path, compared with the other path on the same batch) and worlds stepped in time.
 
+use lcpbatch::device::list_adapters;
 use lcpbatch::generate::{demo_world, Rng};
-use lcpbatch::{list_adapters, Backend, Error, Precision, Scene, Settings, Solver};
+use lcpbatch::report::{Device, DeviceKind};
+use lcpbatch::{Backend, Error, Precision, Scene, Settings, Solver};
 
 use super::{simulate, solver_for, BackendArg, GpuArgs};
 /// Solves `scenes` twice and times the second run: the first dispatch of
@@ -18,9 +20,9 @@ fn timed(solver: &mut Solver, scenes: &[Scene]) -> Result<(lcpbatch::Report, f64
 
 /// The precision `device` solves in and why, e.g. "f32 (the GL adapter has
 /// no SHADER_F64; …)"; `asked`: `--precision` or LCPBATCH_GPU_PRECISION.
-fn precision_and_why(device: &lcpbatch::Device, asked: Precision, gpu: &GpuArgs) -> String {
+fn precision_and_why(device: &Device, asked: Precision, gpu: &GpuArgs) -> String {
     let why = match (device.kind, asked) {
-        (lcpbatch::DeviceKind::Cpu, _) => "the CPU path always solves in f64".to_string(),
+        (DeviceKind::Cpu, _) => "the CPU path always solves in f64".to_string(),
         (_, Precision::F32 | Precision::F64) => {
             "asked for by --precision or LCPBATCH_GPU_PRECISION".to_string()
         }
@@ -88,9 +90,9 @@ pub(super) fn demo(
     if let Some(mut other) = other.filter(|o| o.fallback().is_none()) {
         let (r, t) = timed(&mut other, &scenes)?;
         let kind = match r.device.kind {
-            lcpbatch::DeviceKind::Cpu => "CPU path",
-            lcpbatch::DeviceKind::HardwareGpu => "GPU path (hardware)",
-            lcpbatch::DeviceKind::SoftwareGpu => "GPU path (software adapter)",
+            DeviceKind::Cpu => "CPU path",
+            DeviceKind::HardwareGpu => "GPU path (hardware)",
+            DeviceKind::SoftwareGpu => "GPU path (software adapter)",
         };
         println!(
             "for comparison, {kind} on the same batch (its second solve too): {:.0} islands/s ({t:.3} s), {:.2}x the chosen path",

@@ -1,6 +1,7 @@
 //! The GPU solvers `bench` and `stress` compare, and the machine in words.
 
-use lcpbatch::{list_adapters, Backend, GpuSettings, Precision, Settings, Solver};
+use lcpbatch::device::list_adapters;
+use lcpbatch::{Backend, GpuSettings, Precision, Settings, Solver};
 
 /// A GPU solver in f32 and, where the adapter has SHADER_F64, one in f64
 /// (none when `gpu` is None or no adapter opens; a warning says why).

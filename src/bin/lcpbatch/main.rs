@@ -16,11 +16,11 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand, ValueEnum};
 
+use lcpbatch::device::list_adapters;
 use lcpbatch::io::friction::FrictionBatchOutput;
 use lcpbatch::io::{read_input, write_atomically, Input, LcpBatchOutput, ScenesOutput};
 use lcpbatch::{
-    list_adapters, Backend, BackendChoice, Error, FrictionMethod, GpuSettings, Method, Precision,
-    Settings, Solver,
+    Backend, BackendChoice, Error, FrictionMethod, GpuSettings, Method, Precision, Settings, Solver,
 };
 
 #[derive(Parser)]
@@ -340,7 +340,7 @@ fn info(gpu: &GpuArgs, calibrate: bool) -> Result<(), Error> {
     if adapters.is_empty() {
         println!(
             "no GPU adapter found: {}\nthe CPU path is used.",
-            lcpbatch::INSTALL_HINT
+            lcpbatch::device::INSTALL_HINT
         );
         return Ok(());
     }
