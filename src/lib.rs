@@ -59,6 +59,7 @@ pub mod scene;
 pub mod settings;
 pub mod short_vec;
 pub mod solver;
+pub(crate) mod warm;
 pub mod world;
 
 pub use cpu::impulses::BodyVelocity;
