@@ -99,9 +99,9 @@ impl<V: Copy + Send + Sync> WarmMemory<V> {
         self.shards.iter().map(HashMap::len).sum()
     }
 
-    /// One call's records: every (id, value) of `entries(r)` for each
-    /// record `r` in order (an id recorded twice keeps the later value);
-    /// then every id not recorded in the last `keep` calls is forgotten.
+    /// One call's records: every (id, value) of `entries`, in order (an id
+    /// recorded twice keeps the later value); an id recorded in none of
+    /// the last `keep` calls (this one included) is forgotten.
     pub(crate) fn record<I: Iterator<Item = (u64, V)>>(&mut self, entries: I) {
         self.calls += 1;
         let (call, keep) = (self.calls, self.keep);
