@@ -359,6 +359,30 @@ mod tests {
         }
     }
 
+    /// Through the door: ids not seen in the last call are forgotten by
+    /// default, kept with `warm_start_calls: 2`.
+    #[test]
+    fn the_door_forgets_ids_after_warm_start_calls() {
+        use crate::report::SolvePath;
+        use crate::{Backend, Lcp, Method, Settings, Solver};
+        // Rank one M: no predicted basis, only the warm start settles it.
+        let lcps = [Lcp::new(vec![1.0, 1.0, 1.0, 1.0], vec![-1.0, -1.0]).unwrap()];
+        for (calls, kept) in [(1, false), (2, true)] {
+            let mut solver = Solver::new(Settings {
+                warm_start: true,
+                warm_start_calls: calls,
+                ..Settings::new(Backend::Cpu, Method::Enumeration)
+            })
+            .unwrap();
+            for ids in [[1, 2], [3, 4]] {
+                solver.solve_lcps_keyed(&lcps, &[ids.to_vec()]).unwrap();
+            }
+            let again = solver.solve_lcps_keyed(&lcps, &[vec![1, 2]]).unwrap();
+            let warm = again.islands[0].path == SolvePath::WarmStart;
+            assert_eq!(warm, kept, "warm_start_calls {calls}");
+        }
+    }
+
     #[test]
     fn lookups_give_zero_or_nothing_for_contacts_not_remembered() {
         let mut memory = WarmMemory::<[f64; 3]>::new(1, 1);
