@@ -68,6 +68,7 @@ pub(crate) mod scene;
 pub(crate) mod settings;
 pub mod short_vec;
 pub(crate) mod solver;
+pub(crate) mod warm;
 pub mod world;
 
 // The face: the door, its settings, what it reports, the model it takes.

@@ -20,12 +20,6 @@
 //! when the solution is not unique (w is the same whenever M is positive
 //! semidefinite).
 
-// `WarmStart`'s counters serve the tests.
-#![cfg_attr(not(test), allow(dead_code))]
-
-use std::collections::HashMap;
-use std::hash::{BuildHasher, Hasher, RandomState};
-
 use crate::cpu::enumeration::{feasible_basis_into, EnumerationSettings, MAX_ENUMERATION_N};
 use crate::lcp::{Counters, Lcp, LcpSolution, Status};
 use crate::report::SolvePath;
@@ -158,37 +152,29 @@ pub fn is_positive_semidefinite(lcp: &Lcp) -> bool {
     true
 }
 
-/// Tries the cheap paths on one island. `warm_basis` is the caller's basis
-/// from the previous frame, if any. None: the island needs enumeration.
+/// Tries the cheap paths on one island (the tests' form of
+/// [`predict_into`]). `warm_basis` is the caller's basis from the previous
+/// frame, if any. None: the island needs enumeration.
 ///
-/// The same answers as [`prediction`]; since nothing learnt is returned,
-/// step 4 tests M's definiteness only where the predicted basis is
-/// feasible (the CPU path's order: the Cholesky test is the dearer of the
-/// two at n ≤ 8, and the basis is infeasible on a third of the islands).
+/// The same answers as [`prediction_into`]; since nothing learnt is
+/// returned, step 4 tests M's definiteness only where the predicted basis
+/// is feasible (the CPU path's order: the Cholesky test is the dearer of
+/// the two at n ≤ 8, and the basis is infeasible on a third of the islands).
+#[cfg(test)]
 pub fn predict(
     lcp: &Lcp,
     warm_basis: Option<u32>,
     settings: &EnumerationSettings,
 ) -> Option<(SolvePath, LcpSolution)> {
-    let mut path = SolvePath::Separating;
-    predict_solution(lcp, warm_basis, settings, &mut path).map(|s| (path, s))
+    let (mut path, mut out) = (SolvePath::Separating, LcpSolution::invalid(0));
+    predict_into(lcp, warm_basis, settings, &mut path, &mut out).then_some((path, out))
 }
 
-/// [`predict`] with the path written to `path` (the CPU path's form: the
-/// solution is returned as built, not moved into a pair).
-pub fn predict_solution(
-    lcp: &Lcp,
-    warm_basis: Option<u32>,
-    settings: &EnumerationSettings,
-    path: &mut SolvePath,
-) -> Option<LcpSolution> {
-    let mut out = LcpSolution::invalid(0);
-    steps(lcp, warm_basis, settings, path, None, &mut out).then_some(out)
-}
-
-/// [`predict_solution`] written into `out` (true), where the CPU path's
-/// report holds it (see [`feasible_basis_into`]); false, `out` untouched,
-/// when the island needs more than prediction.
+/// One island settled by prediction where it can be: its solution written
+/// into `out` (true), where the CPU path's report holds it (see
+/// [`feasible_basis_into`]), the step that gave it in `path`; false, `out`
+/// untouched (`path` then says nothing), when the island needs more than
+/// prediction.
 pub(crate) fn predict_into(
     lcp: &Lcp,
     warm_basis: Option<u32>,
@@ -338,33 +324,6 @@ mod tests {
     }
 
     #[test]
-    fn records_on_several_threads_are_the_records_of_one() {
-        // 3,000 islands of 4 ids (above the parallel threshold); every id
-        // also appears in a later island, whose basis must win as on one
-        // thread, and some ids are never recorded.
-        let ids: Vec<Vec<u64>> = (0..3000u64)
-            .map(|i| (0..4).map(|k| (i * 4 + k) % 10_000).collect())
-            .collect();
-        let records: Vec<(&[u64], u32)> = ids
-            .iter()
-            .enumerate()
-            .map(|(i, k)| (k.as_slice(), (i as u32 * 7) % 16))
-            .collect();
-        let mut one = WarmStart::default();
-        for &(k, basis) in &records {
-            one.record(k, basis);
-        }
-        for threads in [2, 3, 16, 64] {
-            let mut many = WarmStart::default();
-            many.record_all(&records, threads);
-            for k in &ids {
-                assert_eq!(many.basis(k), one.basis(k), "{threads} threads, ids {k:?}");
-            }
-            assert_eq!(many.basis(&[10_001, 10_002]), None);
-        }
-    }
-
-    #[test]
     fn warm_start_is_kept_only_while_valid() {
         let settings = EnumerationSettings::default();
         // Rank one M, solutions z1 + z2 = 1: the warm basis {1} is valid.
@@ -375,161 +334,5 @@ mod tests {
         // An infeasible warm basis falls through to enumeration.
         let lcp = Lcp::new(vec![1.0, 1.0, 1.0, 1.0], vec![-1.0, 2.0]).unwrap();
         assert!(predict(&lcp, Some(0b10), &settings).is_none());
-    }
-}
-
-/// Last frame's active contacts, keyed by contact ids the caller supplies
-/// (stable across frames, e.g. a feature pair from collision detection).
-/// An island's warm basis is the set of its contacts that carried impulse
-/// last frame; islands none of whose contacts were seen get none.
-///
-/// The ids are spread over [`SHARDS`] maps by a hash of the id, so that a
-/// batch's records can be written on several threads, one shard each at a
-/// time, every shard in the batch's order ([`WarmStart::record_all`]);
-/// the maps hash an id by one seeded multiplication ([`IdHasher`]).
-#[derive(Clone, Debug)]
-pub struct WarmStart {
-    shards: Vec<HashMap<u64, bool, IdHash>>,
-    /// Picks an id's shard (independent of the maps' own hash).
-    seed: u64,
-}
-
-/// Shards of [`WarmStart`].
-const SHARDS: usize = 16;
-
-/// Records (of every shard's ids) below which [`WarmStart::record_all`]
-/// stays on the calling thread: starting a thread costs more.
-const PARALLEL_RECORDS: usize = 4096;
-
-impl Default for WarmStart {
-    fn default() -> Self {
-        let hash = IdHash::default();
-        WarmStart {
-            shards: (0..SHARDS)
-                .map(|_| HashMap::with_hasher(hash.clone()))
-                .collect(),
-            seed: IdHash::default().seed,
-        }
-    }
-}
-
-impl WarmStart {
-    fn shard(&self, id: u64) -> usize {
-        (fold_multiply(id, self.seed) >> 60) as usize % SHARDS
-    }
-
-    /// Records an island's basis: `contact_ids[i]` was active iff bit i of `basis`.
-    pub fn record(&mut self, contact_ids: &[u64], basis: u32) {
-        for (i, &id) in contact_ids.iter().enumerate() {
-            let k = self.shard(id);
-            self.shards[k].insert(id, i < 32 && basis >> i & 1 == 1);
-        }
-    }
-
-    /// [`WarmStart::record`] of every (ids, basis) in order, on up to
-    /// `threads` threads (shards split between them; each thread reads every
-    /// record and writes its shards' ids, in the records' order, so that an
-    /// id recorded twice keeps the later basis, as one thread would).
-    pub fn record_all(&mut self, records: &[(&[u64], u32)], threads: usize) {
-        let ids: usize = records.iter().map(|(k, _)| k.len()).sum();
-        let threads = threads.clamp(1, SHARDS);
-        if threads == 1 || ids < PARALLEL_RECORDS {
-            for &(k, basis) in records {
-                self.record(k, basis);
-            }
-            return;
-        }
-        let seed = self.seed;
-        let per = SHARDS.div_ceil(threads);
-        let write = |first: usize, shards: &mut [HashMap<u64, bool, IdHash>]| {
-            for &(k, basis) in records {
-                for (i, &id) in k.iter().enumerate() {
-                    let s = (fold_multiply(id, seed) >> 60) as usize % SHARDS;
-                    if let Some(map) = s.checked_sub(first).and_then(|j| shards.get_mut(j)) {
-                        map.insert(id, i < 32 && basis >> i & 1 == 1);
-                    }
-                }
-            }
-        };
-        std::thread::scope(|scope| {
-            let mut parts = self.shards.chunks_mut(per).enumerate();
-            let mine = parts.next();
-            for (c, part) in parts {
-                scope.spawn(move || write(c * per, part));
-            }
-            if let Some((_, part)) = mine {
-                write(0, part);
-            }
-        });
-    }
-
-    /// The warm basis for an island with these contacts, if any was seen.
-    pub fn basis(&self, contact_ids: &[u64]) -> Option<u32> {
-        let mut seen = false;
-        let mut mask = 0u32;
-        for (i, &id) in contact_ids.iter().enumerate().take(32) {
-            if let Some(&a) = self.shards[self.shard(id)].get(&id) {
-                seen = true;
-                if a {
-                    mask |= 1 << i;
-                }
-            }
-        }
-        seen.then_some(mask)
-    }
-}
-
-/// The 128-bit product of `x ^ seed` and an odd constant, folded to 64 bits:
-/// every bit of the id reaches the high bits (the shard) and the low ones.
-fn fold_multiply(x: u64, seed: u64) -> u64 {
-    let p = u128::from(x ^ seed) * 0x9e37_79b9_7f4a_7c15_u128;
-    (p as u64) ^ (p >> 64) as u64
-}
-
-/// The maps' hash of a contact id: [`fold_multiply`] with a seed drawn per
-/// memory from the standard library's random keys (std's SipHash would
-/// cost more than the rest of a warm-started island's bookkeeping).
-#[derive(Clone, Debug)]
-struct IdHash {
-    seed: u64,
-}
-
-impl Default for IdHash {
-    fn default() -> Self {
-        IdHash {
-            seed: RandomState::new().hash_one(0x5eed_u64),
-        }
-    }
-}
-
-impl BuildHasher for IdHash {
-    type Hasher = IdHasher;
-    fn build_hasher(&self) -> IdHasher {
-        IdHasher {
-            seed: self.seed,
-            state: 0,
-        }
-    }
-}
-
-/// See [`IdHash`]; ids are u64 (`write_u64`), other keys are hashed byte by byte.
-struct IdHasher {
-    seed: u64,
-    state: u64,
-}
-
-impl Hasher for IdHasher {
-    fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.state = fold_multiply(self.state ^ u64::from(b), self.seed);
-        }
-    }
-
-    fn write_u64(&mut self, x: u64) {
-        self.state = fold_multiply(self.state ^ x, self.seed);
-    }
-
-    fn finish(&self) -> u64 {
-        self.state
     }
 }

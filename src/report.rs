@@ -465,6 +465,12 @@ fn add_tally(
     *a.1 = larger(*a.1, b.1.map(|(e, i)| (e, i + shift)));
 }
 
+/// (status, count) of every status counted, in [`Status::ALL`] order.
+fn nonzero_statuses(counts: [usize; Status::ALL.len()]) -> Vec<(Status, usize)> {
+    let all = Status::ALL.iter().zip(counts);
+    all.filter(|(_, c)| *c > 0).map(|(&s, c)| (s, c)).collect()
+}
+
 /// Everything a call found; see the module docs.
 #[derive(Clone, Debug)]
 #[non_exhaustive]
@@ -502,19 +508,24 @@ pub struct Report {
 }
 
 impl Report {
-    /// Counts, statuses and the largest error from `islands`.
+    /// Counts per path (from the islands' paths alone: the GPU's
+    /// `polished` and `cpu_fallback` start at 0), per status and the
+    /// largest error from `islands`.
     pub(crate) fn new(
         islands: Vec<IslandReport>,
         scenes: Vec<SceneReport>,
         device: Device,
         choice: String,
     ) -> Self {
-        let mut r = Report {
-            islands: Vec::new(),
-            scenes: Vec::new(),
-            counts: PathCounts::default(),
-            statuses: [0; Status::ALL.len()],
-            max_error: None,
+        let mut counts = PathCounts::default();
+        islands.iter().for_each(|i| counts.add(i.path));
+        let (statuses, max_error) = tally(islands.iter().map(|i| (i.status(), i.error())));
+        Report {
+            islands,
+            scenes,
+            counts,
+            statuses,
+            max_error,
             timings: Timings::default(),
             device,
             choice,
@@ -523,22 +534,7 @@ impl Report {
             friction: Vec::new(),
             friction_statuses: [0; Status::ALL.len()],
             max_coulomb_error: None,
-        };
-        r.set_islands(islands, scenes);
-        r
-    }
-
-    /// Sets the islands and scenes, the counts per path (from the islands'
-    /// paths alone: the GPU's `polished` and `cpu_fallback` start at 0), the
-    /// counts per status and the largest error.
-    pub(crate) fn set_islands(&mut self, islands: Vec<IslandReport>, scenes: Vec<SceneReport>) {
-        self.counts = PathCounts::default();
-        for isl in &islands {
-            self.counts.add(isl.path);
         }
-        (self.statuses, self.max_error) = tally(islands.iter().map(|i| (i.status(), i.error())));
-        self.islands = islands;
-        self.scenes = scenes;
     }
 
     /// Sets the frictional islands, their counts per status and the largest
@@ -582,13 +578,10 @@ impl Report {
             friction,
         );
         self.timings += other.timings;
-        self.gpu = match (self.gpu, other.gpu) {
-            (Some(mut a), Some(b)) => {
-                a += b;
-                Some(a)
-            }
-            (a, b) => a.or(b),
-        };
+        match (&mut self.gpu, other.gpu) {
+            (Some(a), Some(b)) => *a += b,
+            (a, b) => *a = a.or(b),
+        }
         self.fallback = self.fallback.take().or(other.fallback);
         self.device = other.device;
         self.choice = other.choice;
@@ -597,14 +590,74 @@ impl Report {
         self.friction.append(&mut other.friction);
     }
 
+    /// Appends one scene with its islands and frictional islands: their
+    /// scene index becomes the scene's, its ranges point at them, their
+    /// paths, statuses and largest errors are added.
+    pub(crate) fn push_scene(
+        &mut self,
+        mut scene: SceneReport,
+        mut islands: Vec<IslandReport>,
+        mut friction: Vec<FrictionIslandReport>,
+    ) {
+        let (k, first, first_friction) =
+            (self.scenes.len(), self.islands.len(), self.friction.len());
+        islands.iter().for_each(|i| self.counts.add(i.path));
+        islands.iter_mut().for_each(|i| i.scene = Some(k));
+        friction.iter_mut().for_each(|i| i.scene = Some(k));
+        let lcp = tally(islands.iter().map(|i| (i.status(), i.error())));
+        add_tally((&mut self.statuses, &mut self.max_error), lcp, first);
+        let fr = tally(friction.iter().map(|i| (i.status(), i.error())));
+        let friction_tally = (&mut self.friction_statuses, &mut self.max_coulomb_error);
+        add_tally(friction_tally, fr, first_friction);
+        scene.islands = first..first + islands.len();
+        if let Some(f) = &mut scene.friction {
+            f.islands = first_friction..first_friction + friction.len();
+        }
+        self.islands.append(&mut islands);
+        self.friction.append(&mut friction);
+        self.scenes.push(scene);
+    }
+
+    /// Merges `other`, a scene batch solved beside this one, scene by scene:
+    /// the merged scene k is `other`'s next where `from_other[k]`, else this
+    /// report's next. What [`Self::append`] adds up is added up; each scene
+    /// keeps its islands and frictional islands in order (ranges renumbered,
+    /// empty where it has none) and the largest errors are found anew.
+    pub(crate) fn merge_scenes(&mut self, other: Report, from_other: &[bool]) {
+        let mut next = [0, self.scenes.len()];
+        self.append(other);
+        let mut order = vec![0; from_other.len()];
+        for (k, &o) in from_other.iter().enumerate() {
+            order[next[usize::from(o)]] = k;
+            next[usize::from(o)] += 1;
+        }
+        let at = |s: Option<usize>| s.map(|s| order[s]);
+        self.islands.iter_mut().for_each(|i| i.scene = at(i.scene));
+        self.friction.iter_mut().for_each(|i| i.scene = at(i.scene));
+        // Stable sorts: already in order where nothing moves.
+        self.islands.sort_by_key(|i| i.scene);
+        self.friction.sort_by_key(|i| i.scene);
+        let mut scenes: Vec<_> = order.iter().zip(std::mem::take(&mut self.scenes)).collect();
+        scenes.sort_by_key(|s| *s.0);
+        let (mut first, mut first_friction) = (0, 0);
+        for (_, mut s) in scenes {
+            s.islands = first..first + s.islands.len();
+            first = s.islands.end;
+            if let Some(f) = &mut s.friction {
+                f.islands = first_friction..first_friction + f.islands.len();
+                first_friction = f.islands.end;
+            }
+            self.scenes.push(s);
+        }
+        (self.statuses, self.max_error) =
+            tally(self.islands.iter().map(|i| (i.status(), i.error())));
+        let friction = std::mem::take(&mut self.friction);
+        self.set_friction(friction);
+    }
+
     /// (status, count) of every status that occurs, in [`Status::ALL`] order.
     pub fn status_counts(&self) -> Vec<(Status, usize)> {
-        Status::ALL
-            .iter()
-            .zip(self.statuses)
-            .filter(|(_, c)| *c > 0)
-            .map(|(&s, c)| (s, c))
-            .collect()
+        nonzero_statuses(self.statuses)
     }
 
     /// Whether the GPU solved the batch.
@@ -639,10 +692,8 @@ impl fmt::Display for Report {
             None => writeln!(f, "max error: none (no island has a solution)")?,
         }
         if !self.friction.is_empty() {
-            let statuses: Vec<String> = Status::ALL
+            let statuses: Vec<String> = nonzero_statuses(self.friction_statuses)
                 .iter()
-                .zip(self.friction_statuses)
-                .filter(|(_, c)| *c > 0)
                 .map(|(s, c)| format!("{s} {c}"))
                 .collect();
             // Where they ran, in the solver's words: every path ends `choice`

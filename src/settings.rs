@@ -335,6 +335,9 @@ pub struct Settings {
     /// [`crate::Solver::solve_lcps_keyed`]. Contacts without an id are not
     /// remembered.
     pub warm_start: bool,
+    /// Calls a contact id is remembered for warm start without being seen
+    /// again (default 1: only the last call's ids); at least 1.
+    pub warm_start_calls: usize,
     /// CPU worker threads (default 0: every core the OS reports).
     pub threads: usize,
     /// Relative pivot tolerance below which a principal submatrix is
@@ -397,6 +400,7 @@ impl Default for Settings {
             all_solutions: false,
             predict: true,
             warm_start: false,
+            warm_start_calls: 1,
             threads: 0,
             pivot_tol: PIVOT_TOL,
             feasibility_tol: e.feasibility_tol,
@@ -467,6 +471,9 @@ impl Settings {
         }
         if self.friction_max_iterations == 0 {
             return Err(invalid("friction_max_iterations", "must be at least 1"));
+        }
+        if self.warm_start_calls == 0 {
+            return Err(invalid("warm_start_calls", "must be at least 1"));
         }
         if self.lemke_max_pivots == 0 {
             return Err(invalid("lemke_max_pivots", "must be at least 1"));
@@ -650,6 +657,13 @@ mod tests {
                 "lemke_max_pivots",
                 Settings {
                     lemke_max_pivots: 0,
+                    ..Default::default()
+                },
+            ),
+            (
+                "warm_start_calls",
+                Settings {
+                    warm_start_calls: 0,
                     ..Default::default()
                 },
             ),

@@ -5,11 +5,9 @@
 //! iterated on the GPU with every answer checked in f64 on the CPU; warm
 //! start from the last call's impulses keyed by contact ids.
 
-use std::collections::HashMap;
-use std::hash::{BuildHasherDefault, Hasher};
 use std::time::Instant;
 
-use super::Solver;
+use super::{ids_of, Solver};
 use crate::build::FrictionBuilt;
 use crate::cpu::batch::parallel_map;
 use crate::friction::assembly::{apply_friction_impulses, world_impulse, FrictionContactRows};
@@ -23,66 +21,8 @@ use crate::gpu::GpuContext;
 use crate::islands::Island;
 use crate::report::{ContactImpulse, FrictionIslandReport, Report, SceneFriction, SceneReport};
 use crate::scene::Scene;
+use crate::warm::reaction_entries;
 use crate::Error;
-
-/// The reactions (r_n, r_t₁, r_t₂) of the last call's solved frictional
-/// islands, by contact id.
-#[derive(Clone, Debug, Default)]
-pub(super) struct FrictionWarm(HashMap<u64, [f64; 3], BuildHasherDefault<IdHasher>>);
-
-/// A hasher for contact ids (u64 keys the caller chose, not an adversary's
-/// input): one multiplication by a large odd constant, the high bits
-/// folded down (SipHash, the default, cost 2 % of a world step for the
-/// warm-start lookups and records).
-#[derive(Clone, Copy, Debug, Default)]
-pub(super) struct IdHasher(u64);
-
-impl Hasher for IdHasher {
-    fn finish(&self) -> u64 {
-        self.0 ^ (self.0 >> 29)
-    }
-
-    fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.write_u64(u64::from(b));
-        }
-    }
-
-    fn write_u64(&mut self, v: u64) {
-        self.0 = (self.0.rotate_left(5) ^ v).wrapping_mul(0x9E37_79B9_7F4A_7C15);
-    }
-}
-
-impl FrictionWarm {
-    /// The warm start of contacts `ids` (one per contact; None for a contact
-    /// without id): the remembered reaction, zero for a contact not
-    /// remembered; None when no contact is remembered.
-    fn start(&self, ids: &[Option<u64>]) -> Option<Vec<f64>> {
-        let mut any = false;
-        let r = ids
-            .iter()
-            .flat_map(|id| {
-                let r = id.and_then(|id| self.0.get(&id)).copied();
-                any |= r.is_some();
-                r.unwrap_or([0.0; 3])
-            })
-            .collect();
-        any.then_some(r)
-    }
-
-    /// Records a solved island's reactions under its contacts' ids.
-    fn record(&mut self, ids: &[Option<u64>], isl: &FrictionIslandReport) {
-        if !isl.status().is_solution() {
-            return;
-        }
-        for (i, id) in ids.iter().enumerate() {
-            if let Some(id) = id {
-                let r = &isl.solution.r;
-                self.0.insert(*id, [r[3 * i], r[3 * i + 1], r[3 * i + 2]]);
-            }
-        }
-    }
-}
 
 impl Solver {
     /// Solves a batch of frictional problems, in the caller's order, on the
@@ -145,7 +85,10 @@ impl Solver {
         }
         let warm: Vec<Option<Vec<f64>>> = match keys {
             Some(keys) if self.settings.warm_start => {
-                keys.iter().map(|k| self.friction_warm.start(k)).collect()
+                let memory = &self.warm.reactions;
+                keys.iter()
+                    .map(|k| memory.reactions(k.iter().copied()))
+                    .collect()
             }
             _ => vec![None; problems.len()],
         };
@@ -205,9 +148,12 @@ impl Solver {
             })
             .collect();
         if let (Some(keys), true) = (keys, self.settings.warm_start) {
-            for (k, isl) in keys.iter().zip(&islands) {
-                self.friction_warm.record(k, isl);
-            }
+            let solved = keys.iter().zip(&islands);
+            self.warm.reactions.record(
+                solved
+                    .filter(|(_, isl)| isl.status().is_solution())
+                    .flat_map(|(k, isl)| reaction_entries(k.iter().copied(), &isl.solution.r)),
+            );
         }
         let device = match figures {
             Some(_) => self.device(),
@@ -218,8 +164,8 @@ impl Solver {
             (None, true) => format!("{}; friction: on the CPU (the GPU failed)", self.choice),
             (None, false) => format!("{}; friction: {went}", self.choice),
         };
-        let mut report = Report::new(Vec::new(), Vec::new(), device, choice);
-        report.fallback = self.fallback.clone();
+        let mut report = self.empty_report(device);
+        report.choice = choice;
         report.timings.solve = start.elapsed().as_secs_f64();
         if let Some(f) = figures {
             add_gpu_figures(&mut report, &f);
@@ -231,60 +177,20 @@ impl Solver {
 
     /// Checked scenes, some with friction: those without go through the LCP
     /// path (GPU or CPU), those with friction through the friction path; the
-    /// report keeps the scenes' order.
+    /// two reports merged in the scenes' order.
     pub(super) fn scenes_with_friction(&mut self, scenes: &[Scene]) -> Result<Report, Error> {
-        let (with, without): (Vec<usize>, Vec<usize>) =
-            (0..scenes.len()).partition(|&i| scenes[i].has_friction());
-        let plain: Vec<&Scene> = without.iter().map(|&i| &scenes[i]).collect();
-        let mut report = if plain.is_empty() {
-            let mut r = Report::new(Vec::new(), Vec::new(), self.device(), self.choice.clone());
-            r.fallback = self.fallback.clone();
-            r
-        } else {
-            self.frictionless_scenes(&plain)?
+        let with: Vec<bool> = scenes.iter().map(Scene::has_friction).collect();
+        let pick =
+            |f: bool| -> Vec<&Scene> { scenes.iter().filter(|s| s.has_friction() == f).collect() };
+        let plain = pick(false);
+        let mut report = match plain.is_empty() {
+            true => self.empty_report(self.device()),
+            false => self.frictionless_scenes(&plain)?,
         };
-        for isl in &mut report.islands {
-            isl.scene = isl.scene.map(|s| without[s]);
-        }
-        let frictional: Vec<&Scene> = with.iter().map(|&i| &scenes[i]).collect();
-        let (mut scene_reports, mut islands) = self.friction_scenes(&frictional, &mut report)?;
-        for isl in &mut islands {
-            isl.scene = isl.scene.map(|s| with[s]);
-        }
-        // Back into the caller's order.
-        let mut plain_reports = std::mem::take(&mut report.scenes).into_iter();
-        let mut friction_reports = scene_reports.drain(..);
-        let lcp_islands = report.islands.len();
-        report.scenes = scenes
-            .iter()
-            .map(|s| match s.has_friction() {
-                true => friction_reports
-                    .next()
-                    .expect("one report per scene with friction"),
-                false => plain_reports
-                    .next()
-                    .expect("one report per scene without friction"),
-            })
-            .collect();
-        // A scene with friction has no LCP islands: an empty range in place.
-        let mut next = 0;
-        for sr in &mut report.scenes {
-            if sr.friction.is_some() {
-                sr.islands = next..next;
-            } else {
-                next = sr.islands.end;
-            }
-        }
-        debug_assert!(next <= lcp_islands);
-        if self.settings.warm_start {
-            for isl in &islands {
-                let s = &scenes[isl.scene.unwrap_or(0)];
-                let ids: Vec<Option<u64>> =
-                    isl.contacts.iter().map(|&c| s.contacts[c].id).collect();
-                self.friction_warm.record(&ids, isl);
-            }
-        }
-        report.set_friction(islands);
+        let device = report.device.clone();
+        let mut friction = Report::new(Vec::new(), Vec::new(), device, report.choice.clone());
+        self.friction_scenes(&pick(true), &mut friction)?;
+        report.merge_scenes(friction, &with);
         Ok(report)
     }
 
@@ -318,14 +224,11 @@ impl Solver {
     /// to `report.timings`): build (islands and the f64 assembly on the
     /// CPU, the oracle), solve (on the GPU where [`Self::friction_on_gpu`]
     /// says so, see [`Self::friction_islands_on_gpu`]; else every island
-    /// over the cores), impulses. Scene indices are into `scenes`;
-    /// `report.choice` gains where the friction went, its counts and GPU
-    /// figures what the GPU did.
-    fn friction_scenes(
-        &mut self,
-        scenes: &[&Scene],
-        report: &mut Report,
-    ) -> Result<(Vec<SceneReport>, Vec<FrictionIslandReport>), Error> {
+    /// over the cores), impulses; the reactions remembered. `report` (empty)
+    /// gets the scenes and their frictional islands (scene indices into
+    /// `scenes`); its choice gains where the friction went, its counts and
+    /// GPU figures what the GPU did.
+    fn friction_scenes(&mut self, scenes: &[&Scene], report: &mut Report) -> Result<(), Error> {
         let t = Instant::now();
         let mut built: Vec<(FrictionBuilt, Vec<FrictionProblem>)> =
             parallel_map(scenes.len(), self.threads, |i| {
@@ -339,17 +242,9 @@ impl Solver {
         let mut warm = Vec::new();
         for (s, b) in built.iter_mut().enumerate() {
             for island in &b.0.islands {
-                let ids: Vec<Option<u64>> = island
-                    .contacts
-                    .iter()
-                    .map(|&c| scenes[s].contacts[c].id)
-                    .collect();
-                warm.push(
-                    self.settings
-                        .warm_start
-                        .then(|| self.friction_warm.start(&ids))
-                        .flatten(),
-                );
+                let ids = ids_of(scenes[s], &island.contacts);
+                let on = self.settings.warm_start;
+                warm.push(on.then(|| self.warm.reactions.reactions(ids)).flatten());
             }
             problems.append(&mut b.1);
         }
@@ -385,9 +280,19 @@ impl Solver {
         report.choice = format!("{}; friction: {went}", report.choice);
         report.timings.solve += t.elapsed().as_secs_f64();
         let t = Instant::now();
-        let out = self.friction_scene_reports(scenes, built, solved, &warm);
+        let (scene_reports, islands) = self.friction_scene_reports(scenes, built, solved, &warm);
         report.timings.impulses += t.elapsed().as_secs_f64();
-        Ok(out)
+        if self.settings.warm_start {
+            let solved = islands.iter().filter(|i| i.status().is_solution());
+            self.warm.reactions.record(solved.flat_map(|isl| {
+                let s = scenes[isl.scene.unwrap_or(0)];
+                let ids = ids_of(s, &isl.contacts);
+                reaction_entries(ids, &isl.solution.r)
+            }));
+        }
+        report.scenes = scene_reports;
+        report.set_friction(islands);
+        Ok(())
     }
 
     /// The frictional islands of `scenes` (in order, `problems` their f64

@@ -45,10 +45,10 @@ pub use cost::{cache_dir, CostModel, CALIBRATION_SIZES};
 use crate::build::Built;
 use crate::gpu::{self, GpuContext, Precision};
 use crate::lcp::Lcp;
-use crate::prediction::WarmStart;
 use crate::report::{Device, DeviceKind, IslandReport, Report};
 use crate::scene::Scene;
 use crate::settings::{Backend, Settings};
+use crate::warm::{basis_entries, Warm, SHARDS};
 use crate::Error;
 
 /// A contact solver built once from [`Settings`]; see the module docs.
@@ -75,14 +75,14 @@ pub struct Solver {
     choice: String,
     /// Why the CPU took over, once it has.
     fallback: Option<String>,
-    /// Bases of the last call by contact id (with `settings.warm_start`).
-    warm: WarmStart,
-    /// Frictional impulses of the last call by contact id (with `settings.warm_start`).
-    friction_warm: friction_path::FrictionWarm,
+    /// Bases and frictional reactions of the last calls by contact id
+    /// (with `settings.warm_start`; kept `settings.warm_start_calls` calls).
+    warm: Warm,
     threads: usize,
-    /// Per world of the last `step_worlds` batch (by position): its contacts'
-    /// bases of the last step (with `settings.warm_start`).
-    world_warm: Vec<world_cpu::WorldWarm>,
+    /// Per world of the last `step_worlds` batch (by position): its
+    /// contacts' bases and reactions of the last steps, on the CPU (with
+    /// `settings.warm_start`).
+    world_warm: Vec<Warm>,
     /// `Backend::Auto` with a GPU open: the costs that choose per batch.
     cost: Option<CostModel>,
 }
@@ -100,12 +100,11 @@ impl Solver {
             t => t,
         };
         let mut solver = Solver {
+            warm: Warm::new(settings.warm_start_calls, SHARDS),
             settings,
             gpu: None,
             choice: String::new(),
             fallback: None,
-            warm: WarmStart::default(),
-            friction_warm: Default::default(),
             threads,
             world_warm: Vec::new(),
             cost: None,
@@ -258,6 +257,14 @@ impl Solver {
         }
     }
 
+    /// A report of no islands on `device`, with this solver's choice and
+    /// fallback reason.
+    pub(super) fn empty_report(&self, device: Device) -> Report {
+        let mut r = Report::new(Vec::new(), Vec::new(), device, self.choice.clone());
+        r.fallback = self.fallback.clone();
+        r
+    }
+
     /// The CPU path as a device.
     pub(super) fn cpu_device(&self) -> Device {
         Device {
@@ -279,8 +286,7 @@ impl Solver {
 
     /// Forgets the bases remembered for warm start.
     pub fn clear_warm_start(&mut self) {
-        self.warm = WarmStart::default();
-        self.friction_warm = Default::default();
+        self.warm = Warm::new(self.settings.warm_start_calls, SHARDS);
         self.world_warm.clear();
     }
 
@@ -480,8 +486,6 @@ impl Solver {
         Ok(report)
     }
 
-    /// Per problem, its warm basis from the memory (None without keys or
-    /// without `settings.warm_start`).
     /// The final check of every island, on every backend and method: a
     /// solution whose z, w or error is not finite, or whose error is above
     /// `settings.tolerance`, becomes `numerical_failure`.
@@ -504,7 +508,12 @@ impl Solver {
             .filter(|(ids, isl)| !ids.is_empty() && isl.solution.status.is_solution())
             .filter_map(|(ids, isl)| Some((ids, isl.solution.basis?)))
             .collect();
-        self.warm.record_all(&records, self.threads);
+        let ids = records.iter().map(|(k, _)| k.len()).sum();
+        self.warm
+            .bases
+            .record_all(&records, ids, self.threads, |&(k, basis)| {
+                basis_entries(k.iter().map(|&id| Some(id)), basis)
+            });
     }
 }
 
@@ -519,19 +528,25 @@ pub(crate) fn check_solution(s: &mut crate::LcpSolution, tolerance: f64) {
 
 /// The warm basis remembered for an island's contact ids (None without
 /// `settings.warm_start` or without ids).
-pub(super) fn warm_basis(settings: &Settings, memory: &WarmStart, ids: &[u64]) -> Option<u32> {
+pub(super) fn warm_basis(settings: &Settings, memory: &Warm, ids: &[u64]) -> Option<u32> {
     if !settings.warm_start || ids.is_empty() {
         return None;
     }
-    memory.basis(ids)
+    memory.bases.basis(ids.iter().map(|&id| Some(id)))
 }
 
 /// The caller's ids of an island's contacts; empty when one has none (such
 /// an island is not warm-started).
 fn contact_ids(scene: &Scene, contacts: &[usize]) -> Vec<u64> {
-    contacts
-        .iter()
-        .map(|&c| scene.contacts[c].id)
+    ids_of(scene, contacts)
         .collect::<Option<Vec<u64>>>()
         .unwrap_or_default()
+}
+
+/// The ids of an island's contacts (None for a contact without one).
+pub(super) fn ids_of<'a>(
+    scene: &'a Scene,
+    contacts: &'a [usize],
+) -> impl Iterator<Item = Option<u64>> + 'a {
+    contacts.iter().map(|&c| scene.contacts[c].id)
 }

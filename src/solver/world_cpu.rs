@@ -1,18 +1,19 @@
 //! Pass 2 of a world step ([`Solver::step_worlds`]) for one world: a
 //! frictionless world is solved here on the CPU ([`Solver::step_world_on_cpu`]),
-//! a world of the door's batch gets its repairs ([`Solver::finish_door_world`]);
-//! then its velocities, poses and figures. Also the pass's parallel loop
-//! over the worlds ([`parallel_map_mut`]) and each world's warm-start memory
-//! ([`WorldWarm`]).
+//! a world of the batch solved through the door gets its repairs
+//! ([`Solver::finish_batch_world`]); then its velocities, poses and
+//! figures. Also the pass's parallel loop over the worlds
+//! ([`parallel_map_mut`]). Each world is warm-started from its own memory
+//! ([`crate::warm::Warm`], one shard).
 
 use std::time::Instant;
 
 use super::cpu_path::{solve_on_cpu, Solved};
-use super::world_friction::{repair_unsolved, FrictionMemory};
+use super::world_friction::repair_unsolved;
 use super::world_path::Solved as Results;
 use super::world_path::{max_error, Item, Stepped, WorldStepReport};
 use super::world_repair::{repair_island, Repairs};
-use super::Solver;
+use super::{ids_of, Solver};
 use crate::build::Built;
 use crate::cpu::batch::parallel_fill_by;
 use crate::cpu::enumeration::{solve_basis, BasisOutcome, MAX_ENUMERATION_N};
@@ -21,6 +22,7 @@ use crate::lcp::{Counters, Lcp, LcpSolution, Status};
 use crate::report::{IslandReport, Report, SceneReport, SolvePath};
 use crate::scene::Scene;
 use crate::settings::{Method, Settings};
+use crate::warm::basis_entries;
 use crate::world::step::{finish, Prepared};
 use crate::world::World;
 
@@ -43,48 +45,6 @@ pub(super) fn parallel_map_mut<T: Send, R: Send>(
         .collect()
 }
 
-/// One world's memory of its last step for warm start: per contact id,
-/// whether the contact carried impulse (was in its island's basis), sorted
-/// by id. Kept by the solver per position in the batch, replaced each step.
-#[derive(Clone, Debug, Default)]
-pub(super) struct WorldWarm {
-    active: Vec<(u64, bool)>,
-    /// The frictional reactions of its last step (worlds with friction).
-    pub(super) friction: FrictionMemory,
-}
-
-impl WorldWarm {
-    /// The warm basis of an island with these contact ids: bit i set when
-    /// contact i was active last step; None when none of them was seen.
-    fn basis(&self, ids: impl Iterator<Item = u64>) -> Option<u32> {
-        let mut seen = false;
-        let mut mask = 0u32;
-        for (i, id) in ids.enumerate().take(32) {
-            if let Ok(k) = self.active.binary_search_by_key(&id, |e| e.0) {
-                seen = true;
-                mask |= u32::from(self.active[k].1) << i;
-            }
-        }
-        seen.then_some(mask)
-    }
-
-    /// Replaces the memory with this step's solved islands.
-    fn record<'a>(&mut self, scene: &Scene, islands: impl Iterator<Item = &'a IslandReport>) {
-        self.active.clear();
-        for isl in islands {
-            let (Some(basis), true) = (isl.solution.basis, isl.status().is_solution()) else {
-                continue;
-            };
-            for (i, &c) in isl.contacts.iter().enumerate() {
-                if let Some(id) = scene.contacts[c].id {
-                    self.active.push((id, i < 32 && basis >> i & 1 == 1));
-                }
-            }
-        }
-        self.active.sort_unstable_by_key(|e| e.0);
-    }
-}
-
 impl Solver {
     /// Pass 2 for a frictionless world on the CPU: islands (once), assembly,
     /// warm hints from its own memory, the door's per-island solve and
@@ -104,11 +64,11 @@ impl Solver {
             lcps,
         } = Built::new(scene);
         let warm = self.settings.warm_start;
-        let id = |c: &usize| scene.contacts[*c].id.unwrap_or(u64::MAX);
         let hints: Vec<Option<u32>> = islands
             .iter()
             .map(|isl| {
-                warm.then(|| item.warm.basis(isl.contacts.iter().map(id)))
+                let memory = &item.warm.bases;
+                warm.then(|| memory.basis(ids_of(scene, &isl.contacts)))
                     .flatten()
             })
             .collect();
@@ -149,7 +109,11 @@ impl Solver {
         }
         let bodies = apply_impulses(scene, &rows, &impulses);
         if warm {
-            item.warm.record(scene, reports.iter());
+            let solved = reports.iter().filter(|i| i.status().is_solution());
+            let with_basis =
+                solved.filter_map(|i| Some((ids_of(scene, &i.contacts), i.solution.basis?)));
+            let entries = with_basis.flat_map(|(ids, basis)| basis_entries(ids, basis));
+            item.warm.bases.record(entries);
         }
         let t3 = Instant::now();
         finish(item.world, &item.prepared, &bodies, dt);
@@ -177,17 +141,17 @@ impl Solver {
         }
     }
 
-    /// Pass 2 for a world of the door's batch (`door`: its scene, its index
-    /// in the batch, the batch's report): repairs of its unsolved islands
-    /// (LCP or frictional), integration.
-    pub(super) fn finish_door_world(
+    /// Pass 2 for a world of the batch solved through the door (`batch`:
+    /// its scene, its index in the batch, the batch's report): repairs of
+    /// its unsolved islands (LCP or frictional), integration.
+    pub(super) fn finish_batch_world(
         &self,
         item: &mut Item,
-        door: (&Scene, usize, &Report),
+        batch: (&Scene, usize, &Report),
         dt: f64,
         fix: &Settings,
     ) -> Stepped {
-        let (scene, j, report) = door;
+        let (scene, j, report) = batch;
         let t0 = Instant::now();
         let d = &report.scenes[j];
         let lcp = &report.islands[d.islands.clone()];
@@ -225,7 +189,7 @@ impl Solver {
         Stepped {
             islands: Vec::new(),
             friction: Vec::new(),
-            solved: Results::Door(bodies),
+            solved: Results::InBatch(bodies),
             world,
             times: [
                 0.0,

@@ -2,7 +2,7 @@
 //! friction on the CPU ([`Solver::step_frictional_world_on_cpu`]): its
 //! frictional islands found, assembled and solved inside the pass, world by
 //! world on the thread that steps it, warm-started from that world's own
-//! memory of the last step ([`FrictionMemory`]). The door's friction path
+//! memory of the last steps ([`crate::warm::Warm`]). The door's friction path
 //! ([`super::friction_path`]) did the same work for the whole batch between
 //! the passes, with a serial warm-start lookup and record in one map shared
 //! by every world; here nothing of a world's solve waits for another
@@ -17,7 +17,7 @@ use super::world_cpu::figures;
 use super::world_path::Solved as Results;
 use super::world_path::{max_error, Item, Stepped};
 use super::world_repair::{reapply, repair_island, Repairs};
-use super::Solver;
+use super::{ids_of, Solver};
 use crate::build::FrictionBuilt;
 use crate::cpu::assembly::{assemble_contacts, assemble_island};
 use crate::cpu::impulses::BodyVelocity;
@@ -27,58 +27,8 @@ use crate::islands::Island;
 use crate::report::{FrictionIslandReport, SceneFriction, SceneReport};
 use crate::scene::Scene;
 use crate::settings::Settings;
+use crate::warm::reaction_entries;
 use crate::world::step::finish;
-
-/// One world's frictional reactions of its last step, per contact id,
-/// sorted by id: replaced every step, so that only the ids seen in the
-/// last step are kept (a contact that went away is forgotten).
-#[derive(Clone, Debug, Default)]
-pub(super) struct FrictionMemory {
-    reactions: Vec<(u64, [f64; 3])>,
-}
-
-impl FrictionMemory {
-    /// The warm start of an island with these contact ids (None for a
-    /// contact without id): the remembered reaction, zero for a contact not
-    /// remembered; None when none of them is remembered.
-    pub(super) fn start(&self, ids: impl Iterator<Item = Option<u64>>) -> Option<Vec<f64>> {
-        let mut any = false;
-        let mut r = Vec::new();
-        for id in ids {
-            let found = id.and_then(|id| {
-                self.reactions
-                    .binary_search_by_key(&id, |e| e.0)
-                    .ok()
-                    .map(|k| self.reactions[k].1)
-            });
-            any |= found.is_some();
-            r.extend_from_slice(&found.unwrap_or([0.0; 3]));
-        }
-        any.then_some(r)
-    }
-
-    /// Replaces the memory with the reactions of this step's solved
-    /// islands (`scene`'s contacts carry the ids).
-    pub(super) fn record(&mut self, scene: &Scene, islands: &[FrictionIslandReport]) {
-        self.reactions.clear();
-        for isl in islands.iter().filter(|i| i.status().is_solution()) {
-            let r = &isl.solution.r;
-            for (i, &c) in isl.contacts.iter().enumerate() {
-                if let Some(id) = scene.contacts[c].id {
-                    self.reactions
-                        .push((id, [r[3 * i], r[3 * i + 1], r[3 * i + 2]]));
-                }
-            }
-        }
-        self.reactions.sort_unstable_by_key(|e| e.0);
-    }
-
-    /// How many contacts are remembered.
-    #[cfg(test)]
-    pub(super) fn len(&self) -> usize {
-        self.reactions.len()
-    }
-}
 
 impl Solver {
     /// Pass 2 for a world with friction on the CPU: islands, the frictional
@@ -100,8 +50,8 @@ impl Solver {
         let starts: Vec<Option<Vec<f64>>> = islands
             .iter()
             .map(|isl| {
-                let ids = isl.contacts.iter().map(|&c| scene.contacts[c].id);
-                warm.then(|| item.warm.friction.start(ids)).flatten()
+                let ids = ids_of(scene, &isl.contacts);
+                warm.then(|| item.warm.reactions.reactions(ids)).flatten()
             })
             .collect();
         let settings = self.settings.friction();
@@ -143,7 +93,11 @@ impl Solver {
             .map(|i| i.contacts.as_slice());
         let repairs = repair_unsolved(scene, unsolved, &mut bodies, fix);
         if warm {
-            item.warm.friction.record(scene, &reports);
+            let solved = reports.iter().filter(|i| i.status().is_solution());
+            item.warm.reactions.record(solved.flat_map(|isl| {
+                let ids = ids_of(scene, &isl.contacts);
+                reaction_entries(ids, &isl.solution.r)
+            }));
         }
         let t3 = Instant::now();
         finish(item.world, &item.prepared, &bodies, dt);
@@ -234,71 +188,4 @@ pub(super) fn repair_unsolved<'a>(
         reapply(scene, rows, contacts, &z, bodies);
     }
     repairs
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn island(contacts: &[usize], r: Vec<f64>) -> FrictionIslandReport {
-        use crate::friction::{FrictionMethod, FrictionSolution};
-        use crate::lcp::Status;
-        FrictionIslandReport {
-            scene: Some(0),
-            contacts: contacts.to_vec(),
-            warm_started: false,
-            solution: FrictionSolution {
-                status: Status::Solved,
-                u: vec![0.0; r.len()],
-                r,
-                residuals: Default::default(),
-                iterations: 0,
-                method: FrictionMethod::Auto,
-            },
-        }
-    }
-
-    fn scene_with_ids(ids: &[u64]) -> Scene {
-        use crate::scene::{Body, Contact};
-        let mut contact = Contact::new(0, None, [0.0; 3], [0.0, 1.0, 0.0], 0.0);
-        let contacts = ids
-            .iter()
-            .map(|&id| {
-                contact.id = Some(id);
-                contact.clone()
-            })
-            .collect();
-        Scene {
-            bodies: vec![Body::new(1.0, [1.0; 3], [0.0; 3])],
-            contacts,
-        }
-    }
-
-    #[test]
-    fn the_memory_keeps_only_the_last_steps_contacts() {
-        let mut memory = FrictionMemory::default();
-        let first = scene_with_ids(&[7, 3]);
-        memory.record(
-            &first,
-            &[island(&[0, 1], vec![1.0, 0.1, 0.2, 2.0, 0.3, 0.4])],
-        );
-        assert_eq!(memory.len(), 2);
-        assert_eq!(
-            memory.start([Some(3), None, Some(9)].into_iter()),
-            Some(vec![2.0, 0.3, 0.4, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0])
-        );
-        // Contact 7 went away, 5 is new: 7 is forgotten, the memory does
-        // not grow with every id ever seen.
-        let second = scene_with_ids(&[3, 5]);
-        memory.record(
-            &second,
-            &[island(&[0, 1], vec![4.0, 0.0, 0.0, 5.0, 0.0, 0.0])],
-        );
-        assert_eq!(memory.len(), 2);
-        assert_eq!(memory.start([Some(7)].into_iter()), None);
-        assert_eq!(
-            memory.start([Some(5), Some(3)].into_iter()),
-            Some(vec![5.0, 0.0, 0.0, 4.0, 0.0, 0.0])
-        );
-    }
 }

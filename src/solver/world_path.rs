@@ -19,7 +19,8 @@
 //!   `friction_tolerance`, warm-started from that world's own reactions of
 //!   the last step;
 //! - while a GPU is open, every world goes in ONE batch through the door
-//!   ([`Solver::solve_built_scenes`]) between the two passes.
+//!   ([`Solver::solve_built_scenes`]) between the two passes; pass 2 then
+//!   repairs and moves each world ([`Solver::finish_batch_world`]).
 //!
 //! The scenes are built here from worlds checked at the start of the step,
 //! so the door's scene checks are skipped for them: every index is in
@@ -31,13 +32,14 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use super::world_cpu::{parallel_map_mut, WorldWarm};
+use super::world_cpu::parallel_map_mut;
 use super::world_repair::{repair_settings, Repairs};
 use super::Solver;
 use crate::cpu::batch::parallel_map;
 use crate::cpu::impulses::BodyVelocity;
-use crate::report::{FrictionIslandReport, IslandReport, Report, SceneReport};
+use crate::report::{FrictionIslandReport, IslandReport, Report, SceneReport, Timings};
 use crate::scene::Scene;
+use crate::warm::Warm;
 use crate::world::step::{prepare, Prepared};
 use crate::world::World;
 use crate::Error;
@@ -75,7 +77,7 @@ pub struct StepTimings {
     /// The worlds' checks, gravity, broad and narrow phase, the scenes (all
     /// worlds; one pass over the cores).
     pub collision: f64,
-    /// Islands, assembly, solves, repairs and impulses (the door's batch
+    /// Islands, assembly, solves, repairs and impulses (the batch's solve
     /// included); its parts are in [`StepReport::solve`]'s timings.
     pub solve: f64,
     /// Velocities and poses.
@@ -118,20 +120,20 @@ pub(super) struct Stepped {
 
 /// Where a world's scene results are.
 pub(super) enum Solved {
-    /// Solved in pass 2: its scene report (island range local).
+    /// Solved in pass 2: its scene report (island ranges set by the step's
+    /// report).
     Own(SceneReport),
-    /// In the door's batch; the bodies' velocities when a repair changed
-    /// them.
-    Door(Option<Vec<BodyVelocity>>),
+    /// In the batch solved through the door (scene k of its report is
+    /// world k); the bodies' velocities when a repair changed them.
+    InBatch(Option<Vec<BodyVelocity>>),
 }
 
 /// One world in pass 2.
 pub(super) struct Item<'a> {
     pub world: &'a mut World,
     pub prepared: Prepared,
-    pub warm: &'a mut WorldWarm,
-    /// Its index in the door's batch (None: solved in pass 2).
-    pub door: Option<usize>,
+    /// Its memory of the last steps (worlds solved in pass 2).
+    pub warm: &'a mut Warm,
 }
 
 impl Solver {
@@ -172,136 +174,94 @@ impl Solver {
         }
         let mut prepared: Vec<Prepared> = prepared.into_iter().flatten().collect();
         let collision = start.elapsed().as_secs_f64();
-        // The door's batch: every world while a GPU is open; on the CPU
-        // every world is solved in pass 2, world by world.
+        // The batch: every world while a GPU is open, solved through the
+        // door in one call; on the CPU every world is solved in pass 2.
         let start = Instant::now();
-        let on_door = self.gpu.is_some();
-        let mut door_worlds = Vec::new();
         let mut scenes: Vec<Scene> = Vec::new();
-        for (k, p) in prepared.iter_mut().enumerate().filter(|_| on_door) {
-            door_worlds.push(k);
-            scenes.push(std::mem::take(&mut p.scene));
+        if self.gpu.is_some() {
+            scenes = prepared
+                .iter_mut()
+                .map(|p| std::mem::take(&mut p.scene))
+                .collect();
         }
-        let door = if scenes.is_empty() {
-            None
-        } else {
-            Some(self.solve_built_scenes(&scenes)?)
+        let batch = match scenes.is_empty() {
+            true => None,
+            false => Some(self.solve_built_scenes(&scenes)?),
         };
-        let door_seconds = start.elapsed().as_secs_f64();
+        let batch_seconds = start.elapsed().as_secs_f64();
         let start = Instant::now();
         let mut memory = std::mem::take(&mut self.world_warm);
-        memory.resize_with(worlds.len(), WorldWarm::default);
-        let mut items: Vec<Item> = Vec::with_capacity(worlds.len());
-        let mut next_door = door_worlds.iter().copied().enumerate().peekable();
-        for (k, ((world, prepared), warm)) in worlds
+        let keep = self.settings.warm_start_calls;
+        memory.resize_with(worlds.len(), || Warm::new(keep, 1));
+        let mut items: Vec<Item> = worlds
             .iter_mut()
             .zip(prepared)
             .zip(memory.iter_mut())
-            .enumerate()
-        {
-            let door = next_door.next_if(|&(_, w)| w == k).map(|(j, _)| j);
-            items.push(Item {
+            .map(|((world, prepared), warm)| Item {
                 world,
                 prepared,
                 warm,
-                door,
-            });
-        }
+            })
+            .collect();
         let fix = repair_settings(&self.settings);
         let this: &Solver = self;
-        let stepped = parallel_map_mut(&mut items, self.threads, |k, item| match item.door {
+        let stepped = parallel_map_mut(&mut items, self.threads, |k, item| match &batch {
             None if item.prepared.scene.has_friction() => {
                 this.step_frictional_world_on_cpu(k, item, dt, &fix)
             }
             None => this.step_world_on_cpu(k, item, dt, &fix),
-            Some(j) => {
-                let report = door.as_ref().expect("a door batch for its worlds");
-                this.finish_door_world(item, (&scenes[j], j, report), dt, &fix)
-            }
+            Some(report) => this.finish_batch_world(item, (&scenes[k], k, report), dt, &fix),
         });
         drop(items);
         self.world_warm = memory;
         let pass = start.elapsed().as_secs_f64();
-        Ok(self.step_report(stepped, door, collision, door_seconds, pass))
+        Ok(self.step_report(stepped, batch, collision, batch_seconds, pass))
     }
 
-    /// The step's report from pass 2's results and the door's batch:
-    /// islands and scenes in world order, times per phase.
+    /// The step's report: the batch's report (or an empty one on the CPU
+    /// device) with every world solved in pass 2 pushed in world order,
+    /// the repairs' velocities in place; pass 2's seconds added per phase.
     fn step_report(
         &self,
         stepped: Vec<Stepped>,
-        door: Option<Report>,
+        batch: Option<Report>,
         collision: f64,
-        door_seconds: f64,
+        batch_seconds: f64,
         pass: f64,
     ) -> StepReport {
         let mut sums = [0.0; 4];
+        let mut repairs = Repairs::default();
         for s in &stepped {
             for (t, x) in sums.iter_mut().zip(s.times) {
                 *t += x;
             }
+            repairs.merge(s.repairs);
         }
         // Wall seconds of pass 2 shared out by the threads' measured times.
         let all: f64 = sums.iter().sum();
         let share = |x: f64| if all > 0.0 { pass * x / all } else { 0.0 };
-        let own_friction = stepped.iter().any(|s| !s.friction.is_empty());
-        let (mut report, repairs) = merge_reports(self, stepped.iter().map(|s| &s.repairs), door);
-        if own_friction && report.friction.is_empty() {
+        let mut solve = batch.unwrap_or_else(|| self.empty_report(self.cpu_device()));
+        if stepped.iter().any(|s| !s.friction.is_empty()) {
             // Where pass 2's frictional islands went, in the door's words.
             let (_, went) = self.friction_on_gpu(self.settings.friction_method);
-            report.choice = format!("{}; friction: {went}", report.choice);
+            solve.choice = format!("{}; friction: {went}", solve.choice);
         }
-        let mut islands = Vec::new();
-        let mut scenes = Vec::with_capacity(stepped.len());
-        let mut door_islands = std::mem::take(&mut report.islands).into_iter();
-        let mut door_scenes = std::mem::take(&mut report.scenes).into_iter();
-        let mut door_friction = std::mem::take(&mut report.friction).into_iter();
-        let mut friction = Vec::new();
         let mut worlds = Vec::with_capacity(stepped.len());
         for (k, s) in stepped.into_iter().enumerate() {
             worlds.push(s.world);
-            let first = islands.len();
-            let first_friction = friction.len();
-            let mut scene = match s.solved {
-                Solved::Own(scene) => {
-                    islands.extend(s.islands);
-                    friction.extend(s.friction);
-                    scene
-                }
-                Solved::Door(bodies) => {
-                    let mut d = door_scenes.next().expect("one door scene per door world");
-                    islands.extend(door_islands.by_ref().take(d.islands.len()));
-                    if let Some(f) = &d.friction {
-                        friction.extend(door_friction.by_ref().take(f.islands.len()));
-                    }
-                    if let Some(b) = bodies {
-                        d.bodies = b;
-                    }
-                    d
-                }
-            };
-            for isl in &mut islands[first..] {
-                isl.scene = Some(k);
+            match s.solved {
+                Solved::Own(scene) => solve.push_scene(scene, s.islands, s.friction),
+                Solved::InBatch(Some(bodies)) => solve.scenes[k].bodies = bodies,
+                Solved::InBatch(None) => {}
             }
-            for isl in &mut friction[first_friction..] {
-                isl.scene = Some(k);
-            }
-            if let Some(f) = &mut scene.friction {
-                f.islands = first_friction..friction.len();
-            }
-            scene.islands = first..islands.len();
-            scenes.push(scene);
         }
-        // The door's report (device, choice, fallback, GPU figures, times)
-        // with every world's islands in world order, tallied again; the
-        // frictional islands likewise (their scene is the world's index).
-        let mut solve = report;
-        solve.set_islands(islands, scenes);
-        solve.set_friction(friction);
-        solve.timings.build += share(sums[0]);
-        solve.timings.solve += share(sums[1]);
-        solve.timings.impulses += share(sums[2]);
-        solve.timings.total = door_seconds + share(sums[0] + sums[1] + sums[2]);
+        solve.timings += Timings {
+            build: share(sums[0]),
+            solve: share(sums[1]),
+            impulses: share(sums[2]),
+            ..Timings::default()
+        };
+        solve.timings.total = batch_seconds + share(sums[0] + sums[1] + sums[2]);
         StepReport {
             unsolved: worlds.iter().map(|w| w.unsolved).sum(),
             worlds,
@@ -314,28 +274,6 @@ impl Solver {
             repairs,
         }
     }
-}
-
-/// The door's report (or an empty one on the CPU device) and every
-/// world's repairs added up.
-fn merge_reports<'a>(
-    solver: &Solver,
-    repairs: impl Iterator<Item = &'a Repairs>,
-    door: Option<Report>,
-) -> (Report, Repairs) {
-    let mut total = Repairs::default();
-    repairs.for_each(|r| total.merge(*r));
-    let report = door.unwrap_or_else(|| {
-        let mut r = Report::new(
-            Vec::new(),
-            Vec::new(),
-            solver.cpu_device(),
-            solver.choice.clone(),
-        );
-        r.fallback = solver.fallback.clone();
-        r
-    });
-    (report, total)
 }
 
 /// Largest error of the solved islands among `lcp` and `friction` (0 when
