@@ -43,6 +43,7 @@ pub use world_repair::Repairs;
 pub use cost::{cache_dir, CostModel, CALIBRATION_SIZES};
 
 use crate::build::Built;
+use crate::cpu::batch::parallel_map;
 use crate::gpu::{self, GpuContext, Precision};
 use crate::lcp::Lcp;
 use crate::report::{Device, DeviceKind, IslandReport, Report};
@@ -433,18 +434,16 @@ impl Solver {
         let t = Instant::now();
         let built = Built::all(scenes, self.threads);
         let build = t.elapsed().as_secs_f64();
-        // Per scene, per island: the warm basis of its contacts' ids.
+        // Per scene, per island: the warm basis of its contacts' ids (on
+        // every thread: the ids are gathered per island).
         let warm: Vec<Vec<Option<u32>>> = if self.settings.warm_start {
-            scenes
-                .iter()
-                .zip(&built)
-                .map(|(s, b)| {
-                    b.islands
-                        .iter()
-                        .map(|isl| self.warm_basis(&contact_ids(s, &isl.contacts)))
-                        .collect()
-                })
-                .collect()
+            parallel_map(scenes.len(), self.threads, |s| {
+                built[s]
+                    .islands
+                    .iter()
+                    .map(|isl| self.warm_basis(&contact_ids(scenes[s], &isl.contacts)))
+                    .collect()
+            })
         } else {
             Vec::new()
         };
@@ -474,11 +473,10 @@ impl Solver {
             report.choice = why;
         }
         if self.settings.warm_start {
-            let ids: Vec<Vec<u64>> = report
-                .islands
-                .iter()
-                .map(|isl| contact_ids(&scenes[isl.scene.unwrap_or(0)], &isl.contacts))
-                .collect();
+            let islands = &report.islands;
+            let ids: Vec<Vec<u64>> = parallel_map(islands.len(), self.threads, |i| {
+                contact_ids(scenes[islands[i].scene.unwrap_or(0)], &islands[i].contacts)
+            });
             let keyed: Vec<(&[u64], &IslandReport)> =
                 ids.iter().map(Vec::as_slice).zip(&report.islands).collect();
             self.remember(keyed.into_iter());
