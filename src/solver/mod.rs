@@ -290,6 +290,17 @@ impl Solver {
         self.world_warm.clear();
     }
 
+    /// `true`: the calls that follow count as one call of the warm-start
+    /// memory until `join_warm_start_calls(false)`, so that
+    /// `settings.warm_start_calls` counts the caller's batches, not the
+    /// parts it splits them into (the Python package's chunks). Every part
+    /// finds the ids of the calls before the join (and those of the parts
+    /// before it); the ids past `warm_start_calls` calls go when it ends.
+    #[doc(hidden)]
+    pub fn join_warm_start_calls(&mut self, join: bool) {
+        self.warm.join_calls(join);
+    }
+
     /// The device, shared, while the GPU is in use (for tests that lose it
     /// from another thread in the middle of a batch).
     #[doc(hidden)]
