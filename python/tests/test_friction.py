@@ -222,6 +222,24 @@ def test_solver_friction_settings_and_warm_start():
     assert capped.status_names().tolist() == ["not_converged"] and capped.iterations[0] == 1
 
 
+def test_friction_warm_start_covers_every_chunk():
+    # 8,000 problems of four decoupled contacts (W = I): (3k)² = 144 of
+    # work each, three chunks under CHUNK_FRICTION_WORK, one call of memory.
+    b, k = 8_000, 4
+    W = np.broadcast_to(np.eye(3 * k), (b, 3 * k, 3 * k))
+    q = np.tile([-1.0, 3.0, -4.0], (b, k))
+    ids = np.arange(b * k).reshape(b, k)
+    assert b * 9 * k * k > 2 * lcpbatch.CHUNK_FRICTION_WORK
+    s = lcpbatch.Solver(backend="cpu", warm_start=True, friction_method="nsgs")
+    first = s.solve_friction(W, q, 0.5, ids=ids)
+    second = s.solve_friction(W, q, 0.5, ids=ids)
+    assert first.report.chunks == second.report.chunks == 3
+    assert not first.warm_started.any() and second.warm_started.all()
+    np.testing.assert_allclose(second.r, np.tile([1.0, -0.3, 0.4], (b, k)), atol=1e-9)
+    s.solve_friction(W, q, 0.5, ids=ids + b * k)
+    assert not s.solve_friction(W, q, 0.5, ids=ids).warm_started.any()
+
+
 def test_friction_errors_name_the_argument_index_and_fault():
     W, q, mu = np.eye(3)[None], np.array([[-1.0, 0, 0]]), np.array([[0.5]])
     cases = [

@@ -194,6 +194,33 @@ def test_chunks_cover_a_large_batch_in_order():
     assert r.report.chunks == 2 and (r.path == "separating").all()
 
 
+def test_warm_start_covers_every_chunk_and_forgets_after_warm_start_calls():
+    # M = [[1, 1], [1, 1]], q = (−1, −1) (rank one: no predicted basis, only
+    # the warm start settles it), 140,000 times: three chunks of at most
+    # CHUNK_PROBLEMS, one library call each, counted as one call of memory.
+    b = 140_000
+    M = np.broadcast_to(np.ones((2, 2)), (b, 2, 2))
+    q = np.full((b, 2), -1.0)
+    x = np.arange(2 * b).reshape(b, 2)
+    y, z = x + 2 * b, x + 4 * b
+
+    def warm(s, ids):
+        r = s.solve(M, q, ids=ids)
+        assert r.report.chunks == 3 and r.ok.all()
+        return r.path == "warm_start"
+
+    s = lcpbatch.Solver(backend="cpu", method="enum", warm_start=True)
+    assert not warm(s, x).any()
+    assert warm(s, x).all()  # every chunk, the first one included
+    assert not warm(s, y).any() and not warm(s, x).any()  # default: the last call only
+    two = lcpbatch.Solver(backend="cpu", method="enum", warm_start=True, warm_start_calls=2)
+    assert two.settings["warm_start_calls"] == 2
+    assert not warm(two, x).any() and not warm(two, y).any()
+    assert warm(two, x).all()  # seen two calls ago: kept
+    assert not warm(two, z).any() and warm(two, z).all()
+    assert not warm(two, x).any()  # seen three calls ago: forgotten
+
+
 def test_report_reads_well():
     r = lcpbatch.solve(np.array([[[2.0, 1.0], [1.0, 2.0]]]), np.array([[-5.0, -6.0]]), backend="cpu")
     text = repr(r.report)
