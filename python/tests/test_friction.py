@@ -1,6 +1,7 @@
 """Friction: scenes with ``mu`` per contact and batches of FrictionContact3D
-problems (``solve_friction``), checked against seed 001's worked examples,
-Siconos' conformance problems and Coulomb's law evaluated in NumPy."""
+problems (``solve_friction``), checked against friction-disc projections
+worked by hand, Siconos' conformance problems and Coulomb's law evaluated in
+NumPy."""
 
 import json
 import os
@@ -20,8 +21,8 @@ def point_mass_on_ground(v_t, gamma_n, mu, tangent=None):
     """One point mass (m = 1, no rotation: the contact is at its centre) hitting
     the ground with normal speed γ_n and tangential velocity v_t = (v·t1, v·t2):
     the Delassus matrix is W = I, so the normal impulse is γ_n (restitution 0)
-    and the friction impulse is seed 001's projection of −v_t on the disc of
-    radius μ γ_n."""
+    and the friction impulse is the projection of −v_t on the disc of radius
+    μ γ_n (Coulomb's law with maximum dissipation)."""
     v = v_t[0] * T1 + v_t[1] * T2 - gamma_n * N
     bodies = dict(inv_mass=[1.0], inv_inertia=[[0.0, 0.0, 0.0]], position=[[0, 0.5, 0]], velocity=[v])
     contacts = dict(a=[0], point=[[0, 0.5, 0]], normal=[N], mu=mu)
@@ -293,7 +294,7 @@ def test_the_extensions_chunks_merge_the_friction_parts():
     assert r.report.max_coulomb_error == r.friction_error.max()
     assert r.friction_error[r.report.max_coulomb_error_index] == r.friction_error.max()
     assert r.report.statuses["solved"] == count // 2          # the frictionless islands
-    # Each frictional answer is seed 001's projection (W = I per scene).
+    # Each frictional answer is −v_t projected on the disc of radius μ γ_n (W = I per scene).
     gamma_n = 1.0 + np.arange(0, count, 2) % 3
     expected = -vt[::2] * np.minimum(1.0, 0.5 * gamma_n / np.hypot(vt[::2, 0], vt[::2, 1]))[:, None]
     np.testing.assert_allclose(np.array([t[0] for t in r.tangential[::2]]), expected, atol=1e-12)

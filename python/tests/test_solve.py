@@ -1,5 +1,5 @@
-"""LCP batches through lcpbatch.solve and lcpbatch.Solver: the seeds' worked
-examples, random batches checked in NumPy, dtypes and memory layouts,
+"""LCP batches through lcpbatch.solve and lcpbatch.Solver: small LCPs worked
+by hand, random batches checked in NumPy, dtypes and memory layouts,
 ragged batches, methods, warm start, chunks and the report."""
 
 import numpy as np
@@ -15,7 +15,7 @@ SEED_002_M = np.array([[0.0, -1.0, 2.0], [2.0, 0.0, -2.0], [-1.0, 1.0, 0.0]])
 
 @pytest.mark.parametrize("solver", ["auto", "enum", "lemke", "pgs"])
 def test_seed_000_two_by_two(solver):
-    # Seed 000: M = [[2, 1], [1, 2]], q = (−5, −6). Both contacts active:
+    # Two coupled contacts: M = [[2, 1], [1, 2]], q = (−5, −6). Both active:
     # 2 z1 + z2 = 5 and z1 + 2 z2 = 6 give z = (4/3, 7/3), w = 0.
     r = lcpbatch.solve(np.array([[[2.0, 1.0], [1.0, 2.0]]]), np.array([[-5.0, -6.0]]),
                        method=solver, backend="cpu")
@@ -30,9 +30,10 @@ def test_seed_000_two_by_two(solver):
 
 @pytest.mark.parametrize("solver", ["auto", "enum", "lemke"])
 def test_seed_002_lemke_walkthrough(solver):
-    # Seed 002 (src/tests/seeds.rs): q = (−3, 6, −1) as its equations read
-    # gives z = (0, 1, 3): w1 = −z2 + 2 z3 − 3 = 2, w2 = 2 z1 − 2 z3 + 6 = 0,
-    # w3 = −z1 + z2 − 1 = 0. The printed q = (−3, 6, 1) gives z = (1, 0, 1.5),
+    # A 3×3 walk-through of Lemke's method (Lemke 1965; src/tests/seeds.rs),
+    # non-symmetric M with zero diagonal: q = (−3, 6, −1) gives z = (0, 1, 3):
+    # w1 = −z2 + 2 z3 − 3 = 2, w2 = 2 z1 − 2 z3 + 6 = 0, w3 = −z1 + z2 − 1 = 0.
+    # With the sign of q3 flipped, q = (−3, 6, 1) gives z = (1, 0, 1.5),
     # w = (0, 5, 0).
     M = np.stack([SEED_002_M, SEED_002_M])
     q = np.array([[-3.0, 6.0, -1.0], [-3.0, 6.0, 1.0]])
@@ -42,7 +43,7 @@ def test_seed_002_lemke_walkthrough(solver):
     np.testing.assert_allclose(r.w, [[2, 0, 0], [0, 5, 0]], atol=1e-12)
     assert r.basis[0].tolist() == [False, True, True]
     if solver == "lemke":
-        # The seed's walk: z0 in, z1 in, z3 in, w1 in, z2 in.
+        # Lemke's walk by hand: z0 in, z1 in, z3 in, w1 in, z2 in.
         assert r.pivots[0] == 5
 
 

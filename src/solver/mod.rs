@@ -56,7 +56,7 @@ use crate::Error;
 /// ```
 /// use lcpbatch::{Backend, Lcp, Settings, Solver, Status};
 ///
-/// // Two contacts of seed 000's example: M = [[2, 1], [1, 2]], q = (−5, −6).
+/// // Two coupled contacts, both active: M = [[2, 1], [1, 2]], q = (−5, −6).
 /// let lcp = Lcp::new(vec![2.0, 1.0, 1.0, 2.0], vec![-5.0, -6.0])?;
 /// let mut solver = Solver::new(Settings { backend: Backend::Cpu, ..Settings::default() })?;
 /// let report = solver.solve_lcps(&[lcp])?;
