@@ -14,6 +14,11 @@
 //! every shard in the batch's order ([`WarmMemory::record_all`]); the maps
 //! hash an id by one seeded multiplication ([`IdHash`]). Lookups take
 //! `&self`: many threads look up at once (the CPU path's `parallel_fill`).
+//!
+//! A caller that splits one batch into several calls (the Python package's
+//! chunks) joins them into one call of the memory ([`Warm::join_calls`]):
+//! each part's records carry the same call, and the ids of earlier calls
+//! are forgotten only when the join ends, after every part has looked up.
 
 use std::collections::HashMap;
 use std::hash::{BuildHasher, Hasher, RandomState};
@@ -44,6 +49,11 @@ pub(crate) struct WarmMemory<V> {
     keep: u64,
     /// Calls recorded so far.
     calls: u64,
+    /// Calls joined into one ([`Warm::join_calls`]): records carry call
+    /// `calls + 1` and forget nothing until the join ends.
+    joined: bool,
+    /// Whether the joined call has recorded anything.
+    joined_records: bool,
 }
 
 /// The door's or a world's memory: the LCP bases and the frictional
@@ -66,6 +76,16 @@ impl Warm {
             reactions: WarmMemory::new(keep, shards),
         }
     }
+
+    /// `true`: the calls that follow count as one call of both memories
+    /// until `join_calls(false)`, which ends it (forgetting, after the
+    /// parts' records, the ids that call has put past `keep` calls). A part
+    /// looks up the memory of the calls before the join and the records of
+    /// the parts before it.
+    pub(crate) fn join_calls(&mut self, join: bool) {
+        self.bases.join_calls(join);
+        self.reactions.join_calls(join);
+    }
 }
 
 impl<V: Copy + Send + Sync> WarmMemory<V> {
@@ -81,7 +101,35 @@ impl<V: Copy + Send + Sync> WarmMemory<V> {
             seed: IdHash::default().seed,
             keep: keep.max(1) as u64,
             calls: 0,
+            joined: false,
+            joined_records: false,
         }
+    }
+
+    /// See [`Warm::join_calls`].
+    fn join_calls(&mut self, join: bool) {
+        if self.joined && !join && self.joined_records {
+            self.calls += 1;
+            let (call, keep) = (self.calls, self.keep);
+            for map in &mut self.shards {
+                map.retain(|_, e| e.call + keep > call);
+            }
+        }
+        if self.joined != join {
+            self.joined_records = false;
+        }
+        self.joined = join;
+    }
+
+    /// The call the next records carry, and whether they forget first
+    /// (not while calls are joined: the join's end does).
+    fn next_call(&mut self) -> (u64, bool) {
+        if self.joined {
+            self.joined_records = true;
+            return (self.calls + 1, false);
+        }
+        self.calls += 1;
+        (self.calls, true)
     }
 
     fn shard(&self, id: u64) -> usize {
@@ -103,9 +151,8 @@ impl<V: Copy + Send + Sync> WarmMemory<V> {
     /// recorded twice keeps the later value); an id recorded in none of
     /// the last `keep` calls (this one included) is forgotten.
     pub(crate) fn record<I: Iterator<Item = (u64, V)>>(&mut self, entries: I) {
-        self.calls += 1;
-        let (call, keep) = (self.calls, self.keep);
-        for map in &mut self.shards {
+        let ((call, forgets), keep) = (self.next_call(), self.keep);
+        for map in self.shards.iter_mut().filter(|_| forgets) {
             forget(map, call, keep);
         }
         for (id, value) in entries {
@@ -132,11 +179,11 @@ impl<V: Copy + Send + Sync> WarmMemory<V> {
             self.record(records.iter().flat_map(&entries));
             return;
         }
-        self.calls += 1;
-        let (call, keep, seed, n) = (self.calls, self.keep, self.seed, self.shards.len());
+        let (call, forgets) = self.next_call();
+        let (keep, seed, n) = (self.keep, self.seed, self.shards.len());
         let per = n.div_ceil(threads);
         let write = |first: usize, shards: &mut [HashMap<u64, Entry<V>, IdHash>]| {
-            for map in shards.iter_mut() {
+            for map in shards.iter_mut().filter(|_| forgets) {
                 forget(map, call, keep);
             }
             for (id, value) in records.iter().flat_map(&entries) {
@@ -380,6 +427,42 @@ mod tests {
             let again = solver.solve_lcps_keyed(&lcps, &[vec![1, 2]]).unwrap();
             let warm = again.islands[0].path == SolvePath::WarmStart;
             assert_eq!(warm, kept, "warm_start_calls {calls}");
+        }
+    }
+
+    /// Parts joined into one call (one shard and the record on several
+    /// threads): with `keep` 1 every part still finds the ids of the call
+    /// before the join, which go when the join ends; the parts' ids stay
+    /// for the call after it, as one call's would, and go at the next.
+    #[test]
+    fn joined_calls_forget_as_one_call() {
+        for (shards, per_part, threads) in [(1, 8, 1), (SHARDS, 5000, 4)] {
+            let mut warm = Warm::new(1, shards);
+            let ids = |part: u64| (0..per_part).map(move |k| part * 10_000 + k);
+            let record = |m: &mut WarmMemory<bool>, part: u64| {
+                let ids: Vec<u64> = ids(part).collect();
+                m.record_all(&ids, ids.len(), threads, |&id| std::iter::once((id, true)));
+            };
+            let seen =
+                |m: &WarmMemory<bool>, part: u64| m.basis(ids(part).take(1).map(Some)).is_some();
+            record(&mut warm.bases, 0);
+            warm.join_calls(true);
+            for part in 1..=3 {
+                record(&mut warm.bases, part);
+                let kept = seen(&warm.bases, 0);
+                assert!(kept, "part {part}: the call before the join is kept");
+            }
+            warm.join_calls(false);
+            let memory = &mut warm.bases;
+            assert!(!seen(memory, 0));
+            assert!((1..=3).all(|part| seen(memory, part)));
+            assert_eq!(memory.len(), 3 * per_part as usize);
+            record(memory, 4);
+            assert!((1..=3).all(|part| !seen(memory, part)) && seen(memory, 4));
+            // A join that records nothing is no call.
+            warm.join_calls(true);
+            warm.join_calls(false);
+            assert!(seen(&warm.bases, 4));
         }
     }
 

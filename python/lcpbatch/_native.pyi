@@ -19,10 +19,11 @@ class NativeSolver:
     def __init__(
         self,
         backend: str = "auto",
-        solver: str = "auto",
+        method: str = "auto",
         precision: str = "auto",
         all_solutions: bool = False,
         warm_start: bool = False,
+        warm_start_calls: int = 1,
         tolerance: Optional[float] = None,
         threads: int = 0,
         adapter: Optional[str] = None,

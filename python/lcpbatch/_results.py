@@ -132,7 +132,12 @@ class Report:
       "tree_decided", "tree_undecided" (islands the tree kernel decided or
       left to elimination), "max_gpu_error" (the GPU's own error before
       the f64 polish), "max_velocity_deviation" (scenes: the GPU's impulse
-      stage against its f64 twin);
+      stage against its f64 twin), and the seconds of the "gpu" timing's
+      parts as the host sees them: "pack_seconds" (planning the chunks:
+      sorting by size, the tree kernel's routes), "upload_seconds" (writing
+      M and q into the device's buffers), "kernel_seconds" (submission to
+      the end of the last round, waits included), "readback_seconds"
+      (reading the answers back);
     - ``chunks``: parts the call was solved in (Ctrl-C is seen between them);
     - ``friction_islands``: frictional islands (or problems of
       ``solve_friction``); ``friction_statuses``: their statuses;

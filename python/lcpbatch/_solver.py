@@ -97,6 +97,10 @@ _SETTINGS_DOC = """\
     - ``warm_start`` (default False): remember each problem's basis (and
       each frictional contact's reaction) by its contact ``ids`` and start
       the next call from it.
+    - ``warm_start_calls`` (default 1, at least 1): calls a contact id is
+      remembered without being seen again; 1 keeps the last call's ids
+      only. A call counts once however many chunks it is solved in; in
+      ``step_worlds`` each step is a call.
     - ``tolerance``: the largest error measure reported as solved (default
       1e-8, in (0, 1)).
     - ``threads``: CPU threads (default 0: every core).
@@ -169,6 +173,7 @@ class Solver:
         precision: str = "auto",
         all_solutions: bool = False,
         warm_start: bool = False,
+        warm_start_calls: int = 1,
         tolerance: Optional[float] = None,
         threads: int = 0,
         adapter: Optional[str] = None,
@@ -185,7 +190,8 @@ class Solver:
         method = _method(method, solver, stacklevel=1)
         self.settings: Dict[str, Any] = dict(
             backend=backend, method=method, precision=precision, all_solutions=all_solutions,
-            warm_start=warm_start, tolerance=tolerance, threads=threads, adapter=adapter,
+            warm_start=warm_start, warm_start_calls=warm_start_calls, tolerance=tolerance,
+            threads=threads, adapter=adapter,
             api=api, predict=predict, lemke_max_pivots=lemke_max_pivots,
             pgs_max_sweeps=pgs_max_sweeps, pgs_tolerance=pgs_tolerance,
             friction_method=friction_method, friction_tolerance=friction_tolerance,
@@ -193,6 +199,12 @@ class Solver:
         )
         if threads < 0:
             raise ValueError(f"threads: {threads} is negative (0 means every core)")
+        if isinstance(warm_start_calls, (bool, np.bool_)) or not isinstance(warm_start_calls, (int, np.integer)):
+            raise TypeError(f"warm_start_calls: expected an integer ≥ 1, got {type(warm_start_calls).__name__}")
+        if warm_start_calls < 1:
+            raise ValueError(f"warm_start_calls: {warm_start_calls} is not an integer ≥ 1 "
+                             "(calls a contact id is remembered)")
+        self.settings["warm_start_calls"] = int(warm_start_calls)
         self._native = _native.NativeSolver(**self.settings)
         self._warned = False
         self._warn_fallback(self._native.fallback())

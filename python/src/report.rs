@@ -99,7 +99,16 @@ fn gpu_dict<'py>(py: Python<'py>, g: &GpuFigures) -> PyResult<Bound<'py, PyDict>
             ("tree_undecided", g.tree_undecided),
         ],
     )?;
-    d.set_item("max_gpu_error", g.max_gpu_error)?;
-    d.set_item("max_velocity_deviation", g.max_velocity_deviation)?;
+    let floats = [
+        ("max_gpu_error", g.max_gpu_error),
+        ("max_velocity_deviation", g.max_velocity_deviation),
+        ("pack_seconds", g.pack_seconds),
+        ("upload_seconds", g.upload_seconds),
+        ("kernel_seconds", g.kernel_seconds),
+        ("readback_seconds", g.readback_seconds),
+    ];
+    for (name, v) in floats {
+        d.set_item(name, v)?;
+    }
     Ok(d)
 }

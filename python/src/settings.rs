@@ -17,6 +17,9 @@ pub(crate) struct Args<'a> {
     pub precision: &'a str,
     pub all_solutions: bool,
     pub warm_start: bool,
+    /// Python calls (a call's chunks are one, see `run_chunks`) a contact
+    /// id is remembered without being seen again; at least 1.
+    pub warm_start_calls: usize,
     pub tolerance: Option<f64>,
     pub threads: usize,
     pub adapter: Option<String>,
@@ -68,6 +71,7 @@ impl Args<'_> {
         s.gpu.adapter = self.adapter.clone();
         s.all_solutions = self.all_solutions;
         s.warm_start = self.warm_start;
+        s.warm_start_calls = self.warm_start_calls;
         s.threads = self.threads;
         s.predict = self.predict;
         if let Some(t) = self.tolerance {

@@ -20,6 +20,9 @@ use crate::{batch, friction, guard, report, scenes, settings::Args, to_py_err, w
 #[pyclass(module = "lcpbatch._native")]
 pub(crate) struct NativeSolver {
     solver: Mutex<Solver>,
+    /// Calls now in `run_chunks` with their chunks joined (several Python
+    /// threads may share the solver): the join ends when the last ends.
+    joins: Mutex<usize>,
 }
 
 impl NativeSolver {
@@ -32,29 +35,57 @@ impl NativeSolver {
     /// Solves `ranges` one after the other with the GIL released, checking
     /// for Ctrl-C between them; one report ([`Report::append`]: the ranges
     /// are consecutive from 0, so scene indices shift by the scenes before).
+    /// The chunks are one call of the warm-start memory
+    /// ([`Solver::join_warm_start_calls`]): `warm_start_calls` counts
+    /// Python calls, and every chunk finds the ids of the calls before.
     fn run_chunks(
         &self,
         py: Python<'_>,
         ranges: Vec<Range<usize>>,
         solve: impl Fn(&mut Solver, Range<usize>) -> Result<Report, lcpbatch::Error> + Sync,
     ) -> PyResult<(Report, usize)> {
-        let mut total: Option<Report> = None;
         let count = ranges.len();
-        for r in ranges {
-            let next = py.detach(|| guard(|| solve(&mut self.lock(), r).map_err(to_py_err)))?;
-            match &mut total {
-                Some(t) => t.append(next),
-                None => total = Some(next),
-            }
-            py.check_signals()?;
+        let joined = count > 1;
+        if joined {
+            self.join_chunks(true);
         }
-        match total {
+        let chunks = (|| -> PyResult<Option<Report>> {
+            let mut total: Option<Report> = None;
+            for r in ranges {
+                let next = py.detach(|| guard(|| solve(&mut self.lock(), r).map_err(to_py_err)))?;
+                match &mut total {
+                    Some(t) => t.append(next),
+                    None => total = Some(next),
+                }
+                py.check_signals()?;
+            }
+            Ok(total)
+        })();
+        // Also after an error or Ctrl-C: the chunks solved count as the call.
+        if joined {
+            self.join_chunks(false);
+        }
+        match chunks? {
             Some(t) => Ok((t, count)),
             // An empty batch: the library's own (empty) report.
             None => Ok((
                 py.detach(|| guard(|| self.lock().solve_lcps(&[]).map_err(to_py_err)))?,
                 0,
             )),
+        }
+    }
+
+    /// Starts (`true`) or ends a call whose chunks are one call of the
+    /// warm-start memory; nested calls of other threads join the first.
+    fn join_chunks(&self, join: bool) {
+        let mut joins = self.joins.lock().unwrap_or_else(|p| p.into_inner());
+        *joins = if join {
+            *joins + 1
+        } else {
+            joins.saturating_sub(1)
+        };
+        if *joins == usize::from(join) {
+            self.lock().join_warm_start_calls(join);
         }
     }
 
@@ -95,12 +126,12 @@ impl NativeSolver {
 
 #[pymethods]
 impl NativeSolver {
-    /// Builds the solver (opens the device), GIL released. Sixteen keyword
+    /// Builds the solver (opens the device), GIL released. Seventeen keyword
     /// arguments on purpose: one per setting a Python user may change.
     #[new]
     #[pyo3(signature = (backend="auto", method="auto", precision="auto", all_solutions=false,
-        warm_start=false, tolerance=None, threads=0, adapter=None, api="auto", predict=true,
-        lemke_max_pivots=None, pgs_max_sweeps=None, pgs_tolerance=None, friction_method="auto",
+        warm_start=false, warm_start_calls=1, tolerance=None, threads=0, adapter=None, api="auto",
+        predict=true, lemke_max_pivots=None, pgs_max_sweeps=None, pgs_tolerance=None, friction_method="auto",
         friction_tolerance=None, friction_max_iterations=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
@@ -110,6 +141,7 @@ impl NativeSolver {
         precision: &str,
         all_solutions: bool,
         warm_start: bool,
+        warm_start_calls: usize,
         tolerance: Option<f64>,
         threads: usize,
         adapter: Option<String>,
@@ -128,6 +160,7 @@ impl NativeSolver {
             precision,
             all_solutions,
             warm_start,
+            warm_start_calls,
             tolerance,
             threads,
             adapter,
@@ -144,6 +177,7 @@ impl NativeSolver {
         let solver = py.detach(|| guard(|| Solver::new(settings).map_err(to_py_err)))?;
         Ok(NativeSolver {
             solver: Mutex::new(solver),
+            joins: Mutex::new(0),
         })
     }
 

@@ -28,6 +28,13 @@ def test_cpu_and_gpu_give_the_same_statuses_and_answers(gpu):
         cpu = lcpbatch.Solver(backend="cpu", method="enum").solve(M_, q_)
         on_gpu = gpu.solve(M_, q_)
         assert on_gpu.report.device_kind != "cpu" and on_gpu.report.gpu is not None
+        # The GPU phase's parts, in seconds, within the call's total.
+        g = on_gpu.report.gpu
+        parts = [g[k] for k in ("pack_seconds", "upload_seconds", "kernel_seconds", "readback_seconds")]
+        assert all(np.isfinite(t) and t >= 0 for t in parts), g
+        assert sum(parts) <= on_gpu.report.timings["total"], (g, on_gpu.report.timings)
+        if on_gpu.report.counts["enumerated_gpu"] > 0:
+            assert g["kernel_seconds"] > 0 and g["dispatches"] > 0, g
         np.testing.assert_array_equal(on_gpu.status, cpu.status)
         ok = cpu.ok
         np.testing.assert_allclose(on_gpu.z[ok], cpu.z[ok], atol=1e-9)

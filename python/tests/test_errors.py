@@ -96,6 +96,8 @@ def test_n_too_large_for_enumeration_names_the_problem():
         (dict(all_solutions=True, method="lemke"), "all_solutions"),
         (dict(backend="gpu", method="pgs"), "backend"),
         (dict(threads=-1), "threads: -1 is negative"),
+        (dict(warm_start_calls=0), r"warm_start_calls: 0 is not an integer ≥ 1"),
+        (dict(warm_start_calls=-3), r"warm_start_calls: -3 is not an integer ≥ 1"),
     ],
 )
 def test_bad_settings_name_the_setting(kwargs, match):
@@ -106,6 +108,8 @@ def test_bad_settings_name_the_setting(kwargs, match):
 def test_wrong_types_of_settings_are_type_errors():
     with pytest.raises(TypeError):
         lcpbatch.Solver(threads="many")
+    with pytest.raises(TypeError, match="warm_start_calls: expected an integer ≥ 1, got float"):
+        lcpbatch.Solver(warm_start_calls=1.5)
 
 
 def test_a_panic_becomes_a_runtime_error():

@@ -218,7 +218,8 @@ def test_help_of_the_report_lists_every_figure_and_key():
     for name in lcpbatch.PATH_NAMES:
         assert f'"{name}"' in text, name
     gpu_keys = ("chunks", "dispatches", "rounds", "tree_decided", "tree_undecided", "max_gpu_error",
-                "max_velocity_deviation")
+                "max_velocity_deviation", "pack_seconds", "upload_seconds", "kernel_seconds",
+                "readback_seconds")
     for key in gpu_keys:
         assert f'"{key}"' in text, key
     for kind in ("cpu", "hardware_gpu", "software_gpu"):

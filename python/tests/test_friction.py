@@ -1,6 +1,7 @@
 """Friction: scenes with ``mu`` per contact and batches of FrictionContact3D
-problems (``solve_friction``), checked against seed 001's worked examples,
-Siconos' conformance problems and Coulomb's law evaluated in NumPy."""
+problems (``solve_friction``), checked against friction-disc projections
+worked by hand, Siconos' conformance problems and Coulomb's law evaluated in
+NumPy."""
 
 import json
 import os
@@ -20,8 +21,8 @@ def point_mass_on_ground(v_t, gamma_n, mu, tangent=None):
     """One point mass (m = 1, no rotation: the contact is at its centre) hitting
     the ground with normal speed γ_n and tangential velocity v_t = (v·t1, v·t2):
     the Delassus matrix is W = I, so the normal impulse is γ_n (restitution 0)
-    and the friction impulse is seed 001's projection of −v_t on the disc of
-    radius μ γ_n."""
+    and the friction impulse is the projection of −v_t on the disc of radius
+    μ γ_n (Coulomb's law with maximum dissipation)."""
     v = v_t[0] * T1 + v_t[1] * T2 - gamma_n * N
     bodies = dict(inv_mass=[1.0], inv_inertia=[[0.0, 0.0, 0.0]], position=[[0, 0.5, 0]], velocity=[v])
     contacts = dict(a=[0], point=[[0, 0.5, 0]], normal=[N], mu=mu)
@@ -222,6 +223,24 @@ def test_solver_friction_settings_and_warm_start():
     assert capped.status_names().tolist() == ["not_converged"] and capped.iterations[0] == 1
 
 
+def test_friction_warm_start_covers_every_chunk():
+    # 8,000 problems of four decoupled contacts (W = I): (3k)² = 144 of
+    # work each, three chunks under CHUNK_FRICTION_WORK, one call of memory.
+    b, k = 8_000, 4
+    W = np.broadcast_to(np.eye(3 * k), (b, 3 * k, 3 * k))
+    q = np.tile([-1.0, 3.0, -4.0], (b, k))
+    ids = np.arange(b * k).reshape(b, k)
+    assert b * 9 * k * k > 2 * lcpbatch.CHUNK_FRICTION_WORK
+    s = lcpbatch.Solver(backend="cpu", warm_start=True, friction_method="nsgs")
+    first = s.solve_friction(W, q, 0.5, ids=ids)
+    second = s.solve_friction(W, q, 0.5, ids=ids)
+    assert first.report.chunks == second.report.chunks == 3
+    assert not first.warm_started.any() and second.warm_started.all()
+    np.testing.assert_allclose(second.r, np.tile([1.0, -0.3, 0.4], (b, k)), atol=1e-9)
+    s.solve_friction(W, q, 0.5, ids=ids + b * k)
+    assert not s.solve_friction(W, q, 0.5, ids=ids).warm_started.any()
+
+
 def test_friction_errors_name_the_argument_index_and_fault():
     W, q, mu = np.eye(3)[None], np.array([[-1.0, 0, 0]]), np.array([[0.5]])
     cases = [
@@ -275,7 +294,7 @@ def test_the_extensions_chunks_merge_the_friction_parts():
     assert r.report.max_coulomb_error == r.friction_error.max()
     assert r.friction_error[r.report.max_coulomb_error_index] == r.friction_error.max()
     assert r.report.statuses["solved"] == count // 2          # the frictionless islands
-    # Each frictional answer is seed 001's projection (W = I per scene).
+    # Each frictional answer is −v_t projected on the disc of radius μ γ_n (W = I per scene).
     gamma_n = 1.0 + np.arange(0, count, 2) % 3
     expected = -vt[::2] * np.minimum(1.0, 0.5 * gamma_n / np.hypot(vt[::2, 0], vt[::2, 1]))[:, None]
     np.testing.assert_allclose(np.array([t[0] for t in r.tangential[::2]]), expected, atol=1e-12)

@@ -1,5 +1,5 @@
-"""LCP batches through lcpbatch.solve and lcpbatch.Solver: the seeds' worked
-examples, random batches checked in NumPy, dtypes and memory layouts,
+"""LCP batches through lcpbatch.solve and lcpbatch.Solver: small LCPs worked
+by hand, random batches checked in NumPy, dtypes and memory layouts,
 ragged batches, methods, warm start, chunks and the report."""
 
 import numpy as np
@@ -15,7 +15,7 @@ SEED_002_M = np.array([[0.0, -1.0, 2.0], [2.0, 0.0, -2.0], [-1.0, 1.0, 0.0]])
 
 @pytest.mark.parametrize("solver", ["auto", "enum", "lemke", "pgs"])
 def test_seed_000_two_by_two(solver):
-    # Seed 000: M = [[2, 1], [1, 2]], q = (−5, −6). Both contacts active:
+    # Two coupled contacts: M = [[2, 1], [1, 2]], q = (−5, −6). Both active:
     # 2 z1 + z2 = 5 and z1 + 2 z2 = 6 give z = (4/3, 7/3), w = 0.
     r = lcpbatch.solve(np.array([[[2.0, 1.0], [1.0, 2.0]]]), np.array([[-5.0, -6.0]]),
                        method=solver, backend="cpu")
@@ -30,9 +30,10 @@ def test_seed_000_two_by_two(solver):
 
 @pytest.mark.parametrize("solver", ["auto", "enum", "lemke"])
 def test_seed_002_lemke_walkthrough(solver):
-    # Seed 002 (src/tests/seeds.rs): q = (−3, 6, −1) as its equations read
-    # gives z = (0, 1, 3): w1 = −z2 + 2 z3 − 3 = 2, w2 = 2 z1 − 2 z3 + 6 = 0,
-    # w3 = −z1 + z2 − 1 = 0. The printed q = (−3, 6, 1) gives z = (1, 0, 1.5),
+    # A 3×3 walk-through of Lemke's method (Lemke 1965; src/tests/seeds.rs),
+    # non-symmetric M with zero diagonal: q = (−3, 6, −1) gives z = (0, 1, 3):
+    # w1 = −z2 + 2 z3 − 3 = 2, w2 = 2 z1 − 2 z3 + 6 = 0, w3 = −z1 + z2 − 1 = 0.
+    # With the sign of q3 flipped, q = (−3, 6, 1) gives z = (1, 0, 1.5),
     # w = (0, 5, 0).
     M = np.stack([SEED_002_M, SEED_002_M])
     q = np.array([[-3.0, 6.0, -1.0], [-3.0, 6.0, 1.0]])
@@ -42,7 +43,7 @@ def test_seed_002_lemke_walkthrough(solver):
     np.testing.assert_allclose(r.w, [[2, 0, 0], [0, 5, 0]], atol=1e-12)
     assert r.basis[0].tolist() == [False, True, True]
     if solver == "lemke":
-        # The seed's walk: z0 in, z1 in, z3 in, w1 in, z2 in.
+        # Lemke's walk by hand: z0 in, z1 in, z3 in, w1 in, z2 in.
         assert r.pivots[0] == 5
 
 
@@ -192,6 +193,33 @@ def test_chunks_cover_a_large_batch_in_order():
     M = np.broadcast_to(np.eye(n), (per_chunk + 1, n, n))
     r = lcpbatch.solve(M, np.ones((per_chunk + 1, n)), backend="cpu")
     assert r.report.chunks == 2 and (r.path == "separating").all()
+
+
+def test_warm_start_covers_every_chunk_and_forgets_after_warm_start_calls():
+    # M = [[1, 1], [1, 1]], q = (−1, −1) (rank one: no predicted basis, only
+    # the warm start settles it), 140,000 times: three chunks of at most
+    # CHUNK_PROBLEMS, one library call each, counted as one call of memory.
+    b = 140_000
+    M = np.broadcast_to(np.ones((2, 2)), (b, 2, 2))
+    q = np.full((b, 2), -1.0)
+    x = np.arange(2 * b).reshape(b, 2)
+    y, z = x + 2 * b, x + 4 * b
+
+    def warm(s, ids):
+        r = s.solve(M, q, ids=ids)
+        assert r.report.chunks == 3 and r.ok.all()
+        return r.path == "warm_start"
+
+    s = lcpbatch.Solver(backend="cpu", method="enum", warm_start=True)
+    assert not warm(s, x).any()
+    assert warm(s, x).all()  # every chunk, the first one included
+    assert not warm(s, y).any() and not warm(s, x).any()  # default: the last call only
+    two = lcpbatch.Solver(backend="cpu", method="enum", warm_start=True, warm_start_calls=2)
+    assert two.settings["warm_start_calls"] == 2
+    assert not warm(two, x).any() and not warm(two, y).any()
+    assert warm(two, x).all()  # seen two calls ago: kept
+    assert not warm(two, z).any() and warm(two, z).all()
+    assert not warm(two, x).any()  # seen three calls ago: forgotten
 
 
 def test_report_reads_well():

@@ -57,7 +57,7 @@ use crate::Error;
 /// ```
 /// use lcpbatch::{Backend, Lcp, Settings, Solver, Status};
 ///
-/// // Two contacts of seed 000's example: M = [[2, 1], [1, 2]], q = (−5, −6).
+/// // Two coupled contacts, both active: M = [[2, 1], [1, 2]], q = (−5, −6).
 /// let lcp = Lcp::new(vec![2.0, 1.0, 1.0, 2.0], vec![-5.0, -6.0])?;
 /// let mut solver = Solver::new(Settings { backend: Backend::Cpu, ..Settings::default() })?;
 /// let report = solver.solve_lcps(&[lcp])?;
@@ -289,6 +289,17 @@ impl Solver {
     pub fn clear_warm_start(&mut self) {
         self.warm = Warm::new(self.settings.warm_start_calls, SHARDS);
         self.world_warm.clear();
+    }
+
+    /// `true`: the calls that follow count as one call of the warm-start
+    /// memory until `join_warm_start_calls(false)`, so that
+    /// `settings.warm_start_calls` counts the caller's batches, not the
+    /// parts it splits them into (the Python package's chunks). Every part
+    /// finds the ids of the calls before the join (and those of the parts
+    /// before it); the ids past `warm_start_calls` calls go when it ends.
+    #[doc(hidden)]
+    pub fn join_warm_start_calls(&mut self, join: bool) {
+        self.warm.join_calls(join);
     }
 
     /// The device, shared, while the GPU is in use (for tests that lose it

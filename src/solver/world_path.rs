@@ -1,6 +1,7 @@
 //! The door for worlds in time: [`Solver::step_worlds`] advances a batch of
-//! [`World`]s by one step Δt (seed 001 §四, DVI; the parts per world are in
-//! [`crate::world::step`]) in two passes over the worlds, each spread over
+//! [`World`]s by one step Δt (the velocity-level time-stepping of
+//! Stewart–Trinkle and Anitescu–Potra: impulses from a complementarity
+//! problem per step; the parts per world are in [`crate::world::step`]) in two passes over the worlds, each spread over
 //! the cores:
 //!
 //! 1. **collision**: gravity, broad and narrow phase, each world's scene;

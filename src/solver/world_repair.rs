@@ -158,7 +158,8 @@ mod tests {
 
     #[test]
     fn a_capped_method_is_repaired_exactly_and_a_hopeless_one_is_dropped() {
-        // Seed 000's example: M = [[2, 1], [1, 2]], q = (−5, −6).
+        // Two coupled contacts, both active: M = [[2, 1], [1, 2]], q = (−5, −6),
+        // z = (4/3, 7/3).
         let lcp = Lcp::new(vec![2.0, 1.0, 1.0, 2.0], vec![-5.0, -6.0]).unwrap();
         let capped = Settings {
             method: Method::Lemke,

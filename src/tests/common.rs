@@ -171,8 +171,9 @@ pub fn gpu_settings_or_skip() -> Option<crate::GpuSettings> {
     Some(g)
 }
 
-/// Seed 002's non-symmetric M (zero diagonal: no principal pivot order from
-/// the empty basis) with q = (−3, 6, −1), (−3, 6, 1) and (1, 1, 1).
+/// The non-symmetric M of the 3×3 Lemke walk-through (`tests/seeds.rs`;
+/// zero diagonal: no principal pivot order from the empty basis) with
+/// q = (−3, 6, −1), (−3, 6, 1) and (1, 1, 1).
 pub fn seed_002_problems() -> Vec<Lcp> {
     [[-3.0, 6.0, -1.0], [-3.0, 6.0, 1.0], [1.0, 1.0, 1.0]]
         .iter()
@@ -188,7 +189,8 @@ pub fn seed_002_problems() -> Vec<Lcp> {
 
 /// Fixed-seed physical islands of at most `max_n` contacts: `count` random
 /// islands of 1…max_n contacts (mass ratios 1, 1e2, 1e4 in turn), a box
-/// resting on 4 coplanar contacts, the seed chain and 10 demo worlds; then
+/// resting on 4 coplanar contacts, the chain of four coupled bodies
+/// ([`crate::generate::seed_chain`]) and 10 demo worlds; then
 /// [`seed_002_problems`].
 pub fn physical_islands(seed: u64, count: usize, max_n: usize) -> Vec<Lcp> {
     use crate::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};

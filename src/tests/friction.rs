@@ -1,5 +1,6 @@
-//! Coulomb friction through the product API: seed 001's projection
-//! examples, a box sliding on the ground, a box on an incline, μ = 0 against
+//! Coulomb friction through the product API: the maximum-dissipation
+//! projections worked by hand (the tangential impulse is −v_T projected on
+//! the disc of radius μ γ_n), a box sliding on the ground, a box on an incline, μ = 0 against
 //! the frictionless solver, warm start, mixed batches, and a property test
 //! that every returned impulse is in its cone.
 
@@ -42,10 +43,10 @@ fn point_mass(v_n: f64, v_t: [f64; 2], mu: f64) -> Scene {
 
 #[test]
 fn seed_001_projection_examples_through_the_solver() {
-    // (μ, γ_n, v_T, γ_T): section 三's example and exercise 3. A unit mass
-    // approaching at γ_n gets the normal impulse γ_n; sliding at v_T with
-    // ‖v_T‖ ≥ μ γ_n it gets γ_T = −μ γ_n v_T / ‖v_T‖. The seed's v_T and the
-    // same direction three times faster give the same γ_T.
+    // (μ, γ_n, v_T, γ_T), worked by hand. A unit mass approaching at γ_n
+    // gets the normal impulse γ_n; sliding at v_T with ‖v_T‖ ≥ μ γ_n it gets
+    // γ_T = −μ γ_n v_T / ‖v_T‖ (Coulomb's law with maximum dissipation). A
+    // v_T and the same direction three times faster give the same γ_T.
     for (mu, gamma_n, v_t, want) in [
         (0.5, 10.0, [3.0, -4.0], [-3.0, 4.0]),
         (0.6, 5.0, [4.0, 3.0], [-12.0 / 5.0, -9.0 / 5.0]),

@@ -2,8 +2,9 @@
 //! of every island screened on the device, the flagged ones decided in f64)
 //! against the CPU's enumeration through the same door: the same statuses,
 //! solution sets, chosen bases and lists of solution bases, on the Siconos
-//! conformance problems, seed 002, and generated degenerate, resting,
-//! non-unique and infeasible families; scenes give the same impulses.
+//! conformance problems, the 3×3 Lemke walk-through, and generated
+//! degenerate, resting, non-unique and infeasible families; scenes give the
+//! same impulses.
 
 use crate::generate::stress::{generate, Family};
 use crate::generate::{box_on_ground, random_scene, seed_chain, Rng};
@@ -37,8 +38,8 @@ fn gpu_solver(precision: Precision) -> Option<Solver> {
     Some(Solver::with_device(settings, device).unwrap())
 }
 
-/// The problems: Siconos (n ≤ 16) when the conformance data is there, seed
-/// 002, and the stress families with several solutions, none, or singular M.
+/// The problems: Siconos (n ≤ 16) when the conformance data is there, the
+/// 3×3 Lemke walk-through's, and the stress families with several solutions, none, or singular M.
 fn problems() -> Vec<(String, Lcp)> {
     let mut out = Vec::new();
     if let Some(dir) = siconos_dir() {
@@ -60,7 +61,7 @@ fn problems() -> Vec<(String, Lcp)> {
         }
     }
     for (k, l) in seed_002_problems().into_iter().enumerate() {
-        out.push((format!("seed 002 #{k}"), l));
+        out.push((format!("Lemke walk-through #{k}"), l));
     }
     for family in [
         Family::NonSymmetric,

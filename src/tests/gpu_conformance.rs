@@ -30,8 +30,8 @@ fn append(world: &mut Scene, s: Scene) {
 
 /// Fixed-seed scenes with at least `min_islands` islands of n = 1…12: random
 /// islands (mass ratios up to 1e4, world and dynamic partners), boxes resting
-/// on a static ground, the seed's chain, and demo worlds; several islands per
-/// scene, from many scenes.
+/// on a static ground, the chain of four coupled bodies (`seed_chain`), and
+/// demo worlds; several islands per scene, from many scenes.
 pub fn physical_scenes(min_islands: usize) -> (Vec<Scene>, usize) {
     let mut rng = Rng::new(0x5eed_2026);
     let mut scenes = Vec::new();

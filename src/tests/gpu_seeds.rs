@@ -1,4 +1,5 @@
-//! The seeds' worked examples through the GPU, in f64 and in f32.
+//! The LCPs worked by hand (`tests/seeds.rs`: two coupled contacts, the
+//! 3×3 Lemke walk-through) through the GPU, in f64 and in f32.
 
 use crate::gpu::batch::enumerate_on_gpu;
 use crate::gpu::{solve_lcp_batch, GpuSolveSettings, Precision};
@@ -10,13 +11,13 @@ use super::common::gpu_context as context;
 
 fn seeds() -> Vec<(Lcp, Vec<f64>, Vec<f64>)> {
     vec![
-        // Seed 000's 2×2: z = (4/3, 7/3), w = 0.
+        // Two coupled contacts, both active: z = (4/3, 7/3), w = 0.
         (
             Lcp::new(vec![2.0, 1.0, 1.0, 2.0], vec![-5.0, -6.0]).unwrap(),
             vec![4.0 / 3.0, 7.0 / 3.0],
             vec![0.0, 0.0],
         ),
-        // Seed 002's Lemke example: z = (0, 1, 3), w = (2, 0, 0).
+        // The 3×3 Lemke walk-through (zero diagonal): z = (0, 1, 3), w = (2, 0, 0).
         (
             Lcp::new(
                 vec![0.0, -1.0, 2.0, 2.0, 0.0, -2.0, -1.0, 1.0, 0.0],
@@ -45,7 +46,7 @@ fn check(precision: Precision) {
     };
     let cases = seeds();
     let lcps: Vec<Lcp> = cases.iter().map(|c| c.0.clone()).collect();
-    // Every seed on the GPU (prediction would settle the first).
+    // Every example on the GPU (prediction would settle the first).
     let gs = GpuSolveSettings {
         predict: false,
         ..Default::default()

@@ -17,8 +17,9 @@ use super::common;
 use super::common::gpu_context as context;
 
 /// Physical islands n = 1…8 (most positive definite; resting boxes are
-/// semidefinite: small pivots), seed 002's non-symmetric problems (zero
-/// diagonals) and a positive definite 2×2.
+/// semidefinite: small pivots), the non-symmetric problems of the 3×3
+/// Lemke walk-through (zero diagonals, [`common::seed_002_problems`]) and a
+/// positive definite 2×2.
 fn islands(seed: u64, count: usize) -> Vec<Lcp> {
     let mut lcps = common::physical_islands(seed, count, 8);
     lcps.push(Lcp::new(vec![2.0, 1.0, 1.0, 2.0], vec![-3.0, -3.0]).unwrap());

@@ -9,8 +9,9 @@ use super::common;
 use super::common::gpu_context as context;
 
 /// Fixed-seed physical islands n = 1…12 (mass ratios 1…1e4), resting boxes
-/// (singular bases), the seed chain, demo worlds, and non-symmetric seeds
-/// with zero diagonals (no principal pivot order from the empty basis).
+/// (singular bases), the chain of four coupled bodies, demo worlds, and the
+/// non-symmetric problems of the 3×3 Lemke walk-through, with zero
+/// diagonals (no principal pivot order from the empty basis).
 fn islands(seed: u64, count: usize) -> Vec<Lcp> {
     let mut lcps = common::physical_islands(seed, count, 12);
     lcps.push(Lcp::new(vec![1.0, 1.0, 1.0, 1.0], vec![-1.0, -1.0]).unwrap());

@@ -1,8 +1,9 @@
 //! Physics of the impact: what the solved impulses do to the bodies.
 //!
 //! Scenes come from `crate::generate`; the pipeline solves them and
-//! `cpu::impulses` applies the impulses. Conventions (seed 000): n points from
-//! b to a, the impulse is +z n on a and −z n on b, q = v_rel + ε min(v_rel, 0).
+//! `cpu::impulses` applies the impulses. Conventions (README, "Formats"): n
+//! points from b to a, the impulse is +z n on a and −z n on b, and
+//! q = v_rel + ε min(v_rel, 0) (Newton's restitution law on the approach).
 
 use super::common;
 

@@ -1,13 +1,19 @@
-//! Every worked example of the seeds, with the seed's own answer, through
-//! every solver that can take it.
+//! Small complementarity problems worked by hand, each with its answer,
+//! through every solver that can take it.
 //!
-//! - seed 000: the 2×2 LCP M = [[2,1],[1,2]], q = (−5,−6) → z = (4/3, 7/3).
-//! - seed 002: Lemke's 3×3 walk-through. Its printed q = (−3, 6, 1) has a sign
-//!   slip: its equations (w3 = z0 − z1 + z2 − 1) and its answer use
-//!   q = (−3, 6, −1) → z = (0, 1, 3), w = (2, 0, 0). With the printed +1 the
-//!   solution is z = (1, 0, 1.5).
-//! - seed 001's exercises: the QP, the 1-D interval QP, the coupled 2×2 NCP,
-//!   the friction-disc projections and the one-step DVI.
+//! - Two coupled contacts, both active: the 2×2 LCP M = [[2,1],[1,2]],
+//!   q = (−5,−6) → z = (4/3, 7/3) (the LCP of Cottle–Pang–Stone, *The
+//!   Linear Complementarity Problem*: w = M z + q ≥ 0, z ≥ 0, zᵀw = 0).
+//! - A 3×3 walk-through of Lemke's complementary pivoting (Lemke 1965) on a
+//!   non-symmetric M with zero diagonal: its equations (w3 = z0 − z1 + z2 − 1)
+//!   use q = (−3, 6, −1) → z = (0, 1, 3), w = (2, 0, 0). The same M with
+//!   q3 = +1 (the sign slip easily made against those equations) has the
+//!   solution z = (1, 0, 1.5).
+//! - The textbook exercises of complementarity in contact: a QP through its
+//!   KKT conditions, the 1-D interval QP, a coupled 2×2 NCP by active set,
+//!   Coulomb's friction disc by maximum dissipation (the tangential impulse
+//!   is −v_T projected on the disc of radius μ γ_n) and one velocity-level
+//!   time step (Stewart–Trinkle, Anitescu–Potra).
 
 use super::common::{all_solutions_settings, run, METHODS};
 use crate::cpu::enumeration::{solve_basis, BasisOutcome, EnumerationSettings};
@@ -78,8 +84,8 @@ fn seed_000_two_by_two() {
             tol(s),
         );
     }
-    assert_unique("seed 000", &lcp);
-    // The seed's table: of the four complementary bases only (z1, z2) is feasible.
+    assert_unique("two coupled contacts", &lcp);
+    // By hand: of the four complementary bases only (z1, z2) is feasible.
     let settings = EnumerationSettings::default();
     for mask in 0..4u32 {
         let feasible = matches!(
@@ -90,7 +96,7 @@ fn seed_000_two_by_two() {
     }
 }
 
-/// Seed 002's matrix, row-major.
+/// The Lemke walk-through's matrix, row-major.
 const LEMKE_M: [f64; 9] = [0.0, -1.0, 2.0, 2.0, 0.0, -2.0, -1.0, 1.0, 0.0];
 
 #[test]
@@ -108,9 +114,9 @@ fn seed_002_lemke_walkthrough_as_its_equations_read() {
         );
         assert_eq!(sol.basis, Some(0b110), "{}: basis (z2, z3)", s.name());
     }
-    // Lemke's walk in the seed takes 5 pivots: z0 in, z1 in, z3 in, w1 in, z2 in.
+    // Lemke's walk by hand takes 5 pivots: z0 in, z1 in, z3 in, w1 in, z2 in.
     assert_eq!(run(&lcp, Method::Lemke).counters.pivots, 5);
-    assert_unique("seed 002", &lcp);
+    assert_unique("Lemke walk-through", &lcp);
     // M_11 = 0: PGS cannot divide by it and says so.
     assert_eq!(run(&lcp, Method::Pgs).status, Status::InvalidInput);
 }
@@ -130,7 +136,7 @@ fn seed_002_with_the_printed_q() {
             1e-12,
         );
     }
-    assert_unique("seed 002, printed q", &lcp);
+    assert_unique("Lemke walk-through, q3 = +1", &lcp);
 }
 
 #[test]
@@ -149,7 +155,7 @@ fn seed_001_qp_exercise() {
             assert_eq!(sol.status, Status::Solved, "{} c = {c:?}", s.name());
             assert_solution(s.name(), &sol, &x, Some(&[0.0, 0.0]), tol(s));
         }
-        assert_unique("seed 001 QP", &lcp);
+        assert_unique("QP by its KKT conditions", &lcp);
     }
 }
 
@@ -173,10 +179,10 @@ fn seed_001_interval_qp() {
         assert_solution(s.name(), &sol, &[2.0, 1.0], Some(&[0.0, 0.0]), 1e-12);
         assert_eq!(sol.z[0], project_interval(3.0, 0.0, 2.0));
     }
-    assert_unique("seed 001 interval", &lcp);
+    assert_unique("interval QP", &lcp);
     // M_22 = 0: not a problem PGS can take.
     assert_eq!(run(&lcp, Method::Pgs).status, Status::InvalidInput);
-    // The projection view of the seed: proj_[0,2](3) = 2.
+    // The same answer as a projection: proj_[0,2](3) = 2.
     assert_eq!(project_interval(3.0, 0.0, 2.0), 2.0);
 }
 
@@ -184,8 +190,8 @@ fn seed_001_interval_qp() {
 fn seed_001_coupled_ncp_by_active_set() {
     // A = [[2, −1], [−1, 2]], b = (−1, 2): x = (1/2, 0), f(x) = Ax + b = (0, 3/2).
     let lcp = Lcp::new(vec![2.0, -1.0, -1.0, 2.0], vec![-1.0, 2.0]).unwrap();
-    // Enumerate the active set as the seed says: every choice of which x_i
-    // solve f_i = 0; exactly one gives x ≥ 0 and f ≥ 0.
+    // Enumerate the active set by hand: every choice of which x_i solve
+    // f_i = 0; exactly one gives x ≥ 0 and f ≥ 0.
     let settings = EnumerationSettings::default();
     let mut feasible = Vec::new();
     for mask in 0..4u32 {
@@ -212,7 +218,7 @@ fn seed_001_coupled_ncp_by_active_set() {
     }
 }
 
-/// The friction law of seed 001 (maximum dissipation): for a sliding
+/// Coulomb's friction law with maximum dissipation: for a sliding
 /// velocity v_T the tangential impulse is γ_T = −μ γ_n v_T/‖v_T‖, the
 /// product's [`crate::friction::project_on_disc`]; through the solver, a
 /// unit point mass approaching at γ_n and sliding at v_T (W = I) gets it
@@ -268,7 +274,7 @@ fn seed_001_one_step_dvi() {
     let (m, g, dt, phi) = (1.0, 10.0, 0.01, 0.0);
     let dvi = |v: f64| Lcp::new(vec![dt / m], vec![phi + dt * (v - g * dt)]).unwrap();
     let v_plus = |v: f64, gamma: f64| v - g * dt + gamma / m;
-    // The seed's case: at rest on the ground, γ = m g Δt = 0.1 and v⁺ = 0.
+    // At rest on the ground: γ = m g Δt = 0.1 and v⁺ = 0.
     let lcp = dvi(0.0);
     for s in METHODS {
         let sol = run(&lcp, s);

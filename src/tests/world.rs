@@ -1,5 +1,5 @@
-//! Worlds in time through the product (`Solver::step_worlds`): seed 001's
-//! one-step example by hand, a dropped sphere at rest, an elastic impact, a
+//! Worlds in time through the product (`Solver::step_worlds`): one step of
+//! a ball resting on the ground worked by hand, a dropped sphere at rest, an elastic impact, a
 //! resting stack, batch against alone, sleeping, and CPU against GPU.
 
 use glam::DVec3;
@@ -30,8 +30,8 @@ fn ball(radius: f64, y: f64, mass: f64) -> RigidBody {
     RigidBody::new(Shape::Sphere { radius }, [0.0, y, 0.0], mass)
 }
 
-/// Seed 001 §四's example: m = 1 resting on the ground (φ = 0), g = 10,
-/// Δt = 0.01. By hand: v* = −0.1, q = J v* + φ/Δt = −0.1, M = 1/m = 1, so
+/// One velocity-level time step (Stewart–Trinkle, Anitescu–Potra) by hand:
+/// m = 1 resting on the ground (φ = 0), g = 10, Δt = 0.01: v* = −0.1, q = J v* + φ/Δt = −0.1, M = 1/m = 1, so
 /// γ_n = 0.1 and v⁺ = v* + γ_n/m = 0; the ball does not move.
 #[test]
 fn seed_001_one_step_by_hand() {
