@@ -399,7 +399,9 @@ def merge_reports(reports: Sequence[Report]) -> Report:
         choice="; ".join(sorted({r.choice for r in reports})),
         fallback="; ".join(fallbacks) or None, counts=total("counts"), statuses=total("statuses"),
         max_error=max_error, max_error_index=max_index, timings=total("timings"),
-        gpu={k: sum(g[k] for g in gpus) for k in gpus[0]} if gpus else None,
+        gpu={k: (max if k.startswith("max_") else sum)(g[k] for g in gpus) for k in gpus[0]}
+        if gpus
+        else None,
         chunks=sum(r.chunks for r in reports),
         friction_islands=sum(r.friction_islands for r in reports),
         friction_statuses=total("friction_statuses"), max_coulomb_error=max_coulomb,
