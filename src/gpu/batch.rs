@@ -415,6 +415,17 @@ pub fn solve_lcp_batch_warm(
             definite.push(d);
         }
     }
+    if on_gpu.is_empty() {
+        // Prediction settled every island: nothing to upload or check.
+        drop(blocks);
+        return Ok(batch_report(
+            ctx,
+            islands,
+            0,
+            GpuFigures::default(),
+            [prediction, 0.0, 0.0],
+        ));
+    }
     let t = Instant::now();
     let (answers, mut figures) = enumerate_known(ctx, &on_gpu, &definite, settings)?;
     let gpu = t.elapsed().as_secs_f64();
@@ -446,6 +457,19 @@ pub fn solve_lcp_batch_warm(
         figures.max_gpu_error = figures.max_gpu_error.max(b.max_gpu_error);
     }
     drop(blocks);
+    let seconds = [prediction, gpu, validation];
+    Ok(batch_report(ctx, islands, polished, figures, seconds))
+}
+
+/// The report of an LCP batch: `polished` GPU answers kept, the figures,
+/// and the seconds of prediction, the GPU and the f64 check.
+fn batch_report(
+    ctx: &GpuContext,
+    islands: Vec<IslandReport>,
+    polished: usize,
+    figures: GpuFigures,
+    [prediction, gpu, validation]: [f64; 3],
+) -> Report {
     let mut r = Report::new(islands, Vec::new(), Device::of(ctx), String::new());
     r.counts.polished = polished;
     r.counts.cpu_fallback = r.counts.lemke;
@@ -453,5 +477,5 @@ pub fn solve_lcp_batch_warm(
     r.timings.gpu = gpu;
     r.timings.validation = validation;
     r.gpu = Some(figures);
-    Ok(r)
+    r
 }

@@ -336,8 +336,10 @@ pub fn solve_scenes_warm(
     let mut polished = 0;
 
     // Prediction (and Lemke above n = 16) on the CPU's f64 assembly; each
-    // island left to the GPU keeps what prediction learnt of its M (None:
-    // settled, or in a scene solved as an LCP batch below).
+    // island left to the GPU gets its route through the tree kernel (from
+    // what prediction learnt of its M; None: settled, or in a scene solved
+    // as an LCP batch below).
+    let kernel_plan = KernelPlan::new(ctx, settings);
     let t = Instant::now();
     let settled = parallel_map(index.len(), threads, |j| {
         let (s, k) = index[j];
@@ -348,13 +350,16 @@ pub fn solve_scenes_warm(
             path: SolvePath::EnumeratedGpu,
             solution: LcpSolution::invalid(0),
         };
+        let lcp = &built[s].lcps[k];
         let left = match in_alone[s] {
             true => None,
-            false => settle_on_cpu(&built[s].lcps[k], warm_of(s, k), settings, &mut island).err(),
+            false => settle_on_cpu(lcp, warm_of(s, k), settings, &mut island)
+                .err()
+                .map(|definite| kernel_plan.tree_for(lcp, definite)),
         };
         (island, left)
     });
-    let (mut islands, left): (Vec<IslandReport>, Vec<Option<Option<bool>>>) =
+    let (mut islands, left): (Vec<IslandReport>, Vec<Option<TreeRoute>>) =
         settled.into_iter().unzip();
     let prediction = t.elapsed().as_secs_f64();
 
@@ -362,7 +367,6 @@ pub fn solve_scenes_warm(
     let tolerances = ctx.scoped("tolerances", || {
         Tolerances::new(ctx.precision(), settings).upload(ctx)
     })?;
-    let kernel_plan = KernelPlan::new(ctx, settings);
     let exact = settings.exact_twin(ctx.precision());
     let mut gpu_velocities: Vec<Option<Vec<f64>>> = vec![None; scenes.len()];
     let (mut gpu, mut validation) = (0.0, 0.0);
@@ -373,10 +377,7 @@ pub fn solve_scenes_warm(
             built,
             &members,
             &|s, k| left[first[s] + k].is_none(),
-            &|s, k| match left[first[s] + k] {
-                None => TreeRoute::Off,
-                Some(definite) => kernel_plan.tree_for(&built[s].lcps[k], definite),
-            },
+            &|s, k| left[first[s] + k].unwrap_or(TreeRoute::Off),
         );
         let enumerate = Some((&kernel_plan, &tolerances));
         let out = assemble_and_enumerate(ctx, &pipelines, &c, max_groups, enumerate)?;
