@@ -127,6 +127,22 @@ impl GpuSolveSettings {
         )
     }
 
+    /// The enumeration settings checked, and `all_solutions` refused (the
+    /// GPU batches name one basis per island).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming the setting out of range;
+    /// [`Error::Unsupported`] for `all_solutions`.
+    pub fn check(&self) -> Result<(), Error> {
+        self.enumeration.validate()?;
+        if self.enumeration.all_solutions {
+            return Err(Error::Unsupported(
+                "all_solutions is not supported on the GPU; use the CPU backend".into(),
+            ));
+        }
+        Ok(())
+    }
+
     /// True when the shaders run the CPU twin's arithmetic and tolerances
     /// (f64): then a least-infeasible basis the GPU names after visiting
     /// every basis is the CPU's choice, and validation keeps it when it is
@@ -376,12 +392,7 @@ pub fn solve_lcp_batch_warm(
     warm: &(dyn Fn(usize) -> Option<u32> + Sync),
     settings: &GpuSolveSettings,
 ) -> Result<Report, Error> {
-    settings.enumeration.validate()?;
-    if settings.enumeration.all_solutions {
-        return Err(Error::Unsupported(
-            "all_solutions is not supported on the GPU; use the CPU backend".into(),
-        ));
-    }
+    settings.check()?;
     let threads = settings.threads;
     let mut islands: Vec<IslandReport> = Vec::with_capacity(lcps.len());
     islands.resize_with(lcps.len(), || IslandReport {

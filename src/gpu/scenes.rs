@@ -313,12 +313,7 @@ pub fn solve_scenes_warm(
     warm: Option<&[Vec<Option<u32>>]>,
     settings: &GpuSolveSettings,
 ) -> Result<Report, Error> {
-    settings.enumeration.validate()?;
-    if settings.enumeration.all_solutions {
-        return Err(Error::Unsupported(
-            "all_solutions is not supported on the GPU; use the CPU backend".into(),
-        ));
-    }
+    settings.check()?;
     let threads = settings.threads;
     let (max_bytes, max_groups) = limits_for(ctx, settings);
     let (chunks, alone) = plan(scenes, built, max_bytes, ctx.precision().bytes());
