@@ -23,7 +23,7 @@
 
 use std::time::Instant;
 
-use super::buffers::{limits_for, pack_chunks};
+use super::buffers::{limits_for, pack_chunks, Role};
 use super::enumeration::EnumerationJob;
 pub use super::kernel::{EnumerationKernel, KernelPlan, TreeRoute};
 use super::layout::BasisResult;
@@ -247,7 +247,12 @@ fn enumerate_known(
                 max_groups,
                 plan: &plan,
             };
-            job.run(ctx.encoder("enumeration"), true)
+            let run = job.run(ctx.encoder("enumeration"), true)?;
+            // The run waited for its last submission: the next chunk or
+            // call may write them again.
+            ctx.keep(Role::Islands, islands);
+            ctx.keep(Role::Values, values);
+            Ok::<_, Error>(run)
         })??;
         let base = answers.z.len();
         for ((&i, rec), res) in chunk.order.iter().zip(&chunk.table).zip(&run.results) {

@@ -175,36 +175,34 @@ impl GpuContext {
         reads: &[(&wgpu::Buffer, u64)],
         read: impl FnOnce(&[&[u8]]) -> R,
     ) -> Result<R, Error> {
-        let mut staging: Vec<(wgpu::Buffer, u64)> = Vec::with_capacity(reads.len());
+        // (buffer mapped, bytes to read, whether it is a kept readback copy)
+        let mut staging: Vec<(wgpu::Buffer, u64, bool)> = Vec::with_capacity(reads.len());
         for (at, &(src, size)) in reads.iter().enumerate() {
             let size4 = size.max(4).next_multiple_of(4);
             let twice = reads[..at].iter().any(|(b, _)| *b == src);
             if src.usage().contains(wgpu::BufferUsages::MAP_READ) && !twice {
-                staging.push((src.clone(), size));
+                staging.push((src.clone(), size, false));
                 continue;
             }
             // Readback: MAP_READ buffers cannot be storage on hardware, so
-            // copy here.
-            let dst = self.device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some("readback"),
-                size: size4,
-                usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-                mapped_at_creation: false,
-            });
+            // copy here, into a copy kept from an earlier call if there is one.
+            let dst = self.kept_or_new(Role::Readback, size4);
             encoder.copy_buffer_to_buffer(src, 0, &dst, 0, size4);
-            staging.push((dst, size));
+            staging.push((dst, size, true));
         }
         self.queue.submit([encoder.finish()]);
-        for (dst, _) in &staging {
-            dst.slice(..).map_async(wgpu::MapMode::Read, |_| {});
+        let range = |size: u64| ..size.max(4).next_multiple_of(4);
+        for (dst, size, _) in &staging {
+            dst.slice(range(*size))
+                .map_async(wgpu::MapMode::Read, |_| {});
         }
         self.device
             .poll(wgpu::PollType::wait_indefinitely())
             .map_err(|e| Error::Gpu(format!("waiting for the GPU: {e}")))?;
         let views = staging
             .iter()
-            .map(|(dst, _)| {
-                dst.slice(..)
+            .map(|(dst, size, _)| {
+                dst.slice(range(*size))
                     .get_mapped_range()
                     .map_err(|e| Error::Gpu(format!("reading back: {e}")))
             })
@@ -212,14 +210,185 @@ impl GpuContext {
         let bytes: Vec<&[u8]> = views
             .iter()
             .zip(&staging)
-            .map(|(v, (_, size))| &v[..*size as usize])
+            .map(|(v, (_, size, _))| &v[..*size as usize])
             .collect();
         let out = read(&bytes);
         drop(views);
-        for (dst, _) in &staging {
+        for (dst, _, kept) in staging {
             dst.unmap();
+            if kept {
+                self.keep(Role::Readback, dst);
+            }
         }
         Ok(out)
+    }
+}
+
+/// What a buffer kept between calls is for ([`GpuContext::take_kept`],
+/// [`GpuContext::keep`]): a role has one usage, and a buffer kept for a
+/// role is taken only for it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Role {
+    /// The enumeration stage's island table and its M and q: host-written
+    /// ([`GpuContext::kept_written`]), every byte the shaders read.
+    Islands,
+    Values,
+    /// The enumeration stage's outputs: cleared by the encoder before use.
+    Results,
+    Z,
+    Unfinished,
+    Least,
+    /// The enumeration stage's Params, one per dispatch at aligned offsets
+    /// (`queue.write_buffer`).
+    Params,
+    /// Mappable copies of storage buffers for reading back (hardware).
+    Readback,
+}
+
+/// The buffers a context keeps between calls, by role, and the
+/// tolerances uniform last asked for (kept while the tolerances are the
+/// same: it is never rewritten).
+#[derive(Default)]
+pub(crate) struct Kept {
+    buffers: Vec<(Role, wgpu::Buffer)>,
+    /// Host bytes the values are packed into before the copy to the device.
+    packing: Vec<u8>,
+    pub(crate) tolerances: Option<(super::pipelines::Tolerances, wgpu::Buffer)>,
+}
+
+/// Kept buffers of one role, at most (a call reads back two buffers at once).
+const KEPT_PER_ROLE: usize = 2;
+
+/// Bytes of the buffers kept by role, in all: 1 GiB (the enumeration
+/// buffers of a chunk of a million islands of n = 4 in f64, about 400 MB,
+/// twice); a larger buffer is let go.
+const KEPT_BYTES: u64 = 1 << 30;
+
+impl GpuContext {
+    /// The usage of the buffers of `role`.
+    fn role_usage(&self, role: Role) -> wgpu::BufferUsages {
+        use wgpu::BufferUsages as U;
+        match role {
+            Role::Islands | Role::Values if self.maps_storage() => {
+                self.storage_usage() | U::MAP_WRITE
+            }
+            Role::Params => U::UNIFORM | U::COPY_DST,
+            Role::Readback => U::MAP_READ | U::COPY_DST,
+            _ => self.storage_usage(),
+        }
+    }
+
+    /// A new buffer of `role` for `size` bytes, a little larger (size
+    /// rounded up to an eighth of its next power of two, within the
+    /// binding limit) so that a slightly larger call takes it again.
+    fn new_kept(&self, role: Role, size: u64, mapped: bool) -> wgpu::Buffer {
+        let size = size.max(16).next_multiple_of(4);
+        let step = (size.next_power_of_two() / 8).max(4);
+        let l = self.limits();
+        let cap = l.max_storage_buffer_binding_size.min(l.max_buffer_size);
+        let grown = size.next_multiple_of(step).min(cap).max(size);
+        self.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some(&format!("{role:?}").to_lowercase()),
+            size: grown,
+            usage: self.role_usage(role),
+            mapped_at_creation: mapped,
+        })
+    }
+
+    /// The smallest kept buffer of `role` with at least `size` bytes, taken
+    /// out of the context (None when there is none): no other call sees it
+    /// until [`Self::keep`] gives it back.
+    pub(crate) fn take_kept(&self, role: Role, size: u64) -> Option<wgpu::Buffer> {
+        let mut kept = self.kept.lock().ok()?;
+        let at = (0..kept.buffers.len())
+            .filter(|&i| kept.buffers[i].0 == role && kept.buffers[i].1.size() >= size)
+            .min_by_key(|&i| kept.buffers[i].1.size())?;
+        Some(kept.buffers.swap_remove(at).1)
+    }
+
+    /// [`Self::take_kept`], else a new buffer of `role` (not mapped).
+    pub(crate) fn kept_or_new(&self, role: Role, size: u64) -> wgpu::Buffer {
+        let size = size.max(16).next_multiple_of(4);
+        self.take_kept(role, size)
+            .unwrap_or_else(|| self.new_kept(role, size, false))
+    }
+
+    /// Gives `buffer` (of `role`, made by this module) back for a later
+    /// call. The caller is done with it; a submission may still read it:
+    /// whoever takes it writes it through the queue or the encoder (ordered
+    /// after that submission) or maps it (wgpu waits for the submission).
+    /// The newest [`KEPT_PER_ROLE`] of a role are kept, at most
+    /// [`KEPT_BYTES`] in all.
+    pub(crate) fn keep(&self, role: Role, buffer: wgpu::Buffer) {
+        if buffer.size() > KEPT_BYTES / 2 || buffer.usage() != self.role_usage(role) {
+            return;
+        }
+        let Ok(mut kept) = self.kept.lock() else {
+            return;
+        };
+        let b = &mut kept.buffers;
+        b.push((role, buffer));
+        while b.iter().filter(|(r, _)| *r == role).count() > KEPT_PER_ROLE {
+            let oldest = b.iter().position(|(r, _)| *r == role).unwrap_or(0);
+            b.remove(oldest);
+        }
+        while b.iter().map(|(_, x)| x.size()).sum::<u64>() > KEPT_BYTES {
+            b.remove(0);
+        }
+    }
+
+    /// The kept packing bytes (empty when another call holds them).
+    fn take_packing(&self) -> Vec<u8> {
+        self.kept
+            .lock()
+            .map(|mut k| std::mem::take(&mut k.packing))
+            .unwrap_or_default()
+    }
+
+    /// Keeps `bytes` for the next call's packing, unless larger than half
+    /// [`KEPT_BYTES`].
+    fn keep_packing(&self, bytes: Vec<u8>) {
+        if bytes.capacity() as u64 <= KEPT_BYTES / 2 {
+            if let Ok(mut k) = self.kept.lock() {
+                k.packing = bytes;
+            }
+        }
+    }
+
+    /// A buffer of `role` (at least `size` bytes, rounded up to 16 and to
+    /// 4) whose first `size` bytes `fill` writes, every one of them (a kept
+    /// buffer holds an earlier call's bytes). A kept buffer is mapped again
+    /// where the device maps storage buffers (wgpu waits for any
+    /// submission reading it), else written through the queue (before the
+    /// next submission); a new one is mapped at creation. Give it back with
+    /// [`Self::keep`].
+    pub(crate) fn kept_written(
+        &self,
+        role: Role,
+        size: u64,
+        fill: impl FnOnce(wgpu::WriteOnly<'_, [u8]>),
+    ) -> Result<wgpu::Buffer, Error> {
+        let size = size.max(16).next_multiple_of(4);
+        let what = format!("writing {role:?}");
+        let Some(buffer) = self.take_kept(role, size) else {
+            let buffer = self.new_kept(role, size, true);
+            return fill_mapped(buffer, size, &what, |view| fill(view.slice(..)));
+        };
+        if self.maps_storage() {
+            buffer.slice(..size).map_async(wgpu::MapMode::Write, |_| {});
+            self.device
+                .poll(wgpu::PollType::wait_indefinitely())
+                .map_err(|e| Error::Gpu(format!("{what}: {e}")))?;
+            return fill_mapped(buffer, size, &what, |view| fill(view.slice(..)));
+        }
+        let bytes = wgpu::BufferSize::new(size).ok_or_else(|| Error::Gpu(what.clone()))?;
+        let mut view = self
+            .queue
+            .write_buffer_with(&buffer, 0, bytes)
+            .ok_or_else(|| Error::Gpu(format!("{what}: the queue refused the write")))?;
+        fill(view.slice(..));
+        drop(view);
+        Ok(buffer)
     }
 }
 
@@ -276,9 +445,11 @@ pub(crate) struct PackedChunk {
 const PACK_BLOCK: usize = 1024;
 
 impl PackedChunk {
-    /// (islands, values) storage buffers: `values` holds each island's M
-    /// (row-major) and q in the shader's precision, packed by up to
-    /// `threads` threads and copied once into the mapped buffer.
+    /// (islands, values) storage buffers ([`Role::Islands`],
+    /// [`Role::Values`]: kept from an earlier call where the context has
+    /// them; give them back with [`GpuContext::keep`]): `values` holds each
+    /// island's M (row-major) and q in the shader's precision, packed by up
+    /// to `threads` threads.
     pub(crate) fn upload(
         &self,
         ctx: &GpuContext,
@@ -287,10 +458,19 @@ impl PackedChunk {
         threads: usize,
     ) -> Result<(wgpu::Buffer, wgpu::Buffer), Error> {
         // islands: the chunk's island table, sorted by n.
-        let islands = ctx.storage("islands", bytemuck::cast_slice(&self.table));
+        let table: &[u8] = bytemuck::cast_slice(&self.table);
+        let islands = ctx.kept_written(Role::Islands, table.len() as u64, |mut view| {
+            view.slice(..table.len()).copy_from_slice(table);
+        })?;
         // values: every island's M (row-major) and q, in the shader's precision.
         let sb = precision.bytes() as usize;
-        let mut bytes = vec![0u8; self.values * sb];
+        let len = self.values * sb;
+        // Packed by every thread into the context's packing bytes (kept
+        // between calls: a wgpu mapped view cannot be sent to threads),
+        // then copied once into the mapped buffer.
+        let mut bytes = ctx.take_packing();
+        bytes.clear();
+        bytes.resize(len, 0);
         // The bytes cut at island boundaries, PACK_BLOCK islands a piece.
         let mut rest = bytes.as_mut_slice();
         let mut pieces = Vec::with_capacity(self.order.len().div_ceil(PACK_BLOCK));
@@ -317,9 +497,11 @@ impl PackedChunk {
                 }
             }
         });
-        let values = ctx.storage_filled("values", bytes.len() as u64, |view| {
-            view.slice(..bytes.len()).copy_from_slice(&bytes);
-        })?;
+        let values = ctx.kept_written(Role::Values, len as u64, |mut view| {
+            view.slice(..len).copy_from_slice(&bytes);
+        });
+        ctx.keep_packing(bytes);
+        let values = values?;
         Ok((islands, values))
     }
 }

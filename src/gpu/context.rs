@@ -343,6 +343,9 @@ pub struct GpuContext {
     /// Host-written storage buffers of earlier batches, kept for the next
     /// (`GpuContext::storage_written`, software adapters only).
     pub(crate) spare: Mutex<Vec<wgpu::Buffer>>,
+    /// The LCP enumeration stage's buffers by role, kept for the next call,
+    /// and its tolerances uniform ([`super::buffers::Kept`]).
+    pub(crate) kept: Mutex<super::buffers::Kept>,
 }
 
 impl std::fmt::Debug for GpuContext {
@@ -436,6 +439,7 @@ impl GpuContext {
             errors,
             pipelines: Mutex::new(None),
             spare: Mutex::new(Vec::new()),
+            kept: Mutex::default(),
         })
     }
 

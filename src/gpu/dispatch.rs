@@ -35,6 +35,28 @@ impl Span {
     }
 }
 
+/// `span` in dispatches of at most `max_groups` workgroups (the
+/// per-dimension limit): each dispatch's Params pushed on `params`, and
+/// (its index there, its workgroups) returned.
+pub(crate) fn split(span: Span, max_groups: u32, params: &mut Vec<Params>) -> Vec<(usize, u32)> {
+    let per_group = span.per_group.max(1);
+    let per = max_groups.max(1) as u64 * per_group as u64;
+    let mut out = Vec::new();
+    let mut done = 0u64;
+    while done < span.count as u64 {
+        let this = (span.count as u64 - done).min(per) as u32;
+        out.push((params.len(), this.div_ceil(per_group)));
+        params.push(Params {
+            first: span.first + done as u32,
+            count: this,
+            budget: span.budget,
+            flags: span.flags,
+        });
+        done += this as u64;
+    }
+    out
+}
+
 /// Bind groups and workgroup counts of a stage's dispatches.
 pub(crate) type Ranges = Vec<(wgpu::BindGroup, u32)>;
 
@@ -55,30 +77,21 @@ impl GpuContext {
         max_groups: u32,
         bind: &dyn Fn(&wgpu::Buffer) -> wgpu::BindGroup,
     ) -> Ranges {
-        let per_group = span.per_group.max(1);
-        let per = max_groups.max(1) as u64 * per_group as u64;
-        let mut out = Vec::new();
-        let mut done = 0u64;
-        while done < span.count as u64 {
-            let this = (span.count as u64 - done).min(per) as u32;
-            let params = Params {
-                first: span.first + done as u32,
-                count: this,
-                budget: span.budget,
-                flags: span.flags,
-            };
-            // Params: which slice of the table this dispatch covers.
-            let ub = self
-                .device
-                .create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                    label: Some("params"),
-                    contents: bytemuck::bytes_of(&params),
-                    usage: wgpu::BufferUsages::UNIFORM,
-                });
-            out.push((bind(&ub), this.div_ceil(per_group)));
-            done += this as u64;
-        }
-        out
+        let mut params = Vec::new();
+        split(span, max_groups, &mut params)
+            .into_iter()
+            .map(|(at, groups)| {
+                // Params: which slice of the table this dispatch covers.
+                let ub = self
+                    .device
+                    .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                        label: Some("params"),
+                        contents: bytemuck::bytes_of(&params[at]),
+                        usage: wgpu::BufferUsages::UNIFORM,
+                    });
+                (bind(&ub), groups)
+            })
+            .collect()
     }
 
     /// Records one dispatch of `stage` per range.

@@ -2,9 +2,12 @@
 //! kernel (and first through the tree kernel where routed), in rounds until
 //! every island is done.
 
-use super::dispatch::{Ranges, Span};
+use super::buffers::Role;
+use super::dispatch::{split, Ranges, Span};
 use super::kernel::{EnumerationKernel, KernelPlan, TreeRoute};
-use super::layout::{scalars_from_bytes, BasisResult, PackedIsland, TREE_DECIDED, TREE_UNDECIDED};
+use super::layout::{
+    scalars_from_bytes, BasisResult, PackedIsland, Params, TREE_DECIDED, TREE_UNDECIDED,
+};
 use super::pipelines::{Pipelines, Stage};
 use super::{GpuContext, MAX_GPU_N};
 use crate::report::GpuFigures;
@@ -40,18 +43,73 @@ pub(crate) struct EnumerationJob<'a> {
     pub plan: &'a KernelPlan,
 }
 
-/// The stage's output buffers (bindings 3-6).
+/// The stage's output buffers (bindings 3-6), kept from an earlier call
+/// where the context has them ([`Role`]), each bound and cleared on its
+/// first `size` bytes only, and the Params of every dispatch.
 struct Outputs {
-    /// Where each island's enumeration stands (zeroed: not started).
-    results: wgpu::Buffer,
-    results_size: u64,
-    /// Each island's z of the chosen basis (zeroed: 0 off the basis).
-    z: wgpu::Buffer,
-    z_size: u64,
+    /// Where each island's enumeration stands (cleared: not started).
+    results: Part,
+    /// Each island's z of the chosen basis (cleared: 0 off the basis).
+    z: Part,
     /// Islands per size n still in progress after a round.
-    unfinished: wgpu::Buffer,
+    unfinished: Part,
     /// Infeasibility of each island's least infeasible basis so far.
-    least: wgpu::Buffer,
+    least: Part,
+    /// One Params per dispatch, [`Outputs::params_stride`] bytes apart.
+    params: Part,
+}
+
+/// A buffer of a role and the bytes of it a call uses: `bytes`, bound
+/// and cleared as `size` (rounded up to 16 and to 4: the size of the
+/// buffer a call used to make for it).
+struct Part {
+    role: Role,
+    buffer: wgpu::Buffer,
+    bytes: u64,
+    size: u64,
+}
+
+impl Part {
+    fn new(ctx: &GpuContext, role: Role, bytes: u64) -> Self {
+        let size = bytes.max(16).next_multiple_of(4);
+        let buffer = ctx.kept_or_new(role, size);
+        Part {
+            role,
+            buffer,
+            bytes,
+            size,
+        }
+    }
+
+    fn binding(&self) -> wgpu::BufferBinding<'_> {
+        wgpu::BufferBinding {
+            buffer: &self.buffer,
+            offset: 0,
+            size: wgpu::BufferSize::new(self.size),
+        }
+    }
+}
+
+impl Outputs {
+    /// Bytes between two dispatches' Params: the device's uniform offset
+    /// alignment.
+    fn params_stride(ctx: &GpuContext) -> u64 {
+        let align = ctx.limits().min_uniform_buffer_offset_alignment as u64;
+        (std::mem::size_of::<Params>() as u64).next_multiple_of(align.max(4))
+    }
+
+    /// Gives every buffer back to the context for the next call.
+    fn keep(self, ctx: &GpuContext) {
+        for p in [
+            self.results,
+            self.z,
+            self.unfinished,
+            self.least,
+            self.params,
+        ] {
+            ctx.keep(p.role, p.buffer);
+        }
+    }
 }
 
 /// One island size's dispatches: the tree kernel's (tree buckets, first
@@ -60,6 +118,14 @@ struct Bucket {
     n: u32,
     tree: Option<Ranges>,
     ranges: Ranges,
+}
+
+/// A bucket before its bind groups: its stages, and per dispatch the
+/// index of its Params and its workgroups.
+struct Plan<'a> {
+    n: u32,
+    tree: Option<(&'a Stage, Vec<(usize, u32)>)>,
+    ranges: (&'a Stage, Vec<(usize, u32)>),
 }
 
 const UNFINISHED_BYTES: u64 = 17 * 4;
@@ -100,8 +166,10 @@ impl<'a> EnumerationJob<'a> {
             run.figures.kernel_seconds = t.elapsed().as_secs_f64();
             return Ok(run);
         }
-        let out = self.outputs();
-        let buckets = self.buckets(&out)?;
+        let mut encoder = encoder;
+        let (plans, params) = self.plans()?;
+        let out = self.outputs(&params, &mut encoder);
+        let buckets = self.buckets(plans, &out)?;
         let encoder = self.rounds(&out, &buckets, encoder, &mut run)?;
         run.figures.kernel_seconds = t.elapsed().as_secs_f64();
         if read_back {
@@ -109,10 +177,17 @@ impl<'a> EnumerationJob<'a> {
             self.read(&out, encoder, &mut run)?;
             run.figures.readback_seconds = t.elapsed().as_secs_f64();
         }
+        // Every submission reading them has ended (`rounds` waits for the
+        // last): the next call may take them.
+        drop(buckets);
+        out.keep(self.ctx);
         Ok(run)
     }
 
-    fn outputs(&self) -> Outputs {
+    /// The output buffers, kept or new, the ones the shaders expect zeroed
+    /// cleared by `encoder`, and `params` written at their offsets (through
+    /// the queue: before the encoder's submission).
+    fn outputs(&self, params: &[Params], encoder: &mut wgpu::CommandEncoder) -> Outputs {
         let ctx = self.ctx;
         let sb = ctx.precision().bytes();
         let results_size = (self.table.len() * std::mem::size_of::<BasisResult>()) as u64;
@@ -122,37 +197,34 @@ impl<'a> EnumerationJob<'a> {
             .map(|r| (r.z + r.n) as u64)
             .max()
             .unwrap_or(0);
-        Outputs {
-            results: ctx.storage_zeroed("results", results_size),
-            results_size,
-            z: ctx.storage_zeroed("z", z_len * sb),
-            z_size: z_len * sb,
-            unfinished: ctx.storage_zeroed("unfinished", UNFINISHED_BYTES),
-            least: ctx.storage_zeroed("least_infeasibility", self.table.len() as u64 * sb),
+        let stride = Outputs::params_stride(ctx);
+        let out = Outputs {
+            results: Part::new(ctx, Role::Results, results_size),
+            z: Part::new(ctx, Role::Z, z_len * sb),
+            unfinished: Part::new(ctx, Role::Unfinished, UNFINISHED_BYTES),
+            least: Part::new(ctx, Role::Least, self.table.len() as u64 * sb),
+            params: Part::new(ctx, Role::Params, params.len() as u64 * stride),
+        };
+        // `rounds` clears `unfinished` before each submission's last round.
+        for p in [&out.results, &out.z, &out.least] {
+            encoder.clear_buffer(&p.buffer, 0, Some(p.size));
         }
+        let mut bytes = vec![0u8; out.params.size as usize];
+        for (at, p) in bytes.chunks_mut(stride as usize).zip(params) {
+            at[..std::mem::size_of::<Params>()].copy_from_slice(bytemuck::bytes_of(p));
+        }
+        ctx.queue.write_buffer(&out.params.buffer, 0, &bytes);
+        out
     }
 
-    /// One bucket per island size and tree route: a workgroup never waits
-    /// on a larger island. (One dispatch over all sizes per round was tried:
+    /// One plan per island size and tree route: a workgroup never waits on
+    /// a larger island. (One dispatch over all sizes per round was tried:
     /// 12x fewer dispatches but 35% slower at 10k islands on lavapipe, whose
     /// threads then got the small and the large islands in unequal halves.)
-    fn buckets(&self, out: &Outputs) -> Result<Vec<Bucket>, Error> {
-        let bind = |params: &wgpu::Buffer, stage: &Stage| {
-            stage.bind(
-                self.ctx,
-                &[
-                    params,
-                    self.islands,
-                    self.values,
-                    &out.results,
-                    &out.z,
-                    &out.unfinished,
-                    &out.least,
-                    self.tolerances,
-                ],
-            )
-        };
-        let mut buckets = Vec::new();
+    /// Returns the plans and the Params of every dispatch, in order.
+    fn plans(&self) -> Result<(Vec<Plan<'a>>, Vec<Params>), Error> {
+        let mut plans = Vec::new();
+        let mut params = Vec::new();
         let mut first = 0usize;
         while first < self.table.len() {
             let n = self.table[first].n;
@@ -172,20 +244,53 @@ impl<'a> EnumerationJob<'a> {
                 // params.flags bit 0: semidefinite (singular pivots cut subtrees).
                 let flags = (t == TreeRoute::Semidefinite) as u32;
                 let tree_span = Span { flags, ..span };
-                Some(
-                    self.ctx
-                        .ranges(tree_span, self.max_groups, &|p| bind(p, stage)),
-                )
+                Some((stage, split(tree_span, self.max_groups, &mut params)))
             };
             if self.plan.kernel.for_n(n as usize) == EnumerationKernel::Workgroup {
                 span.per_group = 1;
             }
             let stage = self.size_stage(n)?;
-            let ranges = self.ctx.ranges(span, self.max_groups, &|p| bind(p, stage));
-            buckets.push(Bucket { n, tree, ranges });
+            let ranges = (stage, split(span, self.max_groups, &mut params));
+            plans.push(Plan { n, tree, ranges });
             first = last;
         }
-        Ok(buckets)
+        Ok((plans, params))
+    }
+
+    /// The bind groups of every plan's dispatches.
+    fn buckets(&self, plans: Vec<Plan<'a>>, out: &Outputs) -> Result<Vec<Bucket>, Error> {
+        let stride = Outputs::params_stride(self.ctx);
+        let params_size = wgpu::BufferSize::new(std::mem::size_of::<Params>() as u64);
+        let whole = |b: &'a wgpu::Buffer| b.as_entire_buffer_binding();
+        let bind = |(stage, dispatches): (&Stage, Vec<(usize, u32)>)| -> Ranges {
+            let bind_one = |(at, groups): (usize, u32)| {
+                let params = wgpu::BufferBinding {
+                    buffer: &out.params.buffer,
+                    offset: at as u64 * stride,
+                    size: params_size,
+                };
+                let parts = [
+                    params,
+                    whole(self.islands),
+                    whole(self.values),
+                    out.results.binding(),
+                    out.z.binding(),
+                    out.unfinished.binding(),
+                    out.least.binding(),
+                    whole(self.tolerances),
+                ];
+                (stage.bind_parts(self.ctx, &parts), groups)
+            };
+            dispatches.into_iter().map(bind_one).collect()
+        };
+        Ok(plans
+            .into_iter()
+            .map(|p| Bucket {
+                n: p.n,
+                tree: p.tree.map(bind),
+                ranges: bind(p.ranges),
+            })
+            .collect())
     }
 
     /// Submits rounds (doubling the rounds per submission, up to 256) until
@@ -204,7 +309,8 @@ impl<'a> EnumerationJob<'a> {
             for r in 0..per_submit {
                 if r + 1 == per_submit {
                     // Count only what the last round of this submission leaves.
-                    encoder.clear_buffer(&out.unfinished, 0, None);
+                    let u = &out.unfinished;
+                    encoder.clear_buffer(&u.buffer, 0, Some(u.size));
                 }
                 for &b in &active {
                     let bucket = &buckets[b];
@@ -222,7 +328,8 @@ impl<'a> EnumerationJob<'a> {
                 }
             }
             run.figures.rounds += per_submit;
-            let counts = ctx.submit_and_read(encoder, &[(&out.unfinished, UNFINISHED_BYTES)])?;
+            let unfinished = [(&out.unfinished.buffer, UNFINISHED_BYTES)];
+            let counts = ctx.submit_and_read(encoder, &unfinished)?;
             let counts: &[u32] = bytemuck::try_cast_slice(&counts[0])
                 .map_err(|e| Error::Gpu(format!("unfinished counts: {e}")))?;
             active.retain(|&b| counts.get(buckets[b].n as usize).copied().unwrap_or(0) > 0);
@@ -249,7 +356,10 @@ impl<'a> EnumerationJob<'a> {
         encoder: wgpu::CommandEncoder,
         run: &mut EnumerationRun,
     ) -> Result<(), Error> {
-        let reads = [(&out.results, out.results_size), (&out.z, out.z_size)];
+        let reads = [
+            (&out.results.buffer, out.results.bytes),
+            (&out.z.buffer, out.z.bytes),
+        ];
         let mut read = self.ctx.submit_and_read(encoder, &reads)?.into_iter();
         let r_bytes = read.next().unwrap_or_default();
         let z_bytes = read.next().unwrap_or_default();

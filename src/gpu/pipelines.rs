@@ -158,13 +158,26 @@ impl Stage {
     /// A bind group with `buffers` bound, in the order of the stage's
     /// bindings (a count that does not match is a wgpu validation error).
     pub(crate) fn bind(&self, ctx: &GpuContext, buffers: &[&wgpu::Buffer]) -> wgpu::BindGroup {
+        let whole: Vec<wgpu::BufferBinding> = buffers
+            .iter()
+            .map(|b| b.as_entire_buffer_binding())
+            .collect();
+        self.bind_parts(ctx, &whole)
+    }
+
+    /// [`Self::bind`] with a part of each buffer (offset and size).
+    pub(crate) fn bind_parts(
+        &self,
+        ctx: &GpuContext,
+        parts: &[wgpu::BufferBinding],
+    ) -> wgpu::BindGroup {
         let entries: Vec<wgpu::BindGroupEntry> = self
             .bindings
             .iter()
-            .zip(buffers)
-            .map(|(&(binding, _), b)| wgpu::BindGroupEntry {
+            .zip(parts)
+            .map(|(&(binding, _), part)| wgpu::BindGroupEntry {
                 binding,
-                resource: b.as_entire_binding(),
+                resource: wgpu::BindingResource::Buffer(part.clone()),
             })
             .collect();
         ctx.device.create_bind_group(&wgpu::BindGroupDescriptor {
@@ -353,13 +366,27 @@ impl Tolerances {
         ])
     }
 
-    /// A uniform buffer holding the tolerances in `ctx`'s precision.
+    /// A uniform buffer holding the tolerances in `ctx`'s precision: the
+    /// context's, kept while the tolerances asked for are the same (a
+    /// uniform no call rewrites: others may hold it), else a new one, kept
+    /// in its place.
     pub(crate) fn upload(&self, ctx: &GpuContext) -> wgpu::Buffer {
-        ctx.device
+        let mut kept = ctx.kept.lock().ok();
+        if let Some((t, buffer)) = kept.as_ref().and_then(|k| k.tolerances.as_ref()) {
+            if t == self {
+                return buffer.clone();
+            }
+        }
+        let buffer = ctx
+            .device
             .create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some("tolerances"),
                 contents: &scalars_to_bytes(&self.0, ctx.precision()),
                 usage: wgpu::BufferUsages::UNIFORM,
-            })
+            });
+        if let Some(k) = kept.as_mut() {
+            k.tolerances = Some((*self, buffer.clone()));
+        }
+        buffer
     }
 }

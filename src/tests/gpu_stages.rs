@@ -277,3 +277,68 @@ fn enumeration_matches_cpu_twin_f64() {
     }
     println!("{} islands, {} dispatches", lcps.len(), stats.dispatches);
 }
+
+/// The enumeration stage's buffers kept between calls (`Role`): a context
+/// that ran earlier batches, larger and smaller, other tolerances, split in
+/// chunks or not, gives each batch the answers of a context that keeps
+/// nothing, record
+/// for record and z for z, at each precision. A kept output not cleared, a
+/// stale Params, tolerances or island table would change them: each batch
+/// is another draw of islands than the one before it.
+fn kept_buffers_match_fresh_contexts(precision: Precision) {
+    use crate::gpu::buffers::Role;
+    let (Some(kept), Some(fresh)) = (context(precision), context(precision)) else {
+        return;
+    };
+    let loose = GpuSolveSettings {
+        gpu_feasibility_tol: Some(1e-3),
+        ..Default::default()
+    };
+    let chunked = GpuSolveSettings {
+        max_binding_bytes: Some(4096),
+        ..Default::default()
+    };
+    let batches = [
+        (
+            super::common::physical_islands(31, 120, 10),
+            GpuSolveSettings::default(),
+        ),
+        (
+            super::common::physical_islands(32, 12, 5),
+            GpuSolveSettings::default(),
+        ),
+        (super::common::physical_islands(33, 200, 9), loose),
+        (super::common::physical_islands(34, 60, 8), chunked),
+        (
+            super::common::physical_islands(35, 3, 3),
+            GpuSolveSettings::default(),
+        ),
+    ];
+    for (b, (lcps, settings)) in batches.iter().enumerate() {
+        let refs: Vec<&Lcp> = lcps.iter().collect();
+        let again = enumerate_on_gpu(&kept, &refs, settings).unwrap().0;
+        // A context that keeps nothing (its pipelines compiled once).
+        *fresh.kept.lock().unwrap() = Default::default();
+        let want = enumerate_on_gpu(&fresh, &refs, settings).unwrap().0;
+        assert_eq!(again.len(), lcps.len(), "batch {b}");
+        for (i, (a, f)) in again.iter().zip(&want).enumerate() {
+            assert_eq!(a, f, "batch {b} ({} islands), island {i}", lcps.len());
+        }
+        // The buffers are kept for the next batch (so that it takes them).
+        for role in [Role::Values, Role::Results, Role::Z, Role::Params] {
+            let buffer = kept.take_kept(role, 16);
+            assert!(buffer.is_some(), "batch {b}: no {role:?} buffer kept");
+            kept.keep(role, buffer.unwrap());
+        }
+    }
+}
+
+#[test]
+fn kept_buffers_match_fresh_contexts_f32() {
+    kept_buffers_match_fresh_contexts(Precision::F32);
+}
+
+#[test]
+fn kept_buffers_match_fresh_contexts_f64() {
+    kept_buffers_match_fresh_contexts(Precision::F64);
+}
