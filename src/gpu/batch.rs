@@ -30,7 +30,7 @@ use super::layout::BasisResult;
 use super::pipelines::Tolerances;
 use super::validation::{check_answer, GpuVerdict, Verdict};
 use super::{GpuContext, Precision, MAX_GPU_N};
-use crate::cpu::batch::parallel_fill_by;
+use crate::cpu::batch::{parallel_fill_by, parallel_map};
 use crate::cpu::enumeration::EnumerationSettings;
 use crate::cpu::enumeration_tree::TREE_MAX_N;
 use crate::cpu::lemke::{lemke, LemkeSettings};
@@ -219,11 +219,11 @@ fn enumerate_known(
     let plan = KernelPlan::new(ctx, settings);
 
     let t = Instant::now();
-    let tree: Vec<TreeRoute> = lcps
-        .iter()
-        .enumerate()
-        .map(|(i, l)| plan.tree_for(l, definite.get(i).copied().flatten()))
-        .collect();
+    // Each island's route through the tree kernel, on every thread (the
+    // test of M's semidefiniteness is O(n³) where prediction did not run).
+    let tree: Vec<TreeRoute> = parallel_map(lcps.len(), settings.threads, |i| {
+        plan.tree_for(lcps[i], definite.get(i).copied().flatten())
+    });
     let chunks = pack_chunks(lcps, &tree, max_bytes, precision.bytes());
     figures.pack_seconds += t.elapsed().as_secs_f64();
     let mut answers = Answers {
