@@ -12,13 +12,14 @@
 //! The host's share runs on every core, in blocks of consecutive islands
 //! ([`BLOCK`]) written where the report keeps them: one pass checks each
 //! problem, looks up its warm basis and settles what needs no GPU
-//! (prediction, Lemke above n = 16), then the rest is packed straight into
-//! the device's buffers (in parallel, in the shader's precision), and after
-//! the kernels a second pass checks each answer in f64
+//! (prediction, Lemke above n = 16), then the rest is packed (in parallel,
+//! in the shader's precision) and copied once into buffers the context
+//! keeps between calls, and after the kernels a second pass checks each
+//! answer in f64
 //! ([`super::validation`]). Nothing is allocated per island for n ≤ 8.
 
 // The stage entry point `enumerate_on_gpu` (the GPU's raw verdicts)
-// serves the stage tests; the Solver calls `solve_lcp_batch`.
+// serves the stage tests; the Solver calls `solve_lcp_batch_warm`.
 #![cfg_attr(not(test), allow(dead_code))]
 
 use std::time::Instant;
