@@ -34,6 +34,7 @@ use crate::lcp::{Lcp, LcpSolution};
 use crate::report::{Device, GpuFigures, IslandReport, Report, SceneReport, SolvePath};
 use crate::scene::Scene;
 use crate::settings::Method;
+use crate::short_vec::ShortVec;
 use crate::Error;
 
 /// The GPU's assembly stage output, unpacked (for comparison with the twin).
@@ -326,7 +327,10 @@ pub fn solve_scenes_warm(
     }
     first.push(index.len());
     let warm_of = |s: usize, k: usize| warm.and_then(|w| w.get(s)?.get(k).copied().flatten());
-    let in_alone: Vec<bool> = (0..scenes.len()).map(|s| alone.contains(&s)).collect();
+    let mut in_alone = vec![false; scenes.len()];
+    for &s in &alone {
+        in_alone[s] = true;
+    }
     let mut figures = GpuFigures::default();
     let mut polished = 0;
 
@@ -386,9 +390,13 @@ pub fn solve_scenes_warm(
             let ((s, k), rec) = (c.enum_keys[j], &c.enum_table[j]);
             let (z0, n) = (rec.z as usize, rec.n as usize);
             let answer = (&out.results[j], out.z.get(z0..z0 + n).unwrap_or(&[]));
+            // Only method, path and solution are written (and taken below).
             let mut island = IslandReport {
+                scene: None,
+                contacts: ShortVec::new(),
+                method: Method::Enumeration,
+                path: SolvePath::EnumeratedGpu,
                 solution: LcpSolution::invalid(0),
-                ..islands[first[s] + k].clone()
             };
             settle_from_gpu(&built[s].lcps[k], answer, settings, exact, &mut island)
                 .map(|(verdict, gpu_error)| (island, verdict, gpu_error))
@@ -396,7 +404,8 @@ pub fn solve_scenes_warm(
         for (j, r) in checked.into_iter().enumerate() {
             let (island, verdict, gpu_error) = r?;
             let (s, k) = c.enum_keys[j];
-            islands[first[s] + k] = island;
+            let mine = &mut islands[first[s] + k];
+            (mine.method, mine.path, mine.solution) = (island.method, island.path, island.solution);
             polished += (verdict == Verdict::Polished) as usize;
             if gpu_error > figures.max_gpu_error {
                 figures.max_gpu_error = gpu_error;

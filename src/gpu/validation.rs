@@ -25,7 +25,6 @@ use crate::cpu::enumeration::{enumerate, feasible_basis_into, EnumerationSetting
 use crate::gpu::layout::{BasisResult, FOUND, RELAXED};
 use crate::lcp::{lcp_error, Counters, Lcp, LcpSolution, Status};
 use crate::linalg::solve_in_place;
-use crate::short_vec::ShortVec;
 use crate::Error;
 
 /// What the GPU reported for one island.
@@ -131,10 +130,7 @@ pub fn check_answer(
 ) -> Result<(Verdict, f64), Error> {
     let n = lcp.n();
     let gpu_error = if gpu.basis.is_some() && gpu.z.len() == n {
-        let mut w = ShortVec::new();
-        w.reset(0.0, n);
-        lcp.w_into(gpu.z, &mut w);
-        lcp_error(gpu.z, &w, &lcp.q)
+        lcp_error(gpu.z, &lcp.w(gpu.z), &lcp.q)
     } else {
         f64::NAN
     };
