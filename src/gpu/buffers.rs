@@ -14,7 +14,7 @@ use crate::Error;
 impl GpuContext {
     /// Whether the device maps storage buffers themselves (software
     /// adapters, see `GpuContext::new`): no staging buffer or copy on the
-    /// way in ([`Self::storage_filled`]) or out ([`Self::submit_and_map`]).
+    /// way in ([`Self::kept_written`]) or out ([`Self::submit_and_map`]).
     fn maps_storage(&self) -> bool {
         self.device
             .features()
@@ -65,90 +65,6 @@ impl GpuContext {
             usage: self.storage_usage(),
             mapped_at_creation: false,
         })
-    }
-
-    /// A storage buffer of `size` bytes (rounded up to 16 and to 4) that
-    /// `fill` writes in place while it is mapped at creation; what `fill`
-    /// leaves alone stays 0. One copy fewer than [`Self::storage`] from a
-    /// byte vector, and no vector: for the large frictional batches the
-    /// copies cost as much as the iterations on lavapipe (measured).
-    pub(crate) fn storage_filled(
-        &self,
-        label: &str,
-        size: u64,
-        fill: impl FnOnce(&mut wgpu::BufferViewMut),
-    ) -> Result<wgpu::Buffer, Error> {
-        let mut usage = self.storage_usage();
-        // Where the device allows it, the buffer itself is mapped: no
-        // staging buffer.
-        if self.maps_storage() {
-            usage |= wgpu::BufferUsages::MAP_WRITE;
-        }
-        let buffer = self.device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some(label),
-            size: size.max(16).next_multiple_of(4),
-            usage,
-            mapped_at_creation: true,
-        });
-        let all = buffer.size();
-        fill_mapped(buffer, all, label, fill)
-    }
-
-    /// [`Self::storage_filled`] where `fill` writes every byte the shaders
-    /// will read: the others are left as they are, 0 in a new buffer, an
-    /// earlier batch's bytes in a kept one. Where the device maps storage
-    /// buffers ([`Self::maps_storage`]), a buffer given back by
-    /// [`Self::keep_spare`] of at least `size` bytes (and at most twice) is
-    /// mapped and written again: a new buffer costs a zeroing by wgpu and
-    /// the kernel's first touch of every page (the friction batches' W,
-    /// 12.8 MB at 10,000 islands of k = 4: about 1 ms of 25 on lavapipe,
-    /// measured).
-    pub(crate) fn storage_written(
-        &self,
-        label: &str,
-        size: u64,
-        fill: impl FnOnce(&mut wgpu::BufferViewMut),
-    ) -> Result<wgpu::Buffer, Error> {
-        let size = size.max(16).next_multiple_of(4);
-        let kept = self.maps_storage().then(|| self.take_spare(size)).flatten();
-        let Some(buffer) = kept else {
-            return self.storage_filled(label, size, fill);
-        };
-        buffer.slice(..size).map_async(wgpu::MapMode::Write, |_| {});
-        self.device
-            .poll(wgpu::PollType::wait_indefinitely())
-            .map_err(|e| Error::Gpu(format!("mapping {label}: {e}")))?;
-        fill_mapped(buffer, size, label, fill)
-    }
-
-    /// A kept buffer of `size` to twice `size` bytes, the smallest (None
-    /// when there is none).
-    fn take_spare(&self, size: u64) -> Option<wgpu::Buffer> {
-        let mut spare = self.spare.lock().ok()?;
-        let fits = |b: &wgpu::Buffer| b.size() >= size && b.size() <= 2 * size;
-        let at = (0..spare.len())
-            .filter(|&i| fits(&spare[i]))
-            .min_by_key(|&i| spare[i].size())?;
-        Some(spare.swap_remove(at))
-    }
-
-    /// Keeps `buffer` (made by [`Self::storage_written`]; the caller is
-    /// done with it, and wgpu waits for any submission still using it
-    /// before it is mapped again) for a later batch: the newest
-    /// [`SPARE_BUFFERS`], at most [`SPARE_BYTES`] in all (a larger buffer
-    /// is let go: host memory a context would hold after one huge batch).
-    pub(crate) fn keep_spare(&self, buffer: wgpu::Buffer) {
-        if !self.maps_storage() || buffer.size() > SPARE_BYTES {
-            return;
-        }
-        if let Ok(mut spare) = self.spare.lock() {
-            spare.push(buffer);
-            while spare.len() > SPARE_BUFFERS
-                || spare.iter().map(wgpu::Buffer::size).sum::<u64>() > SPARE_BYTES
-            {
-                spare.remove(0);
-            }
-        }
     }
 
     /// Copies each (buffer, bytes) to a mappable buffer, submits `encoder`,
@@ -243,6 +159,12 @@ pub(crate) enum Role {
     Params,
     /// Mappable copies of storage buffers for reading back (hardware).
     Readback,
+    /// The friction batches' W, q, μ and their vectors: host-written like
+    /// `Values` (a new buffer costs a zeroing by wgpu and the kernel's first
+    /// touch of every page: the W of 10,000 islands of k = 4, 12.8 MB, about
+    /// 1 ms of 25 on lavapipe, measured).
+    FrictionValues,
+    FrictionVectors,
 }
 
 /// The buffers a context keeps between calls, by role, and the
@@ -269,7 +191,9 @@ impl GpuContext {
     fn role_usage(&self, role: Role) -> wgpu::BufferUsages {
         use wgpu::BufferUsages as U;
         match role {
-            Role::Islands | Role::Values if self.maps_storage() => {
+            Role::Islands | Role::Values | Role::FrictionValues | Role::FrictionVectors
+                if self.maps_storage() =>
+            {
                 self.storage_usage() | U::MAP_WRITE
             }
             Role::Params => U::UNIFORM | U::COPY_DST,
@@ -410,14 +334,6 @@ fn fill_mapped(
     buffer.unmap();
     Ok(buffer)
 }
-
-/// Host-written buffers a context keeps between batches (two per
-/// friction chunk: its W, q, μ and its vectors).
-const SPARE_BUFFERS: usize = 4;
-
-/// Bytes of the buffers a context keeps between batches, in all: 512 MiB
-/// (the W of 400,000 islands of k = 4 in f64).
-const SPARE_BYTES: u64 = 512 << 20;
 
 /// Largest bytes per binding and workgroups per dispatch for this batch.
 pub(crate) fn limits_for(ctx: &GpuContext, settings: &GpuSolveSettings) -> (u64, u32) {

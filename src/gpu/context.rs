@@ -340,11 +340,8 @@ pub struct GpuContext {
     pub(crate) errors: ErrorSink,
     /// The pipelines of the context's precision: built on first use, then reused.
     pub(crate) pipelines: Mutex<Option<Arc<Pipelines>>>,
-    /// Host-written storage buffers of earlier batches, kept for the next
-    /// (`GpuContext::storage_written`, software adapters only).
-    pub(crate) spare: Mutex<Vec<wgpu::Buffer>>,
-    /// The LCP enumeration stage's buffers by role, kept for the next call,
-    /// and its tolerances uniform ([`super::buffers::Kept`]).
+    /// The LCP enumeration stage's and the friction batches' buffers by
+    /// role, kept for the next call, and the tolerances uniform ([`super::buffers::Kept`]).
     pub(crate) kept: Mutex<super::buffers::Kept>,
 }
 
@@ -397,7 +394,7 @@ impl GpuContext {
         }
         // A software adapter's buffers are host memory: storage buffers the
         // host writes in place save a staging buffer and its copy at the
-        // next submission (`storage_filled`: the friction batches' W, 12.8
+        // next submission (`kept_written`: the friction batches' W, 12.8
         // MB at 10,000 islands of k = 4, about 3 ms of 45 on lavapipe).
         let mappable = wgpu::Features::MAPPABLE_PRIMARY_BUFFERS;
         if summary.software && adapter.features().contains(mappable) {
@@ -438,7 +435,6 @@ impl GpuContext {
             limits,
             errors,
             pipelines: Mutex::new(None),
-            spare: Mutex::new(Vec::new()),
             kept: Mutex::default(),
         })
     }

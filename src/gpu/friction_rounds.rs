@@ -4,6 +4,7 @@
 
 use bytemuck::{Pod, Zeroable};
 
+use super::buffers::Role;
 use super::dispatch::{Ranges, Span};
 use super::layout::{scalar_from_bytes, scalars_from_bytes, scalars_to_bytes};
 use super::pipelines::{Pipelines, Stage};
@@ -166,7 +167,7 @@ pub(crate) fn pack_friction_chunks(
 
 /// Writes `src` at scalar `at` of `view` in precision `p` (little-endian,
 /// as the shaders read them).
-fn write_scalars(view: &mut wgpu::BufferViewMut, at: usize, src: &[f64], p: Precision) {
+fn write_scalars(view: &mut wgpu::WriteOnly<[u8]>, at: usize, src: &[f64], p: Precision) {
     if src.is_empty() {
         return;
     }
@@ -297,29 +298,28 @@ impl RoundsJob<'_> {
         let scalars_size = count * SCALARS as u64 * sb;
         let vectors_size = chunk.vectors_len as u64 * sb;
         // Both written in place, in buffers kept from the last chunk where
-        // there are (`storage_written`): every byte a shader reads is
-        // written here. The shaders read an island's block padding, and
-        // drop it.
-        let values =
-            ctx.storage_written("friction values", chunk.values_len as u64 * sb, |view| {
-                for (rec, &i) in chunk.table.iter().zip(&chunk.order) {
-                    let (pr, at) = (&problems[i], rec.data as usize);
-                    write_scalars(view, at, &pr.w, p);
-                    write_scalars(view, at + pr.w.len(), &pr.q, p);
-                    write_scalars(view, at + pr.w.len() + pr.q.len(), &pr.mu, p);
-                }
-            })?;
+        // there are (`kept_written`): every byte a shader reads is written
+        // here. The shaders read an island's block padding, and drop it.
+        let values_size = chunk.values_len as u64 * sb;
+        let values = ctx.kept_written(Role::FrictionValues, values_size, |mut view| {
+            for (rec, &i) in chunk.table.iter().zip(&chunk.order) {
+                let (pr, at) = (&problems[i], rec.data as usize);
+                write_scalars(&mut view, at, &pr.w, p);
+                write_scalars(&mut view, at + pr.w.len(), &pr.q, p);
+                write_scalars(&mut view, at + pr.w.len() + pr.q.len(), &pr.mu, p);
+            }
+        })?;
         // The first round reads each island's start r0 (x, 3k: 0 without a
         // warm start) and computes the rest of its vectors (it may read a
         // few entries past x, in its own block, and overwrite them).
         let zeros = [0.0; 3 * MAX_GPU_CONTACTS];
-        let vectors = ctx.storage_written("friction vectors", vectors_size, |view| {
+        let vectors = ctx.kept_written(Role::FrictionVectors, vectors_size, |mut view| {
             for (rec, &i) in chunk.table.iter().zip(&chunk.order) {
                 let k = rec.k as usize;
                 let r0 = warm
                     .and_then(|w| w.get(i))
                     .map_or(&zeros[..3 * k], Vec::as_slice);
-                write_scalars(view, rec.vectors as usize, r0, p);
+                write_scalars(&mut view, rec.vectors as usize, r0, p);
             }
         })?;
         Ok(ChunkBuffers {
@@ -442,8 +442,8 @@ impl RoundsJob<'_> {
             };
         }
         run.islands = self.read(chunk, &b)?;
-        ctx.keep_spare(b.values);
-        ctx.keep_spare(b.vectors);
+        ctx.keep(Role::FrictionValues, b.values);
+        ctx.keep(Role::FrictionVectors, b.vectors);
         Ok(run)
     }
 

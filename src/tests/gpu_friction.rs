@@ -180,10 +180,10 @@ fn growing_rounds_give_the_iterates_of_full_rounds() {
     }
 }
 
-/// The friction batches' buffers are written in place at creation
-/// (`storage_filled`): a shader's view of them, read back, is what was
-/// written, and 0 where nothing was; on a software adapter the device maps
-/// storage buffers themselves (no staging copy).
+/// The friction batches' buffers are written in place, a new one at its
+/// creation (`kept_written` on a fresh context): a shader's view of them,
+/// read back, is what was written, and 0 where nothing was; on a software
+/// adapter the device maps storage buffers themselves (no staging copy).
 #[test]
 fn filled_storage_buffers_hold_what_was_written() {
     let Some(ctx) = gpu_context(Precision::F64) else {
@@ -196,8 +196,9 @@ fn filled_storage_buffers_hold_what_was_written() {
             .contains(wgpu::Features::MAPPABLE_PRIMARY_BUFFERS));
     }
     let written: Vec<u8> = (1..=24).collect();
+    let role = crate::gpu::buffers::Role::FrictionValues;
     let buffer = ctx
-        .storage_filled("test", 64, |view| {
+        .kept_written(role, 64, |mut view| {
             view.slice(16..40).copy_from_slice(&written);
         })
         .unwrap();
@@ -218,13 +219,12 @@ fn kept_buffers_are_written_again_and_change_no_answer() {
     let Some(ctx) = gpu_context(Precision::F64) else {
         return;
     };
-    let first = ctx
-        .storage_written("test", 64, |view| view.slice(..).fill(7))
-        .unwrap();
+    let role = crate::gpu::buffers::Role::FrictionValues;
+    let first = ctx.kept_written(role, 64, |mut view| view.fill(7)).unwrap();
     let kept = first.clone();
-    ctx.keep_spare(first);
+    ctx.keep(role, first);
     let again = ctx
-        .storage_written("test", 48, |view| view.slice(..8).fill(9))
+        .kept_written(role, 48, |mut view| view.slice(..8).fill(9))
         .unwrap();
     let back = ctx
         .submit_and_read(ctx.encoder("test"), &[(&again, 64)])
