@@ -27,6 +27,7 @@ pub(crate) mod projected;
 pub(crate) mod random;
 pub(crate) mod residual;
 pub(crate) mod solve;
+pub(crate) mod sparse;
 pub(crate) mod workspace;
 
 pub use cone::{project_on_cone, project_on_disc};

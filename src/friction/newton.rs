@@ -23,6 +23,7 @@
 //! ½‖Φ‖² decides the step length (Armijo, halving).
 
 use super::problem::FrictionProblem;
+use super::sparse::{lu_envelope, product_sparse};
 use super::workspace::{dot, Workspace};
 use crate::linalg::{solve_in_place, PIVOT_TOL};
 
@@ -148,9 +149,21 @@ fn step(p: &FrictionProblem, r: &[f64], ws: &mut Workspace) -> Option<f64> {
         for (d, f) in ws.delta.iter_mut().zip(&ws.phi) {
             *d = -f;
         }
-        if solve_in_place(&mut ws.matrix, &mut ws.delta, n, PIVOT_TOL)
-            && ws.delta.iter().all(|d| d.is_finite())
-        {
+        // Large islands (reordered, `sparse::SPARSE_FROM`): within W's
+        // envelope, without row exchanges (∂Φ's rows of contact i are
+        // combinations of e_i's and W_i's: its pattern is W's).
+        let solved = if ws.env_first.is_empty() {
+            solve_in_place(&mut ws.matrix, &mut ws.delta, n, PIVOT_TOL)
+        } else {
+            lu_envelope(
+                &mut ws.matrix,
+                &mut ws.delta,
+                n,
+                &ws.env_first,
+                &ws.env_last,
+            )
+        };
+        if solved && ws.delta.iter().all(|d| d.is_finite()) {
             return Some(slope(&ws.jac, &ws.phi, &ws.delta, n));
         }
         ws.singular = true;
@@ -464,7 +477,7 @@ pub(crate) fn newton_in(
         };
         steps += 1;
         // W Δ once: each trial's u is then u + t W Δ, O(k).
-        super::workspace::velocity_into_linear(p, &ws.delta, &mut ws.w_delta);
+        product_sparse(p, &ws.pattern, &ws.delta, &mut ws.w_delta);
         let mut t = 1.0;
         let mut accepted = false;
         while t > LS_MIN {

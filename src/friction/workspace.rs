@@ -8,6 +8,7 @@ use std::cell::RefCell;
 use super::local::Block;
 use super::problem::FrictionProblem;
 use super::residual::{coulomb_error_into, norm};
+use super::sparse::{envelope, velocity_sparse, Pattern, SPARSE_FROM};
 
 /// Per-island state and scratch of the exact solvers. [`Workspace::prepare`]
 /// sizes it for a problem; every buffer then has the problem's dimension.
@@ -49,6 +50,12 @@ pub struct Workspace {
     pub(crate) best: Vec<f64>,
     /// The start r (hybrid's Newton restart), 3k.
     pub(crate) start: Vec<f64>,
+    /// W's nonzero blocks (products and sweeps over them only).
+    pub(crate) pattern: Pattern,
+    /// W's envelope (`sparse::envelope`), on islands of at least
+    /// `sparse::SPARSE_FROM` contacts (else empty: dense LU).
+    pub(crate) env_first: Vec<usize>,
+    pub(crate) env_last: Vec<usize>,
     /// The LU of ∂Φ failed on this island (W rank-deficient, as for a box on
     /// four coplanar corners): later steps go to Levenberg–Marquardt directly.
     pub(crate) singular: bool,
@@ -111,12 +118,20 @@ impl Workspace {
         }));
         self.q_norm = norm(&p.q);
         self.singular = false;
+        self.pattern.build(p);
+        if p.contacts() >= SPARSE_FROM {
+            envelope(&self.pattern, &mut self.env_first, &mut self.env_last);
+        } else {
+            self.env_first.clear();
+            self.env_last.clear();
+        }
         self.refresh(p, r);
     }
 
-    /// u = W r + q recomputed exactly (the sweeps update it incrementally).
+    /// u = W r + q recomputed exactly (the sweeps update it incrementally),
+    /// over W's nonzero blocks: the bits of [`velocity_into`].
     pub fn refresh(&mut self, p: &FrictionProblem, r: &[f64]) {
-        velocity_into(p, r, &mut self.u);
+        velocity_sparse(p, &self.pattern, r, &mut self.u);
     }
 
     /// The Coulomb error of r with the current u (the same number as
@@ -165,6 +180,7 @@ pub fn dot(a: &[f64], b: &[f64]) -> f64 {
 }
 
 /// W x into `out` (the change of u = W r + q when r moves by x).
+#[cfg(test)]
 pub fn velocity_into_linear(p: &FrictionProblem, x: &[f64], out: &mut [f64]) {
     let n = p.dim();
     for (i, o) in out.iter_mut().enumerate() {
