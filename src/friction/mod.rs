@@ -24,6 +24,7 @@ pub(crate) mod newton;
 pub(crate) mod nsgs;
 pub(crate) mod problem;
 pub(crate) mod projected;
+pub(crate) mod prox;
 pub(crate) mod random;
 pub(crate) mod residual;
 pub(crate) mod solve;
