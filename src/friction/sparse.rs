@@ -23,7 +23,9 @@ pub const SPARSE_FROM: usize = 32;
 
 /// The nonzero 3 × 3 blocks of W, by block row (compressed rows): block
 /// (i, j) is listed where W's block (i, j) or (j, i) has a nonzero entry
-/// (a symmetric pattern), and (i, i) always; columns ascending.
+/// (a symmetric pattern), and (i, i) always; columns ascending. Below
+/// [`SPARSE_FROM`] contacts every block is listed (the dense loops, as
+/// before, at no cost of finding the zeros).
 #[derive(Debug, Default)]
 pub struct Pattern {
     /// Row i's blocks are `cols[start[i]..start[i + 1]]`.
@@ -39,8 +41,8 @@ impl Pattern {
     pub fn build(&mut self, p: &FrictionProblem) {
         let (k, n) = (p.contacts(), p.dim());
         self.flags.clear();
-        self.flags.resize(k * k, false);
-        for row in 0..n {
+        self.flags.resize(k * k, k < SPARSE_FROM);
+        for row in (0..n).filter(|_| k >= SPARSE_FROM) {
             let i = row / 3;
             let w = &p.w[row * n..(row + 1) * n];
             for j in 0..k {
@@ -77,10 +79,17 @@ impl Pattern {
 #[inline]
 pub fn row_dot(p: &FrictionProblem, pattern: &Pattern, row: usize, x: &[f64]) -> f64 {
     let n = p.dim();
-    let w = &p.w[row * n..(row + 1) * n];
+    blocks_dot(&p.w[row * n..(row + 1) * n], pattern.row(row / 3), x)
+}
+
+/// `w` · x (both 3k long) where w is zero outside the contact `blocks`:
+/// the bits of [`super::workspace::dot`] (see [`row_dot`]).
+#[inline]
+pub fn blocks_dot(w: &[f64], blocks: &[usize], x: &[f64]) -> f64 {
+    let n = w.len();
     let body = n - n % 4;
     let mut s = [0.0f64; 4];
-    for &j in pattern.row(row / 3) {
+    for &j in blocks {
         for c in 3 * j..(3 * j + 3).min(body) {
             s[c % 4] += w[c] * x[c];
         }

@@ -26,7 +26,7 @@ pub struct Workspace {
     pub(crate) q_norm: f64,
     /// Φ(r) of the Alart–Curnier equation, 3k.
     pub(crate) phi: Vec<f64>,
-    /// Its generalized Jacobian, 3k × 3k.
+    /// Its generalized Jacobian, 3k × 3k (zero outside W's block pattern).
     pub(crate) jac: Vec<f64>,
     /// The Newton step Δ, 3k.
     pub(crate) delta: Vec<f64>,
@@ -100,10 +100,13 @@ impl Workspace {
             v.clear();
             v.resize(n, 0.0);
         }
-        // Written in full before they are read: sized, not cleared.
-        for v in [&mut self.jac, &mut self.matrix, &mut self.normal] {
+        // Written in full before they are read: sized, not cleared; ∂Φ is
+        // written only within W's pattern: zero elsewhere.
+        for v in [&mut self.matrix, &mut self.normal] {
             v.resize(n * n, 0.0);
         }
+        self.jac.clear();
+        self.jac.resize(n * n, 0.0);
         self.blocks.clear();
         self.blocks
             .extend((0..p.contacts()).map(|i| diagonal_block(p, i)));
