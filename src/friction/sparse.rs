@@ -303,7 +303,10 @@ mod tests {
             let p = chain_problem(seed, k);
             let mut pattern = Pattern::default();
             pattern.build(&p);
-            assert!(k < 16 || pattern.cols.len() < k * k / 2, "k = {k}: sparse");
+            assert!(
+                k < SPARSE_FROM || pattern.cols.len() < k * k / 2,
+                "k = {k}: sparse"
+            );
             let r: Vec<f64> = (0..p.dim()).map(|i| (i as f64 * 0.37).sin()).collect();
             let (mut dense, mut sparse) = (vec![0.0; p.dim()], vec![0.0; p.dim()]);
             velocity_into(&p, &r, &mut dense);
