@@ -41,7 +41,7 @@ fn friction_method_parses_its_names() {
         &FrictionMethod::ALL,
         FrictionMethod::name,
         "friction_method",
-        "auto, nsgs, newton, jacobi, pgs, apgd",
+        "auto, nsgs, newton, prox, jacobi, pgs, apgd",
     );
 }
 

@@ -28,7 +28,7 @@ pub(crate) struct Args<'a> {
     pub lemke_max_pivots: Option<u64>,
     pub pgs_max_sweeps: Option<u64>,
     pub pgs_tolerance: Option<f64>,
-    /// "auto", "nsgs", "newton", "jacobi", "pgs" or "apgd" (islands and
+    /// "auto", "nsgs", "newton", "prox", "jacobi", "pgs" or "apgd" (islands and
     /// problems with friction).
     pub friction_method: &'a str,
     pub friction_tolerance: Option<f64>,
@@ -94,7 +94,7 @@ impl Args<'_> {
                 bad(
                     "friction_method",
                     self.friction_method,
-                    "'auto', 'nsgs', 'newton', 'jacobi', 'pgs', 'apgd'",
+                    "'auto', 'nsgs', 'newton', 'prox', 'jacobi', 'pgs', 'apgd'",
                 )
             })?;
         if let Some(t) = self.friction_tolerance {

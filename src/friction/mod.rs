@@ -24,9 +24,11 @@ pub(crate) mod newton;
 pub(crate) mod nsgs;
 pub(crate) mod problem;
 pub(crate) mod projected;
+pub(crate) mod prox;
 pub(crate) mod random;
 pub(crate) mod residual;
 pub(crate) mod solve;
+pub(crate) mod sparse;
 pub(crate) mod workspace;
 
 pub use cone::{project_on_cone, project_on_disc};

@@ -23,18 +23,21 @@
 //! ½‖Φ‖² decides the step length (Armijo, halving).
 
 use super::problem::FrictionProblem;
+use super::sparse::{blocks_dot, lu_envelope, product_sparse, Pattern};
 use super::workspace::{dot, Workspace};
 use crate::linalg::{solve_in_place, PIVOT_TOL};
 
 /// Φ(r) (3k) into `phi`, given u = W r + q, and when `jacobian` is Some its
-/// generalized Jacobian (3k × 3k, row-major) written there.
+/// generalized Jacobian (3k × 3k, row-major) written there within W's
+/// block `pattern` (contact i's rows are nonzero only in its neighbours'
+/// columns; the caller keeps the rest zero).
 fn alart_curnier(
     p: &FrictionProblem,
     r: &[f64],
     u: &[f64],
     rho: &[f64],
     phi: &mut [f64],
-    jacobian: Option<&mut [f64]>,
+    jacobian: Option<(&mut [f64], &Pattern)>,
 ) {
     let mut jac = jacobian;
     for (i, &mu) in p.mu.iter().enumerate() {
@@ -53,16 +56,24 @@ fn alart_curnier(
         };
         phi[k1] = r[k1] - pt[0];
         phi[k2] = r[k2] - pt[1];
-        let Some(j) = jac.as_deref_mut() else {
+        let Some((j, pattern)) = jac.as_mut() else {
             continue;
         };
-        jacobian_rows(p, i, [xn, xt[0], xt[1]], rh, j);
+        jacobian_rows(p, i, [xn, xt[0], xt[1]], rh, j, pattern.row(i));
     }
 }
 
 /// Contact i's three rows of ∂Φ (module docs) at x = (x_n, x_t) with
-/// scaling ρ, into the 3k × 3k row-major `j`.
-fn jacobian_rows(p: &FrictionProblem, i: usize, x: [f64; 3], rh: f64, j: &mut [f64]) {
+/// scaling ρ, into the 3k × 3k row-major `j`, in the columns of the
+/// contact `blocks` coupled to i.
+fn jacobian_rows(
+    p: &FrictionProblem,
+    i: usize,
+    x: [f64; 3],
+    rh: f64,
+    j: &mut [f64],
+    blocks: &[usize],
+) {
     let n = p.dim();
     let mu = p.mu[i];
     let (kn, k1, k2) = (3 * i, 3 * i + 1, 3 * i + 2);
@@ -76,11 +87,12 @@ fn jacobian_rows(p: &FrictionProblem, i: usize, x: [f64; 3], rh: f64, j: &mut [f
         &p.w[k2 * n..k2 * n + n],
     );
     let e = |d: usize, col: usize| if d == col { 1.0 } else { 0.0 };
-    for col in 0..n {
+    let columns = || blocks.iter().flat_map(|&b| 3 * b..3 * b + 3);
+    for col in columns() {
         j[kn * n + col] = if xn > 0.0 { rh * wn[col] } else { e(kn, col) };
     }
     if sticks {
-        for col in 0..n {
+        for col in columns() {
             j[k1 * n + col] = rh * w1[col];
             j[k2 * n + col] = rh * w2[col];
         }
@@ -89,7 +101,7 @@ fn jacobian_rows(p: &FrictionProblem, i: usize, x: [f64; 3], rh: f64, j: &mut [f
     // Slide: ∂x_d = e_d − ρ W_d, ∂λ = μ ∂x_n (x_n > 0).
     let z = [xt[0] / s, xt[1] / s];
     let c = lambda / s;
-    for col in 0..n {
+    for col in columns() {
         let dl = if xn > 0.0 {
             mu * (e(kn, col) - rh * wn[col])
         } else {
@@ -135,7 +147,7 @@ pub fn scalings(p: &FrictionProblem) -> Vec<f64> {
 fn step(p: &FrictionProblem, r: &[f64], ws: &mut Workspace) -> Option<f64> {
     let n = p.dim();
     if classify(p, r, ws) && stick_step(p, ws) {
-        let s = slope(&ws.jac, &ws.phi, &ws.delta, n);
+        let s = slope(&ws.jac, &ws.phi, &ws.delta, &ws.pattern);
         if s < 0.0 {
             return Some(s);
         }
@@ -148,10 +160,22 @@ fn step(p: &FrictionProblem, r: &[f64], ws: &mut Workspace) -> Option<f64> {
         for (d, f) in ws.delta.iter_mut().zip(&ws.phi) {
             *d = -f;
         }
-        if solve_in_place(&mut ws.matrix, &mut ws.delta, n, PIVOT_TOL)
-            && ws.delta.iter().all(|d| d.is_finite())
-        {
-            return Some(slope(&ws.jac, &ws.phi, &ws.delta, n));
+        // Large islands (reordered, `sparse::SPARSE_FROM`): within W's
+        // envelope, without row exchanges (∂Φ's rows of contact i are
+        // combinations of e_i's and W_i's: its pattern is W's).
+        let solved = if ws.env_first.is_empty() {
+            solve_in_place(&mut ws.matrix, &mut ws.delta, n, PIVOT_TOL)
+        } else {
+            lu_envelope(
+                &mut ws.matrix,
+                &mut ws.delta,
+                n,
+                &ws.env_first,
+                &ws.env_last,
+            )
+        };
+        if solved && ws.delta.iter().all(|d| d.is_finite()) {
+            return Some(slope(&ws.jac, &ws.phi, &ws.delta, &ws.pattern));
         }
         ws.singular = true;
     }
@@ -188,7 +212,7 @@ fn step(p: &FrictionProblem, r: &[f64], ws: &mut Workspace) -> Option<f64> {
             return None;
         }
     }
-    let s = slope(&ws.jac, &ws.phi, &ws.delta, n);
+    let s = slope(&ws.jac, &ws.phi, &ws.delta, &ws.pattern);
     (s < 0.0).then_some(s)
 }
 
@@ -438,9 +462,10 @@ fn cholesky_solve(
 }
 
 /// The merit's slope along Δ: (∂ΦᵀΦ)·Δ = Φ·(∂Φ Δ).
-fn slope(jac: &[f64], phi: &[f64], delta: &[f64], n: usize) -> f64 {
+fn slope(jac: &[f64], phi: &[f64], delta: &[f64], pattern: &Pattern) -> f64 {
+    let n = phi.len();
     (0..n)
-        .map(|i| phi[i] * dot(&jac[i * n..(i + 1) * n], delta))
+        .map(|i| phi[i] * blocks_dot(&jac[i * n..(i + 1) * n], pattern.row(i / 3), delta))
         .sum()
 }
 
@@ -454,7 +479,14 @@ pub(crate) fn newton_in(
     tolerance: f64,
 ) -> (u64, f64) {
     let n = p.dim();
-    alart_curnier(p, r, &ws.u, &ws.rho, &mut ws.phi, Some(&mut ws.jac));
+    alart_curnier(
+        p,
+        r,
+        &ws.u,
+        &ws.rho,
+        &mut ws.phi,
+        Some((&mut ws.jac, &ws.pattern)),
+    );
     let mut merit = half_squared(&ws.phi);
     let mut error = ws.error(p, r);
     let mut steps = 0;
@@ -464,7 +496,7 @@ pub(crate) fn newton_in(
         };
         steps += 1;
         // W Δ once: each trial's u is then u + t W Δ, O(k).
-        super::workspace::velocity_into_linear(p, &ws.delta, &mut ws.w_delta);
+        product_sparse(p, &ws.pattern, &ws.delta, &mut ws.w_delta);
         let mut t = 1.0;
         let mut accepted = false;
         while t > LS_MIN {
@@ -492,7 +524,14 @@ pub(crate) fn newton_in(
             ws.refresh(p, r);
             error = ws.error(p, r);
         }
-        alart_curnier(p, r, &ws.u, &ws.rho, &mut ws.phi, Some(&mut ws.jac));
+        alart_curnier(
+            p,
+            r,
+            &ws.u,
+            &ws.rho,
+            &mut ws.phi,
+            Some((&mut ws.jac, &ws.pattern)),
+        );
         merit = half_squared(&ws.phi);
     }
     if !(error <= tolerance) {
@@ -537,12 +576,14 @@ mod tests {
             let r: Vec<f64> = (0..n).map(|_| rng.range(-1.0, 1.0)).collect();
             let rho = scalings(&p);
             let mut jac = vec![0.0; n * n];
-            let phi_of = |r: &[f64], jac: Option<&mut [f64]>| {
+            let mut pattern = Pattern::default();
+            pattern.build(&p);
+            let phi_of = |r: &[f64], jac: Option<(&mut [f64], &Pattern)>| {
                 let mut phi = vec![0.0; n];
                 alart_curnier(&p, r, &p.velocity(r), &rho, &mut phi, jac);
                 phi
             };
-            let phi = phi_of(&r, Some(&mut jac));
+            let phi = phi_of(&r, Some((&mut jac, &pattern)));
             let h = 1e-7;
             for col in 0..n {
                 let mut rp = r.clone();

@@ -26,9 +26,13 @@ fn sweep(p: &FrictionProblem, ws: &mut Workspace, r: &mut [f64]) {
         let ri = solve_contact(block, local, p.mu[i], current);
         let d = [ri[0] - current[0], ri[1] - current[1], ri[2] - current[2]];
         if d != [0.0; 3] {
-            for (row, ur) in u.iter_mut().enumerate() {
-                let w = &p.w[row * n + 3 * i..row * n + 3 * i + 3];
-                *ur += w[0] * d[0] + w[1] * d[1] + w[2] * d[2];
+            // Only the rows of contacts coupled to i (W's zero rows would
+            // add ±0).
+            for &j in ws.pattern.row(i) {
+                for row in 3 * j..3 * j + 3 {
+                    let w = &p.w[row * n + 3 * i..row * n + 3 * i + 3];
+                    u[row] += w[0] * d[0] + w[1] * d[1] + w[2] * d[2];
+                }
             }
         }
         r[3 * i..3 * i + 3].copy_from_slice(&ri);

@@ -6,7 +6,9 @@ use super::newton::newton_in;
 use super::nsgs::{nsgs_in, Patience};
 use super::problem::FrictionProblem;
 use super::projected::{solve_checked, ProjectedMethod, ProjectedSettings, ProjectedSolution};
+use super::prox::prox_in;
 use super::residual::FrictionResiduals;
+use super::sparse::{bandwidth_order, gather, permuted, scatter, Pattern, SPARSE_FROM};
 use super::workspace::{velocity_into, with_workspace, Workspace};
 use crate::lcp::Status;
 
@@ -25,7 +27,9 @@ pub enum FrictionMethod {
     /// (ask for a smaller `tolerance` to polish further: Newton converges
     /// quadratically, so 1e-12 costs a step or two more than 1e-8),
     /// alternating with more NSGS sweeps where Newton stalls, within the
-    /// iteration cap.
+    /// iteration cap; on islands of at least 32 contacts, [`Self::Prox`]
+    /// instead from the first stall on (the first Newton round and Newton
+    /// from the start both short of the tolerance), for the rest of the cap.
     #[default]
     Auto,
     /// Non-smooth block Gauss–Seidel with exact local Coulomb solves, until
@@ -34,6 +38,11 @@ pub enum FrictionMethod {
     /// Alart–Curnier semismooth Newton with line search alone, from the warm
     /// start or r = 0, until the error is at most the tolerance.
     Newton,
+    /// The proximal-point iteration (as Siconos' PROX): Newton on W + αI
+    /// around the last iterate, α adapted to the error; the cap counts its
+    /// Newton steps. Converges where W is only semidefinite and Newton
+    /// alone stalls (large piles).
+    Prox,
     /// Projected Jacobi sweeps over contacts on the cone complementarity
     /// model of Anitescu–Tasora (`friction::projected`; on the GPU too),
     /// judged by that model's residual `cone_error`, not the Coulomb error
@@ -47,12 +56,14 @@ pub enum FrictionMethod {
 }
 
 impl FrictionMethod {
-    /// The name used on the command line and in output: `auto`, `nsgs`, `newton`.
+    /// The name used on the command line and in output: `auto`, `nsgs`,
+    /// `newton`, `prox`, `jacobi`, `pgs`, `apgd`.
     pub fn name(self) -> &'static str {
         match self {
             FrictionMethod::Auto => "auto",
             FrictionMethod::Nsgs => "nsgs",
             FrictionMethod::Newton => "newton",
+            FrictionMethod::Prox => "prox",
             FrictionMethod::Jacobi => "jacobi",
             FrictionMethod::Pgs => "pgs",
             FrictionMethod::Apgd => "apgd",
@@ -71,10 +82,11 @@ impl FrictionMethod {
     }
 
     /// Every method, in the order of the help texts.
-    pub const ALL: [FrictionMethod; 6] = [
+    pub const ALL: [FrictionMethod; 7] = [
         Self::Auto,
         Self::Nsgs,
         Self::Newton,
+        Self::Prox,
         Self::Jacobi,
         Self::Pgs,
         Self::Apgd,
@@ -101,8 +113,8 @@ pub struct FrictionSettings {
     /// projected methods judge their own residual `cone_error` by it (see
     /// [`FrictionMethod::Jacobi`]).
     pub tolerance: f64,
-    /// Cap on NSGS sweeps plus Newton steps (the projected methods: on
-    /// their iterations).
+    /// Cap on NSGS sweeps plus Newton steps, PROX's inner steps included
+    /// (the projected methods: on their iterations).
     pub max_iterations: u64,
 }
 
@@ -133,7 +145,7 @@ pub struct FrictionSolution {
     pub u: Vec<f64>,
     /// The errors of r.
     pub residuals: FrictionResiduals,
-    /// NSGS sweeps plus Newton steps.
+    /// NSGS sweeps plus Newton steps (PROX: its inner Newton steps).
     pub iterations: u64,
     /// The method asked for.
     pub method: FrictionMethod,
@@ -144,6 +156,10 @@ pub struct FrictionSolution {
 /// methods start from the warm start projected on the cones, check its
 /// Coulomb error first and return it unchanged (0 iterations) when it is
 /// within the tolerance. They reuse one workspace per thread across calls.
+/// Islands of at least [`SPARSE_FROM`] contacts are solved with their
+/// contacts reordered ([`bandwidth_order`]: W's nonzeros near its diagonal,
+/// the Newton steps factored within its envelope); the answer is given in
+/// the problem's own order.
 pub fn solve_friction_problem(
     p: &FrictionProblem,
     warm: Option<&[f64]>,
@@ -159,14 +175,19 @@ pub fn solve_friction_problem(
         return from_projected(sol, s.method);
     }
     project_on_cones(p, &mut r);
-    let (cap, tolerance) = (s.max_iterations, s.tolerance);
+    let order = (p.contacts() >= SPARSE_FROM).then(|| {
+        let mut pattern = Pattern::default();
+        pattern.build(p);
+        bandwidth_order(&pattern)
+    });
+    if let Some(order) = &order {
+        let reordered = permuted(p, order);
+        let mut r = gather(&r, order);
+        let iterations = with_workspace(|ws| solve_in(&reordered, ws, &mut r, s).0);
+        return finish(p, scatter(&r, order), iterations, None, s);
+    }
     let (iterations, u) = with_workspace(|ws| {
-        ws.prepare(p, &r);
-        let (iterations, exact) = match s.method {
-            FrictionMethod::Nsgs => (nsgs_in(p, ws, &mut r, cap, tolerance, None).0, false),
-            FrictionMethod::Newton => (newton_in(p, ws, &mut r, cap, tolerance).0, false),
-            _ => hybrid(p, ws, &mut r, cap, tolerance),
-        };
+        let (iterations, exact) = solve_in(p, ws, &mut r, s);
         // No iteration: r is the start and `ws.u` its exact W r + q (the
         // warm start of a time step, accepted as it is); `exact`: a checked
         // Newton iterate, whose u was recomputed for it (the same bits
@@ -174,6 +195,25 @@ pub fn solve_friction_problem(
         (iterations, (iterations == 0 || exact).then(|| ws.u.clone()))
     });
     finish(p, r, iterations, u, s)
+}
+
+/// Prepares `ws` for `p` and r and runs `s.method` (an exact one) from r:
+/// (iterations, whether `ws.u` is W r + q of the final r as
+/// [`velocity_into`] computes it).
+fn solve_in(
+    p: &FrictionProblem,
+    ws: &mut Workspace,
+    r: &mut [f64],
+    s: &FrictionSettings,
+) -> (u64, bool) {
+    let (cap, tolerance) = (s.max_iterations, s.tolerance);
+    ws.prepare(p, r);
+    match s.method {
+        FrictionMethod::Nsgs => (nsgs_in(p, ws, r, cap, tolerance, None).0, false),
+        FrictionMethod::Newton => (newton_in(p, ws, r, cap, tolerance).0, false),
+        FrictionMethod::Prox => (prox_in(p, ws, r, cap, tolerance).0, false),
+        _ => hybrid(p, ws, r, cap, tolerance),
+    }
 }
 
 /// Each contact's reaction projected on its cone, in place; whether any
@@ -223,6 +263,11 @@ const NEAR: f64 = 1e-6;
 /// Newton steps tried first from a start within [`NEAR`].
 const NEAR_STEPS: u64 = 3;
 
+/// Whether [`hybrid`] turns to PROX after its first Newton stall.
+fn prox_fallback(p: &FrictionProblem) -> bool {
+    p.contacts() >= SPARSE_FROM
+}
+
 /// NSGS then Newton, alternating while Newton stalls (see
 /// [`FrictionMethod::Auto`]), with `ws` prepared for `p` and r. NSGS gives
 /// way to Newton once its linear rate predicts more than 4 + 3k/2 further
@@ -233,7 +278,12 @@ const NEAR_STEPS: u64 = 3;
 /// [`NEAR_STEPS`] Newton steps before any sweep; else, after the first
 /// Newton round that stalls, Newton runs once from the start itself.
 /// A Newton iterate is projected on the cones and checked again before it
-/// is accepted. Keeps the r of smallest error when the cap is reached.
+/// is accepted. On islands of at least [`SPARSE_FROM`] contacts, once the
+/// first Newton round and Newton from the start are both short of the
+/// tolerance, PROX ([`prox_in`]) runs from the best r for the rest of the
+/// cap instead of more sweeps (NSGS creeps and Newton stalls on a pile whose
+/// W is only semidefinite). Keeps the r of smallest error when the cap is
+/// reached.
 /// Returns the iterations and whether `ws.u` is W r + q of the final r as
 /// [`velocity_into`] computes it (not updated incrementally by sweeps).
 fn hybrid(
@@ -301,6 +351,21 @@ fn hybrid(
                 return (used, true);
             }
         }
+        if prox_fallback(p) && used < cap {
+            r.copy_from_slice(&ws.best);
+            ws.refresh(p, r);
+            let left = cap - used;
+            let (k, e) = checked(p, ws, r, tolerance, |p, ws, r| {
+                prox_in(p, ws, r, left, tolerance)
+            });
+            used += k;
+            error = e;
+            if error <= tolerance {
+                return (used, true);
+            }
+            keep_best(ws, r, error, &mut best);
+            break;
+        }
         if k == 0 && sweeps_per_round >= cap {
             break;
         }
@@ -322,7 +387,21 @@ fn newton_checked(
     max_steps: u64,
     tolerance: f64,
 ) -> (u64, f64) {
-    let (k, mut error) = newton_in(p, ws, r, max_steps, tolerance);
+    checked(p, ws, r, tolerance, |p, ws, r| {
+        newton_in(p, ws, r, max_steps, tolerance)
+    })
+}
+
+/// `solver` (Newton or PROX: (steps, error)) whose converged iterate is
+/// projected on the cones and checked again with u recomputed.
+fn checked(
+    p: &FrictionProblem,
+    ws: &mut Workspace,
+    r: &mut [f64],
+    tolerance: f64,
+    solver: impl FnOnce(&FrictionProblem, &mut Workspace, &mut [f64]) -> (u64, f64),
+) -> (u64, f64) {
+    let (k, mut error) = solver(p, ws, r);
     if error <= tolerance {
         project_on_cones(p, r);
         ws.refresh(p, r);

@@ -8,6 +8,7 @@ use std::cell::RefCell;
 use super::local::Block;
 use super::problem::FrictionProblem;
 use super::residual::{coulomb_error_into, norm};
+use super::sparse::{envelope, velocity_sparse, Pattern, SPARSE_FROM};
 
 /// Per-island state and scratch of the exact solvers. [`Workspace::prepare`]
 /// sizes it for a problem; every buffer then has the problem's dimension.
@@ -25,7 +26,7 @@ pub struct Workspace {
     pub(crate) q_norm: f64,
     /// Φ(r) of the Alart–Curnier equation, 3k.
     pub(crate) phi: Vec<f64>,
-    /// Its generalized Jacobian, 3k × 3k.
+    /// Its generalized Jacobian, 3k × 3k (zero outside W's block pattern).
     pub(crate) jac: Vec<f64>,
     /// The Newton step Δ, 3k.
     pub(crate) delta: Vec<f64>,
@@ -49,6 +50,12 @@ pub struct Workspace {
     pub(crate) best: Vec<f64>,
     /// The start r (hybrid's Newton restart), 3k.
     pub(crate) start: Vec<f64>,
+    /// W's nonzero blocks (products and sweeps over them only).
+    pub(crate) pattern: Pattern,
+    /// W's envelope (`sparse::envelope`), on islands of at least
+    /// `sparse::SPARSE_FROM` contacts (else empty: dense LU).
+    pub(crate) env_first: Vec<usize>,
+    pub(crate) env_last: Vec<usize>,
     /// The LU of ∂Φ failed on this island (W rank-deficient, as for a box on
     /// four coplanar corners): later steps go to Levenberg–Marquardt directly.
     pub(crate) singular: bool,
@@ -93,10 +100,13 @@ impl Workspace {
             v.clear();
             v.resize(n, 0.0);
         }
-        // Written in full before they are read: sized, not cleared.
-        for v in [&mut self.jac, &mut self.matrix, &mut self.normal] {
+        // Written in full before they are read: sized, not cleared; ∂Φ is
+        // written only within W's pattern: zero elsewhere.
+        for v in [&mut self.matrix, &mut self.normal] {
             v.resize(n * n, 0.0);
         }
+        self.jac.clear();
+        self.jac.resize(n * n, 0.0);
         self.blocks.clear();
         self.blocks
             .extend((0..p.contacts()).map(|i| diagonal_block(p, i)));
@@ -111,12 +121,20 @@ impl Workspace {
         }));
         self.q_norm = norm(&p.q);
         self.singular = false;
+        self.pattern.build(p);
+        if p.contacts() >= SPARSE_FROM {
+            envelope(&self.pattern, &mut self.env_first, &mut self.env_last);
+        } else {
+            self.env_first.clear();
+            self.env_last.clear();
+        }
         self.refresh(p, r);
     }
 
-    /// u = W r + q recomputed exactly (the sweeps update it incrementally).
+    /// u = W r + q recomputed exactly (the sweeps update it incrementally),
+    /// over W's nonzero blocks: the bits of [`velocity_into`].
     pub fn refresh(&mut self, p: &FrictionProblem, r: &[f64]) {
-        velocity_into(p, r, &mut self.u);
+        velocity_sparse(p, &self.pattern, r, &mut self.u);
     }
 
     /// The Coulomb error of r with the current u (the same number as
@@ -165,6 +183,7 @@ pub fn dot(a: &[f64], b: &[f64]) -> f64 {
 }
 
 /// W x into `out` (the change of u = W r + q when r moves by x).
+#[cfg(test)]
 pub fn velocity_into_linear(p: &FrictionProblem, x: &[f64], out: &mut [f64]) {
     let n = p.dim();
     for (i, o) in out.iter_mut().enumerate() {

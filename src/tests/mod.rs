@@ -12,6 +12,7 @@ mod device_trouble;
 mod door;
 mod friction;
 mod friction_conformance;
+mod friction_conformance_large;
 mod gpu_all_solutions;
 mod gpu_conformance;
 mod gpu_cost_model;

@@ -48,12 +48,16 @@ enum SolverArg {
 /// CPU in f64; each is judged by its Coulomb error.
 #[derive(Clone, Copy, ValueEnum)]
 pub(crate) enum FrictionSolverArg {
-    /// NSGS sweeps, then Alart–Curnier Newton polishing to the rounding of f64.
+    /// NSGS sweeps, then Alart–Curnier Newton polishing to the rounding of f64
+    /// (PROX where both stall on an island of 32 contacts or more).
     Auto,
     /// Non-smooth Gauss–Seidel over contacts, each solved exactly.
     Nsgs,
     /// Alart–Curnier semismooth Newton with line search alone.
     Newton,
+    /// The proximal-point iteration (Newton on W + αI around the last
+    /// iterate, α adapted): large piles where Newton alone stalls.
+    Prox,
     /// Projected Jacobi sweeps on the cone complementarity model (GPU with
     /// --backend gpu), judged by that model's residual.
     Jacobi,

@@ -1,0 +1,74 @@
+//! The proximal-point iteration on the Coulomb problem (as Siconos'
+//! FC3D_PROX): around the last iterate r_k, solve the problem with W + αI
+//! and q − α r_k, whose solution r_{k+1} is r_k exactly when r_k solves the
+//! original problem (then u + α(r − r_k) = u). W + αI is positive definite
+//! where W is only semidefinite (the four coplanar corners of a box, more
+//! contact directions than the bodies' degrees of freedom), so that the
+//! inner Alart–Curnier Newton ([`newton_in`]) meets a regular ∂Φ where it
+//! stalls on the original problem.
+//!
+//! α follows the outer error e (Siconos' default strategy): α = σ e d̄,
+//! σ = 5, with d̄ the mean of W's normal diagonal entries (so that scaling W
+//! scales α: Siconos' α = σ e is in W's units); where the inner Newton does
+//! not reach its tolerance, α grows tenfold (a stronger regularisation,
+//! a shorter step). The inner tolerance is max(e / 10, tolerance): loose
+//! while the outer iterate is far, the tolerance at the end.
+
+use super::newton::newton_in;
+use super::problem::FrictionProblem;
+use super::workspace::Workspace;
+
+/// σ of α = σ e d̄ (Siconos' default 5).
+const SIGMA: f64 = 5.0;
+
+/// The inner tolerance is the outer error divided by this (Siconos' 10),
+/// and at least the outer tolerance.
+const INNER_RATIO: f64 = 10.0;
+
+/// Newton steps of one inner solve at most.
+const INNER_STEPS: u64 = 50;
+
+/// PROX from `r` with `ws` prepared for `p` and `ws.u` = W r + q: outer
+/// steps until the Coulomb error of `p` is at most `tolerance` or
+/// `max_steps` inner Newton steps ran (an inner solve that makes no step
+/// counts one). Returns (inner steps, error of the final r); `ws.u` is then
+/// exact for r. The inner problems are solved in a workspace of their own.
+pub(crate) fn prox_in(
+    p: &FrictionProblem,
+    ws: &mut Workspace,
+    r: &mut [f64],
+    max_steps: u64,
+    tolerance: f64,
+) -> (u64, f64) {
+    let (n, k) = (p.dim(), p.contacts());
+    let mut error = ws.error(p, r);
+    let mean = (0..k).map(|i| p.at(3 * i, 3 * i)).sum::<f64>() / k as f64;
+    let scale = if mean > 0.0 && mean.is_finite() {
+        mean
+    } else {
+        1.0
+    };
+    let mut alpha = SIGMA * error * scale;
+    let mut inner = p.clone();
+    let mut inner_ws = Workspace::default();
+    let mut steps = 0;
+    while steps < max_steps && !(error <= tolerance) && error.is_finite() {
+        for i in 0..n {
+            inner.w[i * n + i] = p.w[i * n + i] + alpha;
+            inner.q[i] = p.q[i] - alpha * r[i];
+        }
+        inner_ws.prepare(&inner, r);
+        let inner_tolerance = (error / INNER_RATIO).max(tolerance);
+        let budget = INNER_STEPS.min(max_steps - steps);
+        let (taken, inner_error) = newton_in(&inner, &mut inner_ws, r, budget, inner_tolerance);
+        steps += taken.max(1);
+        ws.refresh(p, r);
+        error = ws.error(p, r);
+        alpha = if inner_error <= inner_tolerance {
+            SIGMA * error * scale
+        } else {
+            alpha * 10.0
+        };
+    }
+    (steps, error)
+}
