@@ -121,12 +121,14 @@ _SETTINGS_DOC = """\
         with De Saxcé's correction) is at most ``friction_tolerance``.
       - ``"nsgs"``: non-smooth block Gauss–Seidel, each contact solved exactly.
       - ``"newton"``: Alart–Curnier Newton with line search alone.
+      - ``"prox"``: the proximal-point iteration (Newton on W + αI around
+        the last iterate), for large islands where Newton alone stalls.
       - ``"jacobi"``, ``"pgs"``, ``"apgd"``: projected Jacobi sweeps,
         projected Gauss–Seidel sweeps, accelerated projected gradient on
         the cone complementarity model of Anitescu–Tasora (on the GPU with
         backend "gpu"), judged by that model's residual ``cone_error``.
 
-      The exact methods ("auto", "nsgs", "newton") run on the CPU in f64.
+      The exact methods ("auto", "nsgs", "newton", "prox") run on the CPU in f64.
     - ``friction_tolerance``: the largest Coulomb error (projected methods:
       cone error) reported as solved (default 1e-8, in (0, 1));
       ``friction_max_iterations``: cap on NSGS sweeps plus Newton steps, or
@@ -477,7 +479,7 @@ def solve_friction(W: Union[ArrayLike, Sequence[ArrayLike]], q: Union[ArrayLike,
     FrictionContact3D form; see :meth:`Solver.solve_friction`).
 
     ``method``: the friction method (``friction_method`` of
-    :class:`Solver`): "auto" (default), "nsgs", "newton", "jacobi", "pgs" or
+    :class:`Solver`): "auto" (default), "nsgs", "newton", "prox", "jacobi", "pgs" or
     "apgd"; ``tolerance``: the largest error reported as solved (default
     1e-8); ``max_iterations``: cap on NSGS sweeps plus Newton steps, or on
     the projected methods' iterations (default 1000); ``ids``: contact ids

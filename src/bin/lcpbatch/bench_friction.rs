@@ -44,10 +44,11 @@ pub struct FrictionBenchOptions {
 }
 
 /// Every friction method, in the table's order.
-const METHODS: [FrictionMethod; 6] = [
+const METHODS: [FrictionMethod; 7] = [
     FrictionMethod::Auto,
     FrictionMethod::Nsgs,
     FrictionMethod::Newton,
+    FrictionMethod::Prox,
     FrictionMethod::Jacobi,
     FrictionMethod::Pgs,
     FrictionMethod::Apgd,
