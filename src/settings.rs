@@ -493,7 +493,7 @@ impl Settings {
         if self.backend == Backend::Gpu && !self.gpu_capable() {
             return Err(invalid(
                 "backend",
-                "the GPU backend solves by enumeration only (no Lemke or PGS)",
+                "the GPU backend solves by enumeration or Lemke only (no PGS)",
             ));
         }
         if self.gpu.adapter.as_deref() == Some("") {
@@ -514,9 +514,13 @@ impl Settings {
         Ok(())
     }
 
-    /// Whether the GPU can serve these settings (enumeration of one solution).
+    /// Whether the GPU can serve these settings (enumeration, or Lemke's
+    /// textbook path: Auto and Lemke).
     pub(crate) fn gpu_capable(&self) -> bool {
-        matches!(self.method, Method::Auto | Method::Enumeration)
+        matches!(
+            self.method,
+            Method::Auto | Method::Enumeration | Method::Lemke
+        )
     }
 
     pub(crate) fn enumeration(&self) -> EnumerationSettings {
@@ -558,8 +562,10 @@ impl Settings {
             max_binding_bytes: self.gpu.max_binding_bytes,
             max_workgroups: self.gpu.max_workgroups,
             round_budget: self.gpu.round_budget,
-            predict: self.predict,
+            // Lemke on the CPU path predicts nothing.
+            predict: self.predict && self.method != Method::Lemke,
             kernel: self.gpu.kernel,
+            method: self.method,
             tree_max_n: self.gpu.tree_max_n,
             tolerance: self.tolerance,
             ..GpuSolveSettings::default()
