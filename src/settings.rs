@@ -56,19 +56,25 @@ pub enum Method {
     /// basis is re-solved in f64 and checked by the test every GPU answer
     /// goes through; enumeration only where that check fails (a ray, the
     /// pivot cap, or a basis invalid in f64), and above n = 20 Lemke's answer
-    /// as it is. On the GPU: enumeration. Where z is not unique the two may
-    /// report different solutions (Lemke's basis, enumeration's fewest
-    /// active contacts); where M is positive semidefinite, w is the same.
+    /// as it is. On the GPU the same: prediction, then Lemke's textbook path
+    /// in a kernel (`shaders/lemke.wgsl`) whose basis gets the same f64
+    /// check, the CPU path for the islands it does not settle: in f64 the
+    /// CPU's answers. Where z is not unique, Auto and Enumeration may report
+    /// different solutions (Lemke's basis, enumeration's fewest active
+    /// contacts); where M is positive semidefinite, w is the same.
     #[default]
     Auto,
     /// Enumeration of the complementary bases (exact; fewest active contacts
     /// first, then the smallest mask), after the cheap paths of prediction
     /// (separating, single contact, warm start, predicted basis). On the CPU
     /// up to n = 20, on the GPU up to n = 16; scene islands above that go to
-    /// Lemke. The only method the GPU runs.
+    /// Lemke. The GPU's enumeration kernels.
     Enumeration,
     /// Lemke's complementary pivoting with a lexicographic ratio test (exact,
-    /// any n; CPU).
+    /// any n). On the GPU: the textbook path in a kernel for n ≤ 16, its
+    /// basis re-solved and checked in f64 (else the CPU's Lemke); such an
+    /// answer is the basis' f64 re-solve where the CPU's may keep its
+    /// tableau's z (the same solution to rounding).
     Lemke,
     /// Projected Gauss–Seidel from z = 0 (iterative; CPU).
     Pgs,

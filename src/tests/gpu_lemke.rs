@@ -12,7 +12,7 @@ use crate::lcp::LcpSolution;
 use crate::report::Report;
 use crate::settings::{Backend, Method, Settings};
 use crate::solver::textbook_checked;
-use crate::{GpuContext, Lcp, SolvePath, Solver, Status};
+use crate::{GpuContext, Lcp, Solver, Status};
 
 use super::common;
 use super::common::gpu_context as context;
