@@ -54,8 +54,17 @@ fn gpu_and_cpu_backends_write_the_same_output() {
         let f = file.to_str().unwrap();
         let cpu = ok(&["solve", f, "--backend", "cpu", "--solver", "enum"]);
         if f64_adapter {
-            let gpu = ok(&["solve", f, "--backend", "gpu", "--precision", "f64"]);
-            // The GPU enumerates (the default method is enumeration there).
+            // The GPU enumerates (method enumeration, as the CPU run).
+            let gpu = ok(&[
+                "solve",
+                f,
+                "--backend",
+                "gpu",
+                "--solver",
+                "enum",
+                "--precision",
+                "f64",
+            ]);
             let auto = ok(&[
                 "solve",
                 f,
@@ -72,9 +81,17 @@ fn gpu_and_cpu_backends_write_the_same_output() {
             assert_eq!(auto, cpu, "{f}: auto");
         }
         // f32 shaders: the same statuses and bases (z polished in f64).
-        let g32: serde_json::Value =
-            serde_json::from_str(&ok(&["solve", f, "--backend", "gpu", "--precision", "f32"]))
-                .unwrap();
+        let g32: serde_json::Value = serde_json::from_str(&ok(&[
+            "solve",
+            f,
+            "--backend",
+            "gpu",
+            "--solver",
+            "enum",
+            "--precision",
+            "f32",
+        ]))
+        .unwrap();
         let c: serde_json::Value = serde_json::from_str(&cpu).unwrap();
         let key = if c.get("problems").is_some() {
             "problems"
@@ -195,8 +212,9 @@ fn demo_prints_its_summary_and_the_other_path() {
         "--steps",
         "0",
     ]);
+    // Auto on the GPU: prediction, then the Lemke kernel.
     for needle in [
-        "enumerated_gpu ",
+        "lemke_gpu ",
         "polished ",
         "gpu: ",
         "for comparison, CPU path",
