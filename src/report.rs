@@ -35,8 +35,12 @@ pub enum SolvePath {
     /// Enumerated on the GPU; its basis is valid in f64 (polished), or its
     /// "no solution" was confirmed on the CPU.
     EnumeratedGpu,
+    /// Lemke's textbook path on the GPU (`shaders/lemke.wgsl`); its basis
+    /// re-solved and checked in f64 as the CPU path checks Lemke's.
+    LemkeGpu,
     /// Enumerated on the GPU, but the answer failed the f64 check: the CPU
-    /// enumeration solved it.
+    /// enumeration solved it (also: an island the GPU's Lemke could not
+    /// settle and the CPU path's Lemke did not either).
     Repaired,
     /// Enumerated on the CPU.
     EnumeratedCpu,
@@ -50,12 +54,13 @@ pub enum SolvePath {
 
 impl SolvePath {
     /// Every path, in the order of the variants (Python's path codes).
-    pub const ALL: [SolvePath; 10] = [
+    pub const ALL: [SolvePath; 11] = [
         SolvePath::Separating,
         SolvePath::SingleContact,
         SolvePath::WarmStart,
         SolvePath::PredictedBasis,
         SolvePath::EnumeratedGpu,
+        SolvePath::LemkeGpu,
         SolvePath::Repaired,
         SolvePath::EnumeratedCpu,
         SolvePath::Lemke,
@@ -71,6 +76,7 @@ impl SolvePath {
             SolvePath::WarmStart => "warm_start",
             SolvePath::PredictedBasis => "predicted_basis",
             SolvePath::EnumeratedGpu => "enumerated_gpu",
+            SolvePath::LemkeGpu => "lemke_gpu",
             SolvePath::Repaired => "repaired",
             SolvePath::EnumeratedCpu => "enumerated_cpu",
             SolvePath::Lemke => "lemke",
@@ -221,6 +227,8 @@ pub struct PathCounts {
     /// Enumerated on the GPU and confirmed in f64 (`polished` + GPU "no
     /// solution" confirmed on the CPU).
     pub enumerated_gpu: usize,
+    /// Settled by the GPU's Lemke kernel, its basis checked in f64.
+    pub lemke_gpu: usize,
     /// Enumerated on the CPU.
     pub enumerated_cpu: usize,
     /// Lemke on the CPU (asked for, or too large to enumerate).
@@ -234,7 +242,8 @@ pub struct PathCounts {
     /// GPU answers that failed in f64 and were re-solved on the CPU.
     pub repaired: usize,
     /// Islands the GPU backend handed to the CPU because they are too large
-    /// for its kernels (n > 16; solved by Lemke).
+    /// for its kernels (n > 16), or its Lemke kernel could not settle them,
+    /// solved by Lemke on the CPU.
     pub cpu_fallback: usize,
 }
 
@@ -246,6 +255,7 @@ impl PathCounts {
             SolvePath::WarmStart => &mut self.warm_start,
             SolvePath::PredictedBasis => &mut self.predicted_basis,
             SolvePath::EnumeratedGpu => &mut self.enumerated_gpu,
+            SolvePath::LemkeGpu => &mut self.lemke_gpu,
             SolvePath::Repaired => &mut self.repaired,
             SolvePath::EnumeratedCpu => &mut self.enumerated_cpu,
             SolvePath::Lemke => &mut self.lemke,
@@ -257,13 +267,14 @@ impl PathCounts {
 
     /// (name, count) of every count, in a fixed order (the order of the
     /// report's text and of Python's `counts`).
-    pub fn named(&self) -> [(&'static str, usize); 12] {
+    pub fn named(&self) -> [(&'static str, usize); 13] {
         [
             ("separating", self.separating),
             ("single_contact", self.single_contact),
             ("warm_start", self.warm_start),
             ("predicted_basis", self.predicted_basis),
             ("enumerated_gpu", self.enumerated_gpu),
+            ("lemke_gpu", self.lemke_gpu),
             ("polished", self.polished),
             ("repaired", self.repaired),
             ("enumerated_cpu", self.enumerated_cpu),
@@ -288,6 +299,7 @@ impl AddAssign for PathCounts {
         self.warm_start += b.warm_start;
         self.predicted_basis += b.predicted_basis;
         self.enumerated_gpu += b.enumerated_gpu;
+        self.lemke_gpu += b.lemke_gpu;
         self.enumerated_cpu += b.enumerated_cpu;
         self.lemke += b.lemke;
         self.pgs += b.pgs;

@@ -56,19 +56,25 @@ pub enum Method {
     /// basis is re-solved in f64 and checked by the test every GPU answer
     /// goes through; enumeration only where that check fails (a ray, the
     /// pivot cap, or a basis invalid in f64), and above n = 20 Lemke's answer
-    /// as it is. On the GPU: enumeration. Where z is not unique the two may
-    /// report different solutions (Lemke's basis, enumeration's fewest
-    /// active contacts); where M is positive semidefinite, w is the same.
+    /// as it is. On the GPU the same: prediction, then Lemke's textbook path
+    /// in a kernel (`shaders/lemke.wgsl`) whose basis gets the same f64
+    /// check, the CPU path for the islands it does not settle: in f64 the
+    /// CPU's answers. Where z is not unique, Auto and Enumeration may report
+    /// different solutions (Lemke's basis, enumeration's fewest active
+    /// contacts); where M is positive semidefinite, w is the same.
     #[default]
     Auto,
     /// Enumeration of the complementary bases (exact; fewest active contacts
     /// first, then the smallest mask), after the cheap paths of prediction
     /// (separating, single contact, warm start, predicted basis). On the CPU
     /// up to n = 20, on the GPU up to n = 16; scene islands above that go to
-    /// Lemke. The only method the GPU runs.
+    /// Lemke. The GPU's enumeration kernels.
     Enumeration,
     /// Lemke's complementary pivoting with a lexicographic ratio test (exact,
-    /// any n; CPU).
+    /// any n). On the GPU: the textbook path in a kernel for n ≤ 16, its
+    /// basis re-solved and checked in f64 (else the CPU's Lemke); such an
+    /// answer is the basis' f64 re-solve where the CPU's may keep its
+    /// tableau's z (the same solution to rounding).
     Lemke,
     /// Projected Gauss–Seidel from z = 0 (iterative; CPU).
     Pgs,
@@ -493,7 +499,7 @@ impl Settings {
         if self.backend == Backend::Gpu && !self.gpu_capable() {
             return Err(invalid(
                 "backend",
-                "the GPU backend solves by enumeration only (no Lemke or PGS)",
+                "the GPU backend solves by enumeration or Lemke only (no PGS)",
             ));
         }
         if self.gpu.adapter.as_deref() == Some("") {
@@ -514,9 +520,13 @@ impl Settings {
         Ok(())
     }
 
-    /// Whether the GPU can serve these settings (enumeration of one solution).
+    /// Whether the GPU can serve these settings (enumeration, or Lemke's
+    /// textbook path: Auto and Lemke).
     pub(crate) fn gpu_capable(&self) -> bool {
-        matches!(self.method, Method::Auto | Method::Enumeration)
+        matches!(
+            self.method,
+            Method::Auto | Method::Enumeration | Method::Lemke
+        )
     }
 
     pub(crate) fn enumeration(&self) -> EnumerationSettings {
@@ -558,8 +568,10 @@ impl Settings {
             max_binding_bytes: self.gpu.max_binding_bytes,
             max_workgroups: self.gpu.max_workgroups,
             round_budget: self.gpu.round_budget,
-            predict: self.predict,
+            // Lemke on the CPU path predicts nothing.
+            predict: self.predict && self.method != Method::Lemke,
             kernel: self.gpu.kernel,
+            method: self.method,
             tree_max_n: self.gpu.tree_max_n,
             tolerance: self.tolerance,
             ..GpuSolveSettings::default()

@@ -9,7 +9,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 /// Every solve path, in the order of the codes handed to Python.
-pub(crate) const PATHS: [SolvePath; 10] = SolvePath::ALL;
+pub(crate) const PATHS: [SolvePath; 11] = SolvePath::ALL;
 
 /// The code of `path` (its index in [`PATHS`]).
 pub(crate) fn path_code(path: SolvePath) -> i8 {

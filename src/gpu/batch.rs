@@ -29,7 +29,7 @@ use super::enumeration::EnumerationJob;
 pub use super::kernel::{EnumerationKernel, KernelPlan, TreeRoute};
 use super::layout::BasisResult;
 use super::pipelines::Tolerances;
-use super::validation::{check_answer, GpuVerdict, Verdict};
+use super::validation::{check_answer, check_lemke_answer, GpuVerdict, Verdict};
 use super::{GpuContext, Precision, MAX_GPU_N};
 use crate::cpu::batch::{parallel_fill_by, parallel_map};
 use crate::cpu::enumeration::EnumerationSettings;
@@ -82,6 +82,11 @@ pub struct GpuSolveSettings {
     pub predict: bool,
     /// Which enumeration shader runs (default [`EnumerationKernel::Auto`]).
     pub kernel: EnumerationKernel,
+    /// The method (default [`Method::Enumeration`]: the enumeration
+    /// kernels). Auto and Lemke: the Lemke kernel (`shaders/lemke.wgsl`),
+    /// each basis it ends on checked in f64 as the CPU path checks Lemke's,
+    /// the rest solved by the CPU path ([`crate::gpu::validation`]).
+    pub method: Method,
     /// Largest island the tree kernel takes (default [`TREE_MAX_N`]; values
     /// above it act as it; 0 turns the tree off).
     pub tree_max_n: usize,
@@ -105,6 +110,7 @@ impl Default for GpuSolveSettings {
             round_budget: None,
             predict: true,
             kernel: EnumerationKernel::Auto,
+            method: Method::Enumeration,
             tree_max_n: TREE_MAX_N,
             tolerance: crate::Settings::default().tolerance,
             threads: std::thread::available_parallelism().map_or(1, |n| n.get()),
@@ -348,7 +354,9 @@ pub(crate) fn settle_on_cpu(
 }
 
 /// The GPU's answer for `lcp` (its record and z) checked in f64 into `out`
-/// ([`check_answer`]), path and method set, the final check applied.
+/// ([`check_answer`]; the Lemke kernel's, with `settings.method` Auto or
+/// Lemke, by [`check_lemke_answer`]), path and method set, the final check
+/// applied.
 /// Returns the verdict and the error of the GPU's own z.
 pub(crate) fn settle_from_gpu(
     lcp: &Lcp,
@@ -357,6 +365,13 @@ pub(crate) fn settle_from_gpu(
     exact_twin: bool,
     out: &mut IslandReport,
 ) -> Result<(Verdict, f64), Error> {
+    if settings.method != Method::Enumeration {
+        let (method, path, verdict, gpu_error) =
+            check_lemke_answer(lcp, (result, z), settings, &mut out.solution);
+        (out.method, out.path) = (method, path);
+        check_solution(&mut out.solution, settings.tolerance);
+        return Ok((verdict, gpu_error));
+    }
     let verdict = GpuVerdict::of(result, z);
     let checked = check_answer(
         lcp,

@@ -1,6 +1,7 @@
 //! The enumeration stage: every island of a table through its size's
 //! kernel (and first through the tree kernel where routed), in rounds until
-//! every island is done.
+//! every island is done; or, with [`KernelPlan::lemke`], through the Lemke
+//! kernel, one dispatch per size in one round (it always finishes).
 
 use super::buffers::Role;
 use super::dispatch::{split, Ranges, Span};
@@ -138,6 +139,9 @@ impl<'a> EnumerationJob<'a> {
     /// The kernel of islands of n contacts (after the tree).
     fn size_stage(&self, n: u32) -> Result<&'a Stage, Error> {
         let p = self.pipelines;
+        if self.plan.lemke {
+            return p.lemke(self.ctx);
+        }
         Ok(match self.plan.kernel.for_n(n as usize) {
             EnumerationKernel::Unrolled => p.unrolled(self.ctx, n as usize)?,
             EnumerationKernel::Workgroup => &p.enumeration_workgroup,
@@ -246,7 +250,9 @@ impl<'a> EnumerationJob<'a> {
                 let tree_span = Span { flags, ..span };
                 Some((stage, split(tree_span, self.max_groups, &mut params)))
             };
-            if self.plan.kernel.for_n(n as usize) == EnumerationKernel::Workgroup {
+            if !self.plan.lemke
+                && self.plan.kernel.for_n(n as usize) == EnumerationKernel::Workgroup
+            {
                 span.per_group = 1;
             }
             let stage = self.size_stage(n)?;

@@ -7,6 +7,7 @@ use super::GpuContext;
 use crate::cpu::enumeration_tree::TREE_MAX_N;
 use crate::lcp::Lcp;
 use crate::prediction::{is_positive_definite, is_positive_semidefinite};
+use crate::settings::Method;
 
 pub use crate::settings::EnumerationKernel;
 
@@ -75,6 +76,9 @@ pub struct KernelPlan {
     pub kernel: EnumerationKernel,
     /// Largest island for the tree kernel (≤ [`TREE_MAX_N`]).
     pub tree_max_n: usize,
+    /// Every island to the Lemke kernel (`shaders/lemke.wgsl`) instead of
+    /// the enumeration kernels: methods Auto and Lemke.
+    pub lemke: bool,
 }
 
 impl KernelPlan {
@@ -83,11 +87,12 @@ impl KernelPlan {
             budget: round_budget(ctx, settings),
             kernel: settings.kernel,
             tree_max_n: settings.tree_max_n.min(TREE_MAX_N),
+            lemke: settings.method != Method::Enumeration,
         }
     }
 
     /// Does this island go to the tree kernel first, and how? Only when n ≤
-    /// `tree_max_n`. Positive definite M (every pivot of the tree exists):
+    /// `tree_max_n` (and never with [`Self::lemke`]). Positive definite M (every pivot of the tree exists):
     /// [`TreeRoute::Definite`]; symmetric positive semidefinite M (resting
     /// contacts): [`TreeRoute::Semidefinite`]; both tested on the CPU in
     /// O(n³). Auto ([`AUTO_TREE`]) routes only these;
@@ -95,7 +100,8 @@ impl KernelPlan {
     /// `definite`: whether M is positive definite, when the caller knows
     /// (prediction tests it; else it is tested here).
     pub fn tree_for(&self, lcp: &Lcp, definite: Option<bool>) -> TreeRoute {
-        if lcp.n() > self.tree_max_n
+        if self.lemke
+            || lcp.n() > self.tree_max_n
             || !matches!(
                 self.kernel,
                 EnumerationKernel::Tree | EnumerationKernel::Auto

@@ -118,6 +118,12 @@ pub const NONE: u32 = 2;
 /// [`BasisResult::status`]: every basis was visited, none is valid; the mask
 /// is the least infeasible one within the relaxed tolerance.
 pub const RELAXED: u32 = 3;
+/// [`BasisResult::status`] from the Lemke kernel (`shaders/lemke.wgsl`): it
+/// gave up (a secondary ray with z0 not at zero, the pivot cap, the loop
+/// budget, or a non-finite entry); the host solves the island on the CPU.
+/// The kernel's FOUND carries its final basis in `mask` and its pivots in
+/// `visited`.
+pub const GAVE_UP: u32 = 4;
 
 /// WGSL `Params`: the range of a table one dispatch covers, and (enumeration)
 /// the loop work each invocation may spend in one round.

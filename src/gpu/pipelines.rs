@@ -202,6 +202,8 @@ pub(crate) struct Pipelines {
     tree: Vec<OnceLock<Stage>>,
     /// [`Shader::AllBases`] (`all_solutions` only), built on first use.
     all_bases: OnceLock<Stage>,
+    /// [`Shader::Lemke`], built on first use.
+    lemke: OnceLock<Stage>,
     pub(crate) assemble_contacts: Stage,
     pub(crate) assemble_islands: Stage,
     pub(crate) impulses: Stage,
@@ -239,6 +241,7 @@ impl Pipelines {
                 unrolled: (0..FIXED_MAX_N).map(|_| OnceLock::new()).collect(),
                 tree: (0..TREE_MAX_N).map(|_| OnceLock::new()).collect(),
                 all_bases: OnceLock::new(),
+                lemke: OnceLock::new(),
                 assemble_contacts: Stage::new(
                     ctx,
                     Shader::Assembly,
@@ -270,6 +273,17 @@ impl Pipelines {
         }
         let stage = Stage::new(ctx, Shader::AllBases, "main", ALL_BASES_BINDINGS)?;
         Ok(self.all_bases.get_or_init(|| stage))
+    }
+
+    /// The Lemke stage (islands of any size up to
+    /// [`super::MAX_GPU_N`]; the enumeration kernels' bindings), built on
+    /// first use.
+    pub(crate) fn lemke(&self, ctx: &GpuContext) -> Result<&Stage, Error> {
+        if let Some(s) = self.lemke.get() {
+            return Ok(s);
+        }
+        let stage = Stage::new(ctx, Shader::Lemke, "main", ENUMERATION_BINDINGS)?;
+        Ok(self.lemke.get_or_init(|| stage))
     }
 
     /// The tree stage for islands of n contacts (1 ≤ n ≤ [`TREE_MAX_N`]),
@@ -337,9 +351,20 @@ pub const F32_TREE_PIVOT_TOL: f64 = 1e-3;
 /// of M_dd) and cuts its subtree.
 pub const F32_TREE_SINGULAR_TOL: f64 = 1e-5;
 
+/// The Lemke kernel in f32: an entry of the entering column is a pivot when
+/// it exceeds this times the column's largest magnitude (f64 uses
+/// [`crate::cpu::lemke::LemkeSettings`]'). f32 tableaus carry rounding near
+/// 1e-7 of their entries; the f64 check decides on the basis.
+pub const F32_LEMKE_PIVOT_TOL: f64 = 1e-6;
+
+/// The pivot cap the Lemke kernel reads (an f32 holds integers exactly up to
+/// 2^24).
+const LEMKE_MAX_PIVOTS: u64 = 1 << 24;
+
 /// The enumeration kernels' tolerances (WGSL `Tolerances`, binding 7):
 /// pivot, feasibility, relaxed, screen, tree pivot, tree singular, and two
-/// pads, in the shader's precision. Passed at run time so that the
+/// pads, which the Lemke kernel reads as its pivot tolerance and pivot cap,
+/// in the shader's precision. Passed at run time so that the
 /// committed shaders serve every setting; the f64 values are the CPU twins'
 /// exactly, so the f64 arithmetic stays the twins' bit for bit.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -354,6 +379,12 @@ impl Tolerances {
         } else {
             (F32_SCREEN_TOL, F32_TREE_PIVOT_TOL, F32_TREE_SINGULAR_TOL)
         };
+        let lemke = &settings.lemke;
+        let lemke_pivot = if precision == Precision::F64 {
+            lemke.pivot_tol
+        } else {
+            lemke.pivot_tol.max(F32_LEMKE_PIVOT_TOL)
+        };
         Tolerances([
             pivot,
             feasibility,
@@ -361,8 +392,8 @@ impl Tolerances {
             screen,
             tree_pivot,
             singular,
-            0.0,
-            0.0,
+            lemke_pivot,
+            lemke.max_pivots.min(LEMKE_MAX_PIVOTS) as f64,
         ])
     }
 

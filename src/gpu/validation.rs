@@ -16,15 +16,26 @@
 //!   (the rare path: physical islands nearly always have a solution), so that
 //!   the status equals the CPU's.
 //!
+//! The Lemke kernel (methods Auto and Lemke) names the basis its textbook
+//! path ended on; [`check_lemke_answer`] re-solves and checks it with the
+//! CPU path's own test of Lemke's textbook basis
+//! ([`crate::solver::textbook_checked`]), and where that fails, or the
+//! kernel gave up, solves the island by the CPU path's code for the rest.
+//!
 //! With the same visit order and rule (fewest basic z, then the smallest
 //! mask) as the CPU, an island's chosen basis is the CPU's whenever the GPU
 //! accepted every basis f64 accepts before it; the f64 shaders use the CPU's
 //! tolerances for that reason.
 
 use crate::cpu::enumeration::{enumerate, feasible_basis_into, EnumerationSettings};
+use crate::cpu::lemke::lemke;
+use crate::gpu::batch::GpuSolveSettings;
 use crate::gpu::layout::{BasisResult, FOUND, RELAXED};
 use crate::lcp::{lcp_error, Counters, Lcp, LcpSolution, Status};
 use crate::linalg::solve_in_place;
+use crate::report::SolvePath;
+use crate::settings::Method;
+use crate::solver::{lemke_else_enumerate, textbook_checked};
 use crate::Error;
 
 /// What the GPU reported for one island.
@@ -162,4 +173,47 @@ pub fn check_answer(
         Verdict::Repaired
     };
     Ok((verdict, gpu_error))
+}
+
+/// The Lemke kernel's answer for `lcp` (its record and z) checked in f64
+/// into `out`: a FOUND basis that passes the CPU path's check of Lemke's
+/// textbook basis is the answer (method Lemke, path LemkeGpu: the CPU's
+/// bytes where the GPU ended on the CPU's basis); otherwise the CPU path
+/// solves the island as it would after prediction: `settings.method` Lemke
+/// by [`lemke`] (path Lemke), Auto by the checked Lemke (path Lemke), else
+/// the CPU enumeration (path Repaired). Returns (method, path, verdict:
+/// Polished for the GPU's basis, else Repaired) and the error of the GPU's
+/// own z (NaN where it gave none).
+pub fn check_lemke_answer(
+    lcp: &Lcp,
+    (result, z): (&BasisResult, &[f64]),
+    settings: &GpuSolveSettings,
+    out: &mut LcpSolution,
+) -> (Method, SolvePath, Verdict, f64) {
+    let e = &settings.enumeration;
+    let found = result.status == FOUND && result.mask >> lcp.n() == 0;
+    let gpu_error = if found && z.len() == lcp.n() {
+        lcp_error(z, &lcp.w(z), &lcp.q)
+    } else {
+        f64::NAN
+    };
+    if found && textbook_checked(lcp, result.mask, result.visited.into(), e, out) {
+        return (
+            Method::Lemke,
+            SolvePath::LemkeGpu,
+            Verdict::Polished,
+            gpu_error,
+        );
+    }
+    let (mut method, mut path) = (Method::Lemke, SolvePath::Lemke);
+    if settings.method == Method::Lemke {
+        *out = lemke(lcp, &settings.lemke);
+    } else {
+        let (l, t) = (&settings.lemke, settings.tolerance);
+        lemke_else_enumerate(lcp, l, e, t, &mut method, &mut path, out);
+        if path == SolvePath::EnumeratedCpu {
+            path = SolvePath::Repaired;
+        }
+    }
+    (method, path, Verdict::Repaired, gpu_error)
 }

@@ -6,9 +6,11 @@ use std::time::Instant;
 use super::{check_solution, warm_basis, Solver};
 use crate::build::Built;
 use crate::cpu::batch::{parallel_fill, parallel_map};
-use crate::cpu::enumeration::{enumerate, feasible_basis_into, MAX_ENUMERATION_N};
+use crate::cpu::enumeration::{
+    enumerate, feasible_basis_into, EnumerationSettings, MAX_ENUMERATION_N,
+};
 use crate::cpu::impulses::apply_impulses;
-use crate::cpu::lemke::{lemke, lemke_textbook_basis};
+use crate::cpu::lemke::{lemke, lemke_textbook_basis, LemkeSettings};
 use crate::cpu::pgs::pgs;
 use crate::lcp::{Lcp, LcpSolution, Status};
 use crate::prediction::predict_into;
@@ -238,18 +240,37 @@ pub(super) fn solve_island(
                     return;
                 }
             }
-            let mut pivots = 0;
-            if s.method == Method::Auto
-                && !s.all_solutions
-                && lemke_checked(lcp, s, &mut pivots, out)
-            {
-                return;
+            if s.method == Method::Auto && !s.all_solutions {
+                lemke_else_enumerate(lcp, &s.lemke(), &e, s.tolerance, method, path, out);
+            } else {
+                (*method, *path) = (Method::Enumeration, SolvePath::EnumeratedCpu);
+                *out = enumerate(lcp, &e).expect("n ≤ 20 and settings validated in Solver::new");
             }
-            (*method, *path) = (Method::Enumeration, SolvePath::EnumeratedCpu);
-            *out = enumerate(lcp, &e).expect("n ≤ 20 and settings validated in Solver::new");
-            out.counters.pivots += pivots;
         }
     }
+}
+
+/// Auto's answer for an island of n ≤ 20 that prediction did not settle:
+/// the checked Lemke ([`lemke_checked`]; method and path left as they come
+/// in), else the CPU enumeration (method Enumeration, path EnumeratedCpu,
+/// Lemke's pivots added to its counters). The GPU path's Lemke kernel
+/// hands the islands whose basis it cannot settle to this.
+pub(crate) fn lemke_else_enumerate(
+    lcp: &Lcp,
+    lemke_settings: &LemkeSettings,
+    e: &EnumerationSettings,
+    tolerance: f64,
+    method: &mut Method,
+    path: &mut SolvePath,
+    out: &mut LcpSolution,
+) {
+    let mut pivots = 0;
+    if lemke_checked(lcp, lemke_settings, e, tolerance, &mut pivots, out) {
+        return;
+    }
+    (*method, *path) = (Method::Enumeration, SolvePath::EnumeratedCpu);
+    *out = enumerate(lcp, e).expect("n ≤ 20 and settings validated in Solver::new");
+    out.counters.pivots += pivots;
 }
 
 /// Lemke, its final basis re-solved in f64 and checked with enumeration's
@@ -265,25 +286,30 @@ pub(super) fn solve_island(
 /// no tableau read-back, no polish, since the re-solve here is the answer);
 /// where it does not give a checked solution with an error of at most 1e-12,
 /// the whole of [`lemke`] (its scaled and covering-vector retries) runs.
-fn lemke_checked(lcp: &Lcp, s: &Settings, pivots: &mut u64, out: &mut LcpSolution) -> bool {
-    let e = s.enumeration();
-    let (mask, first_pivots) = lemke_textbook_basis(lcp, &s.lemke());
+fn lemke_checked(
+    lcp: &Lcp,
+    lemke_settings: &LemkeSettings,
+    e: &EnumerationSettings,
+    tolerance: f64,
+    pivots: &mut u64,
+    out: &mut LcpSolution,
+) -> bool {
+    let (mask, first_pivots) = lemke_textbook_basis(lcp, lemke_settings);
     *pivots = first_pivots;
     if let Some(mask) = mask {
-        if checked_basis(lcp, mask, first_pivots, &e, out) && out.residuals.error <= TEXTBOOK_ACCEPT
-        {
+        if textbook_checked(lcp, mask, first_pivots, e, out) {
             return true;
         }
     }
-    let l = lemke(lcp, &s.lemke());
+    let l = lemke(lcp, lemke_settings);
     *pivots = l.counters.pivots;
     let (Status::Solved, Some(mask)) = (l.status, l.basis) else {
         return false;
     };
     let p = *pivots;
-    if checked_basis(lcp, mask, p, &e, out)
-        || checked_basis(lcp, support(&l.z, 0.0), p, &e, out)
-        || checked_basis(lcp, support(&l.z, SUPPORT_DROP), p, &e, out)
+    if checked_basis(lcp, mask, p, e, out)
+        || checked_basis(lcp, support(&l.z, 0.0), p, e, out)
+        || checked_basis(lcp, support(&l.z, SUPPORT_DROP), p, e, out)
     {
         return true;
     }
@@ -295,7 +321,7 @@ fn lemke_checked(lcp: &Lcp, s: &Settings, pivots: &mut u64, out: &mut LcpSolutio
     // corners) while the answer is right to 1e-11…1e-9; 1 world × 6,000
     // steps of that stack enumerated 2^16 bases (~70 ms each) on 459
     // steps without this, on 2 with it (`a_resting_stack_is_seldom_enumerated`).
-    let passes = l.passes_check(s.tolerance);
+    let passes = l.passes_check(tolerance);
     if passes {
         *out = l;
     }
@@ -325,6 +351,22 @@ fn support(z: &[f64], drop: f64) -> u32 {
 /// answer ([`lemke`] itself retries above it).
 const TEXTBOOK_ACCEPT: f64 = 1e-12;
 
+/// The textbook run's basis `mask` (after `pivots` pivots) re-solved in f64
+/// and checked ([`checked_basis`]), taken when its error is at most
+/// [`TEXTBOOK_ACCEPT`]: true with the answer in `out` (else `out` holds a
+/// refused answer or what it held). The CPU path's first test of Lemke's
+/// answer, and the GPU's of the Lemke kernel's basis: where the two name
+/// the same basis, the answers are the same bytes.
+pub(crate) fn textbook_checked(
+    lcp: &Lcp,
+    mask: u32,
+    pivots: u64,
+    e: &EnumerationSettings,
+    out: &mut LcpSolution,
+) -> bool {
+    checked_basis(lcp, mask, pivots, e, out) && out.residuals.error <= TEXTBOOK_ACCEPT
+}
+
 /// Basis `mask` re-solved in f64 and checked (feasible, M_SS not singular):
 /// the solution with `pivots` in its counters written into `out` (true),
 /// or false with `out` untouched.
@@ -332,7 +374,7 @@ fn checked_basis(
     lcp: &Lcp,
     mask: u32,
     pivots: u64,
-    e: &crate::cpu::enumeration::EnumerationSettings,
+    e: &EnumerationSettings,
     out: &mut LcpSolution,
 ) -> bool {
     let counters = crate::lcp::Counters {

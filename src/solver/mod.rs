@@ -31,6 +31,7 @@ use std::time::Instant;
 
 mod cost;
 mod cpu_path;
+pub(crate) use cpu_path::{lemke_else_enumerate, textbook_checked};
 mod friction_path;
 mod gpu_path;
 mod world_cpu;

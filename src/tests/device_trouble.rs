@@ -107,10 +107,11 @@ fn user_errors_stay_errors_after_device_trouble() {
     let e_gpu = gpu.solve_scenes(&[bad]).unwrap_err();
     assert!(matches!(e_gpu, crate::Error::Invalid { .. }), "{e_gpu}");
     assert_eq!(e_gpu.to_string(), e_cpu.to_string());
-    // Lemke is not the GPU's: refused on Gpu (a settings error), served on Auto.
+    // PGS is not the GPU's: refused on Gpu (a settings error); Lemke is
+    // served on Auto.
     let e = Solver::new(Settings {
         gpu: no_such_adapter(),
-        ..Settings::new(Backend::Gpu, Method::Lemke)
+        ..Settings::new(Backend::Gpu, Method::Pgs)
     })
     .unwrap_err();
     assert!(e.to_string().contains("backend"), "{e}");

@@ -19,6 +19,7 @@ mod gpu_cost_model;
 mod gpu_friction;
 mod gpu_friction_assembly;
 mod gpu_friction_door;
+mod gpu_lemke;
 mod gpu_prediction;
 mod gpu_seeds;
 mod gpu_stages;

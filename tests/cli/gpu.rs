@@ -53,28 +53,21 @@ fn gpu_and_cpu_backends_write_the_same_output() {
     for file in [&scenes_file, &batch_file] {
         let f = file.to_str().unwrap();
         let cpu = ok(&["solve", f, "--backend", "cpu", "--solver", "enum"]);
+        // Method enumeration, as the CPU run, on `backend` at `precision`.
+        let enumerate = |backend: &str, precision: &str| {
+            let args = ["solve", f, "--backend", backend, "--solver", "enum"];
+            ok(&[&args[..], &["--precision", precision]].concat())
+        };
         if f64_adapter {
-            let gpu = ok(&["solve", f, "--backend", "gpu", "--precision", "f64"]);
-            // The GPU enumerates (the default method is enumeration there).
-            let auto = ok(&[
-                "solve",
-                f,
-                "--backend",
-                "auto",
-                "--solver",
-                "enum",
-                "--precision",
-                "f64",
-            ]);
+            let gpu = enumerate("gpu", "f64");
+            let auto = enumerate("auto", "f64");
             // Both paths settle the same islands by prediction and
             // enumerate the rest in the same order: byte for byte.
             assert_eq!(gpu, cpu, "{f}: GPU output differs from the CPU's");
             assert_eq!(auto, cpu, "{f}: auto");
         }
         // f32 shaders: the same statuses and bases (z polished in f64).
-        let g32: serde_json::Value =
-            serde_json::from_str(&ok(&["solve", f, "--backend", "gpu", "--precision", "f32"]))
-                .unwrap();
+        let g32: serde_json::Value = serde_json::from_str(&enumerate("gpu", "f32")).unwrap();
         let c: serde_json::Value = serde_json::from_str(&cpu).unwrap();
         let key = if c.get("problems").is_some() {
             "problems"
@@ -195,8 +188,9 @@ fn demo_prints_its_summary_and_the_other_path() {
         "--steps",
         "0",
     ]);
+    // Auto on the GPU: prediction, then the Lemke kernel.
     for needle in [
-        "enumerated_gpu ",
+        "lemke_gpu ",
         "polished ",
         "gpu: ",
         "for comparison, CPU path",

@@ -231,11 +231,16 @@ pub fn cpu_rows(
     Ok(rows)
 }
 
-/// The GPU row on one batch: enumeration on the device, every answer
+/// The GPU row on one batch: enumeration (method Enumeration) or Lemke's
+/// textbook path (Auto) on the device after prediction, every answer
 /// validated in f64 (time: the whole call). The first 64 islands are solved
 /// once untimed, so that kernel compiles stay out of the figure.
 pub fn gpu_row(solver: &mut Solver, family: BenchFamily, lcps: &[Lcp]) -> Result<BenchRow, Error> {
-    let name = format!("gpu enum {} + f64 polish", solver.device().precision.name());
+    let precision = solver.device().precision.name();
+    let name = match solver.settings().method {
+        Method::Enumeration => format!("gpu enum {precision} + f64 polish"),
+        _ => format!("gpu lemke {precision} + f64 check"),
+    };
     let head = &lcps[..lcps.len().min(64)];
     if family == BenchFamily::WarmResting {
         let mut warm = Solver::new(Settings {
@@ -454,14 +459,21 @@ pub fn run(opts: &BenchOptions) -> Result<(), Error> {
         path: opts.out_dir.clone(),
         source,
     })?;
-    let mut gpus = gpu_solvers(&opts.gpu, &Settings::default());
+    // The enumeration kernels (method Enumeration) and the Lemke kernel
+    // (Auto), each in f32 and, where the adapter has it, f64.
+    let enumeration = Settings {
+        method: Method::Enumeration,
+        ..Settings::default()
+    };
+    let mut gpus = gpu_solvers(&opts.gpu, &enumeration);
+    let mut lemke_gpus = gpu_solvers(&opts.gpu, &Settings::default());
     let machine = machine_description(&gpus);
     println!("machine: {machine}");
     let mut auto = auto_solver(&gpus, &opts.gpu);
     if let Some(m) = auto.as_ref().and_then(Solver::cost_model) {
         print!("auto's {m}");
     }
-    let steps = (BenchFamily::ALL.len() * (10 + gpus.len()) + 2) as u64;
+    let steps = (BenchFamily::ALL.len() * (10 + gpus.len() + lemke_gpus.len()) + 2) as u64;
     let bar = indicatif::ProgressBar::new(steps);
     bar.set_style(
         indicatif::ProgressStyle::with_template("{elapsed_precise} [{bar:30}] {pos}/{len} {msg}")
@@ -476,7 +488,7 @@ pub fn run(opts: &BenchOptions) -> Result<(), Error> {
         };
         let first = rows.len();
         rows.extend(cpu_rows(family, &lcps, &progress)?);
-        for g in gpus.iter_mut() {
+        for g in gpus.iter_mut().chain(lemke_gpus.iter_mut()) {
             progress("gpu");
             rows.push(gpu_row(g, family, &lcps)?);
         }

@@ -23,6 +23,7 @@ const ENUMERATION_WORKGROUP_WGSL: &str =
     include_str!("../../../shaders/enumeration_workgroup.wgsl");
 const ENUMERATION_TREE_WGSL: &str = include_str!("../../../shaders/enumeration_tree.wgsl");
 const ENUMERATION_ALL_WGSL: &str = include_str!("../../../shaders/enumeration_all.wgsl");
+const LEMKE_WGSL: &str = include_str!("../../../shaders/lemke.wgsl");
 const ASSEMBLY_WGSL: &str = include_str!("../../../shaders/assembly.wgsl");
 const IMPULSES_WGSL: &str = include_str!("../../../shaders/impulses.wgsl");
 const FRICTION_PROJECTED_WGSL: &str = include_str!("../../../shaders/friction_projected.wgsl");
@@ -50,6 +51,7 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         Shader::Workgroup => ("enumeration_workgroup", ENUMERATION_WORKGROUP_WGSL),
         Shader::Tree(_) => ("enumeration_tree", ENUMERATION_TREE_WGSL),
         Shader::AllBases => ("enumeration_all", ENUMERATION_ALL_WGSL),
+        Shader::Lemke => ("lemke", LEMKE_WGSL),
         Shader::Assembly => ("assembly", ASSEMBLY_WGSL),
         Shader::Impulses => ("impulses", IMPULSES_WGSL),
         Shader::FrictionProjected(k) if k <= FRICTION_UNROLL_MAX_K => {
@@ -106,6 +108,15 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
                 ("SWEEPS4", k4),
             ];
             unroll_marked_loops(&s, &constants, true)?
+        }
+        // Lemke: the scalar type's largest finite value (finiteness tests).
+        Shader::Lemke => {
+            let max = scalar_limits(precision).0;
+            replace_host_line(
+                &s,
+                "scalar_max",
+                &format!("const SCALAR_MAX: Scalar = {max};"),
+            )?
         }
         Shader::Unrolled(n) | Shader::Tree(n) | Shader::FrictionProjected(n) => {
             return Err(Error::Gpu(format!(

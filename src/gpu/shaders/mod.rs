@@ -47,6 +47,9 @@ pub(crate) enum Shader {
     /// `shaders/enumeration_tree.wgsl` for islands of exactly n contacts
     /// (1 ≤ n ≤ [`crate::cpu::enumeration_tree::TREE_MAX_N`]).
     Tree(usize),
+    /// `shaders/lemke.wgsl`: Lemke's textbook path, one invocation per
+    /// island of any size up to [`super::MAX_GPU_N`].
+    Lemke,
     /// `shaders/enumeration_all.wgsl`: every basis of every island
     /// (`all_solutions`), one invocation per (island, basis).
     AllBases,
@@ -64,7 +67,12 @@ impl Shader {
     /// Every shader that can run.
     #[cfg(test)]
     pub(crate) fn all() -> Vec<Shader> {
-        let mut v = vec![Shader::Enumeration, Shader::Workgroup, Shader::AllBases];
+        let mut v = vec![
+            Shader::Enumeration,
+            Shader::Workgroup,
+            Shader::AllBases,
+            Shader::Lemke,
+        ];
         v.extend((1..=FIXED_MAX_N).map(Shader::Unrolled));
         v.extend((1..=TREE_MAX_N).map(Shader::Tree));
         v.extend([Shader::Assembly, Shader::Impulses]);
@@ -80,6 +88,7 @@ impl Shader {
             Shader::Workgroup => "enumeration_workgroup".into(),
             Shader::Tree(n) => format!("enumeration_tree_n{n}"),
             Shader::AllBases => "enumeration_all".into(),
+            Shader::Lemke => "lemke".into(),
             Shader::Assembly => "assembly".into(),
             Shader::Impulses => "impulses".into(),
             Shader::FrictionProjected(k) => format!("friction_projected_k{k}"),
@@ -129,6 +138,7 @@ pub(crate) static GENERATED: &[(&str, &str, &str)] = generated!(
     "enumeration",
     "enumeration_workgroup",
     "enumeration_all",
+    "lemke",
     "enumeration_n1",
     "enumeration_n2",
     "enumeration_n3",

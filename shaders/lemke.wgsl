@@ -1,0 +1,268 @@
+// Lemke's complementary pivoting method, the textbook run: one invocation
+// per island. CPU twin: `lemke_textbook_basis` (src/cpu/lemke.rs) on
+// `Workspace::pivot_path` (src/cpu/lemke_tableau.rs) with Noise::Column:
+// the same tableau, tests and pivots in the same order, so that in f64 it
+// ends on the CPU's basis.
+//
+// The tableau is B^-1 [I, -M, -e | q] (covering vector e = 1), n rows of
+// 2n + 2 columns, row-major in the private array `t`: w_0..w_{n-1},
+// z_0..z_{n-1}, z0, rhs; basic[i] is the variable basic in row i (w_i = i,
+// z_i = n + i, z0 = 2n). A private array rather than a scratch storage
+// buffer: it needs no binding or allocation per batch, and drivers already
+// lay thread-private memory out interleaved by thread (coalesced), which is
+// what a scratch buffer would have to arrange by hand.
+//
+// The island's record (BasisResult, shaders/enumeration_basis.wgsl): status
+// FOUND (1) with `mask` the final basis (bit i: z_i basic), `visited` the
+// pivots, z read from the tableau; or GAVE_UP (4): a secondary ray with z0
+// not at zero, the pivot cap (tol._pad1), the loop budget, or a non-finite
+// entry. There is no cycle detection: the host solves every island the
+// kernel gave up on by the CPU path (which detects cycles). One round: the
+// kernel never counts itself in `unfinished`.
+//
+// Loop budget: llvmpipe (lavapipe) ends every loop of an invocation after
+// about 65,535 iterations in all, silently; an invocation gives up before a
+// pivot whose loop work (an upper bound, `step`) would take it past
+// params.budget (below that limit on software adapters).
+//
+// Tolerances (binding 7): _pad0 is the Lemke pivot tolerance (an entry of
+// the entering column is a pivot when it exceeds it times the column's
+// largest magnitude), _pad1 the pivot cap (src/gpu/pipelines.rs).
+
+const SCALAR_MAX: Scalar = 3.4028234663852886e38; // HOST scalar_max
+
+const GAVE_UP: u32 = 4u;
+
+var<private> t: array<Scalar, 544>; // MAX_N * (2 * MAX_N + 2)
+var<private> basic: array<u32, 16>;
+// Rows whose entry in the entering column counts as a pivot.
+var<private> cand: array<u32, 16>;
+// Rows still tied in the lexicographic ratio test.
+var<private> tied: array<u32, 16>;
+
+fn finite(v: Scalar) -> bool {
+    return abs(v) <= SCALAR_MAX;
+}
+
+// Gauss-Jordan pivot on (row r, column c): row r divided by its pivot, then
+// every other row minus its entry in column c times row r (Workspace::pivot).
+// False when an entry it wrote is not finite.
+fn pivot(n: u32, r: u32, c: u32) -> bool {
+    let cols = 2u * n + 2u;
+    let pr = r * cols;
+    let inv = Scalar(1.0) / t[pr + c];
+    var ok = finite(inv);
+    for (var j = 0u; j < cols; j++) {
+        let v = t[pr + j] * inv;
+        t[pr + j] = v;
+        ok = ok && finite(v);
+    }
+    t[pr + c] = Scalar(1.0);
+    for (var i = 0u; i < n; i++) {
+        let ri = i * cols;
+        let f = t[ri + c];
+        if i != r && f != Scalar(0.0) {
+            for (var j = 0u; j < cols; j++) {
+                let v = t[ri + j] - f * t[pr + j];
+                t[ri + j] = v;
+                ok = ok && finite(v);
+            }
+            t[ri + c] = Scalar(0.0);
+        }
+    }
+    return ok;
+}
+
+// The ratio-test key of row i in column col for the entering column e
+// (Workspace::leaving_row): rhs values rounding made negative count as 0.
+fn key(cols: u32, i: u32, col: u32, e: u32) -> Scalar {
+    var v = t[i * cols + col];
+    if col == cols - 1u {
+        v = max(v, Scalar(0.0));
+    }
+    return v / t[i * cols + e];
+}
+
+// The lexicographic minimum-ratio test over cand[0..count]
+// (Workspace::leaving_row): the minimum ratio; on a tie z0's row if it is
+// tied, else the lexicographic minimum of the rows of B^-1 over the entry.
+// n + 1 when a ratio is not finite (the caller gives up).
+fn leaving_row(n: u32, e: u32, count: u32) -> u32 {
+    let cols = 2u * n + 2u;
+    let rhs = cols - 1u;
+    var first = cand[0];
+    var least = key(cols, first, rhs, e);
+    var ties = 1u;
+    for (var k = 1u; k < count; k++) {
+        let v = key(cols, cand[k], rhs, e);
+        if v < least {
+            least = v;
+            first = cand[k];
+            ties = 1u;
+        } else if v == least {
+            ties++;
+        }
+    }
+    if !finite(least) {
+        return n + 1u;
+    }
+    if ties <= 1u {
+        return first;
+    }
+    var m = 0u;
+    for (var k = 0u; k < count; k++) {
+        if key(cols, cand[k], rhs, e) <= least {
+            tied[m] = cand[k];
+            m++;
+        }
+    }
+    for (var k = 0u; k < m; k++) {
+        if basic[tied[k]] == 2u * n {
+            return tied[k];
+        }
+    }
+    for (var col = 0u; col < n; col++) {
+        var low = key(cols, tied[0], col, e);
+        for (var k = 1u; k < m; k++) {
+            low = min(low, key(cols, tied[k], col, e));
+        }
+        var kept = 0u;
+        for (var k = 0u; k < m; k++) {
+            if key(cols, tied[k], col, e) <= low {
+                tied[kept] = tied[k];
+                kept++;
+            }
+        }
+        m = kept;
+        if m <= 1u {
+            break;
+        }
+    }
+    if m == 0u {
+        return first;
+    }
+    return tied[0];
+}
+
+// The path on island `island` of n contacts; returns FOUND (the basis in
+// state.mask) or GAVE_UP, the pivots in state.visited.
+fn lemke_path(island: Island, n: u32, state: ptr<function, BasisResult>) -> u32 {
+    let cols = 2u * n + 2u;
+    let rhs = cols - 1u;
+    let z0 = 2u * n;
+    let qbase = island.data + n * n;
+    var q_scale = Scalar(0.0);
+    var separating = true;
+    var qmin = values[qbase];
+    var first = 0u;
+    for (var i = 0u; i < n; i++) {
+        let qi = values[qbase + i];
+        separating = separating && qi >= Scalar(0.0);
+        q_scale = max(q_scale, abs(qi));
+        // The first leaving row: the most negative q_i, ties to the
+        // largest index (Workspace::first_row).
+        if qi <= qmin {
+            qmin = qi;
+            first = i;
+        }
+    }
+    if separating {
+        (*state).mask = 0u;
+        return 1u;
+    }
+    for (var i = 0u; i < n; i++) {
+        let ri = i * cols;
+        let mi = island.data + i * n;
+        for (var j = 0u; j < n; j++) {
+            t[ri + j] = Scalar(0.0);
+            t[ri + n + j] = -values[mi + j];
+        }
+        t[ri + i] = Scalar(1.0);
+        t[ri + z0] = Scalar(-1.0);
+        t[ri + rhs] = values[qbase + i];
+        basic[i] = i;
+    }
+    // Loop work of one pivot and its tests, an upper bound.
+    let step = (n + 1u) * cols + 2u * n * n + 6u * n;
+    var spent = n * cols + n + step;
+    let pivot_tol = tol._pad0;
+    let max_pivots = u32(max(tol._pad1, Scalar(1.0)));
+    if !pivot(n, first, z0) {
+        return GAVE_UP;
+    }
+    (*state).visited = 1u;
+    var entering = basic[first] + n;
+    basic[first] = z0;
+    loop {
+        if (*state).visited >= max_pivots || spent + step > params.budget {
+            return GAVE_UP;
+        }
+        spent += step;
+        var colmax = Scalar(0.0);
+        for (var i = 0u; i < n; i++) {
+            let v = abs(t[i * cols + entering]);
+            if v > colmax {
+                colmax = v;
+            }
+        }
+        let floor = pivot_tol * colmax;
+        var count = 0u;
+        for (var i = 0u; i < n; i++) {
+            if t[i * cols + entering] > floor {
+                cand[count] = i;
+                count++;
+            }
+        }
+        if count == 0u || colmax == Scalar(0.0) {
+            // A secondary ray: a solution only with z0 at zero to rounding.
+            for (var i = 0u; i < n; i++) {
+                if basic[i] == z0 {
+                    if t[i * cols + rhs] <= pivot_tol * q_scale {
+                        return 1u;
+                    }
+                    break;
+                }
+            }
+            return GAVE_UP;
+        }
+        let best = leaving_row(n, entering, count);
+        if best >= n || !pivot(n, best, entering) {
+            return GAVE_UP;
+        }
+        (*state).visited++;
+        let leaving = basic[best];
+        basic[best] = entering;
+        if leaving == z0 {
+            return 1u;
+        }
+        if leaving < n {
+            entering = leaving + n;
+        } else {
+            entering = leaving - n;
+        }
+    }
+    return GAVE_UP;
+}
+
+@compute @workgroup_size(64)
+fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
+    if gid.x >= params.count {
+        return;
+    }
+    let island_index = params.first + gid.x;
+    let island = islands[island_index];
+    let n = min(island.n, MAX_N);
+    var state = BasisResult(0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+    state.status = lemke_path(island, n, &state);
+    if state.status == 1u && state.visited > 0u {
+        let cols = 2u * n + 2u;
+        for (var i = 0u; i < n; i++) {
+            let v = basic[i];
+            if v >= n && v < 2u * n {
+                state.mask |= 1u << (v - n);
+                z_out[island.z + v - n] = max(t[i * cols + cols - 1u], Scalar(0.0));
+            }
+        }
+    }
+    results[island_index] = state;
+}
