@@ -233,15 +233,26 @@ pub fn cpu_rows(
 
 /// The GPU row on one batch: enumeration (method Enumeration) or Lemke's
 /// textbook path (Auto) on the device after prediction, every answer
-/// validated in f64 (time: the whole call). The first 64 islands are solved
-/// once untimed, so that kernel compiles stay out of the figure.
+/// validated in f64 (time: the whole call). Up to 16 islands of every size
+/// in the batch are solved once untimed first, so that the kernels' builds
+/// (one per size, on first use) stay out of the figure.
 pub fn gpu_row(solver: &mut Solver, family: BenchFamily, lcps: &[Lcp]) -> Result<BenchRow, Error> {
     let precision = solver.device().precision.name();
     let name = match solver.settings().method {
         Method::Enumeration => format!("gpu enum {precision} + f64 polish"),
         _ => format!("gpu lemke {precision} + f64 check"),
     };
-    let head = &lcps[..lcps.len().min(64)];
+    let mut per_size = BTreeMap::<usize, usize>::new();
+    let head: Vec<Lcp> = lcps
+        .iter()
+        .filter(|l| {
+            let seen = per_size.entry(l.n()).or_default();
+            *seen += 1;
+            *seen <= 16
+        })
+        .cloned()
+        .collect();
+    let head = &head[..];
     if family == BenchFamily::WarmResting {
         let mut warm = Solver::new(Settings {
             warm_start: true,
