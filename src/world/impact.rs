@@ -23,7 +23,9 @@
 //!    quadratic in t) and sphere–sphere under the same gravity (|d + u t| =
 //!    r_a + r_b); conservative advancement for every other pair (steps of
 //!    gap / a bound on the closing speed, which never steps past contact:
-//!    box–box's gap is the separating-axis distance, a lower bound);
+//!    box–box's gap is the separating-axis distance, a lower bound; a pair
+//!    touching where it separates is searched on from its points closing
+//!    now only);
 //! 2. the earliest impact of the world is taken: both bodies advanced to
 //!    t_c, the pair's touching points (gap ≤ 2 [`TOUCH`], closing) solved as
 //!    one LCP with Newton's restitution and no gap term (Lemke, f64: a
@@ -301,8 +303,15 @@ fn time_of_impact(
 ) -> Option<f64> {
     let g = a.g - b.g;
     let du = a.u - b.u;
-    let bound =
-        du.length() + g.length() * (dt - a.t) + a.w.length() * reach.0 + b.w.length() * reach.1;
+    let spin = a.w.length() * reach.0 + b.w.length() * reach.1;
+    // Against a plane only the normal parts close the gap; else all of it.
+    let bound = match shapes.1 {
+        Shape::Plane { normal } => {
+            let n = DVec3::from(normal);
+            (-n.dot(du)).max(0.0) + (-n.dot(g)).max(0.0) * (dt - a.t) + spin
+        }
+        _ => du.length() + g.length() * (dt - a.t) + spin,
+    };
     if bound <= threshold {
         return None;
     }
@@ -349,6 +358,9 @@ fn first_closing_root(c0: f64, c1: f64, c2: f64) -> Option<f64> {
 
 /// Conservative advancement: from a.t, steps of gap / `bound` (a bound on
 /// the closing speed over the step) until the pair touches while closing.
+/// Where it touches but separates there, the gap of the points closing now
+/// is stepped on (none: no impact this step), so that a resting or sliding
+/// pair is not stepped through in steps of [`TOUCH`].
 fn advance(a: &Motion, b: &Motion, shapes: (Shape, Shape), bound: f64, dt: f64) -> Option<f64> {
     let mut t = a.t;
     for _ in 0..MAX_ADVANCES {
@@ -356,13 +368,16 @@ fn advance(a: &Motion, b: &Motion, shapes: (Shape, Shape), bound: f64, dt: f64) 
         let margin = bound * (dt - t) + TOUCH;
         let hits = collide_shapes(&x.placed(shapes.0), &y.placed(shapes.1), margin);
         // No point within reach: the pair cannot meet before the step ends.
-        let gap = hits.iter().map(|h| h.gap).reduce(f64::min)?;
-        if gap <= TOUCH
-            && hits
-                .iter()
-                .any(|h| h.gap <= TOUCH && closing(&x, &y, h) < 0.0)
-        {
-            return Some(t);
+        let mut gap = hits.iter().map(|h| h.gap).reduce(f64::min)?;
+        if gap <= TOUCH {
+            let closers = hits.iter().filter(|h| closing(&x, &y, h) < 0.0);
+            let next = closers.map(|h| h.gap).reduce(f64::min)?;
+            if next <= TOUCH {
+                return Some(t);
+            }
+            // Touching where it separates (resting, sliding, just
+            // bounced): only a point closing now is searched on.
+            gap = next;
         }
         t += gap.max(TOUCH) / bound;
         if t > dt {
