@@ -273,6 +273,8 @@ pub(super) fn figures(
         max_error,
         awake: w.bodies.iter().filter(|b| !b.fixed && !b.asleep).count(),
         unsolved,
+        impacts: p.impacts.count,
+        impacts_deferred: p.impacts.deferred,
     }
 }
 

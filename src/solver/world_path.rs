@@ -68,6 +68,13 @@ pub struct WorldStepReport {
     /// Islands of this world the solver left unsolved (repaired, see
     /// [`StepReport::repairs`]).
     pub unsolved: usize,
+    /// Bounces resolved at their time of impact within the step (sub-steps
+    /// before the DVI step; their impulses are in the step's report, added
+    /// to their contacts').
+    pub impacts: usize,
+    /// Bounces still due when the step's bound on impacts (16) was reached:
+    /// left to the DVI step, which bounces them from where they are.
+    pub impacts_deferred: usize,
 }
 
 /// Seconds per phase of one step (wall time; within pass 2, each phase's
@@ -174,6 +181,9 @@ impl Solver {
             });
         }
         let mut prepared: Vec<Prepared> = prepared.into_iter().flatten().collect();
+        let kicks: Vec<Vec<f64>> = (prepared.iter_mut())
+            .map(|p| std::mem::take(&mut p.impacts.impulses))
+            .collect();
         let collision = start.elapsed().as_secs_f64();
         // The batch: every world while a GPU is open, solved through the
         // door in one call; on the CPU every world is solved in pass 2.
@@ -216,7 +226,16 @@ impl Solver {
         drop(items);
         self.world_warm = memory;
         let pass = start.elapsed().as_secs_f64();
-        Ok(self.step_report(stepped, batch, collision, batch_seconds, pass))
+        let mut report = self.step_report(stepped, batch, collision, batch_seconds, pass);
+        // The impacts' impulses join their contacts' (none in most worlds).
+        for (scene, kick) in report.solve.scenes.iter_mut().zip(&kicks) {
+            scene
+                .impulses
+                .iter_mut()
+                .zip(kick)
+                .for_each(|(z, k)| *z += k);
+        }
+        Ok(report)
     }
 
     /// The step's report: the batch's report (or an empty one on the CPU

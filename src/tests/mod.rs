@@ -37,3 +37,4 @@ mod stress;
 mod stress_gpu_f32;
 mod world;
 mod world_friction;
+mod world_impacts;

@@ -9,7 +9,7 @@ use crate::world::generate::{standard_world, WorldKind};
 use crate::world::{RigidBody, Shape, World};
 use crate::Solver;
 
-fn cpu() -> Solver {
+pub(super) fn cpu() -> Solver {
     Solver::new(Settings {
         warm_start: true,
         ..Settings::new(Backend::Cpu, Method::Auto)
@@ -17,7 +17,7 @@ fn cpu() -> Solver {
     .unwrap()
 }
 
-fn ground() -> RigidBody {
+pub(super) fn ground() -> RigidBody {
     RigidBody::fixed(
         Shape::Plane {
             normal: [0.0, 1.0, 0.0],

@@ -30,6 +30,7 @@ pub(crate) mod collide;
 mod collide_box;
 pub mod format;
 pub mod generate;
+pub(crate) mod impact;
 pub(crate) mod step;
 
 pub use crate::solver::world_path::{StepReport, StepTimings, WorldStepReport};
@@ -266,7 +267,12 @@ impl RigidBody {
 
     /// The world-frame inverse inertia R diag(1/I) Rᵀ.
     pub fn world_inv_inertia(&self, props: &MassProperties) -> DMat3 {
-        let r = DMat3::from_quat(self.rotation());
+        self.inv_inertia_at(props, self.rotation())
+    }
+
+    /// The inverse inertia R diag(1/I) Rᵀ at orientation `q`.
+    pub(crate) fn inv_inertia_at(&self, props: &MassProperties, q: DQuat) -> DMat3 {
+        let r = DMat3::from_quat(q);
         r * DMat3::from_diagonal(props.inv_inertia) * r.transpose()
     }
 
