@@ -12,6 +12,7 @@
 use std::fmt;
 use std::ops::AddAssign;
 
+use crate::cpu::batch::parallel_fill_by;
 pub use crate::cpu::impulses::BodyVelocity;
 use crate::friction::{FrictionMethod, FrictionSolution};
 use crate::gpu::Precision;
@@ -455,6 +456,39 @@ fn tally(items: impl Iterator<Item = (Status, f64)>) -> Tally {
     (statuses, max)
 }
 
+/// Islands counted by one thread at a time in [`count_islands`].
+const COUNT_PART: usize = 1024;
+
+/// The path counts and the [`Tally`] of `islands`, parts of
+/// [`COUNT_PART`] islands on up to `threads` threads, added in order: the
+/// serial count's figures (the largest error's first index on a tie).
+/// Where a solution's error is NaN, whose place a serial count keeps by
+/// its own rule ([`larger`]), the islands are counted again on this thread.
+fn count_islands(islands: &[IslandReport], threads: usize) -> (PathCounts, Tally) {
+    let count = |part: &[IslandReport]| {
+        let mut counts = PathCounts::default();
+        part.iter().for_each(|i| counts.add(i.path));
+        (counts, tally(part.iter().map(|i| (i.status(), i.error()))))
+    };
+    let mut parts = vec![Default::default(); islands.len().div_ceil(COUNT_PART)];
+    parallel_fill_by(&mut parts, threads, 1, |p, slot| {
+        let part = &islands[p * COUNT_PART..islands.len().min((p + 1) * COUNT_PART)];
+        let nan = part
+            .iter()
+            .any(|i| i.status().is_solution() && i.error().is_nan());
+        *slot = (count(part), nan);
+    });
+    if parts.iter().any(|(_, nan)| *nan) {
+        return count(islands);
+    }
+    let mut all = (PathCounts::default(), ([0; Status::ALL.len()], None));
+    for (p, ((counts, t), _)) in parts.into_iter().enumerate() {
+        all.0 += counts;
+        add_tally((&mut all.1 .0, &mut all.1 .1), t, p * COUNT_PART);
+    }
+    all
+}
+
 /// The larger of two (error, index) maxima, `a`'s on a tie. NaN compares
 /// false: a NaN in `b` always replaces `a`, so that it is reported, never
 /// hidden.
@@ -529,9 +563,18 @@ impl Report {
         device: Device,
         choice: String,
     ) -> Self {
-        let mut counts = PathCounts::default();
-        islands.iter().for_each(|i| counts.add(i.path));
-        let (statuses, max_error) = tally(islands.iter().map(|i| (i.status(), i.error())));
+        Self::new_on(islands, scenes, device, choice, 1)
+    }
+
+    /// [`Report::new`], the islands counted on up to `threads` threads.
+    pub(crate) fn new_on(
+        islands: Vec<IslandReport>,
+        scenes: Vec<SceneReport>,
+        device: Device,
+        choice: String,
+        threads: usize,
+    ) -> Self {
+        let (counts, (statuses, max_error)) = count_islands(&islands, threads);
         Report {
             islands,
             scenes,

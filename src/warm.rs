@@ -23,12 +23,14 @@
 use std::collections::HashMap;
 use std::hash::{BuildHasher, Hasher, RandomState};
 
+use crate::cpu::batch::parallel_fill_by;
+
 /// Shards of the door's memory (a world's has one).
 pub(crate) const SHARDS: usize = 16;
 
 /// Ids recorded (in one call, over every shard) below which
-/// [`WarmMemory::record_all`] stays on the calling thread: starting a
-/// thread costs more.
+/// [`WarmMemory::record_all`] stays on the calling thread: waking the
+/// other threads costs more.
 const PARALLEL_RECORDS: usize = 4096;
 
 /// A value remembered by contact id, with the call that last recorded it.
@@ -193,16 +195,10 @@ impl<V: Copy + Send + Sync> WarmMemory<V> {
                 }
             }
         };
-        std::thread::scope(|scope| {
-            let mut parts = self.shards.chunks_mut(per).enumerate();
-            let mine = parts.next();
-            for (c, part) in parts {
-                scope.spawn(move || write(c * per, part));
-            }
-            if let Some((_, part)) = mine {
-                write(0, part);
-            }
-        });
+        // On the kept threads (`parallel_fill_by`): threads started per
+        // call cost more than the records of a batch of small islands.
+        let mut parts: Vec<_> = self.shards.chunks_mut(per).collect();
+        parallel_fill_by(&mut parts, threads, 1, |c, part| write(c * per, part));
     }
 }
 

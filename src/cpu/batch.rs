@@ -10,6 +10,7 @@
 
 use std::sync::{Arc, Mutex, OnceLock};
 
+use rayon::prelude::*;
 use rayon::ThreadPool;
 
 /// Indices per chunk handed to a thread at a time: large enough that taking
@@ -57,21 +58,27 @@ fn pool(threads: usize) -> Option<Arc<ThreadPool>> {
 }
 
 /// `f(0), …, f(count − 1)` in order, computed on up to `threads` threads
-/// (0 or 1: on this one), through [`parallel_fill`].
+/// (0 or 1: on this one; else a pool's, at least [`CHUNK`] indices a task).
 pub fn parallel_map<T: Send>(
     count: usize,
     threads: usize,
     f: impl Fn(usize) -> T + Sync,
 ) -> Vec<T> {
     let threads = threads.min(count.div_ceil(CHUNK)).max(1);
-    if threads == 1 {
+    let Some(pool) = (threads > 1).then(|| pool(threads)).flatten() else {
         return (0..count).map(f).collect();
-    }
-    let mut out: Vec<Option<T>> = (0..count).map(|_| None).collect();
-    parallel_fill(&mut out, threads, |i, slot| *slot = Some(f(i)));
-    out.into_iter()
-        .map(|r| r.expect("every chunk was computed"))
-        .collect()
+    };
+    // Each result written in its place by the thread that computes it:
+    // nothing moved after, nothing written twice.
+    let mut out = Vec::with_capacity(count);
+    pool.install(|| {
+        (0..count)
+            .into_par_iter()
+            .with_min_len(CHUNK)
+            .map(&f)
+            .collect_into_vec(&mut out)
+    });
+    out
 }
 
 /// `f(i, &mut out[i])` for every slot, on up to `threads` threads (0 or 1:

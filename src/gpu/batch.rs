@@ -12,11 +12,12 @@
 //! The host's share runs on every core, in blocks of consecutive islands
 //! ([`BLOCK`]) written where the report keeps them: one pass checks each
 //! problem, looks up its warm basis and settles what needs no GPU
-//! (prediction, Lemke above n = 16), then the rest is packed (in parallel,
-//! in the shader's precision) and copied once into buffers the context
-//! keeps between calls, and after the kernels a second pass checks each
-//! answer in f64
-//! ([`super::validation`]). Nothing is allocated per island for n ≤ 8.
+//! (prediction, Lemke above n = 16), then the rest is written by every
+//! thread, in the shader's precision, straight into mapped buffers the
+//! context keeps between calls (on hardware a kept staging buffer, copied
+//! on the device), and after the kernels a second pass checks each answer
+//! in f64 ([`super::validation`]); the reports are made and counted on
+//! every thread too. Nothing is allocated per island for n ≤ 8.
 
 // The stage entry point `enumerate_on_gpu` (the GPU's raw verdicts)
 // serves the stage tests; the Solver calls `solve_lcp_batch_warm`.
@@ -415,10 +416,11 @@ pub fn solve_lcp_batch_warm(
 ) -> Result<Report, Error> {
     settings.check()?;
     let threads = settings.threads;
-    let mut islands: Vec<IslandReport> = Vec::with_capacity(lcps.len());
-    islands.resize_with(lcps.len(), || IslandReport {
+    // The reports made (a few hundred bytes each, written for the first
+    // time) on every thread too.
+    let mut islands: Vec<IslandReport> = parallel_map(lcps.len(), threads, |i| IslandReport {
         scene: None,
-        contacts: ShortVec::new(),
+        contacts: ShortVec::indices(lcps[i].n()),
         method: Method::Enumeration,
         path: SolvePath::Invalid,
         solution: LcpSolution::invalid(0),
@@ -428,7 +430,6 @@ pub fn solve_lcp_batch_warm(
     parallel_fill_by(&mut blocks, threads, 1, |_, b| {
         for (j, island) in b.islands.iter_mut().enumerate() {
             let i = b.first + j;
-            island.contacts = ShortVec::indices(lcps[i].n());
             // The problem's name is formatted only by the caller's error.
             if lcps[i].validate("problem").is_err() {
                 island.solution = LcpSolution::invalid(lcps[i].q.len());
@@ -456,6 +457,7 @@ pub fn solve_lcp_batch_warm(
             0,
             GpuFigures::default(),
             [prediction, 0.0, 0.0],
+            threads,
         ));
     }
     let t = Instant::now();
@@ -490,19 +492,23 @@ pub fn solve_lcp_batch_warm(
     }
     drop(blocks);
     let seconds = [prediction, gpu, validation];
-    Ok(batch_report(ctx, islands, polished, figures, seconds))
+    Ok(batch_report(
+        ctx, islands, polished, figures, seconds, threads,
+    ))
 }
 
 /// The report of an LCP batch: `polished` GPU answers kept, the figures,
-/// and the seconds of prediction, the GPU and the f64 check.
+/// and the seconds of prediction, the GPU and the f64 check; the islands
+/// counted on up to `threads` threads.
 fn batch_report(
     ctx: &GpuContext,
     islands: Vec<IslandReport>,
     polished: usize,
     figures: GpuFigures,
     [prediction, gpu, validation]: [f64; 3],
+    threads: usize,
 ) -> Report {
-    let mut r = Report::new(islands, Vec::new(), Device::of(ctx), String::new());
+    let mut r = Report::new_on(islands, Vec::new(), Device::of(ctx), String::new(), threads);
     r.counts.polished = polished;
     r.counts.cpu_fallback = r.counts.lemke;
     r.timings.prediction = prediction;

@@ -4,6 +4,7 @@
 use wgpu::util::DeviceExt;
 
 use super::batch::GpuSolveSettings;
+use super::friction_rounds::write_scalars;
 use super::kernel::TreeRoute;
 use super::layout::{BasisResult, PackedIsland};
 use super::{GpuContext, Precision};
@@ -159,6 +160,9 @@ pub(crate) enum Role {
     Params,
     /// Mappable copies of storage buffers for reading back (hardware).
     Readback,
+    /// Mappable buffers the host writes and copies into storage buffers
+    /// ([`GpuContext::kept_written`], hardware).
+    Staging,
     /// The friction batches' W, q, μ and their vectors: host-written like
     /// `Values` (a new buffer costs a zeroing by wgpu and the kernel's first
     /// touch of every page: the W of 10,000 islands of k = 4, 12.8 MB, about
@@ -173,8 +177,6 @@ pub(crate) enum Role {
 #[derive(Default)]
 pub(crate) struct Kept {
     buffers: Vec<(Role, wgpu::Buffer)>,
-    /// Host bytes the values are packed into before the copy to the device.
-    packing: Vec<u8>,
     pub(crate) tolerances: Option<(super::pipelines::Tolerances, wgpu::Buffer)>,
 }
 
@@ -198,6 +200,7 @@ impl GpuContext {
             }
             Role::Params => U::UNIFORM | U::COPY_DST,
             Role::Readback => U::MAP_READ | U::COPY_DST,
+            Role::Staging => U::MAP_WRITE | U::COPY_SRC,
             _ => self.storage_usage(),
         }
     }
@@ -261,31 +264,17 @@ impl GpuContext {
         }
     }
 
-    /// The kept packing bytes (empty when another call holds them).
-    fn take_packing(&self) -> Vec<u8> {
-        self.kept
-            .lock()
-            .map(|mut k| std::mem::take(&mut k.packing))
-            .unwrap_or_default()
-    }
-
-    /// Keeps `bytes` for the next call's packing, unless larger than half
-    /// [`KEPT_BYTES`].
-    fn keep_packing(&self, bytes: Vec<u8>) {
-        if bytes.capacity() as u64 <= KEPT_BYTES / 2 {
-            if let Ok(mut k) = self.kept.lock() {
-                k.packing = bytes;
-            }
-        }
-    }
-
     /// A buffer of `role` (at least `size` bytes, rounded up to 16 and to
     /// 4) whose first `size` bytes `fill` writes, every one of them (a kept
-    /// buffer holds an earlier call's bytes). A kept buffer is mapped again
-    /// where the device maps storage buffers (wgpu waits for any
-    /// submission reading it), else written through the queue (before the
-    /// next submission); a new one is mapped at creation. Give it back with
-    /// [`Self::keep`].
+    /// buffer holds an earlier call's bytes). The view `fill` gets can be
+    /// split ([`wgpu::WriteOnly::split_at`]) and its parts written by
+    /// several threads. Where the device maps storage buffers, the buffer
+    /// itself is mapped and written; else a mappable staging buffer
+    /// ([`Role::Staging`], kept between calls like the others) is, and
+    /// copied into the buffer by a submission of its own (ordered before
+    /// the caller's next one). Why not `queue.write_buffer`: it allocates a
+    /// staging buffer per call, and its view is filled from one thread.
+    /// Give the buffer back with [`Self::keep`].
     pub(crate) fn kept_written(
         &self,
         role: Role,
@@ -293,26 +282,41 @@ impl GpuContext {
         fill: impl FnOnce(wgpu::WriteOnly<'_, [u8]>),
     ) -> Result<wgpu::Buffer, Error> {
         let size = size.max(16).next_multiple_of(4);
-        let what = format!("writing {role:?}");
-        let Some(buffer) = self.take_kept(role, size) else {
-            let buffer = self.new_kept(role, size, true);
-            return fill_mapped(buffer, size, &what, |view| fill(view.slice(..)));
-        };
         if self.maps_storage() {
-            buffer.slice(..size).map_async(wgpu::MapMode::Write, |_| {});
-            self.device
-                .poll(wgpu::PollType::wait_indefinitely())
-                .map_err(|e| Error::Gpu(format!("{what}: {e}")))?;
-            return fill_mapped(buffer, size, &what, |view| fill(view.slice(..)));
+            return self.kept_mapped(role, size, fill);
         }
-        let bytes = wgpu::BufferSize::new(size).ok_or_else(|| Error::Gpu(what.clone()))?;
-        let mut view = self
-            .queue
-            .write_buffer_with(&buffer, 0, bytes)
-            .ok_or_else(|| Error::Gpu(format!("{what}: the queue refused the write")))?;
-        fill(view.slice(..));
-        drop(view);
+        let staging = self.kept_mapped(Role::Staging, size, fill)?;
+        let buffer = self.kept_or_new(role, size);
+        let mut encoder = self.encoder("upload");
+        encoder.copy_buffer_to_buffer(&staging, 0, &buffer, 0, size);
+        self.queue.submit([encoder.finish()]);
+        // The copy may still read it: whoever takes it next maps it, and
+        // wgpu maps it only once the copy is done.
+        self.keep(Role::Staging, staging);
         Ok(buffer)
+    }
+
+    /// A buffer of `role` (mappable for writing) with its first `size`
+    /// bytes written by `fill`: a kept one mapped again (wgpu waits for any
+    /// submission using it), else a new one mapped at its creation.
+    fn kept_mapped(
+        &self,
+        role: Role,
+        size: u64,
+        fill: impl FnOnce(wgpu::WriteOnly<'_, [u8]>),
+    ) -> Result<wgpu::Buffer, Error> {
+        let what = format!("writing {role:?}");
+        let buffer = match self.take_kept(role, size) {
+            Some(buffer) => {
+                buffer.slice(..size).map_async(wgpu::MapMode::Write, |_| {});
+                self.device
+                    .poll(wgpu::PollType::wait_indefinitely())
+                    .map_err(|e| Error::Gpu(format!("{what}: {e}")))?;
+                buffer
+            }
+            None => self.new_kept(role, size, true),
+        };
+        fill_mapped(buffer, size, &what, |view| fill(view.slice(..)))
     }
 }
 
@@ -334,6 +338,18 @@ fn fill_mapped(
     buffer.unmap();
     Ok(buffer)
 }
+
+/// A part of a mapped view ([`wgpu::WriteOnly::split_at`]), to be written
+/// by another thread.
+struct ViewPart<'a>(wgpu::WriteOnly<'a, [u8]>);
+
+// SAFETY: a `WriteOnly<'a, [u8]>` is exclusive write access to its bytes
+// for 'a, as `&'a mut [u8]` is, which is Send. wgpu implements Send for
+// `WriteOnly<T>` where `T: Send`, a bound that implies `T: Sized` (the impl
+// has no `?Sized`), so slices miss it; nothing in the type is tied to a
+// thread. The parts `split_at` makes do not overlap, and the mapped view
+// they borrow from outlives them ('a): the buffer is unmapped only after.
+unsafe impl Send for ViewPart<'_> {}
 
 /// Largest bytes per binding and workgroups per dispatch for this batch.
 pub(crate) fn limits_for(ctx: &GpuContext, settings: &GpuSolveSettings) -> (u64, u32) {
@@ -378,46 +394,29 @@ impl PackedChunk {
         let islands = ctx.kept_written(Role::Islands, table.len() as u64, |mut view| {
             view.slice(..table.len()).copy_from_slice(table);
         })?;
-        // values: every island's M (row-major) and q, in the shader's precision.
+        // values: every island's M (row-major) and q, in the shader's
+        // precision, packed by every thread straight into the mapped view,
+        // cut at island boundaries, PACK_BLOCK islands a piece.
         let sb = precision.bytes() as usize;
-        let len = self.values * sb;
-        // Packed by every thread into the context's packing bytes (kept
-        // between calls: a wgpu mapped view cannot be sent to threads),
-        // then copied once into the mapped buffer.
-        let mut bytes = ctx.take_packing();
-        bytes.clear();
-        bytes.resize(len, 0);
-        // The bytes cut at island boundaries, PACK_BLOCK islands a piece.
-        let mut rest = bytes.as_mut_slice();
-        let mut pieces = Vec::with_capacity(self.order.len().div_ceil(PACK_BLOCK));
-        for block in self.order.chunks(PACK_BLOCK) {
-            let len: usize = block.iter().map(|&i| lcps[i].n() * (lcps[i].n() + 1)).sum();
-            let (piece, tail) = std::mem::take(&mut rest).split_at_mut(len * sb);
-            pieces.push((block, piece));
-            rest = tail;
-        }
-        parallel_fill_by(&mut pieces, threads, 1, |_, (block, piece)| {
-            let scalars = block
-                .iter()
-                .flat_map(|&i| lcps[i].m.iter().chain(&lcps[i].q));
-            match precision {
-                Precision::F64 => {
-                    for (b, &v) in piece.chunks_exact_mut(8).zip(scalars) {
-                        b.copy_from_slice(&v.to_le_bytes());
-                    }
-                }
-                _ => {
-                    for (b, &v) in piece.chunks_exact_mut(4).zip(scalars) {
-                        b.copy_from_slice(&(v as f32).to_le_bytes());
-                    }
-                }
+        let values = ctx.kept_written(Role::Values, (self.values * sb) as u64, |view| {
+            let mut rest = view;
+            let mut pieces = Vec::with_capacity(self.order.len().div_ceil(PACK_BLOCK));
+            for block in self.order.chunks(PACK_BLOCK) {
+                let len: usize = block.iter().map(|&i| lcps[i].n() * (lcps[i].n() + 1)).sum();
+                let (piece, tail) = rest.split_at(len * sb);
+                pieces.push((block, ViewPart(piece)));
+                rest = tail;
             }
-        });
-        let values = ctx.kept_written(Role::Values, len as u64, |mut view| {
-            view.slice(..len).copy_from_slice(&bytes);
-        });
-        ctx.keep_packing(bytes);
-        let values = values?;
+            parallel_fill_by(&mut pieces, threads, 1, |_, (block, ViewPart(piece))| {
+                let mut at = 0;
+                for &i in block.iter() {
+                    let (m, q) = (&lcps[i].m, &lcps[i].q);
+                    write_scalars(piece, at, m, precision);
+                    write_scalars(piece, at + m.len(), q, precision);
+                    at += m.len() + q.len();
+                }
+            });
+        })?;
         Ok((islands, values))
     }
 }

@@ -167,7 +167,12 @@ pub(crate) fn pack_friction_chunks(
 
 /// Writes `src` at scalar `at` of `view` in precision `p` (little-endian,
 /// as the shaders read them).
-fn write_scalars(view: &mut wgpu::WriteOnly<[u8]>, at: usize, src: &[f64], p: Precision) {
+pub(crate) fn write_scalars(
+    view: &mut wgpu::WriteOnly<[u8]>,
+    at: usize,
+    src: &[f64],
+    p: Precision,
+) {
     if src.is_empty() {
         return;
     }
