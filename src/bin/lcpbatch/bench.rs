@@ -509,13 +509,15 @@ pub fn run(opts: &BenchOptions) -> Result<(), Error> {
             rows.push(auto_row(a, family, &lcps, &same_batch)?);
         }
     }
+    // The table before the curves: a run stopped during the large batches
+    // (a time limit) still shows every family's rows.
+    bar.suspend(|| print_table(&rows));
     bar.set_message("time against n");
     let by_n = time_vs_n(opts, &mut gpus)?;
     bar.inc(1);
     bar.set_message("time against batch size");
     let by_batch = time_vs_batch(opts, &mut gpus)?;
     bar.finish_and_clear();
-    print_table(&rows);
     let dir = &opts.out_dir;
     write_json(
         &rows,
