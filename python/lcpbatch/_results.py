@@ -85,8 +85,8 @@ LCP_FIELDS_DOC = """\
       (enumeration): (B,) uint64;
     - ``path``: (B,) str, how each problem was settled, one of
       ``PATH_NAMES``: "separating", "single_contact", "warm_start",
-      "predicted_basis", "enumerated_gpu", "repaired", "enumerated_cpu",
-      "lemke", "pgs", "invalid" (see :class:`Report`'s ``counts``);
+      "predicted_basis", "enumerated_gpu", "lemke_gpu", "repaired",
+      "enumerated_cpu", "lemke", "pgs", "invalid" (see :class:`Report`'s ``counts``);
     - ``solution_count``: (B,) int64, distinct solutions with
       ``all_solutions=True`` (−1 where unknown); ``solution_set``: list of
       "empty", "isolated", "bounded_continuum", "unbounded_continuum" or None;
@@ -116,6 +116,8 @@ class Report:
       "single_contact" (closed form), "warm_start" (last call's basis),
       "predicted_basis" (the approaching contacts' basis, M positive
       definite), "enumerated_gpu" (enumerated on the GPU, confirmed in f64),
+      "lemke_gpu" (Lemke's path on the GPU, its basis checked in f64: method
+      "auto" or "lemke" on the GPU),
       "polished" (GPU answers whose basis held in f64), "repaired" (GPU
       answers re-solved on the CPU), "enumerated_cpu", "lemke",
       "cpu_fallback" (too large for the GPU's kernels, n > 16: Lemke),

@@ -76,7 +76,7 @@ def test_a_bad_method_names_the_keyword_and_the_values():
     with pytest.raises(ValueError, match=r"method: 'simplex' is not one of 'auto', 'enum', 'lemke', 'pgs'"):
         lcpbatch.Solver(method="simplex")
     with pytest.raises(ValueError, match=r"friction_method: 'x' is not one of 'auto', 'nsgs', 'newton', "
-                                         r"'jacobi', 'pgs', 'apgd'"):
+                                         r"'prox', 'jacobi', 'pgs', 'apgd'"):
         lcpbatch.Solver(friction_method="x")
 
 
@@ -138,7 +138,7 @@ SETTING_VALUES = {
     "method": ["auto", "enum", "enumeration", "lemke", "pgs"],
     "precision": ["auto", "f32", "f64"],
     "api": ["auto", "vulkan", "gl", "metal", "dx12"],
-    "friction_method": ["auto", "nsgs", "newton", "jacobi", "pgs", "apgd"],
+    "friction_method": ["auto", "nsgs", "newton", "prox", "jacobi", "pgs", "apgd"],
 }
 
 
