@@ -37,7 +37,8 @@ struct Cli {
 #[derive(Clone, Copy, ValueEnum)]
 enum SolverArg {
     /// The fastest exact path: prediction, Lemke checked in f64, enumeration
-    /// where the check fails (the GPU enumerates).
+    /// where the check fails (on the GPU: Lemke's path per island, each
+    /// basis checked in f64 on the CPU).
     Auto,
     Enum,
     Lemke,
@@ -515,12 +516,12 @@ fn solve_command(args: SolveArgs) -> Result<(), Error> {
             "--all-solutions needs --solver auto or enum".into(),
         ));
     }
-    // The GPU enumerates (with --all-solutions every basis); Lemke and PGS
-    // run on the CPU.
-    let gpu_capable = matches!(method, Method::Auto | Method::Enumeration);
+    // The GPU enumerates (with --all-solutions every basis) or runs Lemke's
+    // path (auto, lemke); PGS runs on the CPU.
+    let gpu_capable = matches!(method, Method::Auto | Method::Enumeration | Method::Lemke);
     if backend == BackendArg::Gpu && !gpu_capable {
         return Err(Error::Unsupported(
-            "--backend gpu solves by enumeration only (no --solver lemke/pgs)".into(),
+            "--backend gpu solves by enumeration or Lemke only (no --solver pgs)".into(),
         ));
     }
     let input = read_input(&file)?;
