@@ -120,7 +120,8 @@ class Report:
       "auto" or "lemke" on the GPU),
       "polished" (GPU answers whose basis held in f64), "repaired" (GPU
       answers re-solved on the CPU), "enumerated_cpu", "lemke",
-      "cpu_fallback" (too large for the GPU's kernels, n > 16: Lemke),
+      "cpu_fallback" (handed by the GPU to Lemke on the CPU: n > 16, or
+      the GPU's Lemke kernel could not settle them),
       "pgs", "invalid" (failed their checks);
     - ``statuses``: islands per :class:`Status` name ("solved", …);
     - ``max_error``, ``max_error_index``: the largest error measure over

@@ -37,7 +37,7 @@ use crate::cpu::enumeration::EnumerationSettings;
 use crate::cpu::enumeration_tree::TREE_MAX_N;
 use crate::cpu::lemke::{lemke, LemkeSettings};
 use crate::lcp::{Lcp, LcpSolution};
-use crate::prediction::prediction_into;
+use crate::prediction::{predict_into, prediction_into};
 use crate::report::{Device, GpuFigures, IslandReport, Report, SolvePath};
 use crate::settings::Method;
 use crate::short_vec::ShortVec;
@@ -341,6 +341,14 @@ pub(crate) fn settle_on_cpu(
         out.solution = lemke(lcp, &settings.lemke);
     } else if !settings.predict {
         return Err(None);
+    } else if settings.method != Method::Enumeration {
+        // The Lemke kernel takes no tree route: M's definiteness, which
+        // `prediction_into` tests on every island for it, is not needed
+        // (the CPU path's prediction, step for step).
+        let e = &settings.enumeration;
+        if !predict_into(lcp, warm, e, &mut out.path, &mut out.solution) {
+            return Err(None);
+        }
     } else {
         prediction_into(
             lcp,
