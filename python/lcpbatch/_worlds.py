@@ -27,6 +27,9 @@ STEP_FIELDS_DOC = """\
     - ``max_penetration``: (steps, W) deepest penetration (m) before the step's correction;
     - ``contacts``, ``islands``, ``awake``: (steps, W) int64: contacts,
       contact islands and bodies awake (not sleeping);
+    - ``impacts``, ``impacts_deferred``: (steps, W) int64: bounces resolved
+      at their time of impact within the step, and those left to the step
+      when its bound on impacts (16 per world) was reached;
     - ``max_error``: (steps, W) largest error of the world's islands (LCP
       error, or Coulomb error for frictional ones; 0 without islands);
     - ``unsolved``: (steps,) islands whose status is not a solution, over
@@ -200,6 +203,8 @@ class StepResult:
         self.contacts: np.ndarray = d["contacts"]
         self.islands: np.ndarray = d["islands"]
         self.awake: np.ndarray = d["awake"]
+        self.impacts: np.ndarray = d["impacts"]
+        self.impacts_deferred: np.ndarray = d["impacts_deferred"]
         self.unsolved: np.ndarray = d["unsolved"]
         self.timings: Dict[str, np.ndarray] = {k: d[k] for k in ("collision", "solve", "integrate")}
         self.report: Optional[Report] = None if d["report"] is None else Report(d["report"])
@@ -231,7 +236,8 @@ def concat_step_results(parts: Sequence[StepResult], worlds: Sequence[World]) ->
     from ._results import merge_reports
 
     out = object.__new__(StepResult)
-    for attr in ("kinetic", "potential", "max_penetration", "max_error", "contacts", "islands", "awake"):
+    for attr in ("kinetic", "potential", "max_penetration", "max_error", "contacts", "islands", "awake",
+                 "impacts", "impacts_deferred"):
         setattr(out, attr, np.concatenate([getattr(p, attr) for p in parts], axis=1))
     out.unsolved = np.sum([p.unsolved for p in parts], axis=0)
     out.timings = {k: np.sum([p.timings[k] for p in parts], axis=0) for k in parts[0].timings}

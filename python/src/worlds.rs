@@ -185,7 +185,7 @@ impl NativeWorld {
 
 /// Per-step, per-world summaries as (steps, W) arrays in `d`: `kinetic`,
 /// `potential`, `max_penetration`, `max_error` (f64), `contacts`,
-/// `islands`, `awake` (int64).
+/// `islands`, `awake`, `impacts`, `impacts_deferred` (int64).
 pub(crate) fn summaries_into(
     py: Python<'_>,
     d: &Bound<'_, PyDict>,
@@ -211,5 +211,10 @@ pub(crate) fn summaries_into(
     d.set_item("max_error", f(&|r| r.max_error)?.into_pyarray(py))?;
     d.set_item("contacts", i(&|r| r.contacts)?.into_pyarray(py))?;
     d.set_item("islands", i(&|r| r.islands)?.into_pyarray(py))?;
-    d.set_item("awake", i(&|r| r.awake)?.into_pyarray(py))
+    d.set_item("awake", i(&|r| r.awake)?.into_pyarray(py))?;
+    d.set_item("impacts", i(&|r| r.impacts)?.into_pyarray(py))?;
+    d.set_item(
+        "impacts_deferred",
+        i(&|r| r.impacts_deferred)?.into_pyarray(py),
+    )
 }

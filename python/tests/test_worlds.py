@@ -33,6 +33,9 @@ def test_a_dropped_sphere_comes_to_rest_on_the_ground():
     assert abs(y - 0.5) < 5e-3, y                       # resting on the plane (radius 0.5)
     assert np.abs(v).max() < 1e-3, v
     assert out.contacts[-1, 0] == 1 and out.max_penetration[-1, 0] < 5e-3
+    # The first bounce (ε > 0, μ = 0) is met at its time of impact.
+    assert out.impacts.shape == out.impacts_deferred.shape == (600, 1)
+    assert out.impacts[:, 0].sum() >= 1 and out.impacts_deferred.sum() == 0
     # It loses energy at the bounces and never gains any (a small tolerance
     # for the integrator's rounding).
     e = out.energy[:, 0]

@@ -27,6 +27,8 @@ fn simulate_writes_steps_final_states_and_plots() {
         "stack:3",
         "--backend",
         "cpu",
+        "--threads",
+        "1",
         "--out",
         out.to_str().unwrap(),
     ];
@@ -43,6 +45,7 @@ fn simulate_writes_steps_final_states_and_plots() {
         "last step (t = 0.400 s): energy ",
         "over all 40 steps: deepest penetration ",
         "unsolved islands 0 (",
+        "device: cpu (1 thread(s), f64)",
     ] {
         assert!(stdout.contains(needle), "`{needle}` missing in:\n{stdout}");
     }
@@ -71,6 +74,8 @@ fn simulate_writes_steps_final_states_and_plots() {
         assert_eq!(l["unsolved"], 0, "{l}");
         assert_eq!(l["repaired_exact"], 0, "{l}");
         assert_eq!(l["repaired_dropped"], 0, "{l}");
+        assert_eq!(l["impacts"], 0, "{l}");
+        assert_eq!(l["impacts_deferred"], 0, "{l}");
         assert!(l["kinetic"].as_f64().unwrap() < 1e-12, "{l}");
         assert!(l["max_penetration"].as_f64().unwrap() < 1e-9, "{l}");
         assert!(l["max_error"].as_f64().unwrap() < 1e-9, "{l}");

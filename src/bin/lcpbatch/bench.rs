@@ -123,9 +123,14 @@ impl BenchRow {
     }
 }
 
+/// `threads` 0: `--threads` (every core unless it says otherwise).
 fn cpu_solver(method: Method, threads: usize, predict: bool) -> Result<Solver, Error> {
     Solver::new(Settings {
-        threads,
+        threads: if threads == 0 {
+            crate::settings().threads
+        } else {
+            threads
+        },
         predict,
         ..Settings::new(Backend::Cpu, method)
     })
@@ -276,7 +281,7 @@ pub fn auto_solver(gpus: &[Solver], gpu: &Option<GpuSettings>) -> Option<Solver>
     };
     Solver::new(Settings {
         gpu,
-        ..Settings::default()
+        ..crate::settings()
     })
     .ok()
     .filter(|s| s.cost_model().is_some())
@@ -474,10 +479,10 @@ pub fn run(opts: &BenchOptions) -> Result<(), Error> {
     // (Auto), each in f32 and, where the adapter has it, f64.
     let enumeration = Settings {
         method: Method::Enumeration,
-        ..Settings::default()
+        ..crate::settings()
     };
     let mut gpus = gpu_solvers(&opts.gpu, &enumeration);
-    let mut lemke_gpus = gpu_solvers(&opts.gpu, &Settings::default());
+    let mut lemke_gpus = gpu_solvers(&opts.gpu, &crate::settings());
     let machine = machine_description(&gpus);
     println!("machine: {machine}");
     let mut auto = auto_solver(&gpus, &opts.gpu);

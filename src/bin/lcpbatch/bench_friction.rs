@@ -22,7 +22,7 @@ use serde::Serialize;
 use lcpbatch::generate::friction::{friction_batch, FrictionFamily};
 use lcpbatch::io::write_atomically;
 use lcpbatch::{
-    Backend, Error, FrictionMethod, FrictionProblem, GpuSettings, Method, Report, Settings, Solver,
+    Backend, Error, FrictionMethod, FrictionProblem, GpuSettings, Report, Settings, Solver,
 };
 
 use crate::devices::{gpu_solvers, machine_description};
@@ -188,7 +188,10 @@ fn method_settings(base: &Settings, method: FrictionMethod) -> Settings {
 fn row_solvers(set: &Set, gpus: &[Solver]) -> Result<Vec<(String, Solver)>, Error> {
     let mut out = Vec::new();
     for m in METHODS {
-        let base = Settings::new(Backend::Cpu, Method::Auto);
+        let base = Settings {
+            backend: Backend::Cpu,
+            ..crate::settings()
+        };
         out.push((
             m.name().to_string(),
             Solver::new(method_settings(&base, m))?,
@@ -286,7 +289,7 @@ pub fn run(opts: &FrictionBenchOptions) -> Result<(), Error> {
         path: opts.out_dir.clone(),
         source,
     })?;
-    let gpus = gpu_solvers(&opts.gpu, &Settings::default());
+    let gpus = gpu_solvers(&opts.gpu, &crate::settings());
     let machine = machine_description(&gpus);
     println!("machine: {machine}");
     let sets = sets(opts);

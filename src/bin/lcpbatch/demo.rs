@@ -63,7 +63,7 @@ pub(super) fn demo(
     let contacts: usize = scenes.iter().map(|s| s.contacts.len()).sum();
     let bodies: usize = scenes.iter().map(|s| s.bodies.len()).sum();
     let asked = gpu.settings()?.precision;
-    let mut solver = solver_for(backend.backend(), gpu, Settings::default())?;
+    let mut solver = solver_for(backend.backend(), gpu, crate::settings())?;
     let (report, secs) = timed(&mut solver, &scenes)?;
     let islands = report.islands.len();
     println!(
@@ -81,9 +81,9 @@ pub(super) fn demo(
     );
     // The other path on the same batch, so that the choice can be judged.
     let other = if report.on_gpu() {
-        Some(solver_for(Backend::Cpu, gpu, Settings::default())?)
+        Some(solver_for(Backend::Cpu, gpu, crate::settings())?)
     } else if report.fallback.is_none() && !list_adapters(gpu.settings()?.api).is_empty() {
-        Some(solver_for(Backend::Gpu, gpu, Settings::default())?)
+        Some(solver_for(Backend::Gpu, gpu, crate::settings())?)
     } else {
         None
     };
@@ -133,7 +133,7 @@ pub(super) fn demo_in_time(
         Settings {
             warm_start: true,
             friction_tolerance: simulate::WORLD_FRICTION_TOLERANCE,
-            ..Settings::default()
+            ..crate::settings()
         },
     )?;
     println!(

@@ -32,6 +32,21 @@ use lcpbatch::{
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// CPU threads for the commands that use cores (default: every core
+    /// the OS reports; the benches' one-thread rows stay at one).
+    #[arg(long, global = true, value_name = "N")]
+    threads: Option<usize>,
+}
+
+/// `--threads`, set once before the command runs (0: every core).
+static THREADS: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
+
+/// The library's defaults with `--threads`: what every command starts from.
+pub(crate) fn settings() -> Settings {
+    Settings {
+        threads: THREADS.get().copied().unwrap_or(0),
+        ..Settings::default()
+    }
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -353,7 +368,7 @@ fn info(gpu: &GpuArgs, calibrate: bool) -> Result<(), Error> {
     for a in &adapters {
         println!("{a}");
     }
-    let mut auto = solver_for(Backend::Auto, gpu, Settings::default())?;
+    let mut auto = solver_for(Backend::Auto, gpu, settings())?;
     println!("backend auto: {} ({})", auto.device().name, auto.choice());
     if calibrate && auto.shared_device().is_some() {
         let model = auto.calibrate()?;
@@ -367,7 +382,7 @@ fn info(gpu: &GpuArgs, calibrate: bool) -> Result<(), Error> {
             "no cost model: auto solves on the CPU (name an adapter with --adapter to measure one)"
         );
     }
-    let named = solver_for(Backend::Gpu, gpu, Settings::default())?;
+    let named = solver_for(Backend::Gpu, gpu, settings())?;
     match named.fallback() {
         None => println!("backend gpu: {}", named.device().name),
         Some(why) => println!("backend gpu: none ({why}); the CPU path is used"),
@@ -530,7 +545,7 @@ fn solve_command(args: SolveArgs) -> Result<(), Error> {
         all_solutions,
         friction_method: friction_solver.method(),
         friction_tolerance,
-        ..Settings::default()
+        ..settings()
     };
     let backend = if gpu_capable {
         backend.backend()
@@ -607,7 +622,13 @@ fn quiet_the_headless_display_probe() {
 fn main() -> ExitCode {
     exit_quietly_on_a_closed_pipe();
     quiet_the_headless_display_probe();
-    match run(Cli::parse()) {
+    let cli = Cli::parse();
+    if let Some(n) = cli.threads {
+        THREADS
+            .set(n)
+            .expect("--threads is set once, before any command runs");
+    }
+    match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: {e}");

@@ -88,6 +88,10 @@ struct StepLine {
     repaired_exact: usize,
     repaired_approximate: usize,
     repaired_dropped: usize,
+    /// Bounces resolved at their time of impact within the step, and those
+    /// left to the step when its bound on impacts was reached.
+    impacts: usize,
+    impacts_deferred: usize,
     collision_s: f64,
     solve_s: f64,
     /// Within solve_s (the door's timings): checks, islands and assembly.
@@ -116,6 +120,8 @@ impl StepLine {
             repaired_exact: r.repairs.exact,
             repaired_approximate: r.repairs.approximate,
             repaired_dropped: r.repairs.dropped,
+            impacts: w.iter().map(|x| x.impacts).sum(),
+            impacts_deferred: w.iter().map(|x| x.impacts_deferred).sum(),
             collision_s: r.timings.collision,
             solve_s: r.timings.solve,
             assembly_s: r.solve.timings.build,
@@ -185,7 +191,7 @@ pub fn simulate_command(args: SimulateArgs) -> Result<(), Error> {
         warm_start: true,
         friction_method: args.friction_solver.method(),
         friction_tolerance: args.friction_tolerance,
-        ..Settings::default()
+        ..crate::settings()
     })?;
     println!("device: {} ({})", solver.device().name, solver.choice());
     let groups = [(args.world.clone(), worlds.len())];

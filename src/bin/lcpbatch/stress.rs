@@ -254,7 +254,7 @@ pub fn run(opts: &StressOptions) -> Result<Vec<StressRow>, Error> {
         path: opts.out_dir.clone(),
         source,
     })?;
-    let mut gpus = gpu_solvers(&opts.gpu, &Settings::default());
+    let mut gpus = gpu_solvers(&opts.gpu, &crate::settings());
     let mut sets: Vec<(String, Vec<StressCase>)> = Family::ALL
         .iter()
         .map(|&f| (f.name().to_string(), generate(f, opts.seed, opts.cases)))
