@@ -25,6 +25,15 @@ const SIGMA: f64 = 5.0;
 /// and at least the outer tolerance.
 const INNER_RATIO: f64 = 10.0;
 
+/// α's factor after a solved inner problem (Siconos keeps 1): the
+/// factor shrinks while the inner problems are easy, so that the outer
+/// steps lengthen where W is only semidefinite and σ e alone holds them
+/// short (heavy boxes on light ones).
+const SHRINK: f64 = 0.25;
+
+/// The smallest factor.
+const MIN_BOOST: f64 = 1e-6;
+
 /// Newton steps of one inner solve at most.
 const INNER_STEPS: u64 = 50;
 
@@ -48,6 +57,7 @@ pub(crate) fn prox_in(
     } else {
         1.0
     };
+    let mut boost = 1.0;
     let mut alpha = SIGMA * error * scale;
     let mut inner = p.clone();
     let mut inner_ws = Workspace::default();
@@ -64,11 +74,14 @@ pub(crate) fn prox_in(
         steps += taken.max(1);
         ws.refresh(p, r);
         error = ws.error(p, r);
-        alpha = if inner_error <= inner_tolerance {
-            SIGMA * error * scale
+        // A solved inner problem: a weaker regularisation next (longer
+        // steps); an unsolved one: a stronger one.
+        boost = if inner_error <= inner_tolerance {
+            (boost * SHRINK).max(MIN_BOOST)
         } else {
-            alpha * 10.0
+            boost * 10.0
         };
+        alpha = SIGMA * error * scale * boost;
     }
     (steps, error)
 }

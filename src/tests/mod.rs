@@ -13,6 +13,7 @@ mod door;
 mod friction;
 mod friction_conformance;
 mod friction_conformance_large;
+mod friction_hard;
 mod gpu_all_solutions;
 mod gpu_conformance;
 mod gpu_cost_model;

@@ -65,7 +65,7 @@ enum SolverArg {
 #[derive(Clone, Copy, ValueEnum)]
 pub(crate) enum FrictionSolverArg {
     /// NSGS sweeps, then Alart–Curnier Newton polishing to the rounding of f64
-    /// (PROX where both stall on an island of 32 contacts or more).
+    /// (PROX where both stall).
     Auto,
     /// Non-smooth Gauss–Seidel over contacts, each solved exactly.
     Nsgs,
