@@ -99,13 +99,15 @@ pub(crate) fn parse_object(
 }
 
 /// The item a JSON path names, in the words of the other errors: `problem
-/// 4`, `scene 2, contact 1`, `scene 0, body 3` (a single scene is scene 0),
-/// the file itself at the top level.
+/// 4` (of an LCP or a friction batch), `scene 2, contact 1`, `scene 0,
+/// body 3` (a single scene is scene 0), the file itself at the top level.
 pub(super) fn item_of(file: &str, at: &[String]) -> String {
     let index = |s: &String| s.trim_matches(|c| c == '[' || c == ']').to_string();
     let (scene, rest) = match at {
         [k, i, rest @ ..] if k == "scenes" => (Some(index(i)), rest),
-        [k, i, ..] if k == "problems" => return format!("problem {}", index(i)),
+        [k, i, ..] if k == "problems" || k == "friction_problems" => {
+            return format!("problem {}", index(i))
+        }
         [] => return file.to_string(),
         rest => (Some("0".to_string()), rest),
     };
@@ -138,6 +140,10 @@ mod tests {
             (
                 r#"{"problems":[{"M":[[1]],"q":[1]},{"M":[[1]],"q":[1],"q":[2]}]}"#.to_string(),
                 "problem 1: field `q`",
+            ),
+            (
+                r#"{"friction_problems":[{"W":[[1,0,0],[0,1,0],[0,0,1]],"q":[-1,0,0],"mu":[1],"mu":[2]}]}"#.to_string(),
+                "problem 0: field `mu`",
             ),
             (
                 format!(r#"{{"bodies":[{{{BODY},"position":[0,0,0]}}],"contacts":[]}}"#),

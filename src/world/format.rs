@@ -79,7 +79,8 @@ fn read_world(item: &str, v: &Value) -> Result<World, Error> {
 }
 
 /// Deserialises `v`; on failure names the field: the one serde names
-/// (unknown, missing), else the first whose value has the wrong type.
+/// (unknown, missing) when it is this object's, else the first whose value
+/// has the wrong type (a nested object's key unknown or missing included).
 fn from_value<T: DeserializeOwned>(
     item: &str,
     v: &Value,
@@ -92,15 +93,17 @@ fn from_value<T: DeserializeOwned>(
     let Some(obj) = v.as_object() else {
         return Err(Error::invalid(item, "(item)", "expected a JSON object"));
     };
-    let quoted = err.split('`').nth(1).map(str::to_string);
-    if err.starts_with("unknown field") || err.starts_with("missing field") {
-        let field = quoted.unwrap_or_else(|| "(item)".into());
-        return Err(Error::invalid(item, field, err));
-    }
-    let field = obj
+    let bad = obj
         .iter()
         .find(|(k, val)| !field_ok(k, val))
-        .map_or("(item)".to_string(), |(k, _)| k.clone());
+        .map(|(k, _)| k.clone());
+    let named = err.starts_with("unknown field") || err.starts_with("missing field");
+    let field = match err.split('`').nth(1) {
+        // serde names the key, unknown or missing, of this object; a key of
+        // a nested one (`shape`'s, `sleep`'s) is named by the field holding it.
+        Some(k) if named && (obj.contains_key(k) || bad.is_none()) => k.to_string(),
+        _ => bad.unwrap_or_else(|| "(item)".into()),
+    };
     Err(Error::invalid(item, field, err))
 }
 
@@ -336,6 +339,18 @@ mod tests {
                 "world 0, body 0: field `restitution`",
             ),
             (r#"{"worlds":[]}"#.to_string(), "w.json: field `worlds`"),
+            (
+                r#"{"bodies":[{"shape":{"box":{"half_extent":[1,1,1]}},"position":[0,1,0],"mass":1}]}"#.to_string(),
+                "world 0, body 0: field `shape`: unknown field `half_extent`",
+            ),
+            (
+                r#"{"bodies":[{"shape":{"sphere":{}},"position":[0,1,0],"mass":1}]}"#.to_string(),
+                "world 0, body 0: field `shape`: missing field `radius`",
+            ),
+            (
+                format!(r#"{{"bodies":[{BALL}],"sleep":{{"step":3}}}}"#),
+                "world 0: field `sleep`: unknown field `step`",
+            ),
         ];
         for (text, want) in cases {
             let e = err(&text);

@@ -98,6 +98,12 @@ fn bad_friction_input_is_refused_naming_the_item_and_field() {
             r#"{"friction_problems": [{"W": [[1,0],[0,1,0],[0,0,1]], "q": [-1, 0, 0], "mu": [0.5]}]}"#,
             "W[0]",
         ),
+        // A key twice in a friction problem names the problem (not "scene 0").
+        (
+            r#"{"friction_problems": [{"W": [[1]], "q": [1], "mu": [0]},
+                {"W": [[1,0,0],[0,1,0],[0,0,1]], "q": [-1, 0, 0], "q": [1, 0, 0], "mu": [0.5]}]}"#,
+            "error: problem 1: field `q`: appears twice in one object",
+        ),
         (
             r#"{"bodies": [{"inv_mass": 1, "inv_inertia": [[0,0,0],[0,0,0],[0,0,0]], "position": [0,0,0],
                  "velocity": [0,0,0], "angular_velocity": [0,0,0]}],

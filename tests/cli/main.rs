@@ -304,6 +304,12 @@ fn bad_input_is_refused_and_named() {
         r#"{"problems": [{"M": [[1, 0], [0, 1]], "q": [1, 1]}, {"M": [[2, 1], [1]], "q": [-1, -1]}]}"#,
         &["problem 1", "M[1]"],
     );
+    // A misspelt key is named as unknown, not its spelling as missing.
+    refuse(
+        "misspelt.json",
+        r#"{"problems": [{"M": [[1]], "q": [1]}, {"M": [[1]], "Q": [1]}]}"#,
+        &["problem 1: field `Q`: unknown field (expected `M`, `q`)"],
+    );
     refuse(
         "rows.json",
         r#"{"problems": [{"M": [[1, 0, 0], [0, 1, 0]], "q": [1, 1]}]}"#,
