@@ -67,6 +67,9 @@ use crate::linalg::{solve_in_place, PIVOT_TOL};
 use crate::short_vec::ShortVec;
 use crate::{Error, Lcp, Report, Settings};
 
+mod scene;
+pub use scene::{scene_vjp, BodyGradient, ContactGradient, SceneGradient};
+
 /// How an island's derivative is to be read.
 #[non_exhaustive]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -9,6 +9,9 @@ use crate::settings::{Backend, Method, Settings};
 use crate::tests::common::run;
 use crate::{Lcp, Solver};
 
+#[path = "gradient_scene.rs"]
+mod scene;
+
 /// Relative tolerance τ of the tests (the default `Settings::tolerance`).
 const TOL: f64 = 1e-8;
 /// The finite-difference step.
