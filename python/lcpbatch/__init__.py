@@ -16,6 +16,11 @@ contacts as arrays, friction ``mu`` per contact), :func:`solve_friction`
 (worlds in time), :class:`Solver` (keeps the device between calls),
 :mod:`lcpbatch.distributed` (shards over a Dask cluster). ``help()`` of each
 lists every setting with the values it accepts, and the result's fields.
+
+Gradients: :func:`lcp_vjp` (∂L/∂M, ∂L/∂q of a solved batch, NumPy),
+:mod:`lcpbatch.jax` and :mod:`lcpbatch.torch` (``solve`` differentiable in
+M and q). Those two are imported on first use (``lcpbatch.jax.solve``), so
+``import lcpbatch`` imports neither JAX nor PyTorch.
 """
 
 import os as _os
@@ -31,6 +36,7 @@ if "XDG_RUNTIME_DIR" not in _os.environ:
 
 from . import _native  # noqa: E402
 from ._friction import FrictionResult  # noqa: E402
+from ._gradient import LcpGradient, lcp_vjp  # noqa: E402
 from ._results import PATH_NAMES, LcpResult, Report, ScenesResult, Status  # noqa: E402
 from ._solver import DeviceWarning, Solver, adapters, simulate, solve, solve_friction, solve_scenes  # noqa: E402
 from ._worlds import StepResult, World  # noqa: E402
@@ -66,4 +72,16 @@ __all__ = [
     "CHUNK_WORK",
     "CHUNK_CONTACTS",
     "CHUNK_FRICTION_WORK",
+    "lcp_vjp",
+    "LcpGradient",
 ]
+
+
+def __getattr__(name: str):
+    # lcpbatch.jax and lcpbatch.torch on first use: importing lcpbatch must
+    # not import JAX or PyTorch (each takes seconds, and may be missing).
+    if name in ("jax", "torch"):
+        import importlib
+
+        return importlib.import_module(f"{__name__}.{name}")
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
