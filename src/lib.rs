@@ -45,7 +45,8 @@
 //! and [`Error`]), the model it takes ([`Lcp`], [`Scene`], [`Body`],
 //! [`Contact`], [`FrictionProblem`], [`World`]), and modules for the rest:
 //! [`report`] (the parts of a report), [`lcp`] (solutions and residuals),
-//! [`friction`] (Coulomb's problem, its settings and errors), [`world`]
+//! [`friction`] (Coulomb's problem, its settings and errors), [`gradient`]
+//! (vector–Jacobian products of solved batches and scenes), [`world`]
 //! (bodies in time, world files, standard worlds, step reports), [`io`]
 //! (the file formats), [`generate`] (seeded test scenes and problems) and
 //! [`device`] (adapters, the GPU context, the cost model).
@@ -57,6 +58,7 @@ pub(crate) mod cpu;
 pub(crate) mod error;
 pub mod friction;
 pub mod generate;
+pub mod gradient;
 pub(crate) mod gpu;
 pub mod io;
 pub(crate) mod islands;

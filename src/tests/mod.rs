@@ -27,6 +27,7 @@ mod gpu_stress;
 mod gpu_tree;
 mod gpu_unrolled;
 mod gpu_workgroup;
+mod gradient;
 mod physics;
 mod physics_invariance;
 mod random_crosscheck;
