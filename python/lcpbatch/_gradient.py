@@ -10,13 +10,13 @@ from __future__ import annotations
 
 import importlib
 import types
-from typing import Any, Dict, Optional, Tuple
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
 from . import _inputs, _native
 
-__all__ = ["LcpGradient", "lcp_vjp", "DERIVATIVE_NAMES", "DEFAULT_VJP_TOLERANCE"]
+__all__ = ["LcpGradient", "lcp_vjp", "SceneGradient", "scene_vjp", "DERIVATIVE_NAMES", "DEFAULT_VJP_TOLERANCE"]
 
 #: Names of the per-island derivative kinds, indexed by the extension's codes.
 DERIVATIVE_NAMES = list(_native.derivative_names())
@@ -95,6 +95,92 @@ def lcp_vjp(M: Any, q: Any, z: Any, dz: Any, dw: Optional[Any] = None, *,
     return LcpGradient(dm, dq, codes)
 
 
+class SceneGradient:
+    """∂L/∂ the arrays of one frictionless scene (the keys of ``solve_scenes``).
+
+    - ``bodies``: dict of ``inv_mass`` (N,), ``inv_inertia`` (N, 3, 3), each
+      entry a separate variable), ``position``, ``velocity``,
+      ``angular_velocity`` (N, 3); a static body's ``inv_mass`` and
+      ``inv_inertia`` entries are 0 (not differentiated: making it dynamic
+      would join islands);
+    - ``contacts``: dict of ``point``, ``normal`` (C, 3, the normal as
+      given, not renormalised) and ``restitution`` (C,);
+    - ``islands``: (I,) str, the derivative kind of each island of the
+      scene ("exact", "one_sided", "undefined", as :class:`LcpGradient`);
+      ``derivative``: the worst of them ("exact" without contacts). An
+      undefined island passes nothing through its LCP.
+    """
+
+    def __init__(self, d: Dict[str, Any]):
+        self.bodies: Dict[str, np.ndarray] = {k: d[k] for k in ("inv_mass", "inv_inertia", "position",
+                                                                 "velocity", "angular_velocity")}
+        self.contacts: Dict[str, np.ndarray] = {k: d[k] for k in ("point", "normal", "restitution")}
+        self.islands: np.ndarray = _DERIVATIVES[d["islands"]] if len(d["islands"]) else np.array([], dtype=str)
+        self.derivative: str = DERIVATIVE_NAMES[d["derivative"]]
+
+    def __repr__(self) -> str:
+        return (f"<lcpbatch.SceneGradient: {len(self.bodies['inv_mass'])} bodies, "
+                f"{len(self.contacts['restitution'])} contacts; {self.derivative}>")
+
+
+def scene_vjp(bodies: Union[Mapping[str, Any], Sequence[Mapping[str, Any]]],
+              contacts: Union[Mapping[str, Any], Sequence[Mapping[str, Any]]],
+              impulses: Any, d_impulses: Any = None, d_velocity: Any = None,
+              d_angular_velocity: Any = None, *,
+              tolerance: Optional[float] = None) -> Union[SceneGradient, List[SceneGradient]]:
+    """The vector–Jacobian product of ``solve_scenes`` through assembly
+    (K, the LCP's M and q, Newton's restitution), for frictionless scenes:
+    at the solved ``impulses`` (``solve_scenes(...).impulses``), given
+    ∂L/∂impulses (``d_impulses``, (C,)) and/or ∂L/∂(velocities after)
+    (``d_velocity``, ``d_angular_velocity``, (N, 3); None: 0), ∂L/∂ every
+    body's and contact's array (:class:`SceneGradient`).
+
+    One scene (two dicts, arrays per argument) or a batch (two lists of
+    dicts, and a list per argument); scenes one after the other, GIL
+    released. A contact with ``mu`` > 0 is a ``ValueError`` naming the
+    scene, the contact and ``friction``: Coulomb friction is not
+    differentiated. ``tolerance``: as :func:`lcp_vjp`.
+
+    >>> import lcpbatch
+    >>> ball = dict(inv_mass=[1.0], inv_inertia=[[2.5, 2.5, 2.5]], position=[[0, 0.5, 0]],
+    ...             velocity=[[0, -1.0, 0]])
+    >>> ground = dict(a=[0], point=[[0, 0, 0]], normal=[[0, 1.0, 0]], restitution=[0.5])
+    >>> r = lcpbatch.solve_scenes(ball, ground)             # impulse (1 + e) · 1 = 1.5
+    >>> g = lcpbatch.scene_vjp(ball, ground, r.impulses, d_impulses=[1.0])
+    >>> float(g.contacts["restitution"][0]), g.bodies["velocity"][0].tolist(), g.derivative
+    (1.0, [0.0, -1.5, 0.0], 'exact')
+    """
+    from ._scenes import scene_arrays
+
+    single = isinstance(bodies, Mapping)
+    if single != isinstance(contacts, Mapping):
+        raise TypeError("bodies and contacts: give two dicts (one scene) or two lists of dicts (a batch)")
+    bl, cl = ([bodies], [contacts]) if single else (list(bodies), list(contacts))
+    if len(bl) != len(cl):
+        raise ValueError(f"contacts: {len(cl)} scenes, but bodies has {len(bl)}")
+    arrays = [scene_arrays(b, c, i) for i, (b, c) in enumerate(zip(bl, cl))]
+
+    def per_scene(value: Any, name: str, ndim: int) -> Optional[List[np.ndarray]]:
+        if value is None:
+            return None
+        values = [value] if single else list(value)
+        if len(values) != len(arrays):
+            raise ValueError(f"{name}: expected one array per scene ({len(arrays)}), got {len(values)}")
+        out = []
+        for i, v in enumerate(values):
+            a = _inputs.real_array(v, f"{name}[{i}]")
+            if a.ndim != ndim:
+                raise ValueError(f"{name}[{i}]: expected {ndim} dimension(s), got shape {a.shape}")
+            out.append(a)
+        return out
+
+    d = _native.scene_vjp_batch(arrays, per_scene(impulses, "impulses", 1), per_scene(d_impulses, "d_impulses", 1),
+                                per_scene(d_velocity, "d_velocity", 2),
+                                per_scene(d_angular_velocity, "d_angular_velocity", 2), tolerance)
+    out = [SceneGradient(g) for g in d]
+    return out[0] if single else out
+
+
 def _flat(M: np.ndarray, q: np.ndarray) -> Tuple[np.ndarray, np.ndarray, Tuple[int, ...]]:
     """(…, n, n) and (…, n) as (B, n, n) and (B, n) (views where possible)."""
     q = np.asarray(q, dtype=np.float64)
@@ -120,6 +206,15 @@ def forward(M: np.ndarray, q: np.ndarray, settings: Dict[str, Any]) -> Tuple[np.
     return z.reshape(shape), w.reshape(shape)
 
 
+def _tolerance_for(tolerance: Optional[float], z: Any) -> float:
+    """The VJP's tolerance: as given, else ``DEFAULT_VJP_TOLERANCE`` or 100
+    units in the last place of z's dtype where that is more (see
+    :func:`backward`)."""
+    if tolerance is not None:
+        return tolerance
+    return max(DEFAULT_VJP_TOLERANCE, 100 * float(np.finfo(np.asarray(z).dtype).eps))
+
+
 def backward(M: np.ndarray, q: np.ndarray, z: np.ndarray, dz: np.ndarray, dw: Optional[np.ndarray],
              tolerance: Optional[float]) -> Tuple[np.ndarray, np.ndarray]:
     """∂L/∂M (..., n, n) and ∂L/∂q (..., n) from :func:`lcp_vjp`; NaN for
@@ -129,8 +224,7 @@ def backward(M: np.ndarray, q: np.ndarray, z: np.ndarray, dz: np.ndarray, dw: Op
     place of z's dtype where that is more: a float32 z is the solution
     rounded (relative 6e-8), so w = M z + q recomputed from it is off by
     about as much, and 1e-8 would call its active rows not a solution."""
-    if tolerance is None:
-        tolerance = max(DEFAULT_VJP_TOLERANCE, 100 * float(np.finfo(np.asarray(z).dtype).eps))
+    tolerance = _tolerance_for(tolerance, z)
     m, qa, shape = _flat(M, q)
     n = shape[-1]
     za = np.asarray(z, dtype=np.float64).reshape(-1, n)
@@ -147,6 +241,67 @@ def backward(M: np.ndarray, q: np.ndarray, z: np.ndarray, dz: np.ndarray, dw: Op
         g = lcp_vjp(m[ok], qa[ok], za[ok], dza[ok], None if dwa is None else dwa[ok], tolerance=tolerance)
         dm[ok], dq[ok] = g.M, g.q
     return dm.reshape(shape + (n,)), dq.reshape(shape)
+
+
+#: The arrays of a scene that the scene adapters differentiate, bodies'
+#: first: inv_mass (..., N), inv_inertia (..., N, 3, 3), position, velocity,
+#: angular_velocity (..., N, 3), then the contacts' point, normal (..., C, 3)
+#: and restitution (..., C).
+SCENE_FLOATS = ("inv_mass", "inv_inertia", "position", "velocity", "angular_velocity",
+                "point", "normal", "restitution")
+
+
+def _scene_dicts(arrays: Sequence[np.ndarray], a: np.ndarray,
+                 b: np.ndarray) -> Tuple[List[Dict[str, Any]], List[Dict[str, Any]], Tuple[int, ...]]:
+    """The per-scene dicts of a batch given as :data:`SCENE_FLOATS` arrays
+    with leading dimensions (those of inv_mass less its last), and the
+    leading shape."""
+    lead = np.shape(arrays[0])[:-1]
+    flat = [np.asarray(x, dtype=np.float64).reshape((-1,) + np.shape(x)[len(lead):]) for x in arrays]
+    count = int(np.prod(lead, dtype=np.int64))
+    bodies = [{k: x[s] for k, x in zip(SCENE_FLOATS[:5], flat[:5])} for s in range(count)]
+    contacts = [dict({k: x[s] for k, x in zip(SCENE_FLOATS[5:], flat[5:])}, a=a, b=b) for s in range(count)]
+    return bodies, contacts, lead
+
+
+def scene_forward(arrays: Sequence[np.ndarray], a: np.ndarray, b: np.ndarray,
+                  settings: Dict[str, Any]) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Impulses (..., C), velocities and angular velocities after (..., N, 3)
+    of a batch of frictionless scenes of one layout (contacts between bodies
+    ``a`` and ``b``), solved by the cached solver of ``settings``; NaN for a
+    scene with an island the solver found no solution of."""
+    from ._solver import _cached
+
+    bodies, contacts, lead = _scene_dicts(arrays, a, b)
+    n, c = np.shape(arrays[0])[-1], len(a)
+    if not bodies:
+        return np.zeros(lead + (c,)), np.zeros(lead + (n, 3)), np.zeros(lead + (n, 3))
+    r = _cached(**settings).solve_scenes(bodies, contacts)
+    out = [np.stack(r.impulses), np.stack(r.velocity), np.stack(r.angular_velocity)]
+    for x in out:
+        x[~r.scene_ok] = np.nan
+    return out[0].reshape(lead + (c,)), out[1].reshape(lead + (n, 3)), out[2].reshape(lead + (n, 3))
+
+
+def scene_backward(arrays: Sequence[np.ndarray], a: np.ndarray, b: np.ndarray, impulses: np.ndarray,
+                   d_impulses: np.ndarray, d_velocity: np.ndarray, d_angular_velocity: np.ndarray,
+                   tolerance: Optional[float]) -> List[np.ndarray]:
+    """∂L/∂ each of the :data:`SCENE_FLOATS` arrays (their shapes) from
+    :func:`scene_vjp`; NaN for the scenes :func:`scene_forward` gave NaN.
+    ``tolerance`` None: as :func:`backward`."""
+    bodies, contacts, lead = _scene_dicts(arrays, a, b)
+    count = len(bodies)
+    flat = [np.asarray(x, dtype=np.float64).reshape((count,) + np.shape(x)[len(lead):])
+            for x in (impulses, d_impulses, d_velocity, d_angular_velocity)]
+    grads = [np.full((count,) + np.shape(x)[len(lead):], np.nan) for x in arrays]
+    ok = [s for s in range(count) if np.isfinite(flat[0][s]).all()]
+    if ok:
+        pick = [[x[s] for s in ok] for x in flat]
+        gs = scene_vjp([bodies[s] for s in ok], [contacts[s] for s in ok], *pick,
+                       tolerance=_tolerance_for(tolerance, impulses))
+        for k, key in enumerate(SCENE_FLOATS):
+            grads[k][ok] = [g.bodies[key] if k < 5 else g.contacts[key] for g in gs]
+    return [g.reshape(np.shape(x)) for g, x in zip(grads, arrays)]
 
 
 def framework(name: str, label: str, install: str) -> types.ModuleType:

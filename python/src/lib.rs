@@ -112,6 +112,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(gradient::lcp_vjp, m)?)?;
     m.add_function(wrap_pyfunction!(gradient::derivative_names, m)?)?;
     m.add_function(wrap_pyfunction!(gradient::time_lcp_vjp, m)?)?;
+    m.add_function(wrap_pyfunction!(gradient::scene_vjp_batch, m)?)?;
     m.add("DEFAULT_VJP_TOLERANCE", gradient::default_tolerance())?;
     m.add("CHUNK_PROBLEMS", batch::CHUNK_PROBLEMS)?;
     m.add("CHUNK_WORK", batch::CHUNK_WORK)?;
