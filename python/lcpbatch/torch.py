@@ -36,7 +36,8 @@ class _LcpSolve(torch.autograd.Function):
     """z, w = solve(M, q) with its VJP; ``key`` holds the settings."""
 
     @staticmethod
-    def forward(ctx: Any, M: "torch.Tensor", q: "torch.Tensor", key: Tuple[Any, ...]) -> Tuple["torch.Tensor", "torch.Tensor"]:
+    def forward(ctx: Any, M: "torch.Tensor", q: "torch.Tensor",
+                key: Tuple[Any, ...]) -> Tuple["torch.Tensor", "torch.Tensor"]:
         z, w = _gradient.forward(_numpy(M), _numpy(q), dict(key[1]))
         z_t, w_t = _tensor(z, q), _tensor(w, q)
         ctx.save_for_backward(M, q, z_t)
