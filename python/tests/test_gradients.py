@@ -1,4 +1,5 @@
 """Gradients of the solve: ``lcpbatch.lcp_vjp`` (the library's VJP),
+``lcpbatch.scene_vjp`` (through assembly, against solve_scenes),
 ``lcpbatch.jax.solve`` and ``lcpbatch.torch.solve``. The VJP equals central
 finite differences of the solve on seeded batches at points whose active
 set is stable within the step; the adapters give the VJP's numbers, under
@@ -227,6 +228,106 @@ def test_bad_input_names_the_argument_and_the_island():
         lcpbatch.jax.solve(M[:, :1], q)
     with pytest.raises(TypeError, match="warm_start"):
         lcpbatch.jax.solve(M, q, warm_start=True)
+
+
+def stacked_balls():
+    """Two balls falling onto the ground, the upper one onto the lower,
+    with off-centre contact points (so rotation couples the contacts) and
+    restitution: both contacts push (a stable active set)."""
+    bodies = dict(inv_mass=np.array([1.0, 0.5]), inv_inertia=np.array([[2.5, 2.0, 2.5], [5.0, 4.0, 4.5]]),
+                  position=np.array([[0.0, 0.5, 0.0], [0.1, 1.5, 0.0]]),
+                  velocity=np.array([[0.2, -1.0, 0.1], [0.0, -2.0, -0.3]]),
+                  angular_velocity=np.array([[0.0, 0.3, 0.5], [-0.4, 0.0, 0.2]]))
+    contacts = dict(a=np.array([0, 1]), b=np.array([-1, 0]), point=np.array([[0.05, 0.0, 0.02], [0.08, 1.0, -0.03]]),
+                    normal=np.array([[0.0, 1.0, 0.0], [0.0, 1.0, 0.0]]), restitution=np.array([0.3, 0.5]))
+    return bodies, contacts
+
+
+def test_scene_vjp_equals_central_differences_of_solve_scenes():
+    bodies, contacts = stacked_balls()
+    rng = np.random.default_rng(7)
+    gz, gv, gw = rng.standard_normal(2), rng.standard_normal((2, 3)), rng.standard_normal((2, 3))
+
+    def loss(b, c):
+        r = lcpbatch.solve_scenes(b, c, backend="cpu")
+        assert (r.impulses > 1e-3).all(), r.impulses  # both contacts push
+        return gz @ r.impulses + np.sum(gv * r.velocity) + np.sum(gw * r.angular_velocity)
+
+    r = lcpbatch.solve_scenes(bodies, contacts, backend="cpu")
+    g = lcpbatch.scene_vjp(bodies, contacts, r.impulses, gz, gv, gw)
+    assert g.derivative == "exact" and g.islands.tolist() == ["exact"]
+    checked = 0
+    for part, given, grads, keys in ((bodies, "bodies", g.bodies, ("inv_mass", "position", "velocity",
+                                                                       "angular_velocity", "inv_inertia")),
+                                     (contacts, "contacts", g.contacts, ("point", "restitution"))):
+        for key in keys:
+            for ix in np.ndindex(np.shape(part[key])):
+                def at(h):
+                    moved = {k: np.array(v, dtype=float) if k not in ("a", "b") else v for k, v in part.items()}
+                    moved[key][ix] += h
+                    return loss(moved, contacts) if given == "bodies" else loss(bodies, moved)
+                fd = (at(STEP) - at(-STEP)) / (2 * STEP)
+                want = grads[key][ix + (ix[-1],)] if key == "inv_inertia" else grads[key][ix]
+                assert abs(fd - want) <= 1e-5 * max(1.0, abs(fd)), (given, key, ix, fd, want)
+                checked += 1
+    assert checked == 34  # 26 entries of the bodies, 8 of the contacts
+    # The normal, moved along x (a tangent: unit to first order).
+    for i in range(2):
+        def at(h):
+            moved = dict(contacts, normal=contacts["normal"].copy())
+            moved["normal"][i, 0] += h
+            return loss(bodies, moved)
+        fd = (at(STEP) - at(-STEP)) / (2 * STEP)
+        assert abs(fd - g.contacts["normal"][i, 0]) <= 1e-5 * max(1.0, abs(fd))
+
+
+def test_scene_vjp_batches_and_names_bad_input():
+    bodies, contacts = stacked_balls()
+    r = lcpbatch.solve_scenes([bodies, bodies], [contacts, contacts], backend="cpu")
+    gs = lcpbatch.scene_vjp([bodies, bodies], [contacts, contacts], r.impulses, d_impulses=[np.ones(2), np.ones(2)])
+    one = lcpbatch.scene_vjp(bodies, contacts, r.impulses[0], d_impulses=np.ones(2))
+    assert len(gs) == 2 and "exact" in repr(gs[1])
+    for k in one.bodies:
+        np.testing.assert_array_equal(gs[1].bodies[k], one.bodies[k])
+    with pytest.raises(ValueError, match=r"scene 1, contact 0.*friction"):
+        lcpbatch.scene_vjp([bodies, bodies], [contacts, dict(contacts, mu=0.5)], r.impulses)
+    with pytest.raises(ValueError, match=r"scene 1.*d_impulses"):
+        lcpbatch.scene_vjp([bodies, bodies], [contacts, contacts], r.impulses, d_impulses=[np.ones(2), np.ones(3)])
+    with pytest.raises(ValueError, match=r"d_velocity\[0\]: expected shape \(2, 3\)"):
+        lcpbatch.scene_vjp(bodies, contacts, r.impulses[0], d_velocity=np.ones((3, 3)))
+    with pytest.raises(ValueError, match=r"impulses: expected one array per scene \(2\), got 1"):
+        lcpbatch.scene_vjp([bodies, bodies], [contacts, contacts], r.impulses[:1])
+
+
+def test_jax_solve_scenes_is_scene_vjp_under_jit_and_vmap():
+    bodies, contacts = stacked_balls()
+    rng = np.random.default_rng(8)
+    gz, gv, gw = rng.standard_normal(2), rng.standard_normal((2, 3)), rng.standard_normal((2, 3))
+    layout = dict(a=contacts["a"], b=contacts["b"])
+
+    def loss(inv_mass, velocity, point, restitution):
+        imp, vel, ang = lcpbatch.jax.solve_scenes(
+            dict(bodies, inv_mass=inv_mass, velocity=velocity),
+            dict(layout, point=point, normal=contacts["normal"], restitution=restitution), backend="cpu")
+        return jnp.sum(gz * imp) + jnp.sum(gv * vel) + jnp.sum(gw * ang)
+
+    args = (bodies["inv_mass"], bodies["velocity"], contacts["point"], contacts["restitution"])
+    got = jax.jit(jax.grad(loss, argnums=(0, 1, 2, 3)))(*args)
+    r = lcpbatch.solve_scenes(bodies, contacts, backend="cpu")
+    g = lcpbatch.scene_vjp(bodies, contacts, r.impulses, gz, gv, gw)
+    want = (g.bodies["inv_mass"], g.bodies["velocity"], g.contacts["point"], g.contacts["restitution"])
+    for x, y in zip(got, want):
+        np.testing.assert_allclose(np.asarray(x), y, rtol=1e-13, atol=1e-13)
+    # A batch of 3 scenes by vmap over the restitution: each its own solve.
+    es = jnp.array([[0.0, 0.0], [0.3, 0.5], [1.0, 1.0]])
+    imp = jax.vmap(lambda e: lcpbatch.jax.solve_scenes(bodies, dict(contacts, restitution=e))[0])(es)
+    for k in range(3):
+        want = lcpbatch.solve_scenes(bodies, dict(contacts, restitution=np.asarray(es[k])), backend="cpu").impulses
+        np.testing.assert_allclose(np.asarray(imp[k]), want, rtol=1e-13)
+    with pytest.raises(ValueError, match=r"contacts: unknown key\(s\) \['mu'\]"):
+        lcpbatch.jax.solve_scenes(bodies, dict(contacts, mu=0.5))
+    with pytest.raises(ValueError, match=r"point: expected shape \(2, 3\)"):
+        lcpbatch.jax.solve_scenes(bodies, dict(contacts, point=np.zeros((3, 3))))
 
 
 def run_python(code):
