@@ -24,6 +24,14 @@ def lcp_vjp(
     dw: Optional[npt.NDArray[np.float64]] = None,
     tolerance: Optional[float] = None,
 ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.int8]]: ...
+def scene_vjp_batch(
+    scenes: List[Dict[str, Any]],
+    impulses: List[npt.NDArray[np.float64]],
+    d_impulses: Optional[List[npt.NDArray[np.float64]]] = None,
+    d_velocity: Optional[List[npt.NDArray[np.float64]]] = None,
+    d_angular_velocity: Optional[List[npt.NDArray[np.float64]]] = None,
+    tolerance: Optional[float] = None,
+) -> List[Dict[str, Any]]: ...
 def time_lcp_vjp(
     m: npt.NDArray[np.float64],
     q: npt.NDArray[np.float64],
