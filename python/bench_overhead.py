@@ -16,6 +16,19 @@ outside the library (its wall time less the library's own total, measured
 inside the same call: the least noisy of the three) over the Rust call.
 
     python python/bench_overhead.py [--problems 20000] [--n 8] [--repeats 9] [--backend cpu]
+
+With ``--grad``: the differentiable solve of the adapters instead, solve
+plus gradient of L = c·z with respect to M and q on the same batch:
+
+- jax: ``jax.jit(jax.value_and_grad(L))`` through ``lcpbatch.jax.solve``
+  (two host callbacks per call);
+- torch (where installed): ``lcpbatch.torch.solve`` and ``torch.autograd.grad``;
+- rust: the library's ``Solver::solve_lcps`` plus its ``lcp_vjp_batch`` on
+  the same batch, each timed in Rust with its problems already built
+  (``time_solve_lcps``, ``time_lcp_vjp``).
+
+Target: each adapter ≤ 10% over the Rust calls (ratios of medians and of
+minimums).
 """
 
 from __future__ import annotations
@@ -39,6 +52,73 @@ def batch(problems: int, n: int, seed: int = 0):
     return M, q
 
 
+def adapters(M, q, c, backend: str):
+    """The solve + gradient of each adapter installed, as functions of no
+    argument that return when the gradient is ready."""
+    calls = {}
+    try:
+        import jax
+        import jax.numpy as jnp
+    except ImportError:
+        print("jax not installed: no jax timing")
+    else:
+        import lcpbatch.jax
+
+        jax.config.update("jax_enable_x64", True)
+        Mj, qj, cj = jnp.asarray(M), jnp.asarray(q), jnp.asarray(c)
+        step = jax.jit(jax.value_and_grad(
+            lambda M, q: jnp.sum(cj * lcpbatch.jax.solve(M, q, backend=backend)[0]), argnums=(0, 1)))
+        calls["jax"] = lambda: jax.block_until_ready(step(Mj, qj))
+    try:
+        import torch
+    except ImportError:
+        print("torch not installed: no torch timing")
+    else:
+        import lcpbatch.torch
+
+        Mt, qt, ct = (torch.tensor(a) for a in (M, q, c))
+        Mt.requires_grad_(True)
+        qt.requires_grad_(True)
+
+        def torch_step():
+            z, _ = lcpbatch.torch.solve(Mt, qt, backend=backend)
+            return torch.autograd.grad((ct * z).sum(), (Mt, qt))
+
+        calls["torch"] = torch_step
+    return calls
+
+
+def grad_overhead(args: argparse.Namespace) -> None:
+    M, q = batch(args.problems, args.n)
+    c = np.random.default_rng(1).standard_normal(q.shape)
+    s = lcpbatch.Solver(backend=args.backend)
+    z = s.solve(M, q).z
+    calls = adapters(M, q, c, args.backend)
+    for f in calls.values():
+        f()  # warm-up: compilation, the cached solver, thread pool
+    times = {name: [] for name in calls}
+    rust = []
+    for _ in range(args.repeats):
+        for name, f in calls.items():
+            t = time.perf_counter()
+            f()
+            times[name].append(time.perf_counter() - t)
+        rust.append(s._native.time_solve_lcps(M, q, 1)[0] + lcpbatch._native.time_lcp_vjp(M, q, z, c, 1)[0])
+    out = {"problems": args.problems, "n": args.n, "device": s.device, "repeats": args.repeats,
+           "rust_solve_plus_vjp_s_median": statistics.median(rust), "rust_solve_plus_vjp_s_min": min(rust)}
+    for name, ts in times.items():
+        out[f"{name}_s_median"] = statistics.median(ts)
+        out[f"{name}_s_min"] = min(ts)
+        out[f"{name}_overhead_of_medians"] = statistics.median(ts) / statistics.median(rust) - 1.0
+        out[f"{name}_overhead_of_minimums"] = min(ts) / min(rust) - 1.0
+    print(json.dumps(out, indent=2))
+    for name in times:
+        print(f"overhead of lcpbatch.{name} solve + grad over the Rust solve + VJP ({args.problems} problems, "
+              f"n = {args.n}, {s.device}): medians {100 * out[f'{name}_overhead_of_medians']:+.1f}%, "
+              f"minimums {100 * out[f'{name}_overhead_of_minimums']:+.1f}% "
+              f"({1e3 * out['rust_solve_plus_vjp_s_median']:.1f} ms Rust median of {args.repeats})")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--problems", type=int, default=20_000)
@@ -46,7 +126,11 @@ def main() -> None:
     ap.add_argument("--repeats", type=int, default=9)
     ap.add_argument("--backend", default="cpu")
     ap.add_argument("--solver", default="auto")
+    ap.add_argument("--grad", action="store_true", help="time the adapters' solve + gradient")
     args = ap.parse_args()
+    if args.grad:
+        grad_overhead(args)
+        return
 
     M, q = batch(args.problems, args.n)
     s = lcpbatch.Solver(backend=args.backend, method=args.solver)

@@ -16,6 +16,12 @@ contacts as arrays, friction ``mu`` per contact), :func:`solve_friction`
 (worlds in time), :class:`Solver` (keeps the device between calls),
 :mod:`lcpbatch.distributed` (shards over a Dask cluster). ``help()`` of each
 lists every setting with the values it accepts, and the result's fields.
+
+Gradients: :func:`lcp_vjp` (∂L/∂M, ∂L/∂q of a solved batch, NumPy),
+:func:`scene_vjp` (∂L/∂ the bodies' and contacts' arrays of frictionless scenes),
+:mod:`lcpbatch.jax` and :mod:`lcpbatch.torch` (``solve`` differentiable in
+M and q). Those two are imported on first use (``lcpbatch.jax.solve``), so
+``import lcpbatch`` imports neither JAX nor PyTorch.
 """
 
 import os as _os
@@ -31,6 +37,7 @@ if "XDG_RUNTIME_DIR" not in _os.environ:
 
 from . import _native  # noqa: E402
 from ._friction import FrictionResult  # noqa: E402
+from ._gradient import LcpGradient, SceneGradient, lcp_vjp, scene_vjp  # noqa: E402
 from ._results import PATH_NAMES, LcpResult, Report, ScenesResult, Status  # noqa: E402
 from ._solver import DeviceWarning, Solver, adapters, simulate, solve, solve_friction, solve_scenes  # noqa: E402
 from ._worlds import StepResult, World  # noqa: E402
@@ -66,4 +73,18 @@ __all__ = [
     "CHUNK_WORK",
     "CHUNK_CONTACTS",
     "CHUNK_FRICTION_WORK",
+    "lcp_vjp",
+    "LcpGradient",
+    "scene_vjp",
+    "SceneGradient",
 ]
+
+
+def __getattr__(name: str):
+    # lcpbatch.jax and lcpbatch.torch on first use: importing lcpbatch must
+    # not import JAX or PyTorch (each takes seconds, and may be missing).
+    if name in ("jax", "torch"):
+        import importlib
+
+        return importlib.import_module(f"{__name__}.{name}")
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -9,11 +9,36 @@ CHUNK_PROBLEMS: int
 CHUNK_WORK: int
 CHUNK_CONTACTS: int
 CHUNK_FRICTION_WORK: int
+DEFAULT_VJP_TOLERANCE: float
 
 def adapters(api: str = "auto") -> List[Dict[str, Any]]: ...
 def status_names() -> List[str]: ...
 def path_names() -> List[str]: ...
 def _panic_for_test() -> None: ...
+def derivative_names() -> List[str]: ...
+def lcp_vjp(
+    m: npt.NDArray[np.float64],
+    q: npt.NDArray[np.float64],
+    z: npt.NDArray[np.float64],
+    dz: npt.NDArray[np.float64],
+    dw: Optional[npt.NDArray[np.float64]] = None,
+    tolerance: Optional[float] = None,
+) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.int8]]: ...
+def scene_vjp_batch(
+    scenes: List[Dict[str, Any]],
+    impulses: List[npt.NDArray[np.float64]],
+    d_impulses: Optional[List[npt.NDArray[np.float64]]] = None,
+    d_velocity: Optional[List[npt.NDArray[np.float64]]] = None,
+    d_angular_velocity: Optional[List[npt.NDArray[np.float64]]] = None,
+    tolerance: Optional[float] = None,
+) -> List[Dict[str, Any]]: ...
+def time_lcp_vjp(
+    m: npt.NDArray[np.float64],
+    q: npt.NDArray[np.float64],
+    z: npt.NDArray[np.float64],
+    dz: npt.NDArray[np.float64],
+    repeats: int,
+) -> List[float]: ...
 
 class NativeSolver:
     def __init__(

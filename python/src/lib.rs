@@ -9,6 +9,9 @@
 //! the values (finite entries, the library's own `validate`) happen here and
 //! become `ValueError`s naming the argument, the index and the fault.
 //!
+//! Gradients: [`gradient`] binds the library's vector–Jacobian product of
+//! the solve (`lcpbatch.lcp_vjp`, and the JAX and PyTorch adapters).
+//!
 //! No Rust panic reaches Python: every call into the library runs under
 //! [`guard`], which turns a panic into a `RuntimeError`.
 
@@ -20,6 +23,7 @@ use pyo3::types::PyDict;
 
 mod batch;
 mod friction;
+mod gradient;
 mod report;
 mod scenes;
 mod settings;
@@ -105,6 +109,11 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(status_names, m)?)?;
     m.add_function(wrap_pyfunction!(path_names, m)?)?;
     m.add_function(wrap_pyfunction!(_panic_for_test, m)?)?;
+    m.add_function(wrap_pyfunction!(gradient::lcp_vjp, m)?)?;
+    m.add_function(wrap_pyfunction!(gradient::derivative_names, m)?)?;
+    m.add_function(wrap_pyfunction!(gradient::time_lcp_vjp, m)?)?;
+    m.add_function(wrap_pyfunction!(gradient::scene_vjp_batch, m)?)?;
+    m.add("DEFAULT_VJP_TOLERANCE", gradient::default_tolerance())?;
     m.add("CHUNK_PROBLEMS", batch::CHUNK_PROBLEMS)?;
     m.add("CHUNK_WORK", batch::CHUNK_WORK)?;
     m.add("CHUNK_CONTACTS", scenes::CHUNK_CONTACTS)?;

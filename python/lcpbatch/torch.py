@@ -1,0 +1,86 @@
+"""``lcpbatch.torch.solve``: the exact LCP solve as a differentiable PyTorch
+function (a ``torch.autograd.Function``), for ``loss.backward()`` and
+``torch.autograd.grad``.
+
+The forward pass (the solve) and the backward pass (the library's VJP,
+:func:`lcpbatch.lcp_vjp`) run in f64 on every CPU core with the GIL
+released; tensors on another device are copied to the CPU and the results
+back. The backward pass is not itself differentiable (no second
+derivatives).
+
+Imported on first use (``import lcpbatch`` does not import PyTorch);
+without it, an ``ImportError`` says what to install (a CPU build is enough).
+"""
+
+from __future__ import annotations
+
+from typing import Any, Optional, Tuple
+
+from . import _gradient
+
+torch = _gradient.framework("torch", "PyTorch",
+                            'pip install torch (a CPU build is enough; or pip install "lcpbatch[torch]")')
+
+__all__ = ["solve"]
+
+
+def _numpy(t: "torch.Tensor") -> Any:
+    return t.detach().cpu().numpy()
+
+
+def _tensor(a: Any, like: "torch.Tensor") -> "torch.Tensor":
+    return torch.from_numpy(a).to(dtype=like.dtype, device=like.device)
+
+
+class _LcpSolve(torch.autograd.Function):
+    """z, w = solve(M, q) with its VJP; ``key`` holds the settings."""
+
+    @staticmethod
+    def forward(ctx: Any, M: "torch.Tensor", q: "torch.Tensor",
+                key: Tuple[Any, ...]) -> Tuple["torch.Tensor", "torch.Tensor"]:
+        z, w = _gradient.forward(_numpy(M), _numpy(q), dict(key[1]))
+        z_t, w_t = _tensor(z, q), _tensor(w, q)
+        ctx.save_for_backward(M, q, z_t)
+        ctx.vjp_tolerance = key[0]
+        return z_t, w_t
+
+    @staticmethod
+    @torch.autograd.function.once_differentiable
+    def backward(ctx: Any, dz: "torch.Tensor", dw: "torch.Tensor") -> Tuple[Any, Any, None]:
+        M, q, z = ctx.saved_tensors
+        dm, dq = _gradient.backward(_numpy(M), _numpy(q), _numpy(z), _numpy(dz), _numpy(dw),
+                                    ctx.vjp_tolerance)
+        return _tensor(dm, M), _tensor(dq, q), None
+
+
+def solve(M: "torch.Tensor", q: "torch.Tensor", *, vjp_tolerance: Optional[float] = None,
+          **settings: Any) -> Tuple["torch.Tensor", "torch.Tensor"]:
+    """Solves w = M z + q ≥ 0, z ≥ 0, zᵀw = 0 for a batch and returns
+    ``(z, w)``, differentiable in ``M`` and ``q``.
+
+    ``M`` (..., n, n) and ``q`` (..., n) floating-point tensors, any leading
+    batch dimensions (none for one problem); z and w have q's shape, dtype
+    and device (computed in f64 on the CPU). The gradient is the library's
+    exact VJP at the solution's active set (see ``lcpbatch.jax.solve`` and
+    ``lcpbatch.lcp_vjp`` for the degenerate cases; ``vjp_tolerance`` decides
+    weak activity). A problem the solver finds no solution of gives NaN z,
+    w and gradients. The other keyword arguments are the settings of
+    :class:`lcpbatch.Solver` (not ``warm_start``).
+
+    >>> import torch, lcpbatch.torch
+    >>> M = torch.tensor([[[2.0, 1.0], [1.0, 2.0]]], dtype=torch.float64)
+    >>> q = torch.tensor([[-5.0, -6.0]], dtype=torch.float64, requires_grad=True)
+    >>> z, w = lcpbatch.torch.solve(M, q)
+    >>> (g,) = torch.autograd.grad(z[0, 0], q)                      # −(M⁻ᵀ e₁)
+    >>> (g * 3).round(decimals=9).tolist()
+    [[-2.0, 1.0]]
+    """
+    if not (torch.is_tensor(M) and torch.is_tensor(q)):
+        raise TypeError(f"M and q: expected torch tensors, got {type(M).__name__} and {type(q).__name__}")
+    if not (M.is_floating_point() and q.is_floating_point()):
+        raise TypeError(f"M and q: expected floating-point tensors, got {M.dtype} and {q.dtype}")
+    if q.dim() < 1 or tuple(M.shape) != tuple(q.shape) + tuple(q.shape[-1:]):
+        raise ValueError(f"M: expected shape {tuple(q.shape) + tuple(q.shape[-1:])} to match q "
+                         f"{tuple(q.shape)} (M (..., n, n), q (..., n)), got {tuple(M.shape)}")
+    dtype = torch.promote_types(M.dtype, q.dtype)
+    return _LcpSolve.apply(M.to(dtype), q.to(dtype), _gradient.settings_of(vjp_tolerance, settings))
