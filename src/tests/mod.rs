@@ -14,6 +14,7 @@ mod friction;
 mod friction_conformance;
 mod friction_conformance_large;
 mod gpu_all_solutions;
+mod gpu_collide;
 mod gpu_conformance;
 mod gpu_cost_model;
 mod gpu_friction;
