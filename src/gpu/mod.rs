@@ -10,6 +10,7 @@
 //! | `shaders/assembly.wgsl`   | [`crate::cpu::assembly`]         | per contact K, J, M⁻¹Jᵀ, v_rel, q; per island M, q |
 //! | `shaders/enumeration.wgsl`| [`crate::cpu::enumeration`]      | per island the first valid complementary basis |
 //! | `shaders/impulses.wgsl`   | [`crate::cpu::impulses`]         | per body its velocities after the impulses    |
+//! | `shaders/collide.wgsl`    | `world::collide`, `collide_box`  | per candidate pair its contact points (narrow phase) |
 //!
 //! A [`GpuContext`] is created once (adapter, device, queue, pipelines) and
 //! reused for every batch; tests create their own. wgpu's errors never panic:
@@ -54,11 +55,13 @@
 //!   iterations, validated in f64) and [`friction_rounds`] (their packing
 //!   and rounds); [`friction_assembly`] (W and q of frictional islands on
 //!   the GPU, through assembly.wgsl on the direction contacts);
-//! - [`layout`]: buffer layouts shared with the CPU twins.
+//! - [`layout`]: buffer layouts shared with the CPU twins;
+//! - [`collide`]: the narrow phase (`shaders/collide.wgsl`), its test door.
 
 pub(crate) mod all_bases;
 pub mod batch;
 pub(crate) mod buffers;
+pub(crate) mod collide;
 pub mod context;
 pub(crate) mod dispatch;
 pub(crate) mod enumeration;

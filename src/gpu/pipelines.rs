@@ -91,6 +91,18 @@ pub(crate) const FRICTION_PROJECTED_BINDINGS: Bindings = &[
     (7, Uniform),
 ];
 
+/// `collide_pairs` (shaders/collide.wgsl): params, bodies, pairs, margins,
+/// points, keys, counts.
+pub(crate) const COLLIDE_BINDINGS: Bindings = &[
+    (0, Uniform),
+    (1, Read),
+    (2, Read),
+    (3, Read),
+    (4, ReadWrite),
+    (5, ReadWrite),
+    (6, ReadWrite),
+];
+
 /// Workgroup size of every entry point (`@workgroup_size(64)`).
 pub const WORKGROUP: u32 = 64;
 
@@ -211,6 +223,8 @@ pub(crate) struct Pipelines {
     /// 2(k − 1) + 1 (`apgd`), built on first use (the LCP path never
     /// builds them).
     friction_projected: Vec<OnceLock<Stage>>,
+    /// [`Shader::Collide`] (the narrow phase), built on first use.
+    collide: OnceLock<Stage>,
 }
 
 /// The stage in `cache` (index n − 1), built on first use.
@@ -256,6 +270,7 @@ impl Pipelines {
                 )?,
                 impulses: Stage::new(ctx, Shader::Impulses, "main", IMPULSES_BINDINGS)?,
                 friction_projected: (0..2 * FRICTION_MAX_K).map(|_| OnceLock::new()).collect(),
+                collide: OnceLock::new(),
             })
         })?
     }
@@ -284,6 +299,15 @@ impl Pipelines {
         }
         let stage = Stage::new(ctx, Shader::Lemke, "main", ENUMERATION_BINDINGS)?;
         Ok(self.lemke.get_or_init(|| stage))
+    }
+
+    /// The narrow phase's stage (`collide_pairs`), built on first use.
+    pub(crate) fn collide(&self, ctx: &GpuContext) -> Result<&Stage, Error> {
+        if let Some(s) = self.collide.get() {
+            return Ok(s);
+        }
+        let stage = Stage::new(ctx, Shader::Collide, "collide_pairs", COLLIDE_BINDINGS)?;
+        Ok(self.collide.get_or_init(|| stage))
     }
 
     /// The tree stage for islands of n contacts (1 ≤ n ≤ [`TREE_MAX_N`]),

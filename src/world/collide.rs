@@ -39,7 +39,7 @@ pub struct ContactPoint {
 
 /// A point of a pair's manifold before the body indices are attached.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct Hit {
+pub(crate) struct Hit {
     pub point: DVec3,
     /// From the second shape to the first.
     pub normal: DVec3,
@@ -51,7 +51,7 @@ pub(super) struct Hit {
 /// allocation per pair): what the narrow phase returns, at most 4 after
 /// [`reduce_to_four`]. Reads as a slice of [`Hit`]s.
 #[derive(Clone, Copy, Debug)]
-pub(super) struct Manifold {
+pub(crate) struct Manifold {
     hits: [Hit; Manifold::CAPACITY],
     len: usize,
 }
@@ -149,7 +149,7 @@ impl Placed {
 
 /// The contact points of shapes `x` and `y` closer than `margin`, normals
 /// from y to x. Two planes (or an unsupported pair) give none.
-pub(super) fn collide_shapes(x: &Placed, y: &Placed, margin: f64) -> Manifold {
+pub(crate) fn collide_shapes(x: &Placed, y: &Placed, margin: f64) -> Manifold {
     use Shape::*;
     let flip = |mut hits: Manifold| -> Manifold {
         hits.iter_mut().for_each(|h| h.normal = -h.normal);

@@ -30,6 +30,7 @@ const FRICTION_PROJECTED_WGSL: &str = include_str!("../../../shaders/friction_pr
 const FRICTION_COMMON_WGSL: &str = include_str!("../../../shaders/friction_common.wgsl");
 const FRICTION_PROJECTED_GLOBAL_WGSL: &str =
     include_str!("../../../shaders/friction_projected_global.wgsl");
+const COLLIDE_WGSL: &str = include_str!("../../../shaders/collide.wgsl");
 
 /// Largest island (contacts) whose friction kernels come from
 /// `shaders/friction_projected.wgsl` (private copies, marked loops unrolled
@@ -60,10 +61,11 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         Shader::FrictionProjected(_) => {
             ("friction_projected_global", FRICTION_PROJECTED_GLOBAL_WGSL)
         }
+        Shader::Collide => ("collide", COLLIDE_WGSL),
     };
     let standalone = matches!(
         shader,
-        Shader::Assembly | Shader::Impulses | Shader::FrictionProjected(_)
+        Shader::Assembly | Shader::Impulses | Shader::FrictionProjected(_) | Shader::Collide
     );
     let src = match shader {
         Shader::FrictionProjected(_) => format!("{FRICTION_COMMON_WGSL}\n{body}"),

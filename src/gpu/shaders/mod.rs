@@ -61,6 +61,8 @@ pub(crate) enum Shader {
     /// specialised to islands of exactly k contacts (1 ≤ k ≤ 16): constant
     /// loop bounds, which llvmpipe unrolls.
     FrictionProjected(usize),
+    /// `shaders/collide.wgsl` (entry point collide_pairs): the narrow phase.
+    Collide,
 }
 
 impl Shader {
@@ -77,6 +79,7 @@ impl Shader {
         v.extend((1..=TREE_MAX_N).map(Shader::Tree));
         v.extend([Shader::Assembly, Shader::Impulses]);
         v.extend((1..=FRICTION_MAX_K).map(Shader::FrictionProjected));
+        v.push(Shader::Collide);
         v
     }
 
@@ -92,6 +95,7 @@ impl Shader {
             Shader::Assembly => "assembly".into(),
             Shader::Impulses => "impulses".into(),
             Shader::FrictionProjected(k) => format!("friction_projected_k{k}"),
+            Shader::Collide => "collide".into(),
         }
     }
 
@@ -177,4 +181,5 @@ pub(crate) static GENERATED: &[(&str, &str, &str)] = generated!(
     "friction_projected_k14",
     "friction_projected_k15",
     "friction_projected_k16",
+    "collide",
 );
