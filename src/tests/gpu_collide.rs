@@ -466,7 +466,7 @@ fn bad_pairs_are_refused_naming_the_pair() {
             .to_string();
         assert!(e.contains(what), "{e}");
     }
-    let ok = collide_pairs_on_gpu(&ctx, &bodies, &[(0, 1)], &[0.01], &g).unwrap();
-    assert_eq!(ok[0].contacts.len(), 1);
-    assert!((ok[0].contacts[0].gap + 0.5).abs() < 1e-6);
+    // Refused before any dispatch: no shader compiled (minutes on GL).
+    let e = collide_pairs_on_gpu(&ctx, &bodies, &[(0, 1)], &[], &g).unwrap_err();
+    assert!(e.to_string().contains("margins"), "{e}");
 }
