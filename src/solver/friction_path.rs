@@ -7,7 +7,7 @@
 
 use std::time::Instant;
 
-use super::{ids_of, Solver};
+use super::{cpu_device, ids_of, Solver};
 use crate::build::FrictionBuilt;
 use crate::cpu::batch::parallel_map;
 use crate::friction::assembly::{apply_friction_impulses, world_impulse, FrictionContactRows};
@@ -157,7 +157,7 @@ impl Solver {
         }
         let device = match figures {
             Some(_) => self.device(),
-            None => self.cpu_device(),
+            None => cpu_device(self.threads),
         };
         let choice = match (&figures, self.fallback.is_some() && use_gpu) {
             (Some(f), _) => format!("{}; friction: {went}, {}", self.choice, origin_counts(f)),

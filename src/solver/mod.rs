@@ -47,7 +47,7 @@ use crate::build::Built;
 use crate::cpu::batch::parallel_map;
 use crate::gpu::{self, GpuContext, Precision};
 use crate::lcp::Lcp;
-use crate::report::{Device, DeviceKind, IslandReport, Report};
+use crate::report::{Device, DeviceKind, IslandReport, Report, SceneReport};
 use crate::scene::Scene;
 use crate::settings::{Backend, Settings};
 use crate::warm::{basis_entries, Warm, SHARDS};
@@ -87,6 +87,50 @@ pub struct Solver {
     world_warm: Vec<Warm>,
     /// `Backend::Auto` with a GPU open: the costs that choose per batch.
     cost: Option<CostModel>,
+}
+
+/// What the phases (free functions in this folder's modules) read of the
+/// [`Solver`], borrowed for one phase: the settings, the thread count, the
+/// warm-start memory, and the words every report carries (why this
+/// device, why the CPU took over). The solver itself stays with the
+/// conductor (the methods in this file), which alone opens or drops the
+/// device and records into the warm-start memory.
+#[derive(Clone, Copy)]
+pub(super) struct SolverView<'a> {
+    pub(super) settings: &'a Settings,
+    pub(super) threads: usize,
+    pub(super) warm: &'a Warm,
+    pub(super) choice: &'a str,
+    pub(super) fallback: Option<&'a str>,
+}
+
+impl SolverView<'_> {
+    /// The report of `islands` (already through [`check_solution`]) and
+    /// `scenes` on `device`, with the solver's choice and fallback reason.
+    pub(super) fn report(
+        &self,
+        islands: Vec<IslandReport>,
+        scenes: Vec<SceneReport>,
+        device: Device,
+    ) -> Report {
+        let mut r = Report::new(islands, scenes, device, self.choice.to_string());
+        r.fallback = self.fallback.map(str::to_string);
+        r
+    }
+
+    /// The CPU path as a device.
+    pub(super) fn cpu_device(&self) -> Device {
+        cpu_device(self.threads)
+    }
+
+    /// The warm basis remembered for an island's contact ids (None without
+    /// `settings.warm_start` or without ids).
+    pub(super) fn warm_basis(&self, ids: &[u64]) -> Option<u32> {
+        if !self.settings.warm_start || ids.is_empty() {
+            return None;
+        }
+        self.warm.bases.basis(ids.iter().map(|&id| Some(id)))
+    }
 }
 
 impl Solver {
@@ -191,7 +235,7 @@ impl Solver {
     /// else the cached one, else a calibration (cached). Device trouble
     /// during the calibration falls back to the CPU.
     fn load_cost_model(&mut self) {
-        let device = self.cost_key();
+        let device = cost::cost_key(self.gpu.as_deref());
         let dir = cost::cache_dir();
         let model = self.settings.cost_model.clone().or_else(|| {
             dir.as_deref()
@@ -220,6 +264,18 @@ impl Solver {
     /// another backend).
     pub fn cost_model(&self) -> Option<&CostModel> {
         self.cost.as_ref()
+    }
+
+    /// Measures this solver's CPU and GPU paths by island size (see
+    /// [`CostModel`]); needs a GPU open.
+    ///
+    /// # Errors
+    /// [`Error::Gpu`] without a GPU open or on device trouble.
+    pub fn calibrate(&mut self) -> Result<CostModel, Error> {
+        let Some(ctx) = self.gpu.clone() else {
+            return Err(Error::Gpu("calibration needs a GPU".into()));
+        };
+        cost::calibrate(&self.view(), &ctx)
     }
 
     /// Whether the next batch of islands of `sizes` goes to the GPU, and
@@ -255,25 +311,25 @@ impl Solver {
     pub fn device(&self) -> Device {
         match self.gpu.as_deref() {
             Some(ctx) => Device::of(ctx),
-            None => self.cpu_device(),
+            None => cpu_device(self.threads),
+        }
+    }
+
+    /// What the phases read of this solver (see [`SolverView`]).
+    fn view(&self) -> SolverView<'_> {
+        SolverView {
+            settings: &self.settings,
+            threads: self.threads,
+            warm: &self.warm,
+            choice: &self.choice,
+            fallback: self.fallback.as_deref(),
         }
     }
 
     /// A report of no islands on `device`, with this solver's choice and
     /// fallback reason.
-    pub(super) fn empty_report(&self, device: Device) -> Report {
-        let mut r = Report::new(Vec::new(), Vec::new(), device, self.choice.clone());
-        r.fallback = self.fallback.clone();
-        r
-    }
-
-    /// The CPU path as a device.
-    pub(super) fn cpu_device(&self) -> Device {
-        Device {
-            kind: DeviceKind::Cpu,
-            name: format!("cpu ({} thread(s), f64)", self.threads),
-            precision: Precision::F64,
-        }
+    fn empty_report(&self, device: Device) -> Report {
+        self.view().report(Vec::new(), Vec::new(), device)
     }
 
     /// Why this device: the backend asked for and what was found.
@@ -321,6 +377,22 @@ impl Solver {
         }
     }
 
+    /// What a GPU phase gave (None: it did not run): its answer, or None
+    /// after device trouble ([`Error::Gpu`]: the device is dropped, see
+    /// [`Self::fall_back`], and the CPU takes the batch). The caller's
+    /// errors stay errors.
+    fn gpu_outcome<T>(&mut self, on_gpu: Option<Result<T, Error>>) -> Result<Option<T>, Error> {
+        match on_gpu {
+            Some(Ok(r)) => Ok(Some(r)),
+            Some(Err(Error::Gpu(why))) => {
+                self.fall_back(why);
+                Ok(None)
+            }
+            Some(Err(e)) => Err(e),
+            None => Ok(None),
+        }
+    }
+
     /// Solves a batch of LCPs, in the caller's order. Every problem is
     /// checked first (an error names the first bad one). Enumeration on the
     /// CPU backend refuses n > 20 (an error naming the problem); after device
@@ -365,26 +437,20 @@ impl Solver {
 
     fn solve_lcps_warm(&mut self, lcps: &[Lcp], keys: Option<&[&[u64]]>) -> Result<Report, Error> {
         let start = Instant::now();
-        let mut report = None;
         let (use_gpu, why) = self.gpu_for(lcps.iter().map(Lcp::n));
-        if let Some(ctx) = self.gpu.clone().filter(|_| use_gpu) {
-            let on_gpu = if self.settings.all_solutions {
-                self.all_solutions_lcps_on_gpu(&ctx, lcps)
+        let on_gpu = self.gpu.clone().filter(|_| use_gpu).map(|ctx| {
+            if self.settings.all_solutions {
+                gpu_path::all_solutions_lcps_on_gpu(&self.view(), &ctx, lcps)
             } else {
                 let keys = keys.filter(|_| self.settings.warm_start);
-                self.lcps_on_gpu(&ctx, lcps, keys)
-            };
-            match on_gpu {
-                Ok(r) => report = Some(r),
-                Err(Error::Gpu(why)) => self.fall_back(why),
-                Err(e) => return Err(e),
+                gpu_path::lcps_on_gpu(&self.view(), &ctx, lcps, keys)
             }
-        }
+        });
         // Both paths check each problem and look up its warm basis on the
         // threads that solve it.
-        let mut report = match report {
+        let mut report = match self.gpu_outcome(on_gpu)? {
             Some(r) => r,
-            None => self.lcps_on_cpu(lcps, keys)?,
+            None => cpu_path::lcps_on_cpu(&self.view(), lcps, keys)?,
         };
         if self.cost.is_some() {
             report.choice = why;
@@ -448,37 +514,32 @@ impl Solver {
         let build = t.elapsed().as_secs_f64();
         // Per scene, per island: the warm basis of its contacts' ids (on
         // every thread: the ids are gathered per island).
+        let view = self.view();
         let warm: Vec<Vec<Option<u32>>> = if self.settings.warm_start {
             parallel_map(scenes.len(), self.threads, |s| {
                 built[s]
                     .islands
                     .iter()
-                    .map(|isl| self.warm_basis(&contact_ids(scenes[s], &isl.contacts)))
+                    .map(|isl| view.warm_basis(&contact_ids(scenes[s], &isl.contacts)))
                     .collect()
             })
         } else {
             Vec::new()
         };
-        let mut report = None;
         let sizes = built
             .iter()
             .flat_map(|b| b.islands.iter().map(|i| i.contacts.len()));
         let (use_gpu, why) = self.gpu_for(sizes);
-        if let Some(ctx) = self.gpu.clone().filter(|_| use_gpu) {
-            let on_gpu = if self.settings.all_solutions {
-                self.all_solutions_scenes_on_gpu(&ctx, scenes, &built)
+        let on_gpu = self.gpu.clone().filter(|_| use_gpu).map(|ctx| {
+            if self.settings.all_solutions {
+                gpu_path::all_solutions_scenes_on_gpu(&self.view(), &ctx, scenes, &built)
             } else {
-                self.scenes_on_gpu(&ctx, scenes, &built, &warm)
-            };
-            match on_gpu {
-                Ok(r) => report = Some(r),
-                Err(Error::Gpu(why)) => self.fall_back(why),
-                Err(e) => return Err(e),
+                gpu_path::scenes_on_gpu(&self.view(), &ctx, scenes, &built, &warm)
             }
-        }
-        let mut report = match report {
+        });
+        let mut report = match self.gpu_outcome(on_gpu)? {
             Some(r) => r,
-            None => self.scenes_on_cpu(scenes, &built, &warm)?,
+            None => cpu_path::scenes_on_cpu(&self.view(), scenes, &built, &warm)?,
         };
         report.timings.build = build;
         if self.cost.is_some() {
@@ -494,19 +555,6 @@ impl Solver {
             self.remember(keyed.into_iter());
         }
         Ok(report)
-    }
-
-    /// The final check of every island, on every backend and method: a
-    /// solution whose z, w or error is not finite, or whose error is above
-    /// `settings.tolerance`, becomes `numerical_failure`.
-    pub(super) fn check(&self, islands: &mut [IslandReport]) {
-        for isl in islands {
-            check_solution(&mut isl.solution, self.settings.tolerance);
-        }
-    }
-
-    fn warm_basis(&self, ids: &[u64]) -> Option<u32> {
-        warm_basis(&self.settings, &self.warm, ids)
     }
 
     /// Records each island's basis under its contact ids.
@@ -527,22 +575,30 @@ impl Solver {
     }
 }
 
-/// The check of [`Solver::check`] on one answer: a solution whose z, w or
-/// error is not finite, or whose error is above `tolerance`, becomes
-/// `numerical_failure`.
+/// The final check of every island, on every backend and method
+/// ([`check_solution`] on each answer).
+pub(super) fn check(islands: &mut [IslandReport], tolerance: f64) {
+    for isl in islands {
+        check_solution(&mut isl.solution, tolerance);
+    }
+}
+
+/// The final check of one answer: a solution whose z, w or error is not
+/// finite, or whose error is above `tolerance` (`settings.tolerance`),
+/// becomes `numerical_failure`.
 pub(crate) fn check_solution(s: &mut crate::LcpSolution, tolerance: f64) {
     if s.status.is_solution() && !s.passes_check(tolerance) {
         s.status = crate::Status::NumericalFailure;
     }
 }
 
-/// The warm basis remembered for an island's contact ids (None without
-/// `settings.warm_start` or without ids).
-pub(super) fn warm_basis(settings: &Settings, memory: &Warm, ids: &[u64]) -> Option<u32> {
-    if !settings.warm_start || ids.is_empty() {
-        return None;
+/// The CPU path as a device.
+pub(super) fn cpu_device(threads: usize) -> Device {
+    Device {
+        kind: DeviceKind::Cpu,
+        name: format!("cpu ({threads} thread(s), f64)"),
+        precision: Precision::F64,
     }
-    memory.bases.basis(ids.iter().map(|&id| Some(id)))
 }
 
 /// The caller's ids of an island's contacts; empty when one has none (such

@@ -13,7 +13,7 @@ use super::world_friction::repair_unsolved;
 use super::world_path::Solved as Results;
 use super::world_path::{max_error, Item, Stepped, WorldStepReport};
 use super::world_repair::{repair_island, Repairs};
-use super::{ids_of, Solver};
+use super::{check, ids_of, Solver};
 use crate::build::Built;
 use crate::cpu::batch::parallel_fill_by;
 use crate::cpu::enumeration::{solve_basis, BasisOutcome, MAX_ENUMERATION_N};
@@ -89,7 +89,7 @@ impl Solver {
                 }
             })
             .collect();
-        self.check(&mut reports);
+        check(&mut reports, self.settings.tolerance);
         let t2 = Instant::now();
         let mut impulses = vec![0.0; scene.contacts.len()];
         let mut repairs = Repairs::default();

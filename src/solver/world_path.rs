@@ -35,7 +35,7 @@ use serde::Serialize;
 
 use super::world_cpu::parallel_map_mut;
 use super::world_repair::{repair_settings, Repairs};
-use super::Solver;
+use super::{cpu_device, Solver};
 use crate::cpu::batch::parallel_map;
 use crate::cpu::impulses::BodyVelocity;
 use crate::report::{FrictionIslandReport, IslandReport, Report, SceneReport, Timings};
@@ -260,7 +260,7 @@ impl Solver {
         // Wall seconds of pass 2 shared out by the threads' measured times.
         let all: f64 = sums.iter().sum();
         let share = |x: f64| if all > 0.0 { pass * x / all } else { 0.0 };
-        let mut solve = batch.unwrap_or_else(|| self.empty_report(self.cpu_device()));
+        let mut solve = batch.unwrap_or_else(|| self.empty_report(cpu_device(self.threads)));
         if stepped.iter().any(|s| !s.friction.is_empty()) {
             // Where pass 2's frictional islands went, in the door's words.
             let (_, went) = self.friction_on_gpu(self.settings.friction_method);
