@@ -7,7 +7,7 @@
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
-use super::{check, check_solution, SolverView};
+use super::SolverView;
 use crate::build::Built;
 use crate::cpu::batch::{parallel_fill, parallel_map};
 use crate::cpu::enumeration::{
@@ -170,6 +170,23 @@ pub(super) fn scenes_with(
     Ok(report)
 }
 
+/// The final check of every island, on every backend and method
+/// ([`check_solution`] on each answer).
+pub(super) fn check(islands: &mut [IslandReport], tolerance: f64) {
+    for isl in islands {
+        check_solution(&mut isl.solution, tolerance);
+    }
+}
+
+/// The final check of one answer: a solution whose z, w or error is not
+/// finite, or whose error is above `tolerance` (`settings.tolerance`),
+/// becomes `numerical_failure`.
+pub(crate) fn check_solution(s: &mut crate::LcpSolution, tolerance: f64) {
+    if s.status.is_solution() && !s.passes_check(tolerance) {
+        s.status = crate::Status::NumericalFailure;
+    }
+}
+
 /// The reports of an LCP batch's answers, in order.
 pub(super) fn lcp_islands(lcps: &[Lcp], solved: Vec<Solved>) -> Vec<IslandReport> {
     solved
@@ -268,7 +285,7 @@ pub(crate) fn lemke_else_enumerate(
 /// tolerances (the check every GPU answer goes through: feasible, M_SS not
 /// singular); the solution is the re-solve's. Where that basis (and the
 /// bases of its answer's support) fail the check, Lemke's own answer is
-/// taken when the door's final check passes it.
+/// taken when the final check ([`check_solution`]) passes it.
 /// Written into `out` (true); false when Lemke did not end on a solution
 /// or none passes (`out` then holds no answer: a refused one, or what it
 /// held); `pivots`: the pivots spent.
@@ -304,7 +321,7 @@ fn lemke_checked(
     {
         return true;
     }
-    // Lemke's own answer where the door's final check passes it (z, w
+    // Lemke's own answer where the final check passes it (z, w
     // finite, the error recomputed from M and q in f64 within the
     // tolerance). On a degenerate island every basis through it can be
     // singular or ill-conditioned to the basis check (a resting 4-box

@@ -4,7 +4,7 @@
 //! in f64; `all_solutions` screens every basis on the device
 //! ([`all_solutions_lcps_on_gpu`], [`all_solutions_scenes_on_gpu`]).
 
-use super::{check, SolverView};
+use super::SolverView;
 use crate::build::Built;
 use crate::gpu::{self, GpuContext};
 use crate::lcp::Lcp;
@@ -13,7 +13,7 @@ use crate::scene::Scene;
 use crate::settings::Method;
 use crate::Error;
 
-use super::cpu_path::{lcp_islands, scenes_with, solve_on_cpu, Solved};
+use super::cpu_path::{check, lcp_islands, scenes_with, solve_on_cpu, Solved};
 use crate::cpu::batch::parallel_map;
 use crate::cpu::enumeration::enumerate_screened;
 use crate::gpu::all_bases::{screen_all_bases, ScreenFigures, Screened};
@@ -74,7 +74,7 @@ pub(super) fn all_solutions_lcps_on_gpu(
     let (solved, figures) = all_solutions_on_gpu(solver, ctx, &refs)?;
     let mut islands = lcp_islands(lcps, solved);
     check(&mut islands, solver.settings.tolerance);
-    let mut r = Report::new(islands, Vec::new(), Device::of(ctx), solver.choice.to_string());
+    let mut r = solver.report(islands, Vec::new(), Device::of(ctx));
     r.timings.solve = t.elapsed().as_secs_f64();
     add_screen_figures(&mut r, figures);
     Ok(r)
