@@ -4,7 +4,7 @@
 //! and μ with it). Every path takes what was built here: the CPU and GPU
 //! solves, the friction path, the world step, the warm start (islands'
 //! contact ids) and the cost model (islands' sizes). Nothing here checks a
-//! scene: the door checks every scene once, before the build.
+//! scene: `Solver::solve_scenes` checks every scene once, before the build.
 
 use crate::cpu::assembly::{assemble_contacts, assemble_island, ContactRow};
 use crate::cpu::batch::parallel_map;

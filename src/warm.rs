@@ -3,7 +3,7 @@
 //! collision detection), for the next call to start from. One type,
 //! [`WarmMemory`], serves the LCP bases (per contact: whether it carried
 //! impulse, i.e. was in its island's basis) and the frictional reactions
-//! (r_n, r_t₁, r_t₂); the door keeps one pair ([`Warm`]) for its calls, the
+//! (r_n, r_t₁, r_t₂); the solver keeps one pair ([`Warm`]) for its calls, the
 //! world step one pair per world.
 //!
 //! An id not recorded for `keep` calls is forgotten
@@ -25,7 +25,7 @@ use std::hash::{BuildHasher, Hasher, RandomState};
 
 use crate::cpu::batch::parallel_fill_by;
 
-/// Shards of the door's memory (a world's has one).
+/// Shards of the solver's memory (a world's has one).
 pub(crate) const SHARDS: usize = 16;
 
 /// Ids recorded (in one call, over every shard) below which
@@ -58,7 +58,7 @@ pub(crate) struct WarmMemory<V> {
     joined_records: bool,
 }
 
-/// The door's or a world's memory: the LCP bases and the frictional
+/// The solver's or a world's memory: the LCP bases and the frictional
 /// reactions, each with its own calls (a call that records no frictional
 /// island leaves the reactions as they are).
 #[derive(Clone, Debug)]
@@ -402,10 +402,10 @@ mod tests {
         }
     }
 
-    /// Through the door: ids not seen in the last call are forgotten by
-    /// default, kept with `warm_start_calls: 2`.
+    /// Through `Solver::solve_lcps_keyed`: ids not seen in the last call
+    /// are forgotten by default, kept with `warm_start_calls: 2`.
     #[test]
-    fn the_door_forgets_ids_after_warm_start_calls() {
+    fn the_solver_forgets_ids_after_warm_start_calls() {
         use crate::report::SolvePath;
         use crate::{Backend, Lcp, Method, Settings, Solver};
         // Rank one M: no predicted basis, only the warm start settles it.

@@ -14,7 +14,7 @@
 //! `Auto` solves each batch where the estimate is lower; the report's
 //! `choice` gives both estimates.
 //!
-//! Calibration ([`Solver::calibrate`]): physical islands of each size in
+//! Calibration ([`Solver::calibrate`](super::Solver::calibrate), [`calibrate`]): physical islands of each size in
 //! [`CALIBRATION_SIZES`] solved by the CPU path (every core) and by the GPU
 //! path at two batch sizes (each after an untimed call that warms the CPU's
 //! workers or compiles the size's kernels), so that the GPU's per-batch cost separates from its per-island
@@ -27,8 +27,11 @@ use std::time::Instant;
 
 use serde::{Deserialize, Serialize};
 
-use super::Solver;
+use super::cpu_path::lcps_on_cpu;
+use super::gpu_path::lcps_on_gpu;
+use super::SolverView;
 use crate::generate::families::islands_of_size;
+use crate::gpu::GpuContext;
 use crate::Error;
 
 /// The island sizes a calibration measures.
@@ -189,61 +192,56 @@ impl CostModel {
     }
 }
 
-impl Solver {
-    /// What a cost model is kept under: the GPU's name, wgpu backend, type
-    /// and precision, however it was chosen (by name or not); empty
-    /// without a GPU.
-    pub(super) fn cost_key(&self) -> String {
-        self.gpu.as_deref().map_or_else(String::new, |ctx| {
-            let a = ctx.adapter_info();
-            format!(
-                "{} ({}, {}; {})",
-                a.name,
-                a.backend,
-                a.device_type,
-                ctx.precision().name()
-            )
-        })
-    }
+/// What a cost model is kept under: the GPU's name, wgpu backend, type
+/// and precision, however it was chosen (by name or not); empty without a
+/// GPU.
+pub(super) fn cost_key(gpu: Option<&GpuContext>) -> String {
+    gpu.map_or_else(String::new, |ctx| {
+        let a = ctx.adapter_info();
+        format!(
+            "{} ({}, {}; {})",
+            a.name,
+            a.backend,
+            a.device_type,
+            ctx.precision().name()
+        )
+    })
+}
 
-    /// Measures this solver's CPU and GPU paths by island size (see the
-    /// module docs); needs a GPU open.
-    ///
-    /// # Errors
-    /// [`Error::Gpu`] without a GPU open or on device trouble.
-    pub fn calibrate(&mut self) -> Result<CostModel, Error> {
-        let Some(ctx) = self.gpu.clone() else {
-            return Err(Error::Gpu("calibration needs a GPU".into()));
-        };
-        let mut m = CostModel {
-            device: self.cost_key(),
-            threads: self.threads,
-            sizes: CALIBRATION_SIZES.to_vec(),
-            cpu_per_island: Vec::new(),
-            gpu_per_island: Vec::new(),
-            gpu_per_batch: 0.0,
-        };
-        let mut per_batch = Vec::new();
-        for n in CALIBRATION_SIZES {
-            let lcps = islands_of_size(n, CALIBRATION_ISLANDS, 0xC0FFEE);
-            // Untimed: starts the workers and sizes their workspaces.
-            self.lcps_on_cpu(&lcps[..16], None)?;
-            let cpu = fastest_of(TIMINGS, || self.lcps_on_cpu(&lcps, None))?;
-            m.cpu_per_island.push(cpu / lcps.len() as f64);
-            // Untimed: compiles this size's kernels.
-            self.lcps_on_gpu(&ctx, &lcps[..16], None)?;
-            let small = &lcps[..CALIBRATION_SMALL];
-            let t_small = fastest_of(TIMINGS, || self.lcps_on_gpu(&ctx, small, None))?;
-            let t_large = fastest_of(TIMINGS, || self.lcps_on_gpu(&ctx, &lcps, None))?;
-            // t(B) = per_batch + B per_island through both points.
-            let per_island = ((t_large - t_small) / (lcps.len() - small.len()) as f64).max(0.0);
-            m.gpu_per_island.push(per_island);
-            per_batch.push((t_small - small.len() as f64 * per_island).max(0.0));
-        }
-        per_batch.sort_by(f64::total_cmp);
-        m.gpu_per_batch = per_batch[per_batch.len() / 2];
-        Ok(m)
+/// Measures the CPU path and the GPU path on `ctx` by island size (see the
+/// module docs).
+///
+/// # Errors
+/// [`Error::Gpu`] on device trouble.
+pub(super) fn calibrate(solver: &SolverView, ctx: &GpuContext) -> Result<CostModel, Error> {
+    let mut m = CostModel {
+        device: cost_key(Some(ctx)),
+        threads: solver.threads,
+        sizes: CALIBRATION_SIZES.to_vec(),
+        cpu_per_island: Vec::new(),
+        gpu_per_island: Vec::new(),
+        gpu_per_batch: 0.0,
+    };
+    let mut per_batch = Vec::new();
+    for n in CALIBRATION_SIZES {
+        let lcps = islands_of_size(n, CALIBRATION_ISLANDS, 0xC0FFEE);
+        // Untimed: starts the workers and sizes their workspaces.
+        lcps_on_cpu(solver, &lcps[..16], None)?;
+        let cpu = fastest_of(TIMINGS, || lcps_on_cpu(solver, &lcps, None))?;
+        m.cpu_per_island.push(cpu / lcps.len() as f64);
+        // Untimed: compiles this size's kernels.
+        lcps_on_gpu(solver, ctx, &lcps[..16], None)?;
+        let small = &lcps[..CALIBRATION_SMALL];
+        let t_small = fastest_of(TIMINGS, || lcps_on_gpu(solver, ctx, small, None))?;
+        let t_large = fastest_of(TIMINGS, || lcps_on_gpu(solver, ctx, &lcps, None))?;
+        // t(B) = per_batch + B per_island through both points.
+        let per_island = ((t_large - t_small) / (lcps.len() - small.len()) as f64).max(0.0);
+        m.gpu_per_island.push(per_island);
+        per_batch.push((t_small - small.len() as f64 * per_island).max(0.0));
     }
+    per_batch.sort_by(f64::total_cmp);
+    m.gpu_per_batch = per_batch[per_batch.len() / 2];
+    Ok(m)
 }
 
 /// Each figure is the fastest of this many runs (other work on the machine

@@ -1,9 +1,13 @@
-//! The CPU path of the [`Solver`]: f64, every core.
+//! The CPU path of the [`Solver`](super::Solver): f64, every core. LCP
+//! batches ([`lcps_on_cpu`]) and the islands of built scenes
+//! ([`scenes_on_cpu`], through [`scenes_with`]: solve, then impulses), one
+//! island at a time by [`solve_island`] (prediction, checked Lemke,
+//! enumeration; or the one method asked).
 
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
-use super::{check_solution, warm_basis, Solver};
+use super::SolverView;
 use crate::build::Built;
 use crate::cpu::batch::{parallel_fill, parallel_map};
 use crate::cpu::enumeration::{
@@ -20,162 +24,166 @@ use crate::settings::{Backend, Method, Settings};
 use crate::short_vec::ShortVec;
 use crate::Error;
 
-impl Solver {
-    /// LCPs on the CPU, each checked (`Lcp::validate`) in the parallel pass
-    /// that solves it: an error names the first bad problem. `keys[i]`:
-    /// problem i's contact ids, whose warm basis (with
-    /// `settings.warm_start`) is looked up in that pass too. Everything per
-    /// problem (check, warm basis, solve, the final check of the answer, its
-    /// report) runs on the threads; only the batch's counts are serial.
-    /// Enumeration (and all_solutions) on the CPU backend refuses n > 20;
-    /// after device trouble (or with backend Auto) such problems go to
-    /// Lemke, as on the GPU path.
-    pub(super) fn lcps_on_cpu(
-        &self,
-        lcps: &[Lcp],
-        keys: Option<&[&[u64]]>,
-    ) -> Result<Report, Error> {
-        let big_to_lemke = self.settings.backend != Backend::Cpu;
-        let enumerates = self.settings.method == Method::Enumeration || self.settings.all_solutions;
-        let t = Instant::now();
-        let invalid = AtomicBool::new(false);
-        let (settings, memory) = (&self.settings, &self.warm);
-        // Every report is written where the batch's report keeps it (no
-        // move of a few hundred bytes per island). A placeholder stays only
-        // where a problem fails its checks, and never leaves: the call
-        // returns the error.
-        let mut islands: Vec<IslandReport> = Vec::with_capacity(lcps.len());
-        islands.resize_with(lcps.len(), || IslandReport {
-            scene: None,
-            contacts: ShortVec::new(),
-            method: settings.method,
-            path: SolvePath::Invalid,
-            solution: LcpSolution::invalid(0),
-        });
-        parallel_fill(&mut islands, self.threads, |i, island| {
-            let lcp = &lcps[i];
-            let n = lcp.n();
-            // The item's name is formatted only for the error, below.
-            if lcp.validate("problem").is_err()
-                || (!big_to_lemke && enumerates && n > MAX_ENUMERATION_N)
-            {
-                invalid.store(true, Ordering::Relaxed);
-                return;
-            }
-            let warm = keys.and_then(|k| warm_basis(settings, memory, k[i]));
-            let (mut method, mut path) = (Method::Lemke, SolvePath::Lemke);
-            island.contacts = ShortVec::indices(n);
-            solve_island(
-                lcp,
-                warm,
-                settings,
-                &mut method,
-                &mut path,
-                &mut island.solution,
-            );
-            (island.method, island.path) = (method, path);
-            check_solution(&mut island.solution, settings.tolerance);
-        });
-        if invalid.load(Ordering::Relaxed) {
-            for (i, l) in lcps.iter().enumerate() {
-                l.validate(&format!("problem {i}"))?;
-            }
-            for (i, l) in lcps.iter().enumerate() {
-                if !big_to_lemke && enumerates && l.n() > MAX_ENUMERATION_N {
-                    return Err(Error::Unsupported(format!(
-                        "problem {i}: enumeration visits 2^n bases and is limited to n ≤ {MAX_ENUMERATION_N} (this problem has n = {}); use Lemke",
-                        l.n()
-                    )));
-                }
+/// LCPs on the CPU, each checked (`Lcp::validate`) in the parallel pass
+/// that solves it: an error names the first bad problem. `keys[i]`:
+/// problem i's contact ids, whose warm basis (with
+/// `settings.warm_start`) is looked up in that pass too. Everything per
+/// problem (check, warm basis, solve, the final check of the answer, its
+/// report) runs on the threads; only the batch's counts are serial.
+/// Enumeration (and all_solutions) on the CPU backend refuses n > 20;
+/// after device trouble (or with backend Auto) such problems go to
+/// Lemke, as on the GPU path.
+pub(super) fn lcps_on_cpu(
+    solver: &SolverView,
+    lcps: &[Lcp],
+    keys: Option<&[&[u64]]>,
+) -> Result<Report, Error> {
+    let settings = solver.settings;
+    let big_to_lemke = settings.backend != Backend::Cpu;
+    let enumerates = settings.method == Method::Enumeration || settings.all_solutions;
+    let t = Instant::now();
+    let invalid = AtomicBool::new(false);
+    // Every report is written where the batch's report keeps it (no
+    // move of a few hundred bytes per island). A placeholder stays only
+    // where a problem fails its checks, and never leaves: the call
+    // returns the error.
+    let mut islands: Vec<IslandReport> = Vec::with_capacity(lcps.len());
+    islands.resize_with(lcps.len(), || IslandReport {
+        scene: None,
+        contacts: ShortVec::new(),
+        method: settings.method,
+        path: SolvePath::Invalid,
+        solution: LcpSolution::invalid(0),
+    });
+    parallel_fill(&mut islands, solver.threads, |i, island| {
+        let lcp = &lcps[i];
+        let n = lcp.n();
+        // The item's name is formatted only for the error, below.
+        if lcp.validate("problem").is_err()
+            || (!big_to_lemke && enumerates && n > MAX_ENUMERATION_N)
+        {
+            invalid.store(true, Ordering::Relaxed);
+            return;
+        }
+        let warm = keys.and_then(|k| solver.warm_basis(k[i]));
+        let (mut method, mut path) = (Method::Lemke, SolvePath::Lemke);
+        island.contacts = ShortVec::indices(n);
+        solve_island(
+            lcp,
+            warm,
+            settings,
+            &mut method,
+            &mut path,
+            &mut island.solution,
+        );
+        (island.method, island.path) = (method, path);
+        check_solution(&mut island.solution, settings.tolerance);
+    });
+    if invalid.load(Ordering::Relaxed) {
+        for (i, l) in lcps.iter().enumerate() {
+            l.validate(&format!("problem {i}"))?;
+        }
+        for (i, l) in lcps.iter().enumerate() {
+            if !big_to_lemke && enumerates && l.n() > MAX_ENUMERATION_N {
+                return Err(Error::Unsupported(format!(
+                    "problem {i}: enumeration visits 2^n bases and is limited to n ≤ {MAX_ENUMERATION_N} (this problem has n = {}); use Lemke",
+                    l.n()
+                )));
             }
         }
-        let mut r = self.checked_report(islands, Vec::new());
-        r.timings.solve = t.elapsed().as_secs_f64();
-        Ok(r)
     }
+    let mut r = solver.report(islands, Vec::new(), solver.cpu_device());
+    r.timings.solve = t.elapsed().as_secs_f64();
+    Ok(r)
+}
 
-    /// The CPU path for checked scenes, from what was built of them: every
-    /// island of every scene over the cores. `warm`: per scene, per island,
-    /// the warm basis (empty: none).
-    pub(super) fn scenes_on_cpu(
-        &self,
-        scenes: &[&Scene],
-        built: &[Built],
-        warm: &[Vec<Option<u32>>],
-    ) -> Result<Report, Error> {
-        self.scenes_with(scenes, built, |index, lcps| {
-            Ok(parallel_map(index.len(), self.threads, |j| {
-                let (s, k) = index[j];
-                let w = warm.get(s).and_then(|w| w[k]);
-                solve_on_cpu(lcps[j], w, &self.settings)
-            }))
-        })
-    }
+/// The CPU path for checked scenes, from what was built of them: every
+/// island of every scene over the cores. `warm`: per scene, per island,
+/// the warm basis (empty: none).
+pub(super) fn scenes_on_cpu(
+    solver: &SolverView,
+    scenes: &[&Scene],
+    built: &[Built],
+    warm: &[Vec<Option<u32>>],
+) -> Result<Report, Error> {
+    scenes_with(solver, scenes, built, |index, lcps| {
+        Ok(parallel_map(index.len(), solver.threads, |j| {
+            let (s, k) = index[j];
+            let w = warm.get(s).and_then(|w| w[k]);
+            solve_on_cpu(lcps[j], w, solver.settings)
+        }))
+    })
+}
 
-    /// Checked scenes, from what was built of them, in phases: solve
-    /// (`solve` gets every island of every scene, flattened, as (scene,
-    /// island) and its LCP, and returns one result per island, in order),
-    /// impulses. The report's device is the solver's.
-    pub(super) fn scenes_with(
-        &self,
-        scenes: &[&Scene],
-        built: &[Built],
-        solve: impl FnOnce(&[(usize, usize)], &[&Lcp]) -> Result<Vec<Solved>, Error>,
-    ) -> Result<Report, Error> {
-        let t = Instant::now();
-        // Every island of every scene, flattened: (scene, island).
-        let index: Vec<(usize, usize)> = built
-            .iter()
-            .enumerate()
-            .flat_map(|(s, b)| (0..b.lcps.len()).map(move |k| (s, k)))
-            .collect();
-        let lcps: Vec<&Lcp> = index.iter().map(|&(s, k)| &built[s].lcps[k]).collect();
-        let solved = solve(&index, &lcps)?;
-        let solve = t.elapsed().as_secs_f64();
-        let t = Instant::now();
-        let mut islands = Vec::with_capacity(index.len());
-        let mut out = Vec::with_capacity(scenes.len());
-        let mut solved = solved.into_iter();
-        for (s, (scene, b)) in scenes.iter().zip(built).enumerate() {
-            let first = islands.len();
-            let mut impulses = vec![0.0; scene.contacts.len()];
-            for island in &b.islands {
-                let (method, path, solution) = solved.next().expect("one result per island");
-                for (&c, &zi) in island.contacts.iter().zip(&solution.z) {
-                    impulses[c] = zi;
-                }
-                islands.push(IslandReport {
-                    scene: Some(s),
-                    contacts: island.contacts.iter().copied().collect(),
-                    method,
-                    path,
-                    solution,
-                });
+/// Checked scenes, from what was built of them, in phases: solve
+/// (`solve` gets every island of every scene, flattened, as (scene,
+/// island) and its LCP, and returns one result per island, in order),
+/// impulses. The report's device is the CPU.
+pub(super) fn scenes_with(
+    solver: &SolverView,
+    scenes: &[&Scene],
+    built: &[Built],
+    solve: impl FnOnce(&[(usize, usize)], &[&Lcp]) -> Result<Vec<Solved>, Error>,
+) -> Result<Report, Error> {
+    let t = Instant::now();
+    // Every island of every scene, flattened: (scene, island).
+    let index: Vec<(usize, usize)> = built
+        .iter()
+        .enumerate()
+        .flat_map(|(s, b)| (0..b.lcps.len()).map(move |k| (s, k)))
+        .collect();
+    let lcps: Vec<&Lcp> = index.iter().map(|&(s, k)| &built[s].lcps[k]).collect();
+    let solved = solve(&index, &lcps)?;
+    let solve = t.elapsed().as_secs_f64();
+    let t = Instant::now();
+    let mut islands = Vec::with_capacity(index.len());
+    let mut out = Vec::with_capacity(scenes.len());
+    let mut solved = solved.into_iter();
+    for (s, (scene, b)) in scenes.iter().zip(built).enumerate() {
+        let first = islands.len();
+        let mut impulses = vec![0.0; scene.contacts.len()];
+        for island in &b.islands {
+            let (method, path, solution) = solved.next().expect("one result per island");
+            for (&c, &zi) in island.contacts.iter().zip(&solution.z) {
+                impulses[c] = zi;
             }
-            let bodies = apply_impulses(scene, &b.rows, &impulses);
-            out.push(SceneReport {
-                impulses,
-                bodies,
-                islands: first..islands.len(),
-                friction: None,
+            islands.push(IslandReport {
+                scene: Some(s),
+                contacts: island.contacts.iter().copied().collect(),
+                method,
+                path,
+                solution,
             });
         }
-        let mut report = self.cpu_report(islands, out);
-        report.timings.solve = solve;
-        report.timings.impulses = t.elapsed().as_secs_f64();
-        Ok(report)
+        let bodies = apply_impulses(scene, &b.rows, &impulses);
+        out.push(SceneReport {
+            impulses,
+            bodies,
+            islands: first..islands.len(),
+            friction: None,
+        });
     }
+    check(&mut islands, solver.settings.tolerance);
+    let mut report = solver.report(islands, out, solver.cpu_device());
+    report.timings.solve = solve;
+    report.timings.impulses = t.elapsed().as_secs_f64();
+    Ok(report)
+}
 
-    fn cpu_report(&self, mut islands: Vec<IslandReport>, scenes: Vec<SceneReport>) -> Report {
-        self.check(&mut islands);
-        self.checked_report(islands, scenes)
+/// The final check of every island, on every backend and method
+/// ([`check_solution`] on each answer).
+pub(super) fn check(islands: &mut [IslandReport], tolerance: f64) {
+    for isl in islands {
+        check_solution(&mut isl.solution, tolerance);
     }
+}
 
-    /// The report of islands already through [`check_solution`].
-    fn checked_report(&self, islands: Vec<IslandReport>, scenes: Vec<SceneReport>) -> Report {
-        let mut r = Report::new(islands, scenes, self.cpu_device(), self.choice.clone());
-        r.fallback = self.fallback.clone();
-        r
+/// The final check of one answer: a solution whose z, w or error is not
+/// finite, or whose error is above `tolerance` (`settings.tolerance`),
+/// becomes `numerical_failure`.
+pub(crate) fn check_solution(s: &mut crate::LcpSolution, tolerance: f64) {
+    if s.status.is_solution() && !s.passes_check(tolerance) {
+        s.status = crate::Status::NumericalFailure;
     }
 }
 
@@ -277,7 +285,7 @@ pub(crate) fn lemke_else_enumerate(
 /// tolerances (the check every GPU answer goes through: feasible, M_SS not
 /// singular); the solution is the re-solve's. Where that basis (and the
 /// bases of its answer's support) fail the check, Lemke's own answer is
-/// taken when the door's final check passes it.
+/// taken when the final check ([`check_solution`]) passes it.
 /// Written into `out` (true); false when Lemke did not end on a solution
 /// or none passes (`out` then holds no answer: a refused one, or what it
 /// held); `pivots`: the pivots spent.
@@ -313,7 +321,7 @@ fn lemke_checked(
     {
         return true;
     }
-    // Lemke's own answer where the door's final check passes it (z, w
+    // Lemke's own answer where the final check passes it (z, w
     // finite, the error recomputed from M and q in f64 within the
     // tolerance). On a degenerate island every basis through it can be
     // singular or ill-conditioned to the basis check (a resting 4-box

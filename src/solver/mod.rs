@@ -1,4 +1,4 @@
-//! The one door: [`Solver::new`] once, then [`Solver::solve_lcps`] or
+//! The solver: [`Solver::new`] once, then [`Solver::solve_lcps`] or
 //! [`Solver::solve_scenes`] as often as needed, each returning a [`Report`].
 //!
 //! The solver owns the device, its pipelines and buffers (opened once, in
@@ -31,9 +31,11 @@ use std::time::Instant;
 
 mod cost;
 mod cpu_path;
-pub(crate) use cpu_path::{lemke_else_enumerate, textbook_checked};
+mod device;
+pub(crate) use cpu_path::{check_solution, lemke_else_enumerate, textbook_checked};
 mod friction_path;
 mod gpu_path;
+mod view;
 mod world_cpu;
 mod world_friction;
 pub mod world_path;
@@ -45,13 +47,16 @@ pub use cost::{cache_dir, CostModel, CALIBRATION_SIZES};
 
 use crate::build::Built;
 use crate::cpu::batch::parallel_map;
-use crate::gpu::{self, GpuContext, Precision};
+use crate::friction::FrictionProblem;
+use crate::gpu::GpuContext;
 use crate::lcp::Lcp;
-use crate::report::{Device, DeviceKind, IslandReport, Report};
+use crate::report::{Device, IslandReport, Report};
 use crate::scene::Scene;
 use crate::settings::{Backend, Settings};
 use crate::warm::{basis_entries, Warm, SHARDS};
 use crate::Error;
+use device::cpu_device;
+use view::SolverView;
 
 /// A contact solver built once from [`Settings`]; see the module docs.
 ///
@@ -137,48 +142,10 @@ impl Solver {
     }
 
     fn choose_device(&mut self) -> Result<(), Error> {
-        let s = &self.settings;
-        let gpu_wanted = match s.backend {
-            Backend::Cpu => {
-                self.choice = "backend cpu".into();
-                false
-            }
-            Backend::Gpu => {
-                self.choice = "backend gpu".into();
-                true
-            }
-            Backend::Auto if !s.gpu_capable() => {
-                self.choice = format!("backend auto: {} runs on the CPU only", s.method.name());
-                false
-            }
-            Backend::Auto if s.gpu.adapter.is_some() => {
-                self.choice = "backend auto: adapter named".into();
-                true
-            }
-            Backend::Auto => {
-                let adapters = gpu::list_adapters(s.gpu.api);
-                let hardware = adapters.iter().find(|a| !a.software);
-                match (hardware, adapters.first()) {
-                    (Some(a), _) => {
-                        self.choice = format!("backend auto: hardware adapter {}", a.name);
-                        true
-                    }
-                    (None, Some(a)) => {
-                        self.choice = format!(
-                            "backend auto: the only adapters are software ({}), slower than the CPU path; name one or ask for backend gpu to use it",
-                            a.name
-                        );
-                        false
-                    }
-                    (None, None) => {
-                        self.choice = "backend auto: no GPU adapter".into();
-                        false
-                    }
-                }
-            }
-        };
+        let gpu_wanted;
+        (gpu_wanted, self.choice) = device::choose(&self.settings);
         if gpu_wanted {
-            match GpuContext::new(&s.gpu.options()) {
+            match GpuContext::new(&self.settings.gpu.options()) {
                 Ok(ctx) => self.gpu = Some(Arc::new(ctx)),
                 Err(Error::Gpu(why)) => self.fall_back(why),
                 Err(e) => return Err(e),
@@ -191,7 +158,7 @@ impl Solver {
     /// else the cached one, else a calibration (cached). Device trouble
     /// during the calibration falls back to the CPU.
     fn load_cost_model(&mut self) {
-        let device = self.cost_key();
+        let device = cost::cost_key(self.gpu.as_deref());
         let dir = cost::cache_dir();
         let model = self.settings.cost_model.clone().or_else(|| {
             dir.as_deref()
@@ -222,26 +189,16 @@ impl Solver {
         self.cost.as_ref()
     }
 
-    /// Whether the next batch of islands of `sizes` goes to the GPU, and
-    /// why in words for the report (without a cost model: wherever a GPU
-    /// is open).
-    fn gpu_for(&self, sizes: impl Iterator<Item = usize>) -> (bool, String) {
-        match (&self.gpu, &self.cost) {
-            (None, _) => (false, self.choice.clone()),
-            (Some(_), None) => (true, self.choice.clone()),
-            (Some(_), Some(m)) => {
-                let (cpu, gpu) = m.estimate(sizes);
-                let on_gpu = gpu < cpu;
-                let why = format!(
-                    "{}; cost model: CPU {:.3} ms, GPU {:.3} ms estimated → {}",
-                    self.choice,
-                    cpu * 1e3,
-                    gpu * 1e3,
-                    if on_gpu { "GPU" } else { "CPU" }
-                );
-                (on_gpu, why)
-            }
-        }
+    /// Measures this solver's CPU and GPU paths by island size (see
+    /// [`CostModel`]); needs a GPU open.
+    ///
+    /// # Errors
+    /// [`Error::Gpu`] without a GPU open or on device trouble.
+    pub fn calibrate(&mut self) -> Result<CostModel, Error> {
+        let Some(ctx) = self.gpu.clone() else {
+            return Err(Error::Gpu("calibration needs a GPU".into()));
+        };
+        cost::calibrate(&self.view(), &ctx)
     }
 
     /// The settings it was built with.
@@ -255,25 +212,25 @@ impl Solver {
     pub fn device(&self) -> Device {
         match self.gpu.as_deref() {
             Some(ctx) => Device::of(ctx),
-            None => self.cpu_device(),
+            None => cpu_device(self.threads),
+        }
+    }
+
+    /// What the phases read of this solver (see [`SolverView`]).
+    fn view(&self) -> SolverView<'_> {
+        SolverView {
+            settings: &self.settings,
+            threads: self.threads,
+            warm: &self.warm,
+            choice: &self.choice,
+            fallback: self.fallback.as_deref(),
         }
     }
 
     /// A report of no islands on `device`, with this solver's choice and
     /// fallback reason.
-    pub(super) fn empty_report(&self, device: Device) -> Report {
-        let mut r = Report::new(Vec::new(), Vec::new(), device, self.choice.clone());
-        r.fallback = self.fallback.clone();
-        r
-    }
-
-    /// The CPU path as a device.
-    pub(super) fn cpu_device(&self) -> Device {
-        Device {
-            kind: DeviceKind::Cpu,
-            name: format!("cpu ({} thread(s), f64)", self.threads),
-            precision: Precision::F64,
-        }
+    fn empty_report(&self, device: Device) -> Report {
+        self.view().report(Vec::new(), Vec::new(), device)
     }
 
     /// Why this device: the backend asked for and what was found.
@@ -321,6 +278,22 @@ impl Solver {
         }
     }
 
+    /// What a GPU phase gave (None: it did not run): its answer, or None
+    /// after device trouble ([`Error::Gpu`]: the device is dropped, see
+    /// [`Self::fall_back`], and the CPU takes the batch). The caller's
+    /// errors stay errors.
+    fn gpu_outcome<T>(&mut self, on_gpu: Option<Result<T, Error>>) -> Result<Option<T>, Error> {
+        match on_gpu {
+            Some(Ok(r)) => Ok(Some(r)),
+            Some(Err(Error::Gpu(why))) => {
+                self.fall_back(why);
+                Ok(None)
+            }
+            Some(Err(e)) => Err(e),
+            None => Ok(None),
+        }
+    }
+
     /// Solves a batch of LCPs, in the caller's order. Every problem is
     /// checked first (an error names the first bad one). Enumeration on the
     /// CPU backend refuses n > 20 (an error naming the problem); after device
@@ -343,48 +316,65 @@ impl Solver {
     /// Those of [`Solver::solve_lcps`], and [`Error::Invalid`] where `ids`
     /// has not one entry per problem or per row.
     pub fn solve_lcps_keyed(&mut self, lcps: &[Lcp], ids: &[Vec<u64>]) -> Result<Report, Error> {
-        if ids.len() != lcps.len() {
-            return Err(Error::invalid(
-                "ids",
-                "len",
-                format!("{} id lists for {} problems", ids.len(), lcps.len()),
-            ));
-        }
-        for (i, (l, k)) in lcps.iter().zip(ids).enumerate() {
-            if k.len() != l.n() {
-                return Err(Error::invalid(
-                    format!("problem {i}"),
-                    "ids",
-                    format!("{} ids for n = {}", k.len(), l.n()),
-                ));
-            }
-        }
+        check_ids(ids, lcps.iter().map(Lcp::n), |n| format!("n = {n}"))?;
         let keys: Vec<&[u64]> = ids.iter().map(Vec::as_slice).collect();
         self.solve_lcps_warm(lcps, Some(&keys))
     }
 
+    /// Solves a batch of frictional problems, in the caller's order, on the
+    /// CPU in f64 over every core with `settings.friction_method`; the
+    /// results are in [`Report::friction`]. Every problem is checked first
+    /// (an error names the first bad one and its field).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming the first bad problem and its field.
+    pub fn solve_friction(&mut self, problems: &[FrictionProblem]) -> Result<Report, Error> {
+        self.solve_friction_warm(problems, None)
+    }
+
+    /// [`Solver::solve_friction`] with the caller's contact ids, one per
+    /// contact of each problem (`ids[i].len() == problems[i].contacts()`),
+    /// stable across calls: with `settings.warm_start` each contact starts
+    /// from its reaction of the last call.
+    ///
+    /// # Errors
+    /// Those of [`Solver::solve_friction`], and [`Error::Invalid`] where
+    /// `ids` has not one entry per problem or per contact.
+    pub fn solve_friction_keyed(
+        &mut self,
+        problems: &[FrictionProblem],
+        ids: &[Vec<u64>],
+    ) -> Result<Report, Error> {
+        let contacts = problems.iter().map(FrictionProblem::contacts);
+        check_ids(ids, contacts, |k| format!("{k} contacts"))?;
+        let keys: Vec<Vec<Option<u64>>> = ids
+            .iter()
+            .map(|k| k.iter().copied().map(Some).collect())
+            .collect();
+        self.solve_friction_warm(problems, Some(&keys))
+    }
+
     fn solve_lcps_warm(&mut self, lcps: &[Lcp], keys: Option<&[&[u64]]>) -> Result<Report, Error> {
         let start = Instant::now();
-        let mut report = None;
-        let (use_gpu, why) = self.gpu_for(lcps.iter().map(Lcp::n));
-        if let Some(ctx) = self.gpu.clone().filter(|_| use_gpu) {
-            let on_gpu = if self.settings.all_solutions {
-                self.all_solutions_lcps_on_gpu(&ctx, lcps)
+        let (use_gpu, why) = device::gpu_for(
+            self.gpu.is_some(),
+            self.cost.as_ref(),
+            &self.choice,
+            lcps.iter().map(Lcp::n),
+        );
+        let on_gpu = self.gpu.clone().filter(|_| use_gpu).map(|ctx| {
+            if self.settings.all_solutions {
+                gpu_path::all_solutions_lcps_on_gpu(&self.view(), &ctx, lcps)
             } else {
                 let keys = keys.filter(|_| self.settings.warm_start);
-                self.lcps_on_gpu(&ctx, lcps, keys)
-            };
-            match on_gpu {
-                Ok(r) => report = Some(r),
-                Err(Error::Gpu(why)) => self.fall_back(why),
-                Err(e) => return Err(e),
+                gpu_path::lcps_on_gpu(&self.view(), &ctx, lcps, keys)
             }
-        }
+        });
         // Both paths check each problem and look up its warm basis on the
         // threads that solve it.
-        let mut report = match report {
+        let mut report = match self.gpu_outcome(on_gpu)? {
             Some(r) => r,
-            None => self.lcps_on_cpu(lcps, keys)?,
+            None => cpu_path::lcps_on_cpu(&self.view(), lcps, keys)?,
         };
         if self.cost.is_some() {
             report.choice = why;
@@ -448,37 +438,33 @@ impl Solver {
         let build = t.elapsed().as_secs_f64();
         // Per scene, per island: the warm basis of its contacts' ids (on
         // every thread: the ids are gathered per island).
+        let view = self.view();
         let warm: Vec<Vec<Option<u32>>> = if self.settings.warm_start {
             parallel_map(scenes.len(), self.threads, |s| {
                 built[s]
                     .islands
                     .iter()
-                    .map(|isl| self.warm_basis(&contact_ids(scenes[s], &isl.contacts)))
+                    .map(|isl| view.warm_basis(&contact_ids(scenes[s], &isl.contacts)))
                     .collect()
             })
         } else {
             Vec::new()
         };
-        let mut report = None;
         let sizes = built
             .iter()
             .flat_map(|b| b.islands.iter().map(|i| i.contacts.len()));
-        let (use_gpu, why) = self.gpu_for(sizes);
-        if let Some(ctx) = self.gpu.clone().filter(|_| use_gpu) {
-            let on_gpu = if self.settings.all_solutions {
-                self.all_solutions_scenes_on_gpu(&ctx, scenes, &built)
+        let (use_gpu, why) =
+            device::gpu_for(self.gpu.is_some(), self.cost.as_ref(), &self.choice, sizes);
+        let on_gpu = self.gpu.clone().filter(|_| use_gpu).map(|ctx| {
+            if self.settings.all_solutions {
+                gpu_path::all_solutions_scenes_on_gpu(&self.view(), &ctx, scenes, &built)
             } else {
-                self.scenes_on_gpu(&ctx, scenes, &built, &warm)
-            };
-            match on_gpu {
-                Ok(r) => report = Some(r),
-                Err(Error::Gpu(why)) => self.fall_back(why),
-                Err(e) => return Err(e),
+                gpu_path::scenes_on_gpu(&self.view(), &ctx, scenes, &built, &warm)
             }
-        }
-        let mut report = match report {
+        });
+        let mut report = match self.gpu_outcome(on_gpu)? {
             Some(r) => r,
-            None => self.scenes_on_cpu(scenes, &built, &warm)?,
+            None => cpu_path::scenes_on_cpu(&self.view(), scenes, &built, &warm)?,
         };
         report.timings.build = build;
         if self.cost.is_some() {
@@ -496,17 +482,145 @@ impl Solver {
         Ok(report)
     }
 
-    /// The final check of every island, on every backend and method: a
-    /// solution whose z, w or error is not finite, or whose error is above
-    /// `settings.tolerance`, becomes `numerical_failure`.
-    pub(super) fn check(&self, islands: &mut [IslandReport]) {
-        for isl in islands {
-            check_solution(&mut isl.solution, self.settings.tolerance);
-        }
+    /// Checked scenes, some with friction: those without go through the LCP
+    /// path (GPU or CPU), those with friction through the friction path; the
+    /// two reports merged in the scenes' order.
+    fn scenes_with_friction(&mut self, scenes: &[Scene]) -> Result<Report, Error> {
+        let with: Vec<bool> = scenes.iter().map(Scene::has_friction).collect();
+        let pick =
+            |f: bool| -> Vec<&Scene> { scenes.iter().filter(|s| s.has_friction() == f).collect() };
+        let plain = pick(false);
+        let mut report = match plain.is_empty() {
+            true => self.empty_report(self.device()),
+            false => self.frictionless_scenes(&plain)?,
+        };
+        let device = report.device.clone();
+        let mut friction = Report::new(Vec::new(), Vec::new(), device, report.choice.clone());
+        self.friction_scenes(&pick(true), &mut friction)?;
+        report.merge_scenes(friction, &with);
+        Ok(report)
     }
 
-    fn warm_basis(&self, ids: &[u64]) -> Option<u32> {
-        warm_basis(&self.settings, &self.warm, ids)
+    /// The friction path for checked scenes with friction, in phases (added
+    /// to `report.timings`): build (islands and the f64 assembly on the
+    /// CPU, the oracle), solve (on the GPU where
+    /// [`friction_path::friction_on_gpu`] says so, see
+    /// [`friction_path::islands_on_gpu`]; else every island over the
+    /// cores), impulses; the reactions remembered. `report` (empty) gets
+    /// the scenes and their frictional islands (scene indices into
+    /// `scenes`); its choice gains where the friction went, its counts and
+    /// GPU figures what the GPU did.
+    fn friction_scenes(&mut self, scenes: &[&Scene], report: &mut Report) -> Result<(), Error> {
+        let t = Instant::now();
+        let mut built = friction_path::build(scenes, self.threads);
+        report.timings.build += t.elapsed().as_secs_f64();
+        let t = Instant::now();
+        let (problems, warm) = friction_path::island_starts(&self.view(), scenes, &mut built);
+        let settings = self.settings.friction();
+        let (use_gpu, mut went) = friction_path::friction_on_gpu(
+            self.gpu.is_some(),
+            self.cost.is_some(),
+            settings.method,
+        );
+        let on_gpu = (self.gpu.clone())
+            .filter(|_| use_gpu && !problems.is_empty())
+            .map(|ctx| {
+                friction_path::islands_on_gpu(
+                    &ctx,
+                    &self.settings,
+                    scenes,
+                    &built,
+                    &problems,
+                    &warm,
+                )
+            });
+        let tried = on_gpu.is_some();
+        let solved = match self.gpu_outcome(on_gpu)? {
+            Some((solutions, figures, assembly)) => {
+                let origin = friction_path::origin_counts(&figures);
+                went = format!("{went}, {assembly}, {origin}");
+                friction_path::add_gpu_figures(report, &figures);
+                report.device = self.device();
+                solutions
+            }
+            None => {
+                if tried {
+                    report.fallback = self.fallback.clone();
+                    went = format!("{} on the CPU (the GPU failed)", settings.method.name());
+                }
+                friction_path::solve_on_cpu(&problems, &warm, &settings, self.threads)
+            }
+        };
+        report.choice = format!("{}; friction: {went}", report.choice);
+        report.timings.solve += t.elapsed().as_secs_f64();
+        let t = Instant::now();
+        let (scene_reports, islands) =
+            friction_path::scene_reports(scenes, built, solved, &warm, self.threads);
+        report.timings.impulses += t.elapsed().as_secs_f64();
+        if self.settings.warm_start {
+            friction_path::remember_islands(&mut self.warm, scenes, &islands);
+        }
+        report.scenes = scene_reports;
+        report.set_friction(islands);
+        Ok(())
+    }
+
+    /// A batch of frictional problems (keyed: `keys`, their contacts' ids)
+    /// in phases: the checks, the starts, the solve (on the GPU where
+    /// [`friction_path::friction_on_gpu`] says so, else over the cores),
+    /// the reports; the reactions remembered.
+    fn solve_friction_warm(
+        &mut self,
+        problems: &[FrictionProblem],
+        keys: Option<&[Vec<Option<u64>>]>,
+    ) -> Result<Report, Error> {
+        let start = Instant::now();
+        for (i, p) in problems.iter().enumerate() {
+            if p.validate("problem").is_err() {
+                p.validate(&format!("problem {i}"))?;
+            }
+        }
+        let warm = friction_path::problem_starts(&self.view(), keys, problems.len());
+        let s = self.settings.friction();
+        // The projected methods run on the GPU where one is open (every
+        // answer checked in f64 there); the exact Coulomb methods on the CPU.
+        let (use_gpu, went) =
+            friction_path::friction_on_gpu(self.gpu.is_some(), self.cost.is_some(), s.method);
+        let on_gpu = (self.gpu.clone()).filter(|_| use_gpu).map(|ctx| {
+            friction_path::problems_on_gpu(&ctx, problems, &warm, &s, &self.settings.gpu)
+        });
+        let (solved, figures) = match self.gpu_outcome(on_gpu)? {
+            Some((solved, figures)) => (solved, Some(figures)),
+            None => {
+                let cpu = friction_path::solve_on_cpu(problems, &warm, &s, self.threads);
+                (cpu, None)
+            }
+        };
+        let islands = friction_path::problem_reports(problems, solved, &warm);
+        if let (Some(keys), true) = (keys, self.settings.warm_start) {
+            friction_path::remember_problems(&mut self.warm, keys, &islands);
+        }
+        let device = match figures {
+            Some(_) => self.device(),
+            None => cpu_device(self.threads),
+        };
+        let choice = match (&figures, self.fallback.is_some() && use_gpu) {
+            (Some(f), _) => {
+                let origin = friction_path::origin_counts(f);
+                format!("{}; friction: {went}, {origin}", self.choice)
+            }
+            (None, true) => format!("{}; friction: on the CPU (the GPU failed)", self.choice),
+            (None, false) => format!("{}; friction: {went}", self.choice),
+        };
+        let mut report = self.empty_report(device);
+        report.choice = choice;
+        report.timings.solve = start.elapsed().as_secs_f64();
+        if let Some(f) = figures {
+            friction_path::add_gpu_figures(&mut report, &f);
+        }
+        report.set_friction(islands);
+        report.timings.total = start.elapsed().as_secs_f64();
+        Ok(report)
     }
 
     /// Records each island's basis under its contact ids.
@@ -527,22 +641,30 @@ impl Solver {
     }
 }
 
-/// The check of [`Solver::check`] on one answer: a solution whose z, w or
-/// error is not finite, or whose error is above `tolerance`, becomes
-/// `numerical_failure`.
-pub(crate) fn check_solution(s: &mut crate::LcpSolution, tolerance: f64) {
-    if s.status.is_solution() && !s.passes_check(tolerance) {
-        s.status = crate::Status::NumericalFailure;
+/// The caller's contact ids of a keyed call: one list per problem, one id
+/// per row or contact of it (`sizes`; `per` names a size in the error).
+fn check_ids(
+    ids: &[Vec<u64>],
+    sizes: impl ExactSizeIterator<Item = usize>,
+    per: impl Fn(usize) -> String,
+) -> Result<(), Error> {
+    if ids.len() != sizes.len() {
+        return Err(Error::invalid(
+            "ids",
+            "len",
+            format!("{} id lists for {} problems", ids.len(), sizes.len()),
+        ));
     }
-}
-
-/// The warm basis remembered for an island's contact ids (None without
-/// `settings.warm_start` or without ids).
-pub(super) fn warm_basis(settings: &Settings, memory: &Warm, ids: &[u64]) -> Option<u32> {
-    if !settings.warm_start || ids.is_empty() {
-        return None;
+    for (i, (n, k)) in sizes.zip(ids).enumerate() {
+        if k.len() != n {
+            return Err(Error::invalid(
+                format!("problem {i}"),
+                "ids",
+                format!("{} ids for {}", k.len(), per(n)),
+            ));
+        }
     }
-    memory.bases.basis(ids.iter().map(|&id| Some(id)))
+    Ok(())
 }
 
 /// The caller's ids of an island's contacts; empty when one has none (such

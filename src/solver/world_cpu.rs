@@ -1,19 +1,19 @@
-//! Pass 2 of a world step ([`Solver::step_worlds`]) for one world: a
-//! frictionless world is solved here on the CPU ([`Solver::step_world_on_cpu`]),
-//! a world of the batch solved through the door gets its repairs
-//! ([`Solver::finish_batch_world`]); then its velocities, poses and
+//! Pass 2 of a world step ([`Solver::step_worlds`](super::Solver::step_worlds))
+//! for one world: a frictionless world is solved here on the CPU
+//! ([`step_world_on_cpu`]), a world of the batch solved by
+//! [`Solver::solve_built_scenes`](super::Solver::solve_built_scenes) gets
+//! its repairs ([`finish_batch_world`]); then its velocities, poses and
 //! figures. Also the pass's parallel loop over the worlds
 //! ([`parallel_map_mut`]). Each world is warm-started from its own memory
 //! ([`crate::warm::Warm`], one shard).
 
 use std::time::Instant;
 
-use super::cpu_path::{solve_on_cpu, Solved};
+use super::cpu_path::{check, solve_on_cpu, Solved};
+use super::ids_of;
 use super::world_friction::repair_unsolved;
-use super::world_path::Solved as Results;
-use super::world_path::{max_error, Item, Stepped, WorldStepReport};
+use super::world_path::{max_error, SceneResults, Stepped, WorldStep, WorldStepReport};
 use super::world_repair::{repair_island, Repairs};
-use super::{ids_of, Solver};
 use crate::build::Built;
 use crate::cpu::batch::parallel_fill_by;
 use crate::cpu::enumeration::{solve_basis, BasisOutcome, MAX_ENUMERATION_N};
@@ -23,8 +23,7 @@ use crate::report::{IslandReport, Report, SceneReport, SolvePath};
 use crate::scene::Scene;
 use crate::settings::{Method, Settings};
 use crate::warm::basis_entries;
-use crate::world::step::{finish, Prepared};
-use crate::world::World;
+use crate::world::step::finish;
 
 /// Worlds handed to a thread at a time: few, so that the threads end a
 /// pass together (a 4-box stack's step with friction is about 25 µs).
@@ -45,160 +44,145 @@ pub(super) fn parallel_map_mut<T: Send, R: Send>(
         .collect()
 }
 
-impl Solver {
-    /// Pass 2 for a frictionless world on the CPU: islands (once), assembly,
-    /// warm hints from its own memory, the door's per-island solve and
-    /// check, repairs, impulses, integration. `fix`: the repair settings.
-    pub(super) fn step_world_on_cpu(
-        &self,
-        index: usize,
-        item: &mut Item,
-        dt: f64,
-        fix: &Settings,
-    ) -> Stepped {
-        let t0 = Instant::now();
-        let scene = &item.prepared.scene;
-        let Built {
-            islands,
-            rows,
-            lcps,
-        } = Built::new(scene);
-        let warm = self.settings.warm_start;
-        let hints: Vec<Option<u32>> = islands
-            .iter()
-            .map(|isl| {
-                let memory = &item.warm.bases;
-                warm.then(|| memory.basis(ids_of(scene, &isl.contacts)))
-                    .flatten()
-            })
-            .collect();
-        let t1 = Instant::now();
-        let mut reports: Vec<IslandReport> = islands
-            .into_iter()
-            .zip(lcps.iter().zip(&hints))
-            .map(|(isl, (lcp, &hint))| {
-                let (method, path, solution) = hint
-                    .and_then(|h| warm_settle(lcp, h, &self.settings))
-                    .unwrap_or_else(|| solve_on_cpu(lcp, None, &self.settings));
-                IslandReport {
-                    scene: Some(index),
-                    contacts: isl.contacts.into(),
-                    method,
-                    path,
-                    solution,
-                }
-            })
-            .collect();
-        self.check(&mut reports);
-        let t2 = Instant::now();
-        let mut impulses = vec![0.0; scene.contacts.len()];
-        let mut repairs = Repairs::default();
-        for (isl, lcp) in reports.iter().zip(&lcps) {
-            let repaired;
-            let z = if isl.status().is_solution() {
-                &isl.solution.z[..]
-            } else {
-                let (r, z) = repair_island(lcp, fix);
-                repairs.add(r);
-                repaired = z;
-                &repaired[..]
-            };
-            for (&c, &zi) in isl.contacts.iter().zip(z) {
-                impulses[c] = zi;
+/// Pass 2 for a frictionless world on the CPU: islands (once), assembly,
+/// warm hints from its own memory, `solve_scenes`' per-island solve and
+/// check, repairs, impulses, integration. `fix`: the repair settings.
+pub(super) fn step_world_on_cpu(
+    settings: &Settings,
+    index: usize,
+    item: &mut WorldStep,
+    dt: f64,
+    fix: &Settings,
+) -> Stepped {
+    let t0 = Instant::now();
+    let scene = &item.prepared.scene;
+    let Built {
+        islands,
+        rows,
+        lcps,
+    } = Built::new(scene);
+    let warm = settings.warm_start;
+    let hints: Vec<Option<u32>> = islands
+        .iter()
+        .map(|isl| {
+            let memory = &item.warm.bases;
+            warm.then(|| memory.basis(ids_of(scene, &isl.contacts)))
+                .flatten()
+        })
+        .collect();
+    let t1 = Instant::now();
+    let mut reports: Vec<IslandReport> = islands
+        .into_iter()
+        .zip(lcps.iter().zip(&hints))
+        .map(|(isl, (lcp, &hint))| {
+            let (method, path, solution) = hint
+                .and_then(|h| warm_settle(lcp, h, settings))
+                .unwrap_or_else(|| solve_on_cpu(lcp, None, settings));
+            IslandReport {
+                scene: Some(index),
+                contacts: isl.contacts.into(),
+                method,
+                path,
+                solution,
             }
-        }
-        let bodies = apply_impulses(scene, &rows, &impulses);
-        if warm {
-            let solved = reports.iter().filter(|i| i.status().is_solution());
-            let with_basis =
-                solved.filter_map(|i| Some((ids_of(scene, &i.contacts), i.solution.basis?)));
-            let entries = with_basis.flat_map(|(ids, basis)| basis_entries(ids, basis));
-            item.warm.bases.record(entries);
-        }
-        let t3 = Instant::now();
-        finish(item.world, &item.prepared, &bodies, dt);
-        let error = max_error(reports.iter(), std::iter::empty());
-        let world = figures(
-            item.world,
-            &item.prepared,
-            reports.len(),
-            error,
-            repairs.total(),
-        );
-        let t4 = Instant::now();
-        Stepped {
-            solved: Results::Own(SceneReport {
-                impulses,
-                bodies,
-                islands: 0..0,
-                friction: None,
-            }),
-            islands: reports,
-            friction: Vec::new(),
-            world,
-            times: [t1 - t0, t2 - t1, t3 - t2, t4 - t3].map(|d| d.as_secs_f64()),
-            repairs,
+        })
+        .collect();
+    check(&mut reports, settings.tolerance);
+    let t2 = Instant::now();
+    let mut impulses = vec![0.0; scene.contacts.len()];
+    let mut repairs = Repairs::default();
+    for (isl, lcp) in reports.iter().zip(&lcps) {
+        let repaired;
+        let z = if isl.status().is_solution() {
+            &isl.solution.z[..]
+        } else {
+            let (r, z) = repair_island(lcp, fix);
+            repairs.add(r);
+            repaired = z;
+            &repaired[..]
+        };
+        for (&c, &zi) in isl.contacts.iter().zip(z) {
+            impulses[c] = zi;
         }
     }
+    let bodies = apply_impulses(scene, &rows, &impulses);
+    if warm {
+        let solved = reports.iter().filter(|i| i.status().is_solution());
+        let with_basis =
+            solved.filter_map(|i| Some((ids_of(scene, &i.contacts), i.solution.basis?)));
+        let entries = with_basis.flat_map(|(ids, basis)| basis_entries(ids, basis));
+        item.warm.bases.record(entries);
+    }
+    let t3 = Instant::now();
+    let error = max_error(reports.iter(), std::iter::empty());
+    let world = finish_world(item, &bodies, dt, reports.len(), error, repairs.total());
+    let t4 = Instant::now();
+    Stepped {
+        solved: SceneResults::Own(SceneReport {
+            impulses,
+            bodies,
+            islands: 0..0,
+            friction: None,
+        }),
+        islands: reports,
+        friction: Vec::new(),
+        world,
+        times: [t1 - t0, t2 - t1, t3 - t2, t4 - t3].map(|d| d.as_secs_f64()),
+        repairs,
+    }
+}
 
-    /// Pass 2 for a world of the batch solved through the door (`batch`:
-    /// its scene, its index in the batch, the batch's report): repairs of
-    /// its unsolved islands (LCP or frictional), integration.
-    pub(super) fn finish_batch_world(
-        &self,
-        item: &mut Item,
-        batch: (&Scene, usize, &Report),
-        dt: f64,
-        fix: &Settings,
-    ) -> Stepped {
-        let (scene, j, report) = batch;
-        let t0 = Instant::now();
-        let d = &report.scenes[j];
-        let lcp = &report.islands[d.islands.clone()];
-        let friction = d.friction.as_ref().map_or(&report.friction[0..0], |f| {
-            &report.friction[f.islands.clone()]
-        });
-        let unsolved: Vec<&[usize]> = lcp
-            .iter()
-            .filter(|i| !i.status().is_solution())
-            .map(|i| i.contacts.as_slice())
-            .chain(
-                friction
-                    .iter()
-                    .filter(|i| !i.status().is_solution())
-                    .map(|i| i.contacts.as_slice()),
-            )
-            .collect();
-        let mut bodies: Option<Vec<BodyVelocity>> = None;
-        let mut repairs = Repairs::default();
-        if !unsolved.is_empty() {
-            let mut after = d.bodies.clone();
-            repairs = repair_unsolved(scene, unsolved.into_iter(), &mut after, fix);
-            bodies = Some(after);
-        }
-        let t1 = Instant::now();
-        finish(
-            item.world,
-            &item.prepared,
-            bodies.as_deref().unwrap_or(&d.bodies),
-            dt,
-        );
-        let error = max_error(lcp.iter(), friction.iter());
-        let islands = lcp.len() + friction.len();
-        let world = figures(item.world, &item.prepared, islands, error, repairs.total());
-        Stepped {
-            islands: Vec::new(),
-            friction: Vec::new(),
-            solved: Results::InBatch(bodies),
-            world,
-            times: [
-                0.0,
-                0.0,
-                (t1 - t0).as_secs_f64(),
-                t1.elapsed().as_secs_f64(),
-            ],
-            repairs,
-        }
+/// Pass 2 for a world of the batch solved in one call (`batch`:
+/// its scene, its index in the batch, the batch's report): repairs of
+/// its unsolved islands (LCP or frictional), integration.
+pub(super) fn finish_batch_world(
+    item: &mut WorldStep,
+    batch: (&Scene, usize, &Report),
+    dt: f64,
+    fix: &Settings,
+) -> Stepped {
+    let (scene, j, report) = batch;
+    let t0 = Instant::now();
+    let d = &report.scenes[j];
+    let lcp = &report.islands[d.islands.clone()];
+    let friction = d.friction.as_ref().map_or(&report.friction[0..0], |f| {
+        &report.friction[f.islands.clone()]
+    });
+    let unsolved: Vec<&[usize]> = lcp
+        .iter()
+        .filter(|i| !i.status().is_solution())
+        .map(|i| i.contacts.as_slice())
+        .chain(
+            friction
+                .iter()
+                .filter(|i| !i.status().is_solution())
+                .map(|i| i.contacts.as_slice()),
+        )
+        .collect();
+    let mut bodies: Option<Vec<BodyVelocity>> = None;
+    let mut repairs = Repairs::default();
+    if !unsolved.is_empty() {
+        let mut after = d.bodies.clone();
+        repairs = repair_unsolved(scene, unsolved.into_iter(), &mut after, fix);
+        bodies = Some(after);
+    }
+    let t1 = Instant::now();
+    let after = bodies.as_deref().unwrap_or(&d.bodies);
+    let error = max_error(lcp.iter(), friction.iter());
+    let islands = lcp.len() + friction.len();
+    let world = finish_world(item, after, dt, islands, error, repairs.total());
+    Stepped {
+        islands: Vec::new(),
+        friction: Vec::new(),
+        solved: SceneResults::InBatch(bodies),
+        world,
+        times: [
+            0.0,
+            0.0,
+            (t1 - t0).as_secs_f64(),
+            t1.elapsed().as_secs_f64(),
+        ],
+        repairs,
     }
 }
 
@@ -206,16 +190,16 @@ impl Solver {
 const WARM_PIVOTS: u64 = 3;
 
 /// The world path's warm start: last step's basis `hint`, and when its
-/// solution is not feasible (to the door's strict `feasibility_tol`), up to
+/// solution is not feasible (to the strict `feasibility_tol`), up to
 /// [`WARM_PIVOTS`] block principal pivots from it (Kostreva 1978; Júdice
 /// and Pires 1994): the basic contacts whose impulse came out negative
 /// leave the basis, the others that would penetrate (w < 0) enter. A
 /// resting stack's basis is degenerate (4 coplanar contacts per face, rank
 /// 3: a contact that carries no load sits at z = 0 or w = 0), and rounding
-/// moves that zero across from step to step; the door's own warm start
+/// moves that zero across from step to step; `solve_scenes`' warm start
 /// then sends the island to Lemke, while one pivot finds the neighbouring
 /// basis. Every answer is an exact basis solution, feasible to the strict
-/// tolerance and within the door's `tolerance` (the door's final check
+/// tolerance and within `tolerance` (the final check
 /// again). None: the island is solved as usual, without the hint. Only for
 /// Auto and Enumeration with `predict`, n ≤ 20.
 fn warm_settle(lcp: &Lcp, hint: u32, s: &Settings) -> Option<Solved> {
@@ -256,14 +240,18 @@ fn warm_settle(lcp: &Lcp, hint: u32, s: &Settings) -> Option<Solved> {
     None
 }
 
-/// A world's figures after its step.
-pub(super) fn figures(
-    w: &World,
-    p: &Prepared,
+/// Integration (the world's velocities after the impulses, `bodies`; its
+/// poses) and its figures after the step.
+pub(super) fn finish_world(
+    item: &mut WorldStep,
+    bodies: &[BodyVelocity],
+    dt: f64,
     islands: usize,
     max_error: f64,
     unsolved: usize,
 ) -> WorldStepReport {
+    finish(item.world, &item.prepared, bodies, dt);
+    let (w, p) = (&*item.world, &item.prepared);
     WorldStepReport {
         kinetic: w.kinetic_energy(),
         potential: w.potential_energy(),

@@ -1,8 +1,8 @@
-//! Pass 2 of a world step ([`Solver::step_worlds`]) for one world with
-//! friction on the CPU ([`Solver::step_frictional_world_on_cpu`]): its
+//! Pass 2 of a world step ([`Solver::step_worlds`](super::Solver::step_worlds))
+//! for one world with friction on the CPU ([`step_frictional_world_on_cpu`]): its
 //! frictional islands found, assembled and solved inside the pass, world by
 //! world on the thread that steps it, warm-started from that world's own
-//! memory of the last steps ([`crate::warm::Warm`]). The door's friction path
+//! memory of the last steps ([`crate::warm::Warm`]). `solve_scenes`' friction path
 //! ([`super::friction_path`]) did the same work for the whole batch between
 //! the passes, with a serial warm-start lookup and record in one map shared
 //! by every world; here nothing of a world's solve waits for another
@@ -13,11 +13,10 @@ use std::cell::RefCell;
 use std::time::Instant;
 
 use super::friction_path::contact_impulse;
-use super::world_cpu::figures;
-use super::world_path::Solved as Results;
-use super::world_path::{max_error, Item, Stepped};
+use super::ids_of;
+use super::world_cpu::finish_world;
+use super::world_path::{max_error, SceneResults, Stepped, WorldStep};
 use super::world_repair::{reapply, repair_island, Repairs};
-use super::{ids_of, Solver};
 use crate::build::FrictionBuilt;
 use crate::cpu::assembly::{assemble_contacts, assemble_island};
 use crate::cpu::impulses::BodyVelocity;
@@ -28,111 +27,101 @@ use crate::report::{FrictionIslandReport, SceneFriction, SceneReport};
 use crate::scene::Scene;
 use crate::settings::Settings;
 use crate::warm::reaction_entries;
-use crate::world::step::finish;
 
-impl Solver {
-    /// Pass 2 for a world with friction on the CPU: islands, the frictional
-    /// assembly, warm starts from its own memory, the Coulomb solves (each
-    /// island to `settings.friction_tolerance`, as the door's friction path
-    /// solves it), repairs of unsolved islands, impulses, integration.
-    /// `index`: the world's place in the batch; `fix`: the repair settings.
-    pub(super) fn step_frictional_world_on_cpu(
-        &self,
-        index: usize,
-        item: &mut Item,
-        dt: f64,
-        fix: &Settings,
-    ) -> Stepped {
-        let t0 = Instant::now();
-        let scene = &item.prepared.scene;
-        let FrictionBuilt { islands, rows } = FrictionBuilt::new(scene);
-        let warm = self.settings.warm_start;
-        let starts: Vec<Option<Vec<f64>>> = islands
-            .iter()
-            .map(|isl| {
-                let ids = ids_of(scene, &isl.contacts);
-                warm.then(|| item.warm.reactions.reactions(ids)).flatten()
-            })
-            .collect();
-        let settings = self.settings.friction();
-        let mut r = vec![[0.0; 3]; scene.contacts.len()];
-        let mut u = vec![[0.0; 3]; scene.contacts.len()];
-        let mut reports = Vec::with_capacity(islands.len());
-        // Each island assembled into this thread's problem just before its
-        // solve (W allocated once per thread; its seconds go to the build).
-        let mut assembly = std::time::Duration::ZERO;
-        let t1 = Instant::now();
-        for (island, start) in islands.into_iter().zip(&starts) {
-            let ta = Instant::now();
-            let solution = with_problem(|problem| {
-                assemble_friction_island_into(scene, &rows, &island, problem);
-                assembly += ta.elapsed();
-                solve_friction_problem(problem, start.as_deref(), &settings)
-            });
-            for (i, &c) in island.contacts.iter().enumerate() {
-                r[c].copy_from_slice(&solution.r[3 * i..3 * i + 3]);
-                u[c].copy_from_slice(&solution.u[3 * i..3 * i + 3]);
-            }
-            reports.push(FrictionIslandReport {
-                scene: Some(index),
-                contacts: island.contacts,
-                warm_started: start.is_some(),
-                solution,
-            });
+/// Pass 2 for a world with friction on the CPU: islands, the frictional
+/// assembly, warm starts from its own memory, the Coulomb solves (each
+/// island to `settings.friction_tolerance`, as `solve_scenes`' friction path
+/// solves it), repairs of unsolved islands, impulses, integration.
+/// `index`: the world's place in the batch; `fix`: the repair settings.
+pub(super) fn step_frictional_world_on_cpu(
+    settings: &Settings,
+    index: usize,
+    item: &mut WorldStep,
+    dt: f64,
+    fix: &Settings,
+) -> Stepped {
+    let t0 = Instant::now();
+    let scene = &item.prepared.scene;
+    let FrictionBuilt { islands, rows } = FrictionBuilt::new(scene);
+    let warm = settings.warm_start;
+    let starts: Vec<Option<Vec<f64>>> = islands
+        .iter()
+        .map(|isl| {
+            let ids = ids_of(scene, &isl.contacts);
+            warm.then(|| item.warm.reactions.reactions(ids)).flatten()
+        })
+        .collect();
+    let friction = settings.friction();
+    let mut r = vec![[0.0; 3]; scene.contacts.len()];
+    let mut u = vec![[0.0; 3]; scene.contacts.len()];
+    let mut reports = Vec::with_capacity(islands.len());
+    // Each island assembled into this thread's problem just before its
+    // solve (W allocated once per thread; its seconds go to the build).
+    let mut assembly = std::time::Duration::ZERO;
+    let t1 = Instant::now();
+    for (island, start) in islands.into_iter().zip(&starts) {
+        let ta = Instant::now();
+        let solution = with_problem(|problem| {
+            assemble_friction_island_into(scene, &rows, &island, problem);
+            assembly += ta.elapsed();
+            solve_friction_problem(problem, start.as_deref(), &friction)
+        });
+        for (i, &c) in island.contacts.iter().enumerate() {
+            r[c].copy_from_slice(&solution.r[3 * i..3 * i + 3]);
+            u[c].copy_from_slice(&solution.u[3 * i..3 * i + 3]);
         }
-        let t2 = Instant::now();
-        let mut bodies = apply_friction_impulses(scene, &rows, &r);
-        let contacts = rows
-            .iter()
-            .zip(r.iter().zip(&u))
-            .map(|(row, (&ri, &ui))| contact_impulse(row, ri, ui))
-            .collect();
-        let unsolved = reports
-            .iter()
-            .filter(|i| !i.status().is_solution())
-            .map(|i| i.contacts.as_slice());
-        let repairs = repair_unsolved(scene, unsolved, &mut bodies, fix);
-        if warm {
-            let solved = reports.iter().filter(|i| i.status().is_solution());
-            item.warm.reactions.record(solved.flat_map(|isl| {
-                let ids = ids_of(scene, &isl.contacts);
-                reaction_entries(ids, &isl.solution.r)
-            }));
-        }
-        let t3 = Instant::now();
-        finish(item.world, &item.prepared, &bodies, dt);
-        let error = max_error(std::iter::empty(), reports.iter());
-        let world = figures(
-            item.world,
-            &item.prepared,
-            reports.len(),
-            error,
-            repairs.total(),
-        );
-        let t4 = Instant::now();
-        Stepped {
-            solved: Results::Own(SceneReport {
-                impulses: r.iter().map(|ri| ri[0]).collect(),
-                bodies,
-                islands: 0..0,
-                friction: Some(SceneFriction {
-                    contacts,
-                    // Local to this world; the step's report shifts it.
-                    islands: 0..reports.len(),
-                }),
+        reports.push(FrictionIslandReport {
+            scene: Some(index),
+            contacts: island.contacts,
+            warm_started: start.is_some(),
+            solution,
+        });
+    }
+    let t2 = Instant::now();
+    let mut bodies = apply_friction_impulses(scene, &rows, &r);
+    let contacts = rows
+        .iter()
+        .zip(r.iter().zip(&u))
+        .map(|(row, (&ri, &ui))| contact_impulse(row, ri, ui))
+        .collect();
+    let unsolved = reports
+        .iter()
+        .filter(|i| !i.status().is_solution())
+        .map(|i| i.contacts.as_slice());
+    let repairs = repair_unsolved(scene, unsolved, &mut bodies, fix);
+    if warm {
+        let solved = reports.iter().filter(|i| i.status().is_solution());
+        item.warm.reactions.record(solved.flat_map(|isl| {
+            let ids = ids_of(scene, &isl.contacts);
+            reaction_entries(ids, &isl.solution.r)
+        }));
+    }
+    let t3 = Instant::now();
+    let error = max_error(std::iter::empty(), reports.iter());
+    let world = finish_world(item, &bodies, dt, reports.len(), error, repairs.total());
+    let t4 = Instant::now();
+    Stepped {
+        solved: SceneResults::Own(SceneReport {
+            impulses: r.iter().map(|ri| ri[0]).collect(),
+            bodies,
+            islands: 0..0,
+            friction: Some(SceneFriction {
+                contacts,
+                // Local to this world; the step's report shifts it.
+                islands: 0..reports.len(),
             }),
-            islands: Vec::new(),
-            friction: reports,
-            world,
-            times: [
-                t1 - t0 + assembly,
-                (t2 - t1).saturating_sub(assembly),
-                t3 - t2,
-                t4 - t3,
-            ]
-            .map(|d| d.as_secs_f64()),
-            repairs,
-        }
+        }),
+        islands: Vec::new(),
+        friction: reports,
+        world,
+        times: [
+            t1 - t0 + assembly,
+            (t2 - t1).saturating_sub(assembly),
+            t3 - t2,
+            t4 - t3,
+        ]
+        .map(|d| d.as_secs_f64()),
+        repairs,
     }
 }
 

@@ -1,4 +1,4 @@
-//! The door for worlds in time: [`Solver::step_worlds`] advances a batch of
+//! Worlds in time: [`Solver::step_worlds`] advances a batch of
 //! [`World`]s by one step Δt (the velocity-level time-stepping of
 //! Stewart–Trinkle and Anitescu–Potra: impulses from a complementarity
 //! problem per step; the parts per world are in [`crate::world::step`]) in two passes over the worlds, each spread over
@@ -9,22 +9,22 @@
 //!
 //! Where the islands are solved:
 //! - on the CPU, a frictionless world is solved inside pass 2, world by
-//!   world ([`world_cpu`](super::world_cpu)): its islands found once, its
+//!   world ([`step_world_on_cpu`]): its islands found once, its
 //!   LCPs assembled and solved by the same per-island functions as
 //!   [`Solver::solve_scenes`] (prediction, checked Lemke, enumeration; the
 //!   same final check), warm-started from that world's own memory of the
 //!   last step, so that its bits do not depend on the batch around it;
 //! - on the CPU, a world with friction (any contact with μ > 0) is solved
-//!   inside pass 2 too ([`world_friction`](super::world_friction)): its
-//!   frictional islands by the door's Coulomb solvers, each to
+//!   inside pass 2 too ([`step_frictional_world_on_cpu`]): its
+//!   frictional islands by the exact Coulomb solvers, each to
 //!   `friction_tolerance`, warm-started from that world's own reactions of
 //!   the last step;
-//! - while a GPU is open, every world goes in ONE batch through the door
-//!   ([`Solver::solve_built_scenes`]) between the two passes; pass 2 then
-//!   repairs and moves each world ([`Solver::finish_batch_world`]).
+//! - while a GPU is open, every world goes in ONE batch through
+//!   [`Solver::solve_built_scenes`] between the two passes; pass 2 then
+//!   repairs and moves each world ([`finish_batch_world`]).
 //!
 //! The scenes are built here from worlds checked at the start of the step,
-//! so the door's scene checks are skipped for them: every index is in
+//! so `solve_scenes`' checks are skipped for them: every index is in
 //! range, every normal unit, every number finite and every mass and inertia
 //! ≥ 0 by construction. Islands the solver leaves unsolved are repaired
 //! before any body moves ([`super::world_repair`]).
@@ -33,9 +33,11 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use super::world_cpu::parallel_map_mut;
+use super::friction_path::friction_on_gpu;
+use super::world_cpu::{finish_batch_world, parallel_map_mut, step_world_on_cpu};
+use super::world_friction::step_frictional_world_on_cpu;
 use super::world_repair::{repair_settings, Repairs};
-use super::Solver;
+use super::{cpu_device, Solver};
 use crate::cpu::batch::parallel_map;
 use crate::cpu::impulses::BodyVelocity;
 use crate::report::{FrictionIslandReport, IslandReport, Report, SceneReport, Timings};
@@ -116,7 +118,7 @@ pub(super) struct Stepped {
     /// Its frictional islands (worlds with friction solved in pass 2 only).
     pub friction: Vec<FrictionIslandReport>,
     /// Its scene's results.
-    pub solved: Solved,
+    pub solved: SceneResults,
     /// The world's figures.
     pub world: WorldStepReport,
     /// Thread seconds: islands and assembly, solves, repairs and impulses,
@@ -127,17 +129,17 @@ pub(super) struct Stepped {
 }
 
 /// Where a world's scene results are.
-pub(super) enum Solved {
+pub(super) enum SceneResults {
     /// Solved in pass 2: its scene report (island ranges set by the step's
     /// report).
     Own(SceneReport),
-    /// In the batch solved through the door (scene k of its report is
+    /// In the batch solved in one call (scene k of its report is
     /// world k); the bodies' velocities when a repair changed them.
     InBatch(Option<Vec<BodyVelocity>>),
 }
 
 /// One world in pass 2.
-pub(super) struct Item<'a> {
+pub(super) struct WorldStep<'a> {
     pub world: &'a mut World,
     pub prepared: Prepared,
     /// Its memory of the last steps (worlds solved in pass 2).
@@ -185,8 +187,8 @@ impl Solver {
             .map(|p| std::mem::take(&mut p.impacts.impulses))
             .collect();
         let collision = start.elapsed().as_secs_f64();
-        // The batch: every world while a GPU is open, solved through the
-        // door in one call; on the CPU every world is solved in pass 2.
+        // The batch: every world while a GPU is open, solved by
+        // `solve_built_scenes` in one call; on the CPU every world is solved in pass 2.
         let start = Instant::now();
         let mut scenes: Vec<Scene> = Vec::new();
         if self.gpu.is_some() {
@@ -204,29 +206,34 @@ impl Solver {
         let mut memory = std::mem::take(&mut self.world_warm);
         let keep = self.settings.warm_start_calls;
         memory.resize_with(worlds.len(), || Warm::new(keep, 1));
-        let mut items: Vec<Item> = worlds
+        let mut items: Vec<WorldStep> = worlds
             .iter_mut()
             .zip(prepared)
             .zip(memory.iter_mut())
-            .map(|((world, prepared), warm)| Item {
+            .map(|((world, prepared), warm)| WorldStep {
                 world,
                 prepared,
                 warm,
             })
             .collect();
         let fix = repair_settings(&self.settings);
-        let this: &Solver = self;
+        let settings = &self.settings;
         let stepped = parallel_map_mut(&mut items, self.threads, |k, item| match &batch {
             None if item.prepared.scene.has_friction() => {
-                this.step_frictional_world_on_cpu(k, item, dt, &fix)
+                step_frictional_world_on_cpu(settings, k, item, dt, &fix)
             }
-            None => this.step_world_on_cpu(k, item, dt, &fix),
-            Some(report) => this.finish_batch_world(item, (&scenes[k], k, report), dt, &fix),
+            None => step_world_on_cpu(settings, k, item, dt, &fix),
+            Some(report) => finish_batch_world(item, (&scenes[k], k, report), dt, &fix),
         });
         drop(items);
         self.world_warm = memory;
         let pass = start.elapsed().as_secs_f64();
-        let mut report = self.step_report(stepped, batch, collision, batch_seconds, pass);
+        let solve = batch.unwrap_or_else(|| self.empty_report(cpu_device(self.threads)));
+        // Where pass 2's frictional islands go, in the solver's words.
+        let gpu_open = self.gpu.is_some();
+        let method = self.settings.friction_method;
+        let (_, went) = friction_on_gpu(gpu_open, self.cost.is_some(), method);
+        let mut report = step_report(stepped, solve, &went, collision, batch_seconds, pass);
         // The impacts' impulses join their contacts' (none in most worlds).
         for (scene, kick) in report.solve.scenes.iter_mut().zip(&kicks) {
             scene
@@ -237,62 +244,60 @@ impl Solver {
         }
         Ok(report)
     }
+}
 
-    /// The step's report: the batch's report (or an empty one on the CPU
-    /// device) with every world solved in pass 2 pushed in world order,
-    /// the repairs' velocities in place; pass 2's seconds added per phase.
-    fn step_report(
-        &self,
-        stepped: Vec<Stepped>,
-        batch: Option<Report>,
-        collision: f64,
-        batch_seconds: f64,
-        pass: f64,
-    ) -> StepReport {
-        let mut sums = [0.0; 4];
-        let mut repairs = Repairs::default();
-        for s in &stepped {
-            for (t, x) in sums.iter_mut().zip(s.times) {
-                *t += x;
-            }
-            repairs.merge(s.repairs);
+/// The step's report: `solve`, the batch's report (or an empty one on the
+/// CPU device), with every world solved in pass 2 pushed in world order,
+/// the repairs' velocities in place; pass 2's seconds added per phase;
+/// `friction_went`: where pass 2's frictional islands went, in words.
+fn step_report(
+    stepped: Vec<Stepped>,
+    mut solve: Report,
+    friction_went: &str,
+    collision: f64,
+    batch_seconds: f64,
+    pass: f64,
+) -> StepReport {
+    let mut sums = [0.0; 4];
+    let mut repairs = Repairs::default();
+    for s in &stepped {
+        for (t, x) in sums.iter_mut().zip(s.times) {
+            *t += x;
         }
-        // Wall seconds of pass 2 shared out by the threads' measured times.
-        let all: f64 = sums.iter().sum();
-        let share = |x: f64| if all > 0.0 { pass * x / all } else { 0.0 };
-        let mut solve = batch.unwrap_or_else(|| self.empty_report(self.cpu_device()));
-        if stepped.iter().any(|s| !s.friction.is_empty()) {
-            // Where pass 2's frictional islands went, in the door's words.
-            let (_, went) = self.friction_on_gpu(self.settings.friction_method);
-            solve.choice = format!("{}; friction: {went}", solve.choice);
+        repairs.merge(s.repairs);
+    }
+    // Wall seconds of pass 2 shared out by the threads' measured times.
+    let all: f64 = sums.iter().sum();
+    let share = |x: f64| if all > 0.0 { pass * x / all } else { 0.0 };
+    if stepped.iter().any(|s| !s.friction.is_empty()) {
+        solve.choice = format!("{}; friction: {friction_went}", solve.choice);
+    }
+    let mut worlds = Vec::with_capacity(stepped.len());
+    for (k, s) in stepped.into_iter().enumerate() {
+        worlds.push(s.world);
+        match s.solved {
+            SceneResults::Own(scene) => solve.push_scene(scene, s.islands, s.friction),
+            SceneResults::InBatch(Some(bodies)) => solve.scenes[k].bodies = bodies,
+            SceneResults::InBatch(None) => {}
         }
-        let mut worlds = Vec::with_capacity(stepped.len());
-        for (k, s) in stepped.into_iter().enumerate() {
-            worlds.push(s.world);
-            match s.solved {
-                Solved::Own(scene) => solve.push_scene(scene, s.islands, s.friction),
-                Solved::InBatch(Some(bodies)) => solve.scenes[k].bodies = bodies,
-                Solved::InBatch(None) => {}
-            }
-        }
-        solve.timings += Timings {
-            build: share(sums[0]),
-            solve: share(sums[1]),
-            impulses: share(sums[2]),
-            ..Timings::default()
-        };
-        solve.timings.total = batch_seconds + share(sums[0] + sums[1] + sums[2]);
-        StepReport {
-            unsolved: worlds.iter().map(|w| w.unsolved).sum(),
-            worlds,
-            timings: StepTimings {
-                collision,
-                solve: solve.timings.total,
-                integrate: share(sums[3]),
-            },
-            solve,
-            repairs,
-        }
+    }
+    solve.timings += Timings {
+        build: share(sums[0]),
+        solve: share(sums[1]),
+        impulses: share(sums[2]),
+        ..Timings::default()
+    };
+    solve.timings.total = batch_seconds + share(sums[0] + sums[1] + sums[2]);
+    StepReport {
+        unsolved: worlds.iter().map(|w| w.unsolved).sum(),
+        worlds,
+        timings: StepTimings {
+            collision,
+            solve: solve.timings.total,
+            integrate: share(sums[3]),
+        },
+        solve,
+        repairs,
     }
 }
 

@@ -1,5 +1,5 @@
 //! What a world step does with an island the solver left unsolved (a status
-//! that is not a solution after the door's check: Lemke's pivot cap, PGS's
+//! that is not a solution after the final check: Lemke's pivot cap, PGS's
 //! sweep cap, a Coulomb solver that did not converge, a numerical failure).
 //!
 //! Applying such an answer moves bodies by impulses nobody checked: a
@@ -97,7 +97,7 @@ pub(super) fn repair_settings(s: &Settings) -> Settings {
 }
 
 /// A solution the step may apply: a solution status, finite, within the
-/// tolerance (the door's final check).
+/// tolerance (the final check).
 fn usable(s: &LcpSolution, tolerance: f64) -> bool {
     s.status.is_solution() && s.passes_check(tolerance)
 }
