@@ -29,13 +29,13 @@ const INNER_RATIO: f64 = 10.0;
 /// factor shrinks while the inner problems are easy, so that the outer
 /// steps lengthen where W is only semidefinite and σ e alone holds them
 /// short (heavy boxes on light ones).
-const SHRINK: f64 = 0.25;
+const SHRINK: f64 = 0.5;
 
 /// The smallest factor.
 const MIN_BOOST: f64 = 1e-6;
 
 /// Newton steps of one inner solve at most.
-const INNER_STEPS: u64 = 50;
+const INNER_STEPS: u64 = 20;
 
 /// PROX from `r` with `ws` prepared for `p` and `ws.u` = W r + q: outer
 /// steps until the Coulomb error of `p` is at most `tolerance` or

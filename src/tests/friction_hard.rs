@@ -1,8 +1,8 @@
 //! Small hard frictional islands (issue: friction at every size, item 5):
 //! stacks of 2–4 boxes whose masses differ by up to 1e4, at μ up to 2,
-//! falling and drifting, solved by `auto` and judged by the Coulomb error
-//! checked by the Coulomb error of each answer (the report's status), not
-//! against stored answers. At the default cap of 1,000 iterations 8 of the
+//! falling and drifting, solved by `auto` and judged by the checked
+//! Coulomb error of each answer (the report's status), not against stored
+//! answers. At the default cap of 1,000 iterations 3 of the
 //! 216 stacks end `not_converged` (heavy boxes on light ones at μ ≥ 1,
 //! PROX still creeping); the test raises the cap to 5,000.
 
@@ -93,7 +93,7 @@ fn stacks_with_mass_ratios_to_1e4_and_mu_to_2_are_solved_by_auto() {
             }
         }
     }
-    // The hardest needed 3,726 (PROX's inner Newton steps included).
+    // The hardest needed 2,019 (PROX's inner Newton steps included).
     assert!(most <= 5000, "{most}");
     assert!(
         failed.is_empty(),
