@@ -82,35 +82,7 @@ impl Lcp {
     /// [`crate::Error::Invalid`] naming `item` and the field (`q`, `M`,
     /// `M[i][j]`, `q[i]`).
     pub fn validate(&self, item: impl std::fmt::Display) -> Result<(), crate::Error> {
-        let n = self.q.len();
-        if n == 0 {
-            return Err(crate::Error::invalid(item, "q", "empty problem (n = 0)"));
-        }
-        if self.m.len() != n * n {
-            return Err(crate::Error::invalid(
-                item,
-                "M",
-                format!("has {} entries, expected n² = {}", self.m.len(), n * n),
-            ));
-        }
-        if all_finite(&self.q) && all_finite(&self.m) {
-            return Ok(());
-        }
-        if let Some(i) = self.q.iter().position(|v| !v.is_finite()) {
-            return Err(crate::Error::invalid(
-                item,
-                format!("q[{i}]"),
-                "not a finite number",
-            ));
-        }
-        if let Some(k) = self.m.iter().position(|v| !v.is_finite()) {
-            return Err(crate::Error::invalid(
-                item,
-                format!("M[{}][{}]", k / n, k % n),
-                "not a finite number",
-            ));
-        }
-        Ok(())
+        validate_parts(&self.m, &self.q, item)
     }
 
     /// w = M z + q (inline up to [`crate::short_vec::SHORT_INLINE`] rows: nothing allocated).
@@ -398,6 +370,43 @@ impl LcpSolution {
             _ => None,
         }
     }
+}
+
+/// [`Lcp::validate`] of a problem held as slices (M row-major n×n, q).
+pub(crate) fn validate_parts(
+    m: &[f64],
+    q: &[f64],
+    item: impl std::fmt::Display,
+) -> Result<(), crate::Error> {
+    let n = q.len();
+    if n == 0 {
+        return Err(crate::Error::invalid(item, "q", "empty problem (n = 0)"));
+    }
+    if m.len() != n * n {
+        return Err(crate::Error::invalid(
+            item,
+            "M",
+            format!("has {} entries, expected n² = {}", m.len(), n * n),
+        ));
+    }
+    if all_finite(q) && all_finite(m) {
+        return Ok(());
+    }
+    if let Some(i) = q.iter().position(|v| !v.is_finite()) {
+        return Err(crate::Error::invalid(
+            item,
+            format!("q[{i}]"),
+            "not a finite number",
+        ));
+    }
+    if let Some(k) = m.iter().position(|v| !v.is_finite()) {
+        return Err(crate::Error::invalid(
+            item,
+            format!("M[{}][{}]", k / n, k % n),
+            "not a finite number",
+        ));
+    }
+    Ok(())
 }
 
 #[cfg(test)]

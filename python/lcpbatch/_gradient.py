@@ -231,15 +231,16 @@ def backward(M: np.ndarray, q: np.ndarray, z: np.ndarray, dz: np.ndarray, dw: Op
     dza = np.asarray(dz, dtype=np.float64).reshape(-1, n)
     # A zero ∂L/∂w (JAX and PyTorch pass zeros for an unused w) adds nothing.
     dwa = None if dw is None or not np.any(dw) else np.asarray(dw, dtype=np.float64).reshape(-1, n)
+    # The extension's product straight on the float64 arrays (their shapes
+    # are the batch's here): no checks or derivative names it does not need.
     ok = np.isfinite(za).all(axis=1)
     if ok.all():
-        g = lcp_vjp(m, qa, za, dza, dwa, tolerance=tolerance)
-        dm, dq = g.M, g.q
+        dm, dq, _ = _native.lcp_vjp(m, qa, za, dza, dwa, tolerance)
     else:
         dm = np.full(m.shape, np.nan)
         dq = np.full(qa.shape, np.nan)
-        g = lcp_vjp(m[ok], qa[ok], za[ok], dza[ok], None if dwa is None else dwa[ok], tolerance=tolerance)
-        dm[ok], dq[ok] = g.M, g.q
+        dm[ok], dq[ok], _ = _native.lcp_vjp(m[ok], qa[ok], za[ok], dza[ok], None if dwa is None else dwa[ok],
+                                            tolerance)
     return dm.reshape(shape + (n,)), dq.reshape(shape)
 
 

@@ -131,8 +131,10 @@ def _differentiable(host_forward: Callable[..., Tuple[np.ndarray, ...]], host_ba
     """A ``jax.custom_vjp`` function of arrays computed on the host:
     ``host_forward(*xs)`` gives the outputs (shapes and dtypes
     ``outputs(*xs)``), ``host_backward(xs, outs, cotangents)`` the
-    gradients of ``xs``; both through ``pure_callback``, one host call
-    under ``vmap`` (``broadcast_all``)."""
+    gradients of ``xs`` (``outs``: the first output only, the forward's
+    own, the one both adapters' products start from: the others are not
+    kept or passed); both through ``pure_callback``, one host call under
+    ``vmap`` (``broadcast_all``)."""
 
     def forward(*xs: Any) -> Tuple[Any, ...]:
         return jax.pure_callback(host_forward, outputs(*xs), *xs, vmap_method="broadcast_all")
@@ -143,7 +145,7 @@ def _differentiable(host_forward: Callable[..., Tuple[np.ndarray, ...]], host_ba
 
     def f_fwd(*xs: Any) -> Tuple[Tuple[Any, ...], Tuple[Any, ...]]:
         outs = forward(*xs)
-        return outs, (xs, outs)
+        return outs, (xs, outs[:1])
 
     def f_bwd(res: Tuple[Any, ...], g: Tuple[Any, ...]) -> Tuple[Any, ...]:
         xs, outs = res

@@ -103,7 +103,7 @@ pub(crate) fn join(ix: &[usize]) -> String {
 }
 
 /// Whether every entry is finite (no early exit, so that it vectorises).
-fn all_finite(values: &[f64]) -> bool {
+pub(crate) fn all_finite(values: &[f64]) -> bool {
     values.iter().fold(true, |ok, v| ok & v.is_finite())
 }
 

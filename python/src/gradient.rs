@@ -10,13 +10,15 @@
 use std::time::Instant;
 
 use lcpbatch::gradient::{
-    lcp_vjp_batch, scene_vjp, BodyGradient, Derivative, LcpGradient, SceneGradient,
+    lcp_vjp_batch, lcp_vjp_dense_into, scene_vjp, BodyGradient, Derivative, LcpGradient,
+    SceneGradient,
 };
 use lcpbatch::report::BodyVelocity;
 use lcpbatch::Lcp;
 use numpy::ndarray::{Array2, Array3, ArrayView2, CowArray, Ix2};
 use numpy::{
-    IntoPyArray, PyArray1, PyArray2, PyArray3, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3,
+    IntoPyArray, PyArray1, PyArray2, PyArray3, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2,
+    PyReadonlyArray3,
 };
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -126,13 +128,13 @@ pub(crate) fn lcp_vjp<'py>(
     dz: PyReadonlyArray2<'py, f64>,
     dw: Option<PyReadonlyArray2<'py, f64>>,
     tolerance: Option<f64>,
-) -> PyResult<(
-    Bound<'py, PyArray3<f64>>,
-    Bound<'py, PyArray2<f64>>,
-    Bound<'py, PyArray1<i8>>,
-)> {
+) -> PyResult<VjpArrays<'py>> {
+    let tolerance = tolerance.unwrap_or_else(default_tolerance);
+    if let Some(out) = dense_into(py, &m, &q, &z, &dz, dw.as_ref(), tolerance)? {
+        return Ok(out);
+    }
     let inputs = Inputs::new(&m, &q, &z, &dz, dw.as_ref())?;
-    let grads = inputs.vjp(py, tolerance.unwrap_or_else(default_tolerance))?;
+    let grads = inputs.vjp(py, tolerance)?;
     let (b, n) = inputs.z.dim();
     let (mut gm, mut gq) = (Vec::with_capacity(b * n * n), Vec::with_capacity(b * n));
     for g in &grads {
@@ -153,6 +155,61 @@ pub(crate) fn lcp_vjp<'py>(
             .into_pyarray(py),
         codes.into_pyarray(py),
     ))
+}
+
+/// The outputs of [`lcp_vjp`] and their three arrays.
+type VjpArrays<'py> = (
+    Bound<'py, PyArray3<f64>>,
+    Bound<'py, PyArray2<f64>>,
+    Bound<'py, PyArray1<i8>>,
+);
+
+/// [`lcp_vjp`]'s common case without building the problems: every array
+/// C-ordered, of the shapes of one batch, n > 0, M and q finite. The
+/// library's [`lcp_vjp_dense_into`] then reads the NumPy arrays in place
+/// and writes the gradients straight into the result arrays (GIL
+/// released); None for any other case, which the general path reads (and
+/// reports errors of) as before.
+fn dense_into<'py>(
+    py: Python<'py>,
+    m: &PyReadonlyArray3<'py, f64>,
+    q: &PyReadonlyArray2<'py, f64>,
+    z: &PyReadonlyArray2<'py, f64>,
+    dz: &PyReadonlyArray2<'py, f64>,
+    dw: Option<&PyReadonlyArray2<'py, f64>>,
+    tolerance: f64,
+) -> PyResult<Option<VjpArrays<'py>>> {
+    let (b, n) = q.as_array().dim();
+    let same = |a: &PyReadonlyArray2<'py, f64>| a.as_array().dim() == (b, n);
+    if n == 0 || m.as_array().dim() != (b, n, n) || !same(z) || !same(dz) || !dw.is_none_or(same) {
+        return Ok(None);
+    }
+    let (Ok(ms), Ok(qs), Ok(zs), Ok(dzs)) =
+        (m.as_slice(), q.as_slice(), z.as_slice(), dz.as_slice())
+    else {
+        return Ok(None);
+    };
+    let dws = match dw.map(|d| d.as_slice()) {
+        None => None,
+        Some(Ok(s)) => Some(s),
+        Some(Err(_)) => return Ok(None),
+    };
+    if !batch::all_finite(ms) || !batch::all_finite(qs) {
+        return Ok(None);
+    }
+    let gm = PyArray3::<f64>::zeros(py, [b, n, n], false);
+    let gq = PyArray2::<f64>::zeros(py, [b, n], false);
+    let codes = {
+        let (mut gm_rw, mut gq_rw) = (gm.readwrite(), gq.readwrite());
+        let (om, oq) = (gm_rw.as_slice_mut()?, gq_rw.as_slice_mut()?);
+        py.detach(|| {
+            guard(|| {
+                lcp_vjp_dense_into(n, ms, qs, zs, dzs, dws, tolerance, om, oq).map_err(to_py_err)
+            })
+        })?
+    };
+    let codes: Vec<i8> = codes.into_iter().map(derivative_code).collect();
+    Ok(Some((gm, gq, codes.into_pyarray(py))))
 }
 
 /// For `bench_overhead.py`: the seconds of `repeats` calls of the library's

@@ -62,7 +62,8 @@
 use std::fmt;
 use std::str::FromStr;
 
-use crate::cpu::batch::parallel_map;
+use crate::cpu::batch::{parallel_fill, parallel_map};
+use crate::lcp::validate_parts;
 use crate::linalg::{solve_in_place, PIVOT_TOL};
 use crate::short_vec::ShortVec;
 use crate::{Error, Lcp, Report, Settings};
@@ -202,6 +203,63 @@ pub fn lcp_vjp_batch(
     .collect()
 }
 
+/// [`lcp_vjp_batch`] of a dense batch of B islands of one size n, held as
+/// flat row-major arrays (`m` B·n·n, `q`, `z`, `dz`, `dw` B·n), written
+/// into the caller's `out_m` (B·n·n) and `out_q` (B·n): nothing allocated
+/// per island. The same gradients and errors as [`lcp_vjp_batch`] on the
+/// same problems; returns each island's [`Derivative`].
+///
+/// # Errors
+/// As [`lcp_vjp_batch`]; "batch" and the field when n is 0 or an array's
+/// length is not that of B islands of size n (B = `q.len() / n`).
+#[allow(clippy::too_many_arguments)]
+pub fn lcp_vjp_dense_into(
+    n: usize,
+    m: &[f64],
+    q: &[f64],
+    z: &[f64],
+    dz: &[f64],
+    dw: Option<&[f64]>,
+    tolerance: f64,
+    out_m: &mut [f64],
+    out_q: &mut [f64],
+) -> Result<Vec<Derivative>, Error> {
+    check_tolerance(tolerance)?;
+    if n == 0 {
+        return Err(Error::invalid("batch", "q", "empty problems (n = 0)"));
+    }
+    let b = q.len() / n;
+    check_count("q", q.len(), b * n)?;
+    check_count("M", m.len(), b * n * n)?;
+    check_count("z", z.len(), b * n)?;
+    check_count("dz", dz.len(), b * n)?;
+    if let Some(dw) = dw {
+        check_count("dw", dw.len(), b * n)?;
+    }
+    check_count("out_m", out_m.len(), b * n * n)?;
+    check_count("out_q", out_q.len(), b * n)?;
+    let mut slots: Vec<(&mut [f64], &mut [f64], Result<Derivative, Error>)> = out_m
+        .chunks_exact_mut(n * n)
+        .zip(out_q.chunks_exact_mut(n))
+        .map(|(gm, gq)| (gm, gq, Ok(Derivative::Exact)))
+        .collect();
+    parallel_fill(&mut slots, threads(), |i, (gm, gq, r)| {
+        let rows = i * n..(i + 1) * n;
+        *r = island_vjp_into(
+            i,
+            &m[i * n * n..(i + 1) * n * n],
+            &q[rows.clone()],
+            &z[rows.clone()],
+            &dz[rows.clone()],
+            dw.map(|d| &d[rows]),
+            tolerance,
+            gm,
+            gq,
+        );
+    });
+    slots.into_iter().map(|(_, _, r)| r).collect()
+}
+
 impl Report {
     /// [`lcp_vjp_batch`] at the report's solutions: `lcps` are the problems
     /// this report solved (one per [`Report::islands`], in order; for a
@@ -313,8 +371,32 @@ fn island_vjp(
     dw: Option<&[f64]>,
     tolerance: f64,
 ) -> Result<LcpGradient, Error> {
-    lcp.validate(format_args!("island {i}"))?;
     let n = lcp.n();
+    let (mut gm, mut gq) = (vec![0.0; n * n], vec![0.0; n]);
+    let derivative = island_vjp_into(i, &lcp.m, &lcp.q, z, dz, dw, tolerance, &mut gm, &mut gq)?;
+    Ok(LcpGradient {
+        m: gm,
+        q: gq,
+        derivative,
+    })
+}
+
+/// [`island_vjp`] of the problem M (`m`, row-major n×n), q, written into
+/// `gm` (n×n) and `gq` (n): zeros where the derivative is undefined.
+#[allow(clippy::too_many_arguments)]
+fn island_vjp_into(
+    i: usize,
+    m: &[f64],
+    q: &[f64],
+    z: &[f64],
+    dz: &[f64],
+    dw: Option<&[f64]>,
+    tolerance: f64,
+    gm: &mut [f64],
+    gq: &mut [f64],
+) -> Result<Derivative, Error> {
+    validate_parts(m, q, format_args!("island {i}"))?;
+    let n = q.len();
     let item = format_args!("island {i}");
     check_vector(item, "z", z, n)?;
     check_vector(item, "dz", dz, n)?;
@@ -324,8 +406,8 @@ fn island_vjp(
     let h = |r: usize| dw.map_or(0.0, |d| d[r]);
     // The scale τ (module docs).
     let inf = |v: &[f64]| v.iter().fold(0.0f64, |a, x| a.max(x.abs()));
-    let (m_max, z_max) = (inf(&lcp.m), inf(z));
-    let tau_w = tolerance * inf(&lcp.q).max(m_max * z_max);
+    let (m_max, z_max) = (inf(m), inf(z));
+    let tau_w = tolerance * inf(q).max(m_max * z_max);
     let tau_z = if m_max > 0.0 {
         tau_w / m_max
     } else {
@@ -336,11 +418,11 @@ fn island_vjp(
     let mut active: ShortVec<bool> = ShortVec::from_elem(false, n);
     let mut alpha: ShortVec<usize> = ShortVec::new();
     for r in 0..n {
-        let row = &lcp.m[r * n..(r + 1) * n];
-        let w = lcp.q[r] + row.iter().zip(z).map(|(a, b)| a * b).sum::<f64>();
+        let row = &m[r * n..(r + 1) * n];
+        let w = q[r] + row.iter().zip(z).map(|(a, b)| a * b).sum::<f64>();
         let (on, open) = (z[r] > tau_z, w > tau_w);
         if z[r] < -tau_z || w < -tau_w || (on && open) {
-            return Ok(LcpGradient::undefined(n));
+            return Ok(undefined(gm, gq));
         }
         if on {
             active[r] = true;
@@ -351,20 +433,18 @@ fn island_vjp(
     }
     // M_ααᵀ into the output m, v = g_α + M_βαᵀ h_β into the output q.
     let k = alpha.len();
-    let mut gm = vec![0.0; n * n];
-    let mut gq = vec![0.0; n];
     for (a, &ca) in alpha.iter().enumerate() {
         for (b, &cb) in alpha.iter().enumerate() {
-            gm[a * k + b] = lcp.m[cb * n + ca];
+            gm[a * k + b] = m[cb * n + ca];
         }
         let back: f64 = (0..n)
             .filter(|&r| !active[r])
-            .map(|r| lcp.m[r * n + ca] * h(r))
+            .map(|r| m[r * n + ca] * h(r))
             .sum();
         gq[a] = dz[ca] + back;
     }
     if !solve_in_place(&mut gm[..k * k], &mut gq[..k], k, PIVOT_TOL) {
-        return Ok(LcpGradient::undefined(n));
+        return Ok(undefined(gm, gq));
     }
     // r in place, from the last row down: u_j sits at j ≤ α_j, so each u_j
     // is read before its slot is written.
@@ -383,9 +463,12 @@ fn island_vjp(
             gm[r * n + c] = if active[c] { gq[r] * z[c] } else { 0.0 };
         }
     }
-    Ok(LcpGradient {
-        m: gm,
-        q: gq,
-        derivative,
-    })
+    Ok(derivative)
+}
+
+/// Zeros in `gm` and `gq`: an undefined island's gradient.
+fn undefined(gm: &mut [f64], gq: &mut [f64]) -> Derivative {
+    gm.fill(0.0);
+    gq.fill(0.0);
+    Derivative::Undefined
 }

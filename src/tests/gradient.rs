@@ -4,7 +4,7 @@
 //! degenerate and undefined flags, the errors and the batch doors.
 
 use crate::generate::Rng;
-use crate::gradient::{lcp_vjp, lcp_vjp_batch, Derivative, LcpGradient};
+use crate::gradient::{lcp_vjp, lcp_vjp_batch, lcp_vjp_dense_into, Derivative, LcpGradient};
 use crate::settings::{Backend, Method, Settings};
 use crate::tests::common::run;
 use crate::{Lcp, Solver};
@@ -327,6 +327,70 @@ fn bad_input_names_the_island_and_the_field() {
         err(lcp_vjp_batch(&broken, &[z, z], &[good, good], None, TOL)),
         "island 1: field `M[0][1]`: not a finite number"
     );
+}
+
+/// `lcp_vjp_dense_into` (the Python binding's door: flat arrays in, the
+/// caller's arrays out) gives bit for bit what `lcp_vjp_batch` gives on
+/// the same problems, undefined islands' zeros over whatever the output
+/// held, and the same first error.
+#[test]
+fn dense_into_agrees_with_the_batch_product() {
+    let mut rng = Rng::new(0xD3E5);
+    let n = 6;
+    let mut lcps: Vec<Lcp> = (0..3000)
+        .map(|i| random_lcp(&mut rng, n, [Kind::Pd, Kind::PMatrix][i % 2]))
+        .collect();
+    // M = 0 with q < 0: no solution at z = 0, so undefined.
+    lcps.push(Lcp::new(vec![0.0; n * n], vec![-1.0; n]).unwrap());
+    let report = Solver::new(Settings::new(Backend::Cpu, Method::Lemke))
+        .unwrap()
+        .solve_lcps(&lcps)
+        .unwrap();
+    // The last island at z = 0 (w = q < 0: undefined).
+    let mut z: Vec<f64> = report.islands[..lcps.len() - 1]
+        .iter()
+        .flat_map(|i| i.solution.z.iter().copied())
+        .collect();
+    z.extend([0.0; 6]);
+    let b = lcps.len();
+    let dz: Vec<f64> = (0..b * n).map(|_| rng.range(-1.0, 1.0)).collect();
+    let dw: Vec<f64> = (0..b * n).map(|_| rng.range(-1.0, 1.0)).collect();
+    let m: Vec<f64> = lcps.iter().flat_map(|l| l.m.clone()).collect();
+    let q: Vec<f64> = lcps.iter().flat_map(|l| l.q.clone()).collect();
+    let rows = |v: &[f64]| v.chunks_exact(n).map(|c| c.to_vec()).collect::<Vec<_>>();
+    let (zr, dzr, dwr) = (rows(&z), rows(&dz), rows(&dw));
+    fn s(v: &[Vec<f64>]) -> Vec<&[f64]> {
+        v.iter().map(|r| &r[..]).collect()
+    }
+    for with_dw in [false, true] {
+        let dwo = with_dw.then_some(&dw[..]);
+        let want = lcp_vjp_batch(
+            &lcps,
+            &s(&zr),
+            &s(&dzr),
+            with_dw.then(|| s(&dwr)).as_deref(),
+            TOL,
+        )
+        .unwrap();
+        let (mut gm, mut gq) = (vec![f64::NAN; b * n * n], vec![f64::NAN; b * n]);
+        let got = lcp_vjp_dense_into(n, &m, &q, &z, &dz, dwo, TOL, &mut gm, &mut gq).unwrap();
+        assert!(want.iter().any(|g| g.derivative == Derivative::Undefined));
+        for (i, g) in want.iter().enumerate() {
+            assert_eq!(got[i], g.derivative, "island {i}");
+            assert_eq!(&gm[i * n * n..(i + 1) * n * n], &g.m[..], "island {i}");
+            assert_eq!(&gq[i * n..(i + 1) * n], &g.q[..], "island {i}");
+        }
+    }
+    let mut bad = dz.clone();
+    bad[7 * n + 2] = f64::NAN;
+    let (mut gm, mut gq) = (vec![0.0; b * n * n], vec![0.0; b * n]);
+    let e = lcp_vjp_dense_into(n, &m, &q, &z, &bad, None, TOL, &mut gm, &mut gq).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "island 7: field `dz[2]`: not a finite number"
+    );
+    let e = lcp_vjp_dense_into(n, &m, &q[1..], &z, &dz, None, TOL, &mut gm, &mut gq).unwrap_err();
+    assert!(e.to_string().starts_with("batch: "), "{e}");
 }
 
 /// A batch of 3,000 (more than one chunk per thread) through the solver:
