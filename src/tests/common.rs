@@ -9,7 +9,7 @@ use crate::settings::{Backend, Method, Settings};
 use crate::tests::reference::solve;
 use crate::{Lcp, LcpSolution};
 
-pub use super::skip::{fc3d_dir, siconos_dir, skip, Lack};
+pub use super::skip::{dat_files, fc3d_dir, siconos_dir, skip, Lack};
 
 /// Default settings of `method` on the CPU.
 pub fn settings(method: Method) -> Settings {

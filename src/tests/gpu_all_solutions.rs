@@ -43,12 +43,7 @@ fn gpu_solver(precision: Precision) -> Option<Solver> {
 fn problems() -> Vec<(String, Lcp)> {
     let mut out = Vec::new();
     if let Some(dir) = siconos_dir() {
-        let mut paths: Vec<_> = std::fs::read_dir(&dir)
-            .unwrap()
-            .map(|e| e.unwrap().path())
-            .filter(|p| p.extension().is_some_and(|e| e == "dat"))
-            .collect();
-        paths.sort();
+        let paths = super::common::dat_files(&dir);
         for p in paths {
             if let Ok(Input::Lcps(v)) = read_input(&p) {
                 let name = p.file_name().unwrap().to_string_lossy().to_string();

@@ -194,12 +194,7 @@ fn siconos_batch_matches_the_cpu() {
     };
     let mut names = Vec::new();
     let mut lcps: Vec<Lcp> = Vec::new();
-    let mut paths: Vec<_> = std::fs::read_dir(&dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "dat"))
-        .collect();
-    paths.sort();
+    let paths = super::common::dat_files(&dir);
     for p in paths {
         match read_input(&p).unwrap() {
             Input::Lcps(v) => {

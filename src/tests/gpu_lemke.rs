@@ -100,12 +100,7 @@ fn siconos_small() -> Vec<Lcp> {
     let Some(dir) = super::common::siconos_dir() else {
         return Vec::new();
     };
-    let mut paths: Vec<_> = std::fs::read_dir(&dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "dat"))
-        .collect();
-    paths.sort();
+    let paths = super::common::dat_files(&dir);
     let mut lcps = Vec::new();
     for p in paths {
         if let Input::Lcps(v) = read_input(&p).unwrap() {

@@ -84,6 +84,17 @@ pub fn siconos_dir() -> Option<PathBuf> {
     conformance_subdir("siconos")
 }
 
+/// The Siconos `.dat` files of `dir`, sorted by name.
+pub fn dat_files(dir: &std::path::Path) -> Vec<PathBuf> {
+    let mut paths: Vec<_> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "dat"))
+        .collect();
+    paths.sort();
+    paths
+}
+
 /// The Siconos FrictionContact3D folder inside the conformance data, when
 /// present.
 pub fn fc3d_dir() -> Option<PathBuf> {
