@@ -26,8 +26,8 @@ pub enum FrictionMethod {
     /// stopping as soon as the Coulomb error is at most the tolerance
     /// (ask for a smaller `tolerance` to polish further: Newton converges
     /// quadratically, so 1e-12 costs a step or two more than 1e-8),
-    /// alternating with more NSGS sweeps where Newton stalls, within the
-    /// iteration cap; [`Self::Prox`] instead from the first stall on (the first Newton round and Newton
+    /// within the iteration cap; where Newton stalls, once Newton from the
+    /// start, then [`Self::Prox`] (the first Newton round and Newton
     /// from the start both short of the tolerance), for the rest of the cap.
     #[default]
     Auto,
@@ -262,12 +262,10 @@ const NEAR: f64 = 1e-6;
 /// Newton steps tried first from a start within [`NEAR`].
 const NEAR_STEPS: u64 = 3;
 
-/// NSGS then Newton, alternating while Newton stalls (see
-/// [`FrictionMethod::Auto`]), with `ws` prepared for `p` and r. NSGS gives
-/// way to Newton once its linear rate predicts more than 4 + 3k/2 further
-/// sweeps (about a Newton step's cost at k ≤ 4); after a Newton round that
-/// did not converge, the sweeps run without that patience (Newton can leave
-/// r where the sweeps first diverge), doubling per round.
+/// NSGS, then Newton, then PROX (see [`FrictionMethod::Auto`]), with `ws`
+/// prepared for `p` and r. NSGS (at most 2(4 + 3k/2) sweeps) gives way to
+/// Newton once its linear rate predicts more than 4 + 3k/2 further sweeps
+/// (about a Newton step's cost at k ≤ 4).
 /// A start within [`NEAR`] (a time step's warm start) gets up to
 /// [`NEAR_STEPS`] Newton steps before any sweep; else, after the first
 /// Newton round that stalls, Newton runs once from the start itself.
@@ -294,13 +292,12 @@ fn hybrid(
         return (0, true);
     }
     let budget = 4.0 + p.dim() as f64 / 2.0;
-    let mut sweeps_per_round = 2 * budget as u64;
     let mut used = 0;
     let mut best = error;
     ws.best.copy_from_slice(r);
     ws.start.copy_from_slice(r);
     // Newton from the start is tried once in all (first when it is near).
-    let mut from_start = error <= NEAR;
+    let from_start = error <= NEAR;
     if from_start {
         // A start this close (a time step's warm start): Newton first, whose
         // convergence is quadratic from here, where NSGS creeps (stacks).
@@ -312,55 +309,44 @@ fn hybrid(
         }
         keep_best(ws, r, error, &mut best);
     }
-    let mut patient = true;
-    while used < cap {
-        let patience = patient.then_some(Patience { budget });
+    if used < cap {
         let (k, e) = nsgs_in(
             p,
             ws,
             r,
-            sweeps_per_round.min(cap - used),
+            (2 * budget as u64).min(cap - used),
             tolerance,
-            patience,
+            Some(Patience { budget }),
         );
         used += k;
         error = e;
-        if error <= tolerance || used >= cap {
-            break;
-        }
-        keep_best(ws, r, error, &mut best);
-        let (k, e) = newton_round(p, ws, r, (&mut used, cap), tolerance, &mut best);
-        error = e;
-        if error <= tolerance {
-            return (used, true);
-        }
-        if !from_start && used < cap {
-            // Newton stalled from the sweeps' iterate (where ½‖Φ‖² has a
-            // local minimum that is no solution, or no descent: the sweeps
-            // can cycle there, random spheres k = 3): once, Newton from
-            // the start instead, which takes another path.
-            from_start = true;
-            r.copy_from_slice(&ws.start);
-            ws.refresh(p, r);
+        if !(error <= tolerance) && used < cap {
+            keep_best(ws, r, error, &mut best);
             error = newton_round(p, ws, r, (&mut used, cap), tolerance, &mut best).1;
             if error <= tolerance {
                 return (used, true);
             }
-        }
-        if used < cap {
-            r.copy_from_slice(&ws.best);
-            ws.refresh(p, r);
-            error = prox_rounds(p, ws, r, (&mut used, cap), tolerance, &mut best);
-            if error <= tolerance {
-                return (used, true);
+            if !from_start && used < cap {
+                // Newton stalled from the sweeps' iterate (where ½‖Φ‖² has a
+                // local minimum that is no solution, or no descent: the sweeps
+                // can cycle there, random spheres k = 3): once, Newton from
+                // the start instead, which takes another path.
+                r.copy_from_slice(&ws.start);
+                ws.refresh(p, r);
+                error = newton_round(p, ws, r, (&mut used, cap), tolerance, &mut best).1;
+                if error <= tolerance {
+                    return (used, true);
+                }
             }
-            break;
+            if used < cap {
+                r.copy_from_slice(&ws.best);
+                ws.refresh(p, r);
+                error = prox_rounds(p, ws, r, (&mut used, cap), tolerance, &mut best);
+                if error <= tolerance {
+                    return (used, true);
+                }
+            }
         }
-        if k == 0 && sweeps_per_round >= cap {
-            break;
-        }
-        patient = false;
-        sweeps_per_round *= 2;
     }
     if !(error <= tolerance) && best < error {
         r.copy_from_slice(&ws.best);
