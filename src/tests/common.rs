@@ -111,24 +111,6 @@ pub fn is_positive_definite(lcp: &Lcp, rel_tol: f64) -> bool {
     true
 }
 
-/// A directory under the system temp dir, unique to this process and `tag`,
-/// created empty.
-pub fn temp_dir(tag: &str) -> PathBuf {
-    use std::sync::atomic::{AtomicUsize, Ordering};
-    static COUNTER: AtomicUsize = AtomicUsize::new(0);
-    let nanos = std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .map(|d| d.as_nanos())
-        .unwrap_or(0);
-    let dir = std::env::temp_dir().join(format!(
-        "lcpbatch-test-{tag}-{}-{}-{nanos}",
-        std::process::id(),
-        COUNTER.fetch_add(1, Ordering::Relaxed)
-    ));
-    std::fs::create_dir_all(&dir).expect("create temp dir");
-    dir
-}
-
 /// A GPU context at `precision` for the GPU tests (the environment's
 /// adapter choice, `LCPBATCH_GPU_*`). None, after a [`skip`], when f64 is
 /// asked of an adapter without SHADER_F64 ([`Lack::F64`]), or when there is

@@ -3,15 +3,8 @@
 
 use std::path::PathBuf;
 
-use super::common::lcpbatch;
-
-fn temp(name: &str, text: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("lcpbatch-empty-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
+use super::common::{lcpbatch, temp_dir};
+use super::write;
 
 fn solve(file: &PathBuf, backend: &str) -> (serde_json::Value, String) {
     let out = lcpbatch(&["solve", file.to_str().unwrap(), "--backend", backend]);
@@ -23,7 +16,8 @@ fn solve(file: &PathBuf, backend: &str) -> (serde_json::Value, String) {
 
 #[test]
 fn an_empty_scene_gives_an_empty_result_on_every_backend() {
-    let f = temp("empty.json", r#"{"bodies":[],"contacts":[]}"#);
+    let dir = temp_dir("empty");
+    let f = write(&dir, "empty.json", r#"{"bodies":[],"contacts":[]}"#);
     let expected = serde_json::json!({"scenes": [{"contacts": [], "bodies": [], "islands": []}]});
     let gpu_ok = super::common::gpu_available(lcpbatch::Precision::Auto);
     for backend in ["cpu", "gpu", "auto"] {
@@ -37,7 +31,9 @@ fn an_empty_scene_gives_an_empty_result_on_every_backend() {
 
 #[test]
 fn a_scene_without_contacts_keeps_its_velocities() {
-    let f = temp(
+    let dir = temp_dir("empty");
+    let f = write(
+        &dir,
         "no_contacts.json",
         r#"{"bodies":[{"inv_mass":1.0,"inv_inertia":[[6,0,0],[0,6,0],[0,0,6]],
             "position":[0,0.5,0],"velocity":[0,-1,0],"angular_velocity":[0,0.5,0]}],

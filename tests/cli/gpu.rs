@@ -2,13 +2,12 @@
 //! `--backend cpu` writes (f64 shaders: byte for byte), `info` lists the
 //! adapter and its features, `demo` prints its summary.
 
-use std::path::PathBuf;
-
 use lcpbatch::generate::{demo_world, seed_chain, Rng};
 use lcpbatch::Precision;
 use lcpbatch::Scene;
 
-use super::common::lcpbatch;
+use super::common::{lcpbatch, temp_dir};
+use super::write;
 
 fn ok(args: &[&str]) -> String {
     let out = lcpbatch(args);
@@ -21,24 +20,19 @@ fn ok(args: &[&str]) -> String {
     String::from_utf8(out.stdout).expect("utf-8")
 }
 
-fn temp(name: &str, text: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("lcpbatch-gpu-cli-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
-
 #[test]
 fn gpu_and_cpu_backends_write_the_same_output() {
     let mut rng = Rng::new(5);
     let mut scenes: Vec<Scene> = (0..30).map(|_| demo_world(&mut rng)).collect();
     scenes.push(seed_chain(0.4));
-    let scenes_file = temp(
+    let dir = temp_dir("gpu-cli");
+    let scenes_file = write(
+        &dir,
         "scenes.json",
         &serde_json::json!({ "scenes": scenes }).to_string(),
     );
-    let batch_file = temp(
+    let batch_file = write(
+        &dir,
         "batch.json",
         r#"{"problems":[{"M":[[2,1],[1,2]],"q":[-5,-6]},
             {"M":[[0,-1,2],[2,0,-2],[-1,1,0]],"q":[-3,6,-1]},
@@ -116,7 +110,9 @@ fn info_lists_adapters_and_features() {
     assert!(text.contains("limits: storage binding"), "{text}");
     assert!(text.contains("backend auto: "), "{text}");
     assert!(text.contains("backend gpu: "), "{text}");
-    let f = temp(
+    let dir = temp_dir("gpu-cli");
+    let f = write(
+        &dir,
         "one.json",
         r#"{"problems":[{"M":[[2,1],[1,2]],"q":[-5,-6]}]}"#,
     );
@@ -154,7 +150,7 @@ fn info_lists_adapters_and_features() {
 fn demo_prints_its_summary_and_the_other_path() {
     // Auto: the CPU unless there is a hardware GPU; the other path compared;
     // then 100 worlds stepped in time, their plots written.
-    let out = std::env::temp_dir().join(format!("lcpbatch-demo-{}", std::process::id()));
+    let out = temp_dir("demo");
     let o = out.to_str().unwrap();
     let text = ok(&["demo", "--worlds", "200", "--steps", "20", "--out", o]);
     for needle in [
@@ -173,7 +169,6 @@ fn demo_prints_its_summary_and_the_other_path() {
     for file in ["steps.jsonl", "final.json", "energy.svg", "penetration.svg"] {
         assert!(out.join(file).is_file(), "{file}");
     }
-    std::fs::remove_dir_all(&out).ok();
     if !super::common::gpu_available(Precision::Auto) {
         return;
     }
@@ -208,11 +203,14 @@ fn every_solution_on_the_gpu_is_written_as_the_cpu_writes_it() {
     let mut rng = Rng::new(9);
     let mut scenes: Vec<Scene> = (0..8).map(|_| demo_world(&mut rng)).collect();
     scenes.push(seed_chain(0.4));
-    let scenes_file = temp(
+    let dir = temp_dir("gpu-cli");
+    let scenes_file = write(
+        &dir,
         "all-scenes.json",
         &serde_json::json!({ "scenes": scenes }).to_string(),
     );
-    let batch_file = temp(
+    let batch_file = write(
+        &dir,
         "all-batch.json",
         r#"{"problems":[{"M":[[1,1],[1,1]],"q":[-1,-1]},
             {"M":[[0,-1,2],[2,0,-2],[-1,1,0]],"q":[-3,6,-1]},
@@ -246,12 +244,12 @@ fn info_measures_and_caches_auto_s_cost_model_for_a_named_adapter() {
     if !super::common::gpu_available(Precision::Auto) {
         return;
     }
-    let cache = std::env::temp_dir().join(format!("lcpbatch-cost-cli-{}", std::process::id()));
+    let cache = temp_dir("cost-cli");
     let run = |args: &[&str]| {
         let out = std::process::Command::new(env!("CARGO_BIN_EXE_lcpbatch"))
             .args(args)
             .env("XDG_RUNTIME_DIR", std::env::temp_dir())
-            .env("LCPBATCH_CACHE_DIR", &cache)
+            .env("LCPBATCH_CACHE_DIR", &*cache)
             .output()
             .expect("run lcpbatch");
         assert!(
@@ -282,5 +280,4 @@ fn info_measures_and_caches_auto_s_cost_model_for_a_named_adapter() {
         model(&second),
         "the cached model is read back"
     );
-    std::fs::remove_dir_all(&cache).ok();
 }

@@ -110,7 +110,6 @@ fn solves_a_scene_file() {
         assert_eq!(scenes.len(), 1);
         check_scene_output(&scenes[0], &scene, solver);
     }
-    std::fs::remove_dir_all(dir).ok();
 }
 
 #[test]
@@ -148,7 +147,6 @@ fn solves_a_multi_scene_file_to_an_output_file() {
         .map(|e| e.unwrap().file_name().into_string().unwrap())
         .collect();
     assert_eq!(names.len(), 2, "{names:?}");
-    std::fs::remove_dir_all(dir).ok();
 }
 
 #[test]
@@ -197,7 +195,6 @@ fn solves_an_lcp_batch_with_every_solver() {
     ]);
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("--all-solutions"));
-    std::fs::remove_dir_all(dir).ok();
 }
 
 #[test]
@@ -247,7 +244,6 @@ fn solves_a_dat_file() {
         assert_eq!(p["status"], "no_solution", "{p}");
         assert_eq!(p["solution_set"], json!({"kind": "empty"}));
     }
-    std::fs::remove_dir_all(dir).ok();
 }
 
 /// Bad input: exit non-zero, stderr names every `needles`, and with -o no
@@ -278,7 +274,6 @@ fn refuse(name: &str, text: &str, needles: &[&str]) {
         "{name}: {}",
         String::from_utf8_lossy(&out.stdout)
     );
-    std::fs::remove_dir_all(dir).ok();
 }
 
 fn scene_json_value(edit: impl FnOnce(&mut Value)) -> Value {

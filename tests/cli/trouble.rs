@@ -2,7 +2,7 @@
 //! without it. `solve` warns once and writes the CPU's output, byte for
 //! byte; `demo` runs on the CPU. (The library's side: src/tests/device_trouble.rs.)
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 use lcpbatch::device::list_adapters;
@@ -10,7 +10,8 @@ use lcpbatch::generate::families::island_lcps;
 use lcpbatch::generate::{demo_world, random_island, seed_chain, Rng};
 use lcpbatch::{BackendChoice, Lcp, Scene};
 
-use super::common::{skip, Lack};
+use super::common::{skip, temp_dir, Lack};
+use super::write;
 
 fn scenes() -> Vec<Scene> {
     let mut rng = Rng::new(11);
@@ -43,15 +44,8 @@ fn lcpbatch(args: &[&str], env: &[(&str, &str)]) -> Output {
     c.output().expect("runs")
 }
 
-fn temp(name: &str, text: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("lcpbatch-trouble-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
-
-fn files() -> [PathBuf; 2] {
+/// The batch and scenes files, in `dir`.
+fn files(dir: &Path) -> [PathBuf; 2] {
     let problems: Vec<serde_json::Value> = lcps()
         .iter()
         .map(|l| {
@@ -61,11 +55,13 @@ fn files() -> [PathBuf; 2] {
         })
         .collect();
     [
-        temp(
+        write(
+            dir,
             "batch.json",
             &serde_json::json!({ "problems": problems }).to_string(),
         ),
-        temp(
+        write(
+            dir,
             "scenes.json",
             &serde_json::json!({ "scenes": scenes() }).to_string(),
         ),
@@ -83,7 +79,8 @@ fn stdout_of(out: &Output, what: &str) -> String {
 
 #[test]
 fn cli_gpu_without_the_adapter_warns_and_writes_the_cpu_output() {
-    for file in files() {
+    let dir = temp_dir("trouble");
+    for file in files(&dir) {
         let f = file.to_str().unwrap();
         let cpu = stdout_of(&lcpbatch(&["solve", f, "--backend", "cpu"], &[]), "cpu");
         assert!(cpu.contains("\"status\""));
@@ -130,7 +127,8 @@ fn cli_f64_on_gl_warns_and_writes_the_cpu_output() {
         );
         return;
     }
-    for file in files() {
+    let dir = temp_dir("trouble");
+    for file in files(&dir) {
         let f = file.to_str().unwrap();
         let cpu = stdout_of(&lcpbatch(&["solve", f, "--backend", "cpu"], &[]), "cpu");
         // The flag, and the environment variables.

@@ -12,22 +12,42 @@ use lcpbatch::{Backend, GpuSettings, Method, Precision, Settings, Solver};
 mod skip;
 pub use skip::{fc3d_dir, siconos_dir, skip, Lack};
 
-/// A directory under the system temp dir, unique to this process and `tag`,
-/// created empty.
-pub fn temp_dir(tag: &str) -> PathBuf {
+/// A directory under the system temp dir, unique to this call, created
+/// empty and removed with everything in it when dropped (a failing test's
+/// too: unwinding drops it).
+pub struct TempDir(PathBuf);
+
+impl std::ops::Deref for TempDir {
+    type Target = std::path::Path;
+    fn deref(&self) -> &std::path::Path {
+        &self.0
+    }
+}
+
+impl AsRef<std::path::Path> for TempDir {
+    fn as_ref(&self) -> &std::path::Path {
+        &self.0
+    }
+}
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// A [`TempDir`] named after `tag`, this process and a counter.
+pub fn temp_dir(tag: &str) -> TempDir {
     use std::sync::atomic::{AtomicUsize, Ordering};
     static COUNTER: AtomicUsize = AtomicUsize::new(0);
-    let nanos = std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .map(|d| d.as_nanos())
-        .unwrap_or(0);
     let dir = std::env::temp_dir().join(format!(
-        "lcpbatch-test-{tag}-{}-{}-{nanos}",
+        "lcpbatch-test-{tag}-{}-{}",
         std::process::id(),
         COUNTER.fetch_add(1, Ordering::Relaxed)
     ));
+    let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).expect("create temp dir");
-    dir
+    TempDir(dir)
 }
 
 /// Whether the environment's adapter (`LCPBATCH_GPU_*`) opens at
