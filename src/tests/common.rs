@@ -3,8 +3,6 @@
 //! the GPU tests' adapter (every skip goes through [`skip`]).
 #![allow(dead_code)]
 
-use std::path::PathBuf;
-
 use crate::settings::{Backend, Method, Settings};
 use crate::tests::reference::solve;
 use crate::{Lcp, LcpSolution};
