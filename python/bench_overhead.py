@@ -27,6 +27,13 @@ plus gradient of L = c·z with respect to M and q on the same batch:
   the same batch, each timed in Rust with its problems already built
   (``time_solve_lcps``, ``time_lcp_vjp``).
 
+Each adapter is also timed on the same loss with the solve replaced by a
+framework op of the same shapes (z = q + M[..., 0]): the framework's own
+cost of the loss and its gradient, which any differentiable z pays. The
+figures "net" take it off: the adapter's own overhead. On a loaded machine
+PyTorch's intra-op threads compete with the solver's (use
+``--torch-threads 1`` to see the adapter without that).
+
 Target: each adapter ≤ 10% over the Rust calls (ratios of medians and of
 minimums).
 """
@@ -52,9 +59,10 @@ def batch(problems: int, n: int, seed: int = 0):
     return M, q
 
 
-def adapters(M, q, c, backend: str):
-    """The solve + gradient of each adapter installed, as functions of no
-    argument that return when the gradient is ready."""
+def adapters(M, q, c, backend: str, torch_threads: int):
+    """The solve + gradient of each adapter installed, and the same loss's
+    gradient without the solve (the framework's own cost), as pairs of
+    functions of no argument that return when the gradient is ready."""
     calls = {}
     try:
         import jax
@@ -68,7 +76,9 @@ def adapters(M, q, c, backend: str):
         Mj, qj, cj = jnp.asarray(M), jnp.asarray(q), jnp.asarray(c)
         step = jax.jit(jax.value_and_grad(
             lambda M, q: jnp.sum(cj * lcpbatch.jax.solve(M, q, backend=backend)[0]), argnums=(0, 1)))
-        calls["jax"] = lambda: jax.block_until_ready(step(Mj, qj))
+        base = jax.jit(jax.value_and_grad(lambda M, q: jnp.sum(cj * (q + M[..., 0])), argnums=(0, 1)))
+        calls["jax"] = (lambda: jax.block_until_ready(step(Mj, qj)),
+                        lambda: jax.block_until_ready(base(Mj, qj)))
     try:
         import torch
     except ImportError:
@@ -76,6 +86,8 @@ def adapters(M, q, c, backend: str):
     else:
         import lcpbatch.torch
 
+        if torch_threads > 0:
+            torch.set_num_threads(torch_threads)
         Mt, qt, ct = (torch.tensor(a) for a in (M, q, c))
         Mt.requires_grad_(True)
         qt.requires_grad_(True)
@@ -84,7 +96,10 @@ def adapters(M, q, c, backend: str):
             z, _ = lcpbatch.torch.solve(Mt, qt, backend=backend)
             return torch.autograd.grad((ct * z).sum(), (Mt, qt))
 
-        calls["torch"] = torch_step
+        def torch_base():
+            return torch.autograd.grad((ct * (qt + Mt[..., 0])).sum(), (Mt, qt))
+
+        calls["torch"] = (torch_step, torch_base)
     return calls
 
 
@@ -93,16 +108,21 @@ def grad_overhead(args: argparse.Namespace) -> None:
     c = np.random.default_rng(1).standard_normal(q.shape)
     s = lcpbatch.Solver(backend=args.backend)
     z = s.solve(M, q).z
-    calls = adapters(M, q, c, args.backend)
-    for f in calls.values():
+    calls = adapters(M, q, c, args.backend, args.torch_threads)
+    for f, base in calls.values():
         f()  # warm-up: compilation, the cached solver, thread pool
+        base()
     times = {name: [] for name in calls}
+    bases = {name: [] for name in calls}
     rust = []
     for _ in range(args.repeats):
-        for name, f in calls.items():
+        for name, (f, base) in calls.items():
             t = time.perf_counter()
             f()
             times[name].append(time.perf_counter() - t)
+            t = time.perf_counter()
+            base()
+            bases[name].append(time.perf_counter() - t)
         rust.append(s._native.time_solve_lcps(M, q, 1)[0] + lcpbatch._native.time_lcp_vjp(M, q, z, c, 1)[0])
     out = {"problems": args.problems, "n": args.n, "device": s.device, "repeats": args.repeats,
            "rust_solve_plus_vjp_s_median": statistics.median(rust), "rust_solve_plus_vjp_s_min": min(rust)}
@@ -111,11 +131,18 @@ def grad_overhead(args: argparse.Namespace) -> None:
         out[f"{name}_s_min"] = min(ts)
         out[f"{name}_overhead_of_medians"] = statistics.median(ts) / statistics.median(rust) - 1.0
         out[f"{name}_overhead_of_minimums"] = min(ts) / min(rust) - 1.0
+        out[f"{name}_framework_s_median"] = statistics.median(bases[name])
+        net = [t - b for t, b in zip(ts, bases[name])]
+        out[f"{name}_net_overhead_of_medians"] = statistics.median(net) / statistics.median(rust) - 1.0
+        out[f"{name}_net_overhead_of_minimums"] = min(net) / min(rust) - 1.0
     print(json.dumps(out, indent=2))
     for name in times:
         print(f"overhead of lcpbatch.{name} solve + grad over the Rust solve + VJP ({args.problems} problems, "
               f"n = {args.n}, {s.device}): medians {100 * out[f'{name}_overhead_of_medians']:+.1f}%, "
-              f"minimums {100 * out[f'{name}_overhead_of_minimums']:+.1f}% "
+              f"minimums {100 * out[f'{name}_overhead_of_minimums']:+.1f}%; net of the framework's own "
+              f"{1e3 * out[f'{name}_framework_s_median']:.1f} ms: medians "
+              f"{100 * out[f'{name}_net_overhead_of_medians']:+.1f}%, minimums "
+              f"{100 * out[f'{name}_net_overhead_of_minimums']:+.1f}% "
               f"({1e3 * out['rust_solve_plus_vjp_s_median']:.1f} ms Rust median of {args.repeats})")
 
 
@@ -127,6 +154,8 @@ def main() -> None:
     ap.add_argument("--backend", default="cpu")
     ap.add_argument("--solver", default="auto")
     ap.add_argument("--grad", action="store_true", help="time the adapters' solve + gradient")
+    ap.add_argument("--torch-threads", type=int, default=0,
+                    help="torch.set_num_threads for --grad (0: PyTorch's default)")
     args = ap.parse_args()
     if args.grad:
         grad_overhead(args)
