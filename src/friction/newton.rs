@@ -24,9 +24,9 @@
 
 use super::problem::FrictionProblem;
 use super::sparse::{
-    blocks_dot, cholesky_in, cholesky_solve, lower_envelope, lu_envelope, product_sparse, Pattern,
+    blocks_dot, cholesky_in, lower_envelope, lu_envelope, product_sparse, Pattern,
 };
-use super::workspace::{dot, Workspace};
+use super::workspace::Workspace;
 use crate::linalg::{solve_in_place, PIVOT_TOL};
 
 /// Φ(r) (3k) into `phi`, given u = W r + q, and when `jacobian` is Some its
@@ -320,46 +320,46 @@ fn stick_step(p: &FrictionProblem, ws: &mut Workspace) -> bool {
     if m == 0 {
         return ws.delta.iter().all(|d| d.is_finite());
     }
-    let free_delta = |row: &[f64], delta: &[f64], stuck: &[usize]| {
-        // Σ over the free contacts j of W_row,j Δ_j: the whole row times Δ
-        // minus the sticking contacts' part (their Δ is still −Φ here).
-        let mut v = dot(row, delta);
-        for &j in stuck {
+    let (stuck, pattern, env_first) = (&ws.stuck, &ws.pattern, &ws.env_first);
+    let free_delta = |row: &[f64], i: usize, delta: &[f64]| {
+        // Σ over the free contacts j of W_row,j Δ_j: the row times Δ over
+        // i's neighbours (the bits of the whole row's `dot`) minus the
+        // sticking neighbours' part (their Δ is still −Φ here).
+        let blocks = pattern.row(i);
+        let mut v = blocks_dot(row, blocks, delta);
+        for &j in blocks.iter().filter(|j| stuck.binary_search(j).is_ok()) {
             v -= row[3 * j] * delta[3 * j]
                 + row[3 * j + 1] * delta[3 * j + 1]
                 + row[3 * j + 2] * delta[3 * j + 2];
         }
         v
     };
+    // W_SS's row s: its lower triangle (all the Cholesky reads), on large
+    // islands from W's envelope on (W's row is zero left of it).
+    let from = |s: usize| {
+        env_first
+            .get(3 * stuck[s / 3])
+            .map_or(0, |&f| 3 * stuck.partition_point(|&j| 3 * j < f))
+    };
     let all_stick = m == n;
-    for (a, &i) in ws.stuck.iter().enumerate() {
+    for (a, &i) in stuck.iter().enumerate() {
         for d in 0..3 {
-            let row = 3 * i + d;
+            let (row, s) = (3 * i + d, 3 * a + d);
             let w_row = &p.w[row * n..(row + 1) * n];
             let coupling = if all_stick {
                 0.0
             } else {
-                free_delta(w_row, &ws.delta, &ws.stuck)
+                free_delta(w_row, i, &ws.delta)
             };
-            ws.trial[3 * a + d] = -ws.phi[row] / ws.rho[i] - coupling;
-            if all_stick {
-                continue;
-            }
-            for (b, &j) in ws.stuck.iter().enumerate() {
-                let at = (3 * a + d) * m + 3 * b;
-                let (to, from) = (&mut ws.matrix[at..at + 3], &w_row[3 * j..3 * j + 3]);
-                to[0] = from[0];
-                to[1] = from[1];
-                to[2] = from[2];
+            ws.trial[s] = -ws.phi[row] / ws.rho[i] - coupling;
+            for c in from(s)..=s {
+                ws.matrix[s * m + c] = w_row[3 * stuck[c / 3] + c % 3];
             }
         }
     }
-    if all_stick {
-        // W_SS is W (`ws.stuck` is every contact, in order).
-        ws.matrix.copy_from_slice(&p.w);
-    }
+    lower_envelope(&ws.matrix[..m * m], m, from, &mut ws.first);
     let (matrix, trial) = (&mut ws.matrix[..m * m], &mut ws.trial[..m]);
-    if cholesky_solve(matrix, trial, m, Some(1e-10), &mut ws.first).is_none() {
+    if cholesky_in(matrix, trial, m, Some(1e-10), &ws.first).is_none() {
         return false;
     }
     for (a, &i) in ws.stuck.iter().enumerate() {

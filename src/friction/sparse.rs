@@ -9,8 +9,10 @@
 //! [`SPARSE_FROM`] contacts, a reordering of the contacts (reverse
 //! Cuthill–McKee on the contact graph, [`bandwidth_order`]) that gathers
 //! W's nonzeros near the diagonal, so that the Newton step's factorisations
-//! (the Cholesky of `newton::cholesky_solve`, the LU of [`lu_envelope`])
-//! work within an envelope instead of on a dense 3k × 3k matrix.
+//! (the Cholesky [`cholesky_in`], the LU [`lu_envelope`]) work within an
+//! envelope instead of on a dense 3k × 3k matrix, and every matrix a step
+//! builds (∂Φ's copy, W_RR, W_SS, ∂Φᵀ∂Φ) is written within it only: a
+//! Newton step on 570 contacts touches no O((3k)²) array.
 
 use super::problem::FrictionProblem;
 use super::workspace::dot;
@@ -255,22 +257,6 @@ pub fn lu_envelope(
     x.iter().all(|v| v.is_finite())
 }
 
-/// Solves A x = b for a symmetric positive definite A (n × n, row-major,
-/// overwritten by its Cholesky factor L in the lower triangle; the upper
-/// triangle is never read) by A = L Lᵀ: n³/6 multiply-adds, half of LU's,
-/// fewer within A's envelope (`env`: scratch, see [`lower_envelope`]).
-/// `x` holds b on entry. See [`cholesky_in`] for the result and `drop`.
-pub(crate) fn cholesky_solve(
-    a: &mut [f64],
-    x: &mut [f64],
-    n: usize,
-    drop: Option<f64>,
-    env: &mut Vec<usize>,
-) -> Option<usize> {
-    lower_envelope(a, n, |_| 0, env);
-    cholesky_in(a, x, n, drop, env)
-}
-
 /// The envelope of the lower triangle of the n × n row-major `a`, into
 /// `env` (2n): `env[i]`, row i's first nonzero left of the diagonal (i
 /// where there is none), looked for from `start(i)` on (`a`'s row i is
@@ -278,7 +264,7 @@ pub(crate) fn cholesky_solve(
 /// row k ≥ i whose first nonzero is at most column i. L has no entry
 /// outside it (no fill there), so that [`cholesky_in`] skips those zeros:
 /// O(rows × envelope width) instead of O(n²) to find it where `start` is
-/// the envelope of a block pattern.
+/// the envelope of a block pattern (0 for a dense search).
 pub(crate) fn lower_envelope(
     a: &[f64],
     n: usize,
@@ -296,8 +282,12 @@ pub(crate) fn lower_envelope(
     }
 }
 
-/// [`cholesky_solve`] with `env` the [`lower_envelope`] of A: reads A's
-/// lower triangle within it only (rows i, columns `env[i]..=i`).
+/// Solves A x = b for a symmetric positive definite A (n × n, row-major,
+/// overwritten by its Cholesky factor L in the lower triangle) by
+/// A = L Lᵀ within its envelope `env` ([`lower_envelope`]): A's lower
+/// triangle is read there only (rows i, columns `env[i]..=i`), about n
+/// times the envelope's width squared / 2 multiply-adds (n³/6 dense, half
+/// of LU's). `x` holds b on entry.
 /// None when a pivot is not positive (A not positive definite to
 /// rounding); else the number of pivots dropped (below).
 ///
