@@ -23,8 +23,10 @@
 //! ½‖Φ‖² decides the step length (Armijo, halving).
 
 use super::problem::FrictionProblem;
-use super::sparse::{blocks_dot, lu_envelope, product_sparse, Pattern};
-use super::workspace::{dot, Workspace};
+use super::sparse::{
+    blocks_dot, cholesky_in, lower_envelope, lu_envelope, product_sparse, Pattern,
+};
+use super::workspace::Workspace;
 use crate::linalg::{solve_in_place, PIVOT_TOL};
 
 /// Φ(r) (3k) into `phi`, given u = W r + q, and when `jacobian` is Some its
@@ -156,16 +158,21 @@ fn step(p: &FrictionProblem, r: &[f64], ws: &mut Workspace) -> Option<f64> {
         ws.singular = true;
     }
     if !ws.singular {
-        ws.matrix.copy_from_slice(&ws.jac);
         for (d, f) in ws.delta.iter_mut().zip(&ws.phi) {
             *d = -f;
         }
         // Large islands (reordered, `sparse::SPARSE_FROM`): within W's
         // envelope, without row exchanges (∂Φ's rows of contact i are
-        // combinations of e_i's and W_i's: its pattern is W's).
+        // combinations of e_i's and W_i's: its pattern is W's), of which
+        // only the envelope is copied (all the LU reads).
         let solved = if ws.env_first.is_empty() {
+            ws.matrix.copy_from_slice(&ws.jac);
             solve_in_place(&mut ws.matrix, &mut ws.delta, n, PIVOT_TOL)
         } else {
+            for (i, (&f, &l)) in ws.env_first.iter().zip(&ws.env_last).enumerate() {
+                let within = i * n + f..=i * n + l;
+                ws.matrix[within.clone()].copy_from_slice(&ws.jac[within]);
+            }
             lu_envelope(
                 &mut ws.matrix,
                 &mut ws.delta,
@@ -181,28 +188,22 @@ fn step(p: &FrictionProblem, r: &[f64], ws: &mut Workspace) -> Option<f64> {
     }
     // λ = 1e-10 of the mean diagonal; where rounding leaves the damped
     // matrix not positive definite to Cholesky, λ grows a thousandfold.
-    // ∂Φᵀ∂Φ and −∂ΦᵀΦ once (row by row of ∂Φ, contiguous); each damping
-    // tried solves a copy.
-    normal_matrix(&ws.jac, n, &mut ws.normal);
+    // ∂Φᵀ∂Φ and −∂ΦᵀΦ once; each damping tried solves a copy of the
+    // normal matrix's lower envelope (all the Cholesky reads).
+    normal_system(n, ws);
     let mean = (0..n).map(|i| ws.normal[i * n + i]).sum::<f64>() / n as f64;
-    ws.trial.fill(0.0);
-    for (k, &f) in ws.phi.iter().enumerate() {
-        if f != 0.0 {
-            let row = &ws.jac[k * n..(k + 1) * n];
-            for (d, a) in ws.trial.iter_mut().zip(row) {
-                *d -= a * f;
-            }
-        }
-    }
     let mut damping = 1e-10;
     loop {
-        ws.matrix.copy_from_slice(&ws.normal);
+        for (i, &f) in ws.first[..n].iter().enumerate() {
+            let within = i * n + f..=i * n + i;
+            ws.matrix[within.clone()].copy_from_slice(&ws.normal[within]);
+        }
         let lambda = damping * mean + f64::MIN_POSITIVE;
         for i in 0..n {
             ws.matrix[i * n + i] += lambda;
         }
         ws.delta.copy_from_slice(&ws.trial);
-        if cholesky_solve(&mut ws.matrix, &mut ws.delta, n, None, &mut ws.first).is_some()
+        if cholesky_in(&mut ws.matrix, &mut ws.delta, n, None, &ws.first).is_some()
             && ws.delta.iter().all(|d| d.is_finite())
         {
             break;
@@ -269,19 +270,28 @@ fn w_rows_dependent(p: &FrictionProblem, ws: &mut Workspace) -> bool {
     if m < 2 {
         return false;
     }
-    for (a, &ra) in ws.w_rows.iter().enumerate() {
-        for (b, &rb) in ws.w_rows.iter().enumerate() {
-            ws.matrix[a * m + b] = p.w[ra * n + rb];
+    // W_RR's lower triangle (all the Cholesky reads); on large islands
+    // from W's envelope on (row r of W is zero left of `env_first[r]`).
+    let (rows, env_first) = (&ws.w_rows, &ws.env_first);
+    let from = |a: usize| {
+        env_first
+            .get(rows[a])
+            .map_or(0, |&f| rows.partition_point(|&rb| rb < f))
+    };
+    for (a, &ra) in rows.iter().enumerate() {
+        for b in from(a)..=a {
+            ws.matrix[a * m + b] = p.w[ra * n + rows[b]];
         }
     }
+    lower_envelope(&ws.matrix[..m * m], m, from, &mut ws.first);
     ws.trial[..m].fill(0.0);
     matches!(
-        cholesky_solve(
+        cholesky_in(
             &mut ws.matrix[..m * m],
             &mut ws.trial[..m],
             m,
             Some(1e-10),
-            &mut ws.first
+            &ws.first
         ),
         Some(dropped) if dropped > 0
     )
@@ -310,46 +320,46 @@ fn stick_step(p: &FrictionProblem, ws: &mut Workspace) -> bool {
     if m == 0 {
         return ws.delta.iter().all(|d| d.is_finite());
     }
-    let free_delta = |row: &[f64], delta: &[f64], stuck: &[usize]| {
-        // Σ over the free contacts j of W_row,j Δ_j: the whole row times Δ
-        // minus the sticking contacts' part (their Δ is still −Φ here).
-        let mut v = dot(row, delta);
-        for &j in stuck {
+    let (stuck, pattern, env_first) = (&ws.stuck, &ws.pattern, &ws.env_first);
+    let free_delta = |row: &[f64], i: usize, delta: &[f64]| {
+        // Σ over the free contacts j of W_row,j Δ_j: the row times Δ over
+        // i's neighbours (the bits of the whole row's `dot`) minus the
+        // sticking neighbours' part (their Δ is still −Φ here).
+        let blocks = pattern.row(i);
+        let mut v = blocks_dot(row, blocks, delta);
+        for &j in blocks.iter().filter(|j| stuck.binary_search(j).is_ok()) {
             v -= row[3 * j] * delta[3 * j]
                 + row[3 * j + 1] * delta[3 * j + 1]
                 + row[3 * j + 2] * delta[3 * j + 2];
         }
         v
     };
+    // W_SS's row s: its lower triangle (all the Cholesky reads), on large
+    // islands from W's envelope on (W's row is zero left of it).
+    let from = |s: usize| {
+        env_first
+            .get(3 * stuck[s / 3])
+            .map_or(0, |&f| 3 * stuck.partition_point(|&j| 3 * j < f))
+    };
     let all_stick = m == n;
-    for (a, &i) in ws.stuck.iter().enumerate() {
+    for (a, &i) in stuck.iter().enumerate() {
         for d in 0..3 {
-            let row = 3 * i + d;
+            let (row, s) = (3 * i + d, 3 * a + d);
             let w_row = &p.w[row * n..(row + 1) * n];
             let coupling = if all_stick {
                 0.0
             } else {
-                free_delta(w_row, &ws.delta, &ws.stuck)
+                free_delta(w_row, i, &ws.delta)
             };
-            ws.trial[3 * a + d] = -ws.phi[row] / ws.rho[i] - coupling;
-            if all_stick {
-                continue;
-            }
-            for (b, &j) in ws.stuck.iter().enumerate() {
-                let at = (3 * a + d) * m + 3 * b;
-                let (to, from) = (&mut ws.matrix[at..at + 3], &w_row[3 * j..3 * j + 3]);
-                to[0] = from[0];
-                to[1] = from[1];
-                to[2] = from[2];
+            ws.trial[s] = -ws.phi[row] / ws.rho[i] - coupling;
+            for c in from(s)..=s {
+                ws.matrix[s * m + c] = w_row[3 * stuck[c / 3] + c % 3];
             }
         }
     }
-    if all_stick {
-        // W_SS is W (`ws.stuck` is every contact, in order).
-        ws.matrix.copy_from_slice(&p.w);
-    }
+    lower_envelope(&ws.matrix[..m * m], m, from, &mut ws.first);
     let (matrix, trial) = (&mut ws.matrix[..m * m], &mut ws.trial[..m]);
-    if cholesky_solve(matrix, trial, m, Some(1e-10), &mut ws.first).is_none() {
+    if cholesky_in(matrix, trial, m, Some(1e-10), &ws.first).is_none() {
         return false;
     }
     for (a, &i) in ws.stuck.iter().enumerate() {
@@ -358,107 +368,55 @@ fn stick_step(p: &FrictionProblem, ws: &mut Workspace) -> bool {
     ws.delta.iter().all(|d| d.is_finite())
 }
 
-/// ∂Φᵀ∂Φ into `out` (n × n): the sum over the rows a of ∂Φ of a aᵀ, the
-/// upper triangle accumulated row by row (contiguous, skipping zeros: the
-/// rows of W are zero between contacts that share no body), then mirrored.
-fn normal_matrix(jac: &[f64], n: usize, out: &mut [f64]) {
-    out.fill(0.0);
-    for row in jac.chunks_exact(n) {
-        for (i, &a) in row.iter().enumerate() {
-            if a == 0.0 {
-                continue;
-            }
-            let target = &mut out[i * n + i..(i + 1) * n];
-            for (o, b) in target.iter_mut().zip(&row[i..]) {
-                *o += a * b;
-            }
+/// ∂Φᵀ∂Φ into `ws.normal` (its lower triangle within its envelope, all
+/// the Cholesky reads), −∂ΦᵀΦ into `ws.trial`, and that envelope into
+/// `ws.first` ([`lower_envelope`]). Sums over ∂Φ's rows in order, each
+/// row over its nonzero blocks only (W's pattern: contact k/3's
+/// neighbours), so that (∂Φᵀ∂Φ)_ji is zero unless contacts j/3 and i/3
+/// share a neighbour: on large islands (`ws.env_first` set) the envelope
+/// starts at the first neighbour of a neighbour and nothing before it is
+/// touched. The products skipped are zeros (±0, which leave a sum that
+/// starts at +0 as it is): the dense sums' bits.
+fn normal_system(n: usize, ws: &mut Workspace) {
+    let (pattern, large) = (&ws.pattern, !ws.env_first.is_empty());
+    let reach = |i: usize| match large {
+        true => {
+            3 * pattern
+                .row(i / 3)
+                .iter()
+                .map(|&b| pattern.row(b)[0])
+                .min()
+                .unwrap_or(i / 3)
         }
-    }
-    for i in 0..n {
-        for j in 0..i {
-            out[i * n + j] = out[j * n + i];
-        }
-    }
-}
-
-/// Solves A x = b for a symmetric positive definite A (n × n, row-major,
-/// overwritten by its Cholesky factor L in the lower triangle) by
-/// A = L Lᵀ: n³/6 multiply-adds, half of LU's, fewer within A's envelope
-/// (`first`: scratch). `x` holds b on entry.
-/// None when a pivot is not positive (A not positive definite to
-/// rounding); else the number of pivots dropped (below).
-///
-/// With `drop` = Some(ρ), A may be positive *semi*definite: a pivot at most
-/// ρ times its diagonal entry (a column dependent on the ones before, to
-/// rounding) is dropped, its unknown set to 0 and its column of L zeroed,
-/// which gives a solution of A x = b when b is in A's range.
-fn cholesky_solve(
-    a: &mut [f64],
-    x: &mut [f64],
-    n: usize,
-    drop: Option<f64>,
-    first: &mut Vec<usize>,
-) -> Option<usize> {
-    // The envelope: row i's first nonzero in the lower triangle. L has no
-    // entry before it (no fill there), so every product skips the zeros
-    // ahead of it: W of a stack is block-tridiagonal by level.
-    first.clear();
-    first.extend((0..n).map(|i| (0..i).find(|&j| a[i * n + j] != 0.0).unwrap_or(i)));
-    let mut dropped = 0;
+        false => 0,
+    };
     for j in 0..n {
-        let fj = first[j];
-        let row_j = &a[j * n + fj..j * n + j];
-        let diagonal = a[j * n + j];
-        let d = diagonal - dot(row_j, row_j);
-        let drops = match drop {
-            Some(rho) => !(d > rho * diagonal),
-            None if !(d > 0.0) => return None,
-            None => false,
-        };
-        if drops {
-            dropped += 1;
-            a[j * n + j] = 0.0;
-            for i in j + 1..n {
-                a[i * n + j] = 0.0;
-            }
-            continue;
-        }
-        let d = d.sqrt();
-        a[j * n + j] = d;
-        let inv = 1.0 / d;
-        for i in j + 1..n {
-            if first[i] > j {
-                continue; // L_ij = A_ij = 0
-            }
-            let s = first[i].max(fj);
-            let (upper, lower) = a.split_at_mut(i * n);
-            let lj = &upper[j * n + s..j * n + j];
-            let li = &mut lower[..n];
-            li[j] = (li[j] - dot(&li[s..j], lj)) * inv;
-        }
+        ws.normal[j * n + reach(j)..=j * n + j].fill(0.0);
     }
-    // L y = b, then Lᵀ x = y (a dropped unknown is 0).
-    for i in 0..n {
-        let fi = first[i];
-        let d = dot(&a[i * n + fi..i * n + i], &x[fi..i]);
-        let p = a[i * n + i];
-        x[i] = if p == 0.0 { 0.0 } else { (x[i] - d) / p };
-    }
-    for i in (0..n).rev() {
-        let p = a[i * n + i];
-        if p == 0.0 {
-            x[i] = 0.0;
-            continue;
-        }
-        let mut v = x[i];
-        for k in i + 1..n {
-            if first[k] <= i {
-                v -= a[k * n + i] * x[k];
+    ws.trial.fill(0.0);
+    for (k, row) in ws.jac.chunks_exact(n).enumerate() {
+        let cols = pattern.row(k / 3);
+        for (at, &bi) in cols.iter().enumerate() {
+            for i in 3 * bi..3 * bi + 3 {
+                let a = row[i];
+                if a == 0.0 {
+                    continue;
+                }
+                for &bj in &cols[at..] {
+                    for j in (3 * bj).max(i)..3 * bj + 3 {
+                        ws.normal[j * n + i] += a * row[j];
+                    }
+                }
             }
         }
-        x[i] = v / p;
+        let f = ws.phi[k];
+        if f != 0.0 {
+            for c in cols.iter().flat_map(|&b| 3 * b..3 * b + 3) {
+                ws.trial[c] -= row[c] * f;
+            }
+        }
     }
-    Some(dropped)
+    lower_envelope(&ws.normal, n, reach, &mut ws.first);
 }
 
 /// The merit's slope along Δ: (∂ΦᵀΦ)·Δ = Φ·(∂Φ Δ).

@@ -16,7 +16,8 @@
 
 use super::newton::newton_in;
 use super::problem::FrictionProblem;
-use super::workspace::Workspace;
+use super::residual::norm;
+use super::workspace::{diagonal_block, Workspace};
 
 /// σ of α = σ e d̄ (Siconos' default 5).
 const SIGMA: f64 = 5.0;
@@ -67,7 +68,11 @@ pub(crate) fn prox_in(
             inner.w[i * n + i] = p.w[i * n + i] + alpha;
             inner.q[i] = p.q[i] - alpha * r[i];
         }
-        inner_ws.prepare(&inner, r);
+        if steps == 0 {
+            inner_ws.prepare(&inner, r);
+        } else {
+            refit(&inner, &mut inner_ws, r);
+        }
         let inner_tolerance = (error / INNER_RATIO).max(tolerance);
         let budget = INNER_STEPS.min(max_steps - steps);
         let (taken, inner_error) = newton_in(&inner, &mut inner_ws, r, budget, inner_tolerance);
@@ -84,4 +89,25 @@ pub(crate) fn prox_in(
         alpha = SIGMA * error * scale * boost;
     }
     (steps, error)
+}
+
+/// What [`Workspace::prepare`] computes from W's diagonal and q, anew for
+/// `inner`, whose W differs from the one `ws` was prepared for on the
+/// diagonal only (W + αI for another α): the diagonal blocks, the scalings
+/// ρ_i = 1 / W_ii,nn (1 when not positive), ‖q‖, and u = W r + q, the
+/// numbers `prepare` gives. W's pattern, its envelope and every buffer's
+/// size stay; ∂Φ is rewritten within the pattern before it is read.
+fn refit(inner: &FrictionProblem, ws: &mut Workspace, r: &[f64]) {
+    for (i, (block, rho)) in ws.blocks.iter_mut().zip(&mut ws.rho).enumerate() {
+        *block = diagonal_block(inner, i);
+        let d = block[0][0];
+        *rho = if d > 0.0 && d.is_finite() {
+            1.0 / d
+        } else {
+            1.0
+        };
+    }
+    ws.q_norm = norm(&inner.q);
+    ws.singular = false;
+    ws.refresh(inner, r);
 }

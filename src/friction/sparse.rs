@@ -9,10 +9,13 @@
 //! [`SPARSE_FROM`] contacts, a reordering of the contacts (reverse
 //! Cuthill–McKee on the contact graph, [`bandwidth_order`]) that gathers
 //! W's nonzeros near the diagonal, so that the Newton step's factorisations
-//! (the Cholesky of `newton::cholesky_solve`, the LU of [`lu_envelope`])
-//! work within an envelope instead of on a dense 3k × 3k matrix.
+//! (the Cholesky [`cholesky_in`], the LU [`lu_envelope`]) work within an
+//! envelope instead of on a dense 3k × 3k matrix, and every matrix a step
+//! builds (∂Φ's copy, W_RR, W_SS, ∂Φᵀ∂Φ) is written within it only: a
+//! Newton step on 570 contacts touches no O((3k)²) array.
 
 use super::problem::FrictionProblem;
+use super::workspace::dot;
 
 /// Islands of at least this many contacts are solved in the contact order
 /// of [`bandwidth_order`], their Newton steps factored within W's envelope
@@ -252,6 +255,109 @@ pub fn lu_envelope(
         x[i] = (x[i] - s) / row[i];
     }
     x.iter().all(|v| v.is_finite())
+}
+
+/// The envelope of the lower triangle of the n × n row-major `a`, into
+/// `env` (2n): `env[i]`, row i's first nonzero left of the diagonal (i
+/// where there is none), looked for from `start(i)` on (`a`'s row i is
+/// zero before it, and need not be written there); `env[n + i]`, the last
+/// row k ≥ i whose first nonzero is at most column i. L has no entry
+/// outside it (no fill there), so that [`cholesky_in`] skips those zeros:
+/// O(rows × envelope width) instead of O(n²) to find it where `start` is
+/// the envelope of a block pattern (0 for a dense search).
+pub(crate) fn lower_envelope(
+    a: &[f64],
+    n: usize,
+    start: impl Fn(usize) -> usize,
+    env: &mut Vec<usize>,
+) {
+    env.clear();
+    env.extend((0..n).map(|i| (start(i)..i).find(|&j| a[i * n + j] != 0.0).unwrap_or(i)));
+    env.extend(0..n);
+    for k in 0..n {
+        let first = env[k];
+        for c in first..k {
+            env[n + c] = k;
+        }
+    }
+}
+
+/// Solves A x = b for a symmetric positive definite A (n × n, row-major,
+/// overwritten by its Cholesky factor L in the lower triangle) by
+/// A = L Lᵀ within its envelope `env` ([`lower_envelope`]): A's lower
+/// triangle is read there only (rows i, columns `env[i]..=i`), about n
+/// times the envelope's width squared / 2 multiply-adds (n³/6 dense, half
+/// of LU's). `x` holds b on entry.
+/// None when a pivot is not positive (A not positive definite to
+/// rounding); else the number of pivots dropped (below).
+///
+/// With `drop` = Some(ρ), A may be positive *semi*definite: a pivot at most
+/// ρ times its diagonal entry (a column dependent on the ones before, to
+/// rounding) is dropped, its unknown set to 0 and its column of L zeroed,
+/// which gives a solution of A x = b when b is in A's range.
+pub(crate) fn cholesky_in(
+    a: &mut [f64],
+    x: &mut [f64],
+    n: usize,
+    drop: Option<f64>,
+    env: &[usize],
+) -> Option<usize> {
+    let (first, last) = env.split_at(n);
+    let mut dropped = 0;
+    for j in 0..n {
+        let fj = first[j];
+        let row_j = &a[j * n + fj..j * n + j];
+        let diagonal = a[j * n + j];
+        let d = diagonal - dot(row_j, row_j);
+        let drops = match drop {
+            Some(rho) => !(d > rho * diagonal),
+            None if !(d > 0.0) => return None,
+            None => false,
+        };
+        if drops {
+            dropped += 1;
+            a[j * n + j] = 0.0;
+            for i in j + 1..=last[j] {
+                a[i * n + j] = 0.0;
+            }
+            continue;
+        }
+        let d = d.sqrt();
+        a[j * n + j] = d;
+        let inv = 1.0 / d;
+        for i in j + 1..=last[j] {
+            if first[i] > j {
+                continue; // L_ij = A_ij = 0
+            }
+            let s = first[i].max(fj);
+            let (upper, lower) = a.split_at_mut(i * n);
+            let lj = &upper[j * n + s..j * n + j];
+            let li = &mut lower[..n];
+            li[j] = (li[j] - dot(&li[s..j], lj)) * inv;
+        }
+    }
+    // L y = b, then Lᵀ x = y (a dropped unknown is 0).
+    for i in 0..n {
+        let fi = first[i];
+        let d = dot(&a[i * n + fi..i * n + i], &x[fi..i]);
+        let p = a[i * n + i];
+        x[i] = if p == 0.0 { 0.0 } else { (x[i] - d) / p };
+    }
+    for i in (0..n).rev() {
+        let p = a[i * n + i];
+        if p == 0.0 {
+            x[i] = 0.0;
+            continue;
+        }
+        let mut v = x[i];
+        for k in i + 1..=last[i] {
+            if first[k] <= i {
+                v -= a[k * n + i] * x[k];
+            }
+        }
+        x[i] = v / p;
+    }
+    Some(dropped)
 }
 
 #[cfg(test)]

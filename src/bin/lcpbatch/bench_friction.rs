@@ -41,6 +41,9 @@ pub struct FrictionBenchOptions {
     pub gpu: Option<GpuSettings>,
     /// Timed runs of each row (≥ 1): its time is their median.
     pub runs: usize,
+    /// Some: the Siconos FrictionContact3D `.dat` files of this folder
+    /// instead of the generated islands ([`fc3d_rows`]).
+    pub fc3d: Option<PathBuf>,
 }
 
 /// Every friction method, in the table's order.
@@ -289,6 +292,9 @@ pub fn run(opts: &FrictionBenchOptions) -> Result<(), Error> {
         path: opts.out_dir.clone(),
         source,
     })?;
+    if let Some(dir) = &opts.fc3d {
+        return run_fc3d(dir, opts.runs, &opts.out_dir);
+    }
     let gpus = gpu_solvers(&opts.gpu, &crate::settings());
     let machine = machine_description(&gpus);
     println!("machine: {machine}");
@@ -328,6 +334,183 @@ pub fn run(opts: &FrictionBenchOptions) -> Result<(), Error> {
     Ok(())
 }
 
+/// The methods of the `--fc3d-dir` rows: Newton alone is left out (on
+/// piles it stalls and runs its cap, seconds a problem).
+const FC3D_METHODS: [FrictionMethod; 3] = [
+    FrictionMethod::Auto,
+    FrictionMethod::Nsgs,
+    FrictionMethod::Prox,
+];
+
+/// One row of `--fc3d-dir`: one method on one Siconos FrictionContact3D
+/// problem from r = 0, on one thread, the default tolerance 1e-8.
+#[derive(Clone, Debug, Serialize)]
+pub struct Fc3dRow {
+    /// The file name.
+    pub problem: String,
+    pub contacts: usize,
+    pub solver: String,
+    pub status: String,
+    /// Siconos' fc3d error (De Saxcé) of the answer.
+    pub coulomb_error: f64,
+    /// NSGS sweeps plus Newton steps (PROX: its inner steps).
+    pub iterations: u64,
+    /// The median of `run_seconds`: wall seconds of the solve call.
+    pub seconds: f64,
+    pub run_seconds: Vec<f64>,
+    /// The median CPU seconds (user + system, the whole process) of the
+    /// call: on a loaded machine the figure to compare.
+    pub cpu_seconds: f64,
+    /// Siconos' fastest converging solver in the folder's
+    /// `reference.json` (its name and seconds, on its own machine).
+    pub siconos: Option<(String, f64)>,
+}
+
+/// The CPU seconds this process has used (user + system).
+fn process_cpu_seconds() -> f64 {
+    let mut t = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: `t` is a valid timespec for clock_gettime to write.
+    let rc = unsafe { libc::clock_gettime(libc::CLOCK_PROCESS_CPUTIME_ID, &mut t) };
+    if rc == 0 {
+        t.tv_sec as f64 + t.tv_nsec as f64 * 1e-9
+    } else {
+        f64::NAN
+    }
+}
+
+/// Siconos' fastest converging solver per problem in `dir/reference.json`
+/// (the layout of `../shared/conformance/siconos-fc3d-large`), where there
+/// is one.
+fn siconos_fastest(dir: &Path) -> BTreeMap<String, (String, f64)> {
+    let Ok(text) = std::fs::read_to_string(dir.join("reference.json")) else {
+        return BTreeMap::new();
+    };
+    let Ok(v) = serde_json::from_str::<serde_json::Value>(&text) else {
+        return BTreeMap::new();
+    };
+    let Some(problems) = v["problems"].as_object() else {
+        return BTreeMap::new();
+    };
+    let fastest = |entry: &serde_json::Value| {
+        entry["siconos"]
+            .as_object()?
+            .iter()
+            .filter(|(_, s)| s["info"] == 0)
+            .filter_map(|(name, s)| Some((name.clone(), s["seconds"].as_f64()?)))
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+    };
+    problems
+        .iter()
+        .filter_map(|(name, entry)| Some((name.clone(), fastest(entry)?)))
+        .collect()
+}
+
+/// The rows of every `.dat` FrictionContact3D file of `dir` (by name):
+/// `runs` rounds in which each method solves each problem once on one
+/// thread (the methods take turns), timed around the solve call alone.
+pub fn fc3d_rows(dir: &Path, runs: usize) -> Result<Vec<Fc3dRow>, Error> {
+    let io = |source| Error::Io {
+        path: dir.to_path_buf(),
+        source,
+    };
+    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
+        .map_err(io)?
+        .filter_map(|e| Some(e.ok()?.path()))
+        .filter(|p| p.extension().is_some_and(|e| e == "dat"))
+        .collect();
+    files.sort();
+    let reference = siconos_fastest(dir);
+    let mut rows = Vec::new();
+    for file in &files {
+        let name = file
+            .file_name()
+            .map_or(String::new(), |n| n.to_string_lossy().into());
+        let text = std::fs::read_to_string(file).map_err(|source| Error::Io {
+            path: file.clone(),
+            source,
+        })?;
+        let problem = [lcpbatch::io::fc3d::parse_fc3d(&name, &text)?];
+        let mut solvers = FC3D_METHODS
+            .iter()
+            .map(|&m| {
+                let base = Settings {
+                    backend: Backend::Cpu,
+                    threads: 1,
+                    ..crate::settings()
+                };
+                Solver::new(method_settings(&base, m))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let mut times = vec![(Vec::new(), Vec::new()); solvers.len()];
+        let mut reports: Vec<Option<Report>> = solvers.iter().map(|_| None).collect();
+        for _ in 0..runs.max(1) {
+            for (j, solver) in solvers.iter_mut().enumerate() {
+                reports[j] = None;
+                let (cpu, wall) = (process_cpu_seconds(), Instant::now());
+                let report = solver.solve_friction(&problem)?;
+                times[j].0.push(wall.elapsed().as_secs_f64());
+                times[j].1.push(process_cpu_seconds() - cpu);
+                reports[j] = Some(report);
+            }
+        }
+        for ((method, report), (wall, cpu)) in FC3D_METHODS.iter().zip(reports).zip(times) {
+            let Some(island) = report.as_ref().and_then(|r| r.friction.first()) else {
+                continue;
+            };
+            rows.push(Fc3dRow {
+                problem: name.clone(),
+                contacts: problem[0].contacts(),
+                solver: method.name().into(),
+                status: island.status().name().into(),
+                coulomb_error: island.error(),
+                iterations: island.solution.iterations,
+                seconds: median(&wall),
+                run_seconds: wall,
+                cpu_seconds: median(&cpu),
+                siconos: reference.get(&name).cloned(),
+            });
+        }
+    }
+    Ok(rows)
+}
+
+/// `--fc3d-dir`: prints the rows of [`fc3d_rows`] and writes them to
+/// `out_dir/friction_fc3d.json`.
+fn run_fc3d(dir: &Path, runs: usize, out_dir: &Path) -> Result<(), Error> {
+    let rows = fc3d_rows(dir, runs)?;
+    println!(
+        "{:<34} {:>4} {:<6} {:<14} {:>9} {:>6} {:>9} {:>9}  Siconos' fastest (its machine)",
+        "problem", "k", "solver", "status", "Coulomb", "it", "wall s", "CPU s"
+    );
+    for r in &rows {
+        let siconos = r
+            .siconos
+            .as_ref()
+            .map_or(String::new(), |(s, t)| format!("{s} {t:.3} s"));
+        println!(
+            "{:<34} {:>4} {:<6} {:<14} {:>9.2e} {:>6} {:>9.4} {:>9.4}  {siconos}",
+            r.problem,
+            r.contacts,
+            r.solver,
+            r.status,
+            r.coulomb_error,
+            r.iterations,
+            r.seconds,
+            r.cpu_seconds
+        );
+    }
+    let path = out_dir.join("friction_fc3d.json");
+    write_atomically(
+        &path,
+        &serde_json::to_string_pretty(&rows).expect("serialisable"),
+    )?;
+    println!("wrote {}", path.display());
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -345,6 +528,7 @@ mod tests {
             out_dir: dir.clone(),
             gpu: None,
             runs: 3,
+            fc3d: None,
         };
         let sets = sets(&opts);
         // Random spheres at 1, 4, 8; stacks at 4, 8; resting and sliding boxes at 4.
@@ -371,5 +555,48 @@ mod tests {
         let svg = std::fs::read_to_string(dir.join("f.svg")).unwrap();
         assert!(svg.contains("<svg") && svg.contains("apgd") && svg.contains("newton"));
         std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    /// The `--fc3d-dir` rows on the small Siconos FC3D set (where the
+    /// shared conformance data is present): a row per method and file,
+    /// `auto` solved to 1e-8 on each, its times finite.
+    #[test]
+    fn every_fc3d_file_gets_a_row_per_method() {
+        let base = std::env::var_os("LCPBATCH_CONFORMANCE").map_or_else(
+            || {
+                PathBuf::from(concat!(
+                    env!("CARGO_MANIFEST_DIR"),
+                    "/../shared/conformance"
+                ))
+            },
+            PathBuf::from,
+        );
+        let dir = base.join("siconos-fc3d");
+        if !dir.is_dir() {
+            eprintln!("skipped: no {}", dir.display());
+            return;
+        }
+        let rows = fc3d_rows(&dir, 2).unwrap();
+        let files = std::fs::read_dir(&dir)
+            .unwrap()
+            .filter(|e| {
+                e.as_ref()
+                    .unwrap()
+                    .path()
+                    .extension()
+                    .is_some_and(|x| x == "dat")
+            })
+            .count();
+        assert!(files > 0);
+        assert_eq!(rows.len(), files * FC3D_METHODS.len());
+        for r in &rows {
+            assert_eq!(r.run_seconds.len(), 2);
+            assert_eq!(r.seconds, median(&r.run_seconds));
+            assert!(r.cpu_seconds.is_finite() && r.cpu_seconds >= 0.0, "{r:?}");
+            if r.solver == "auto" {
+                assert_eq!(r.status, "solved", "{r:?}");
+                assert!(r.coulomb_error <= 1e-8, "{r:?}");
+            }
+        }
     }
 }

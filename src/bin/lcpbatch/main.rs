@@ -301,6 +301,12 @@ struct BenchArgs {
     /// (the rows of a set take turns, run by run).
     #[arg(long, default_value_t = 5)]
     runs: usize,
+    /// With --friction: instead of the generated islands, every Siconos
+    /// FrictionContact3D .dat file of this folder (e.g.
+    /// ../shared/conformance/siconos-fc3d-large), auto, nsgs and prox on one
+    /// thread, wall and CPU seconds of the solve call; friction_fc3d.json.
+    #[arg(long, value_name = "DIR")]
+    fc3d_dir: Option<PathBuf>,
     /// Islands per n for the time-against-n curves.
     #[arg(long, default_value_t = 500)]
     per_n: usize,
@@ -418,6 +424,7 @@ fn bench_command(args: BenchArgs) -> Result<(), Error> {
         friction,
         sizes,
         runs,
+        fc3d_dir,
         per_n,
         batch_sizes,
         seed,
@@ -447,6 +454,7 @@ fn bench_command(args: BenchArgs) -> Result<(), Error> {
             out_dir: out,
             gpu,
             runs,
+            fc3d: fc3d_dir,
         });
     }
     let islands = islands.unwrap_or(20_000);
