@@ -96,6 +96,10 @@ pub struct GpuSolveSettings {
     pub tolerance: f64,
     /// Threads of the host's passes (default: every core).
     pub threads: usize,
+    /// Islands left to the GPU per part of the pipeline, at the least
+    /// (default [`PART_ISLANDS`]; capped at [`MAX_PARTS`] parts). For tests
+    /// of the overlap.
+    pub part_islands: usize,
 }
 
 impl Default for GpuSolveSettings {
@@ -115,6 +119,7 @@ impl Default for GpuSolveSettings {
             tree_max_n: TREE_MAX_N,
             tolerance: crate::Settings::default().tolerance,
             threads: std::thread::available_parallelism().map_or(1, |n| n.get()),
+            part_islands: PART_ISLANDS,
         }
     }
 }
@@ -529,7 +534,7 @@ pub fn solve_lcp_batch_warm(
     }
     // The f64 check of each part's answers, on every thread, while the
     // device runs the next chunk.
-    let parts = parts_of(&blocks, on_gpu.len());
+    let parts = parts_of(&blocks, on_gpu.len(), settings.part_islands);
     let gpu_parts: Vec<_> = parts.iter().map(|p| gpu_range(&blocks, p)).collect();
     let exact = settings.exact_twin(ctx.precision());
     let (mut validation, mut repair) = (0.0, 0.0);
@@ -581,16 +586,16 @@ pub fn solve_lcp_batch_warm(
 /// Islands of the GPU's list per part of a batch's pipeline, at the least:
 /// below it a part's own costs (a submission and a wait, bind groups)
 /// outweigh what the overlap hides.
-const PART_ISLANDS: usize = 16_384;
+pub const PART_ISLANDS: usize = 16_384;
 /// Parts of a batch's pipeline, at most: 100,000 islands make 6 parts,
 /// a million 8 of 125,000 (a hardware GPU wants large dispatches).
-const MAX_PARTS: usize = 8;
+pub const MAX_PARTS: usize = 8;
 
 /// The pipeline's parts: consecutive ranges of `blocks`, each with about
 /// an equal share of the `on_gpu` islands left to the GPU (at least
-/// [`PART_ISLANDS`], at most [`MAX_PARTS`] parts), none empty.
-fn parts_of(blocks: &[Block<'_>], on_gpu: usize) -> Vec<std::ops::Range<usize>> {
-    let count = (on_gpu / PART_ISLANDS).clamp(1, MAX_PARTS);
+/// `least`, at most [`MAX_PARTS`] parts), none empty.
+fn parts_of(blocks: &[Block<'_>], on_gpu: usize, least: usize) -> Vec<std::ops::Range<usize>> {
+    let count = (on_gpu / least.max(1)).clamp(1, MAX_PARTS);
     let share = on_gpu.div_ceil(count);
     let mut parts = Vec::with_capacity(count);
     let (mut first, mut held) = (0, 0);

@@ -57,7 +57,8 @@ pub struct BenchRow {
     /// the call's time.
     pub phases_us_per_island: Vec<(String, f64)>,
     /// GPU rows: microseconds per island the device ran the kernels, by
-    /// its timestamps (None: no timestamps on this adapter, or no GPU row).
+    /// its timestamps (None: no timestamps on this adapter, no kernel run,
+    /// or no GPU row).
     pub device_kernels_us_per_island: Option<f64>,
     /// GPU rows: microseconds per island of host work (upload, check) done
     /// while a chunk was on the device.
@@ -442,7 +443,7 @@ fn print_table(rows: &[BenchRow]) {
             .collect();
         let device = r
             .device_kernels_us_per_island
-            .map_or("no timestamps".to_string(), |us| format!("{us:.2}"));
+            .map_or("none".to_string(), |us| format!("{us:.2}"));
         println!(
             "{:<17} {:<28} {}; device kernels {device}, overlapped {:.2}",
             r.family,
