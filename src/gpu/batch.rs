@@ -97,9 +97,11 @@ pub struct GpuSolveSettings {
     /// Threads of the host's passes (default: every core).
     pub threads: usize,
     /// Islands left to the GPU per part of the pipeline, at the least
-    /// (default [`PART_ISLANDS`]; capped at [`MAX_PARTS`] parts). For tests
-    /// of the overlap.
-    pub part_islands: usize,
+    /// (capped at [`MAX_PARTS`] parts); None: by adapter, [`PART_ISLANDS`]
+    /// on hardware, one part on a software adapter (its "device" is the
+    /// host's own cores: nothing to overlap, and every part runs its
+    /// rounds and waits again). For tests of the overlap.
+    pub part_islands: Option<usize>,
 }
 
 impl Default for GpuSolveSettings {
@@ -119,7 +121,7 @@ impl Default for GpuSolveSettings {
             tree_max_n: TREE_MAX_N,
             tolerance: crate::Settings::default().tolerance,
             threads: std::thread::available_parallelism().map_or(1, |n| n.get()),
-            part_islands: PART_ISLANDS,
+            part_islands: None,
         }
     }
 }
@@ -534,7 +536,12 @@ pub fn solve_lcp_batch_warm(
     }
     // The f64 check of each part's answers, on every thread, while the
     // device runs the next chunk.
-    let parts = parts_of(&blocks, on_gpu.len(), settings.part_islands);
+    let least = match settings.part_islands {
+        Some(least) => least,
+        None if ctx.adapter_info().software => usize::MAX,
+        None => PART_ISLANDS,
+    };
+    let parts = parts_of(&blocks, on_gpu.len(), least);
     let gpu_parts: Vec<_> = parts.iter().map(|p| gpu_range(&blocks, p)).collect();
     let exact = settings.exact_twin(ctx.precision());
     let (mut validation, mut repair) = (0.0, 0.0);

@@ -34,7 +34,7 @@ fn parts_give_what_one_part_gives() {
         let whole = solve_lcp_batch(&ctx, &lcps, &one).unwrap();
         for split in [None, Some(4096)] {
             let parts = GpuSolveSettings {
-                part_islands: 64,
+                part_islands: Some(64),
                 max_binding_bytes: split,
                 ..one
             };
