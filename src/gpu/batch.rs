@@ -18,6 +18,17 @@
 //! on the device), and after the kernels a second pass checks each answer
 //! in f64 ([`super::validation`]); the reports are made and counted on
 //! every thread too. Nothing is allocated per island for n ≤ 8.
+//!
+//! Overlap: on hardware, a batch leaving 2 × [`PART_ISLANDS`] islands or
+//! more to the GPU is cut into parts (at most [`MAX_PARTS`], consecutive
+//! blocks), each planned into its own chunks; while the device runs chunk
+//! k the host writes chunk k + 1 into the other kept buffers and checks
+//! the last part whose answers are all in (`enumerate_known`). wgpu 30 has
+//! one queue per device, so uploads and readbacks share it with the
+//! kernels: what overlaps is the host's work, not transfers. On a software
+//! adapter the batch stays one part (its device is the host's cores).
+//! Where the device has `TIMESTAMP_QUERY`, each submission's rounds are
+//! timed on the device too ([`GpuFigures::kernel_device_seconds`]).
 
 // The stage entry point `enumerate_on_gpu` (the GPU's raw verdicts)
 // serves the stage tests; the Solver calls `solve_lcp_batch_warm`.
