@@ -118,7 +118,22 @@ pub fn is_positive_semidefinite(lcp: &Lcp) -> bool {
     if n > MAX_ENUMERATION_N || !lcp.is_symmetric() {
         return false;
     }
-    let mut a = [0.0f64; MAX_ENUMERATION_N * MAX_ENUMERATION_N];
+    // On the stack, no larger than n needs (the GPU path tests every
+    // island it sends to the tree kernel: nothing allocated per island).
+    match n {
+        0..=4 => semidefinite_on_stack::<16>(lcp),
+        5..=8 => semidefinite_on_stack::<64>(lcp),
+        9..=12 => semidefinite_on_stack::<144>(lcp),
+        _ => semidefinite_on_stack::<{ MAX_ENUMERATION_N * MAX_ENUMERATION_N }>(lcp),
+    }
+}
+
+/// [`is_positive_semidefinite`] on an `N` ≥ n² array: the indices left in
+/// an array of their own, removed as `Vec::swap_remove` would (the same
+/// order, the same pivots, the same verdict).
+fn semidefinite_on_stack<const N: usize>(lcp: &Lcp) -> bool {
+    let n = lcp.n();
+    let mut a = [0.0f64; N];
     for i in 0..n {
         for j in 0..n {
             a[i * n + j] = 0.5 * (lcp.at(i, j) + lcp.at(j, i));
@@ -126,8 +141,13 @@ pub fn is_positive_semidefinite(lcp: &Lcp) -> bool {
     }
     let dmax = (0..n).map(|i| a[i * n + i]).fold(0.0f64, f64::max);
     let tol = 1e-9 * dmax;
-    let mut left: Vec<usize> = (0..n).collect();
-    while !left.is_empty() {
+    let mut all = [0usize; MAX_ENUMERATION_N];
+    for (i, v) in all.iter_mut().enumerate().take(n) {
+        *v = i;
+    }
+    let mut len = n;
+    while len > 0 {
+        let left = &all[..len];
         let (k, &p) = left
             .iter()
             .enumerate()
@@ -140,11 +160,13 @@ pub fn is_positive_semidefinite(lcp: &Lcp) -> bool {
                 .iter()
                 .all(|&i| left.iter().all(|&j| a[i * n + j].abs() <= tol));
         }
-        left.swap_remove(k);
+        all[k] = all[len - 1];
+        len -= 1;
+        let left = &all[..len];
         // Schur complement on the remaining indices.
-        for &i in &left {
+        for &i in left {
             let f = a[i * n + p] / d;
-            for &j in &left {
+            for &j in left {
                 a[i * n + j] -= f * a[p * n + j];
             }
         }

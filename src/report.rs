@@ -416,6 +416,27 @@ pub struct GpuFigures {
     pub kernel_seconds: f64,
     /// See [`Self::pack_seconds`].
     pub readback_seconds: f64,
+    /// Seconds the device itself ran the kernels, from GPU timestamps
+    /// (per submission, its first dispatch's start to its last one's end,
+    /// summed over submissions and chunks); None where the adapter has no
+    /// `TIMESTAMP_QUERY`. Beside [`Self::kernel_seconds`] it says how much
+    /// of the host's wait was the kernels themselves.
+    pub kernel_device_seconds: Option<f64>,
+    /// Seconds of the f64 check of the GPU's answers (each answer re-solved
+    /// on its basis and checked, on every thread; wall time of the passes,
+    /// [`Self::repair_seconds`] left out). LCP batches only.
+    pub check_seconds: f64,
+    /// Seconds of the repairs in the check: answers the check rejected,
+    /// solved again by the CPU path (the threads' seconds on them divided
+    /// by the threads: their share of the passes' wall time).
+    pub repair_seconds: f64,
+    /// Seconds making the batch's report: each island's record (before the
+    /// passes) and the counts (after). LCP batches only.
+    pub report_seconds: f64,
+    /// Of the host's seconds above (packing, upload, check), those spent
+    /// while a chunk was on the device: hidden behind the kernels where the
+    /// device is not the host's own cores.
+    pub overlapped_seconds: f64,
 }
 
 impl AddAssign for GpuFigures {
@@ -433,6 +454,14 @@ impl AddAssign for GpuFigures {
         self.upload_seconds += b.upload_seconds;
         self.kernel_seconds += b.kernel_seconds;
         self.readback_seconds += b.readback_seconds;
+        self.kernel_device_seconds = match (self.kernel_device_seconds, b.kernel_device_seconds) {
+            (Some(a), Some(b)) => Some(a + b),
+            (a, b) => a.or(b),
+        };
+        self.check_seconds += b.check_seconds;
+        self.repair_seconds += b.repair_seconds;
+        self.report_seconds += b.report_seconds;
+        self.overlapped_seconds += b.overlapped_seconds;
     }
 }
 

@@ -18,6 +18,17 @@
 //! on the device), and after the kernels a second pass checks each answer
 //! in f64 ([`super::validation`]); the reports are made and counted on
 //! every thread too. Nothing is allocated per island for n ≤ 8.
+//!
+//! Overlap: on hardware, a batch leaving 2 × [`PART_ISLANDS`] islands or
+//! more to the GPU is cut into parts (at most [`MAX_PARTS`], consecutive
+//! blocks), each planned into its own chunks; while the device runs chunk
+//! k the host writes chunk k + 1 into the other kept buffers and checks
+//! the last part whose answers are all in (`enumerate_known`). wgpu 30 has
+//! one queue per device, so uploads and readbacks share it with the
+//! kernels: what overlaps is the host's work, not transfers. On a software
+//! adapter the batch stays one part (its device is the host's cores).
+//! Where the device has `TIMESTAMP_QUERY`, each submission's rounds are
+//! timed on the device too ([`GpuFigures::kernel_device_seconds`]).
 
 // The stage entry point `enumerate_on_gpu` (the GPU's raw verdicts)
 // serves the stage tests; the Solver calls `solve_lcp_batch_warm`.
@@ -26,7 +37,7 @@
 use std::time::Instant;
 
 use super::buffers::{limits_for, pack_chunks, Role};
-use super::enumeration::EnumerationJob;
+use super::enumeration::{EnumerationJob, InFlight};
 pub use super::kernel::{EnumerationKernel, KernelPlan, TreeRoute};
 use super::layout::BasisResult;
 use super::pipelines::Tolerances;
@@ -96,6 +107,12 @@ pub struct GpuSolveSettings {
     pub tolerance: f64,
     /// Threads of the host's passes (default: every core).
     pub threads: usize,
+    /// Islands left to the GPU per part of the pipeline, at the least
+    /// (capped at [`MAX_PARTS`] parts); None: by adapter, [`PART_ISLANDS`]
+    /// on hardware, one part on a software adapter (its "device" is the
+    /// host's own cores: nothing to overlap, and every part runs its
+    /// rounds and waits again). For tests of the overlap.
+    pub part_islands: Option<usize>,
 }
 
 impl Default for GpuSolveSettings {
@@ -115,6 +132,7 @@ impl Default for GpuSolveSettings {
             tree_max_n: TREE_MAX_N,
             tolerance: crate::Settings::default().tolerance,
             threads: std::thread::available_parallelism().map_or(1, |n| n.get()),
+            part_islands: None,
         }
     }
 }
@@ -196,7 +214,8 @@ pub fn enumerate_on_gpu(
     lcps: &[&Lcp],
     settings: &GpuSolveSettings,
 ) -> Result<(Vec<EnumerationOutput>, GpuFigures), Error> {
-    let (answers, figures) = enumerate_known(ctx, lcps, &[], settings)?;
+    let whole = [0..lcps.len()];
+    let (answers, figures) = enumerate_known(ctx, lcps, &[], settings, &whole, &mut |_, _| Ok(()))?;
     let out = (0..lcps.len())
         .map(|i| {
             let (result, z) = answers.of(i, lcps[i].n());
@@ -210,13 +229,20 @@ pub fn enumerate_on_gpu(
 }
 
 /// [`enumerate_on_gpu`] with `definite[i]`: whether island i's M is
-/// positive definite, where prediction found out (empty: nothing known).
+/// positive definite, where prediction found out (empty: nothing known),
+/// pipelined over `parts` (consecutive ranges of `lcps` covering it, each
+/// planned into chunks under the device's limits): while the device runs
+/// chunk k, the host writes chunk k + 1 into the other kept buffers and
+/// runs `check(j, answers)` on every part j whose answers are all in.
+/// wgpu has one queue: uploads and readbacks share it with the kernels.
 /// The figures' seconds: packing, upload, kernels, readback.
 fn enumerate_known(
     ctx: &GpuContext,
     lcps: &[&Lcp],
     definite: &[Option<bool>],
     settings: &GpuSolveSettings,
+    parts: &[std::ops::Range<usize>],
+    check: &mut dyn FnMut(usize, &Answers) -> Result<(), Error>,
 ) -> Result<(Answers, GpuFigures), Error> {
     let mut figures = GpuFigures::default();
     check_gpu_sizes(lcps)?;
@@ -232,44 +258,84 @@ fn enumerate_known(
     let tree: Vec<TreeRoute> = parallel_map(lcps.len(), settings.threads, |i| {
         plan.tree_for(lcps[i], definite.get(i).copied().flatten())
     });
-    let chunks = pack_chunks(lcps, &tree, max_bytes, precision.bytes());
+    // (part, chunk) in order; a chunk's `order` indexes `lcps`.
+    let mut chunks = Vec::new();
+    for (j, r) in parts.iter().enumerate() {
+        for mut c in pack_chunks(
+            &lcps[r.clone()],
+            &tree[r.clone()],
+            max_bytes,
+            precision.bytes(),
+        ) {
+            c.order.iter_mut().for_each(|i| *i += r.start);
+            chunks.push((j, c));
+        }
+    }
     figures.pack_seconds += t.elapsed().as_secs_f64();
     let mut answers = Answers {
         results: vec![BasisResult::default(); lcps.len()],
         z_at: vec![0; lcps.len()],
         z: Vec::new(),
     };
-    for chunk in chunks {
-        let run = ctx.scoped("enumeration", || {
-            let t = Instant::now();
-            let (islands, values) = chunk.upload(ctx, lcps, precision, settings.threads)?;
-            figures.upload_seconds += t.elapsed().as_secs_f64();
-            let job = EnumerationJob {
-                ctx,
-                pipelines: &pipelines,
-                islands: &islands,
-                values: &values,
-                tolerances: &tolerances,
-                table: &chunk.table,
-                tree: &chunk.tree,
-                max_groups,
-                plan: &plan,
-            };
-            let run = job.run(ctx.encoder("enumeration"), true)?;
+    let (mut next, mut read, mut checked) = (0, 0, 0);
+    let mut in_flight: Option<(usize, InFlight)> = None;
+    loop {
+        // The host's share while the chunk in flight runs: write the next
+        // chunk, check the parts read.
+        let t = Instant::now();
+        let job = match chunks.get(next) {
+            Some((_, chunk)) => Some(ctx.scoped("enumeration", || {
+                let (islands, values) = chunk.upload(ctx, lcps, precision, settings.threads)?;
+                Ok::<_, Error>(EnumerationJob {
+                    ctx,
+                    pipelines: &pipelines,
+                    islands,
+                    values,
+                    tolerances: &tolerances,
+                    table: &chunk.table,
+                    tree: &chunk.tree,
+                    max_groups,
+                    plan: &plan,
+                })
+            })??),
+            None => None,
+        };
+        figures.upload_seconds += t.elapsed().as_secs_f64();
+        while checked < read {
+            check(checked, &answers)?;
+            checked += 1;
+        }
+        if in_flight.is_some() {
+            figures.overlapped_seconds += t.elapsed().as_secs_f64();
+        }
+        if let Some((at, flight)) = in_flight.take() {
+            let (islands, values) = flight.buffers();
+            let run = ctx.scoped("enumeration", || flight.finish(true))??;
             // The run waited for its last submission: the next chunk or
             // call may write them again.
             ctx.keep(Role::Islands, islands);
             ctx.keep(Role::Values, values);
-            Ok::<_, Error>(run)
-        })??;
-        let base = answers.z.len();
-        for ((&i, rec), res) in chunk.order.iter().zip(&chunk.table).zip(&run.results) {
-            answers.results[i] = *res;
-            answers.z_at[i] = base + rec.z as usize;
+            let (part, chunk) = &chunks[at];
+            let base = answers.z.len();
+            for ((&i, rec), res) in chunk.order.iter().zip(&chunk.table).zip(&run.results) {
+                answers.results[i] = *res;
+                answers.z_at[i] = base + rec.z as usize;
+            }
+            answers.z.extend_from_slice(&run.z);
+            figures += run.figures;
+            figures.chunks += 1;
+            if chunks.get(at + 1).is_none_or(|(p, _)| p != part) {
+                read = part + 1;
+            }
         }
-        answers.z.extend_from_slice(&run.z);
-        figures += run.figures;
-        figures.chunks += 1;
+        let Some(job) = job else { break };
+        let flight = ctx.scoped("enumeration", || job.start(ctx.encoder("enumeration")))??;
+        in_flight = Some((next, flight));
+        next += 1;
+    }
+    while checked < read {
+        check(checked, &answers)?;
+        checked += 1;
     }
     Ok((answers, figures))
 }
@@ -303,6 +369,8 @@ struct Block<'a> {
     /// The answers kept (polished) and the largest error of the GPU's own z.
     polished: usize,
     max_gpu_error: f64,
+    /// Seconds this block's thread spent on repairs.
+    repair: f64,
     /// A failure of the f64 check (none is expected: n ≤ 16).
     error: Option<Error>,
 }
@@ -319,6 +387,7 @@ fn blocks(islands: &mut [IslandReport]) -> Vec<Block<'_>> {
             gpu_first: 0,
             polished: 0,
             max_gpu_error: 0.0,
+            repair: 0.0,
             error: None,
         })
         .collect()
@@ -365,7 +434,7 @@ pub(crate) fn settle_on_cpu(
 /// The GPU's answer for `lcp` (its record and z) checked in f64 into `out`
 /// ([`check_answer`]; the Lemke kernel's, with `settings.method` Auto or
 /// Lemke, by [`check_lemke_answer`]), path and method set, the final check
-/// applied.
+/// applied; the seconds of a repair added to `repair`.
 /// Returns the verdict and the error of the GPU's own z.
 pub(crate) fn settle_from_gpu(
     lcp: &Lcp,
@@ -373,10 +442,11 @@ pub(crate) fn settle_from_gpu(
     settings: &GpuSolveSettings,
     exact_twin: bool,
     out: &mut IslandReport,
+    repair: &mut f64,
 ) -> Result<(Verdict, f64), Error> {
     if settings.method != Method::Enumeration {
         let (method, path, verdict, gpu_error) =
-            check_lemke_answer(lcp, (result, z), settings, &mut out.solution);
+            check_lemke_answer(lcp, (result, z), settings, &mut out.solution, repair);
         (out.method, out.path) = (method, path);
         check_solution(&mut out.solution, settings.tolerance);
         return Ok((verdict, gpu_error));
@@ -388,6 +458,7 @@ pub(crate) fn settle_from_gpu(
         &settings.enumeration,
         exact_twin,
         &mut out.solution,
+        repair,
     )?;
     out.method = Method::Enumeration;
     out.path = match checked.0 {
@@ -426,6 +497,7 @@ pub fn solve_lcp_batch_warm(
     let threads = settings.threads;
     // The reports made (a few hundred bytes each, written for the first
     // time) on every thread too.
+    let t = Instant::now();
     let mut islands: Vec<IslandReport> = parallel_map(lcps.len(), threads, |i| IslandReport {
         scene: None,
         contacts: ShortVec::indices(lcps[i].n()),
@@ -433,6 +505,7 @@ pub fn solve_lcp_batch_warm(
         path: SolvePath::Invalid,
         solution: LcpSolution::invalid(0),
     });
+    let reports = t.elapsed().as_secs_f64();
     let mut blocks = blocks(&mut islands);
     let t = Instant::now();
     parallel_fill_by(&mut blocks, threads, 1, |_, b| {
@@ -459,50 +532,105 @@ pub fn solve_lcp_batch_warm(
     if on_gpu.is_empty() {
         // Prediction settled every island: nothing to upload or check.
         drop(blocks);
+        let figures = GpuFigures {
+            report_seconds: reports,
+            ..GpuFigures::default()
+        };
         return Ok(batch_report(
             ctx,
             islands,
             0,
-            GpuFigures::default(),
+            figures,
             [prediction, 0.0, 0.0],
             threads,
         ));
     }
-    let t = Instant::now();
-    let (answers, mut figures) = enumerate_known(ctx, &on_gpu, &definite, settings)?;
-    let gpu = t.elapsed().as_secs_f64();
-    let t = Instant::now();
+    // The f64 check of each part's answers, on every thread, while the
+    // device runs the next chunk.
+    let least = match settings.part_islands {
+        Some(least) => least,
+        None if ctx.adapter_info().software => usize::MAX,
+        None => PART_ISLANDS,
+    };
+    let parts = parts_of(&blocks, on_gpu.len(), least);
+    let gpu_parts: Vec<_> = parts.iter().map(|p| gpu_range(&blocks, p)).collect();
     let exact = settings.exact_twin(ctx.precision());
-    parallel_fill_by(&mut blocks, threads, 1, |_, b| {
-        for k in 0..b.pending.len() {
-            let i = b.pending[k].0;
-            let answer = answers.of(b.gpu_first + k, lcps[i].n());
-            let island = &mut b.islands[i - b.first];
-            match settle_from_gpu(&lcps[i], answer, settings, exact, island) {
-                Ok((verdict, gpu_error)) => {
-                    b.polished += (verdict == Verdict::Polished) as usize;
-                    if gpu_error > b.max_gpu_error {
-                        b.max_gpu_error = gpu_error;
+    let (mut validation, mut repair) = (0.0, 0.0);
+    let mut check = |j: usize, answers: &Answers| {
+        let t = Instant::now();
+        parallel_fill_by(&mut blocks[parts[j].clone()], threads, 1, |_, b| {
+            for k in 0..b.pending.len() {
+                let i = b.pending[k].0;
+                let answer = answers.of(b.gpu_first + k, lcps[i].n());
+                let island = &mut b.islands[i - b.first];
+                match settle_from_gpu(&lcps[i], answer, settings, exact, island, &mut b.repair) {
+                    Ok((verdict, gpu_error)) => {
+                        b.polished += (verdict == Verdict::Polished) as usize;
+                        if gpu_error > b.max_gpu_error {
+                            b.max_gpu_error = gpu_error;
+                        }
                     }
+                    Err(e) => b.error = Some(e),
                 }
-                Err(e) => b.error = Some(e),
             }
-        }
-    });
-    let validation = t.elapsed().as_secs_f64();
+        });
+        validation += t.elapsed().as_secs_f64();
+        Ok(())
+    };
+    let t = Instant::now();
+    let (_, mut figures) =
+        enumerate_known(ctx, &on_gpu, &definite, settings, &gpu_parts, &mut check)?;
+    drop(check);
+    let gpu = t.elapsed().as_secs_f64() - validation;
     let mut polished = 0;
     for b in &mut blocks {
         if let Some(e) = b.error.take() {
             return Err(e);
         }
         polished += b.polished;
+        repair += b.repair;
         figures.max_gpu_error = figures.max_gpu_error.max(b.max_gpu_error);
     }
     drop(blocks);
+    figures.repair_seconds = repair / threads.max(1) as f64;
+    figures.check_seconds = (validation - figures.repair_seconds).max(0.0);
+    figures.report_seconds = reports;
     let seconds = [prediction, gpu, validation];
     Ok(batch_report(
         ctx, islands, polished, figures, seconds, threads,
     ))
+}
+
+/// Islands of the GPU's list per part of a batch's pipeline, at the least:
+/// below it a part's own costs (a submission and a wait, bind groups)
+/// outweigh what the overlap hides.
+pub const PART_ISLANDS: usize = 16_384;
+/// Parts of a batch's pipeline, at most: 100,000 islands make 6 parts,
+/// a million 8 of 125,000 (a hardware GPU wants large dispatches).
+pub const MAX_PARTS: usize = 8;
+
+/// The pipeline's parts: consecutive ranges of `blocks`, each with about
+/// an equal share of the `on_gpu` islands left to the GPU (at least
+/// `least`, at most [`MAX_PARTS`] parts), none empty.
+fn parts_of(blocks: &[Block<'_>], on_gpu: usize, least: usize) -> Vec<std::ops::Range<usize>> {
+    let count = (on_gpu / least.max(1)).clamp(1, MAX_PARTS);
+    let share = on_gpu.div_ceil(count);
+    let mut parts = Vec::with_capacity(count);
+    let (mut first, mut held) = (0, 0);
+    for (k, b) in blocks.iter().enumerate() {
+        held += b.pending.len();
+        if held >= share || (k + 1 == blocks.len() && held > 0) {
+            parts.push(first..k + 1);
+            (first, held) = (k + 1, 0);
+        }
+    }
+    parts
+}
+
+/// The positions in the GPU's list of the islands of `blocks[part]`.
+fn gpu_range(blocks: &[Block<'_>], part: &std::ops::Range<usize>) -> std::ops::Range<usize> {
+    let last = &blocks[part.end - 1];
+    blocks[part.start].gpu_first..last.gpu_first + last.pending.len()
 }
 
 /// The report of an LCP batch: `polished` GPU answers kept, the figures,
@@ -512,11 +640,13 @@ fn batch_report(
     ctx: &GpuContext,
     islands: Vec<IslandReport>,
     polished: usize,
-    figures: GpuFigures,
+    mut figures: GpuFigures,
     [prediction, gpu, validation]: [f64; 3],
     threads: usize,
 ) -> Report {
+    let t = Instant::now();
     let mut r = Report::new_on(islands, Vec::new(), Device::of(ctx), String::new(), threads);
+    figures.report_seconds += t.elapsed().as_secs_f64();
     r.counts.polished = polished;
     r.counts.cpu_fallback = r.counts.lemke;
     r.timings.prediction = prediction;

@@ -88,10 +88,22 @@ impl GpuContext {
     /// through a staging buffer. A buffer given twice is read once.
     pub(crate) fn submit_and_map<R>(
         &self,
-        mut encoder: wgpu::CommandEncoder,
+        encoder: wgpu::CommandEncoder,
         reads: &[(&wgpu::Buffer, u64)],
         read: impl FnOnce(&[&[u8]]) -> R,
     ) -> Result<R, Error> {
+        let submitted = self.submit_reads(encoder, reads);
+        self.map_reads(submitted, read)
+    }
+
+    /// The first half of [`Self::submit_and_map`]: the copies recorded and
+    /// `encoder` submitted, nothing waited for; the host may work while the
+    /// device runs it, then read with [`Self::map_reads`].
+    pub(crate) fn submit_reads(
+        &self,
+        mut encoder: wgpu::CommandEncoder,
+        reads: &[(&wgpu::Buffer, u64)],
+    ) -> Submitted {
         // (buffer mapped, bytes to read, whether it is a kept readback copy)
         let mut staging: Vec<(wgpu::Buffer, u64, bool)> = Vec::with_capacity(reads.len());
         for (at, &(src, size)) in reads.iter().enumerate() {
@@ -107,14 +119,29 @@ impl GpuContext {
             encoder.copy_buffer_to_buffer(src, 0, &dst, 0, size4);
             staging.push((dst, size, true));
         }
-        self.queue.submit([encoder.finish()]);
+        let index = self.queue.submit([encoder.finish()]);
+        Submitted { staging, index }
+    }
+
+    /// The second half of [`Self::submit_and_map`]: waits for that
+    /// submission (only: a later one, the next chunk's, may still run) and
+    /// hands `read` the bytes.
+    pub(crate) fn map_reads<R>(
+        &self,
+        submitted: Submitted,
+        read: impl FnOnce(&[&[u8]]) -> R,
+    ) -> Result<R, Error> {
+        let Submitted { staging, index } = submitted;
         let range = |size: u64| ..size.max(4).next_multiple_of(4);
         for (dst, size, _) in &staging {
             dst.slice(range(*size))
                 .map_async(wgpu::MapMode::Read, |_| {});
         }
         self.device
-            .poll(wgpu::PollType::wait_indefinitely())
+            .poll(wgpu::PollType::Wait {
+                submission_index: Some(index),
+                timeout: None,
+            })
             .map_err(|e| Error::Gpu(format!("waiting for the GPU: {e}")))?;
         let views = staging
             .iter()
@@ -139,6 +166,14 @@ impl GpuContext {
         }
         Ok(out)
     }
+}
+
+/// A submission [`GpuContext::submit_reads`] made: the buffers to map once
+/// it has run (each with the bytes to read and whether it is a kept
+/// readback copy), and its index.
+pub(crate) struct Submitted {
+    staging: Vec<(wgpu::Buffer, u64, bool)>,
+    index: wgpu::SubmissionIndex,
 }
 
 /// What a buffer kept between calls is for ([`GpuContext::take_kept`],
@@ -176,7 +211,8 @@ pub(crate) enum Role {
 /// same: it is never rewritten).
 #[derive(Default)]
 pub(crate) struct Kept {
-    buffers: Vec<(Role, wgpu::Buffer)>,
+    /// (role, buffer, the last submission that used it where known).
+    buffers: Vec<(Role, wgpu::Buffer, Option<wgpu::SubmissionIndex>)>,
     pub(crate) tolerances: Option<(super::pipelines::Tolerances, wgpu::Buffer)>,
 }
 
@@ -226,11 +262,22 @@ impl GpuContext {
     /// out of the context (None when there is none): no other call sees it
     /// until [`Self::keep`] gives it back.
     pub(crate) fn take_kept(&self, role: Role, size: u64) -> Option<wgpu::Buffer> {
+        self.take_kept_used(role, size).map(|(b, _)| b)
+    }
+
+    /// [`Self::take_kept`] with the last submission that used the buffer,
+    /// where [`Self::keep_used`] was told.
+    fn take_kept_used(
+        &self,
+        role: Role,
+        size: u64,
+    ) -> Option<(wgpu::Buffer, Option<wgpu::SubmissionIndex>)> {
         let mut kept = self.kept.lock().ok()?;
         let at = (0..kept.buffers.len())
             .filter(|&i| kept.buffers[i].0 == role && kept.buffers[i].1.size() >= size)
             .min_by_key(|&i| kept.buffers[i].1.size())?;
-        Some(kept.buffers.swap_remove(at).1)
+        let (_, buffer, used) = kept.buffers.swap_remove(at);
+        Some((buffer, used))
     }
 
     /// [`Self::take_kept`], else a new buffer of `role` (not mapped).
@@ -247,6 +294,12 @@ impl GpuContext {
     /// The newest [`KEPT_PER_ROLE`] of a role are kept, at most
     /// [`KEPT_BYTES`] in all.
     pub(crate) fn keep(&self, role: Role, buffer: wgpu::Buffer) {
+        self.keep_used(role, buffer, None);
+    }
+
+    /// [`Self::keep`], with the last submission that uses the buffer (a
+    /// mapping then waits for that one only: [`Self::kept_mapped`]).
+    fn keep_used(&self, role: Role, buffer: wgpu::Buffer, used: Option<wgpu::SubmissionIndex>) {
         if buffer.size() > KEPT_BYTES / 2 || buffer.usage() != self.role_usage(role) {
             return;
         }
@@ -254,12 +307,12 @@ impl GpuContext {
             return;
         };
         let b = &mut kept.buffers;
-        b.push((role, buffer));
-        while b.iter().filter(|(r, _)| *r == role).count() > KEPT_PER_ROLE {
-            let oldest = b.iter().position(|(r, _)| *r == role).unwrap_or(0);
+        b.push((role, buffer, used));
+        while b.iter().filter(|(r, _, _)| *r == role).count() > KEPT_PER_ROLE {
+            let oldest = b.iter().position(|(r, _, _)| *r == role).unwrap_or(0);
             b.remove(oldest);
         }
-        while b.iter().map(|(_, x)| x.size()).sum::<u64>() > KEPT_BYTES {
+        while b.iter().map(|(_, x, _)| x.size()).sum::<u64>() > KEPT_BYTES {
             b.remove(0);
         }
     }
@@ -289,10 +342,11 @@ impl GpuContext {
         let buffer = self.kept_or_new(role, size);
         let mut encoder = self.encoder("upload");
         encoder.copy_buffer_to_buffer(&staging, 0, &buffer, 0, size);
-        self.queue.submit([encoder.finish()]);
+        let copy = self.queue.submit([encoder.finish()]);
         // The copy may still read it: whoever takes it next maps it, and
-        // wgpu maps it only once the copy is done.
-        self.keep(Role::Staging, staging);
+        // wgpu maps it only once the copy is done (waiting for the copy
+        // alone, not for a chunk's kernels submitted after it).
+        self.keep_used(Role::Staging, staging, Some(copy));
         Ok(buffer)
     }
 
@@ -306,17 +360,45 @@ impl GpuContext {
         fill: impl FnOnce(wgpu::WriteOnly<'_, [u8]>),
     ) -> Result<wgpu::Buffer, Error> {
         let what = format!("writing {role:?}");
-        let buffer = match self.take_kept(role, size) {
-            Some(buffer) => {
-                buffer.slice(..size).map_async(wgpu::MapMode::Write, |_| {});
-                self.device
-                    .poll(wgpu::PollType::wait_indefinitely())
+        let buffer = match self.take_kept_used(role, size) {
+            Some((buffer, used)) => {
+                self.map_for_writing(&buffer, size, used)
                     .map_err(|e| Error::Gpu(format!("{what}: {e}")))?;
                 buffer
             }
             None => self.new_kept(role, size, true),
         };
         fill_mapped(buffer, size, &what, |view| fill(view.slice(..)))
+    }
+}
+
+impl GpuContext {
+    /// Maps `buffer`'s first `size` bytes for writing. An idle buffer (a
+    /// chunk's, once read back) maps at one poll that waits for nothing,
+    /// so the next chunk is packed while the last one still runs; else the
+    /// wait is for `used`, the last submission using it, where known, and
+    /// for every submission where not.
+    fn map_for_writing(
+        &self,
+        buffer: &wgpu::Buffer,
+        size: u64,
+        used: Option<wgpu::SubmissionIndex>,
+    ) -> Result<(), wgpu::PollError> {
+        let mapped = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+        let flag = mapped.clone();
+        buffer
+            .slice(..size)
+            .map_async(wgpu::MapMode::Write, move |r| {
+                flag.store(r.is_ok(), std::sync::atomic::Ordering::Release)
+            });
+        self.device.poll(wgpu::PollType::Poll)?;
+        if !mapped.load(std::sync::atomic::Ordering::Acquire) {
+            self.device.poll(wgpu::PollType::Wait {
+                submission_index: used,
+                timeout: None,
+            })?;
+        }
+        Ok(())
     }
 }
 

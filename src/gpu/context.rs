@@ -400,6 +400,11 @@ impl GpuContext {
         if summary.software && adapter.features().contains(mappable) {
             features |= mappable;
         }
+        // GPU timestamps, where offered: the kernels' own seconds per
+        // chunk (`GpuFigures::kernel_device_seconds`).
+        if adapter.features().contains(wgpu::Features::TIMESTAMP_QUERY) {
+            features |= wgpu::Features::TIMESTAMP_QUERY;
+        }
         let limits = adapter.limits();
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("lcpbatch device"),

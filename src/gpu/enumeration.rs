@@ -3,7 +3,7 @@
 //! every island is done; or, with [`KernelPlan::lemke`], through the Lemke
 //! kernel, one dispatch per size in one round (it always finishes).
 
-use super::buffers::Role;
+use super::buffers::{Role, Submitted};
 use super::dispatch::{split, Ranges, Span};
 use super::kernel::{EnumerationKernel, KernelPlan, TreeRoute};
 use super::layout::{
@@ -33,9 +33,10 @@ pub(crate) struct EnumerationRun {
 pub(crate) struct EnumerationJob<'a> {
     pub ctx: &'a GpuContext,
     pub pipelines: &'a Pipelines,
-    /// The island table (binding 1) and every island's M and q (binding 2).
-    pub islands: &'a wgpu::Buffer,
-    pub values: &'a wgpu::Buffer,
+    /// The island table (binding 1) and every island's M and q (binding 2),
+    /// held until the job ends ([`InFlight::finish`]).
+    pub islands: wgpu::Buffer,
+    pub values: wgpu::Buffer,
     /// The tolerances uniform (binding 7, [`super::pipelines::Tolerances`]).
     pub tolerances: &'a wgpu::Buffer,
     pub table: &'a [PackedIsland],
@@ -153,39 +154,47 @@ impl<'a> EnumerationJob<'a> {
     /// `encoder` may hold earlier work (assembly); it is submitted with the
     /// first round.
     pub(crate) fn run(
-        &self,
+        self,
         encoder: wgpu::CommandEncoder,
         read_back: bool,
     ) -> Result<EnumerationRun, Error> {
-        let mut run = EnumerationRun {
+        self.start(encoder)?.finish(read_back)
+    }
+
+    /// The first submission of [`Self::run`] (`encoder` and the first
+    /// round), not waited for: the host works while the device runs it,
+    /// then [`InFlight::finish`] does the rest.
+    pub(crate) fn start(self, mut encoder: wgpu::CommandEncoder) -> Result<InFlight<'a>, Error> {
+        let t = Instant::now();
+        let run = EnumerationRun {
             results: Vec::new(),
             z: Vec::new(),
             figures: GpuFigures::default(),
         };
-        let t = Instant::now();
-        if self.table.is_empty() {
+        let mut flight = InFlight {
+            stamps: Stamps::new(self.ctx),
+            job: self,
+            state: None,
+            active: Vec::new(),
+            per_submit: 1,
+            run,
+            submitted: None,
+            answers_read: false,
+        };
+        if flight.job.table.is_empty() {
             // Nothing to enumerate (prediction settled every island): run what
-            // the encoder holds (assembly) and wait.
-            self.ctx.submit_and_read(encoder, &[])?;
-            run.figures.kernel_seconds = t.elapsed().as_secs_f64();
-            return Ok(run);
+            // the encoder holds (assembly).
+            flight.submitted = Some(flight.job.ctx.submit_reads(encoder, &[]));
+        } else {
+            let (plans, params) = flight.job.plans()?;
+            let out = flight.job.outputs(&params, &mut encoder);
+            let buckets = flight.job.buckets(plans, &out)?;
+            flight.active = (0..buckets.len()).collect();
+            flight.state = Some((out, buckets));
+            flight.submit(encoder)?;
         }
-        let mut encoder = encoder;
-        let (plans, params) = self.plans()?;
-        let out = self.outputs(&params, &mut encoder);
-        let buckets = self.buckets(plans, &out)?;
-        let encoder = self.rounds(&out, &buckets, encoder, &mut run)?;
-        run.figures.kernel_seconds = t.elapsed().as_secs_f64();
-        if read_back {
-            let t = Instant::now();
-            self.read(&out, encoder, &mut run)?;
-            run.figures.readback_seconds = t.elapsed().as_secs_f64();
-        }
-        // Every submission reading them has ended (`rounds` waits for the
-        // last): the next call may take them.
-        drop(buckets);
-        out.keep(self.ctx);
-        Ok(run)
+        flight.run.figures.kernel_seconds += t.elapsed().as_secs_f64();
+        Ok(flight)
     }
 
     /// The output buffers, kept or new, the ones the shaders expect zeroed
@@ -267,7 +276,6 @@ impl<'a> EnumerationJob<'a> {
     fn buckets(&self, plans: Vec<Plan<'a>>, out: &Outputs) -> Result<Vec<Bucket>, Error> {
         let stride = Outputs::params_stride(self.ctx);
         let params_size = wgpu::BufferSize::new(std::mem::size_of::<Params>() as u64);
-        let whole = |b: &'a wgpu::Buffer| b.as_entire_buffer_binding();
         let bind = |(stage, dispatches): (&Stage, Vec<(usize, u32)>)| -> Ranges {
             let bind_one = |(at, groups): (usize, u32)| {
                 let params = wgpu::BufferBinding {
@@ -277,13 +285,13 @@ impl<'a> EnumerationJob<'a> {
                 };
                 let parts = [
                     params,
-                    whole(self.islands),
-                    whole(self.values),
+                    self.islands.as_entire_buffer_binding(),
+                    self.values.as_entire_buffer_binding(),
                     out.results.binding(),
                     out.z.binding(),
                     out.unfinished.binding(),
                     out.least.binding(),
-                    whole(self.tolerances),
+                    self.tolerances.as_entire_buffer_binding(),
                 ];
                 (stage.bind_parts(self.ctx, &parts), groups)
             };
@@ -299,80 +307,8 @@ impl<'a> EnumerationJob<'a> {
             .collect())
     }
 
-    /// Submits rounds (doubling the rounds per submission, up to 256) until
-    /// no island is unfinished; returns a fresh encoder.
-    fn rounds(
-        &self,
-        out: &Outputs,
-        buckets: &[Bucket],
-        mut encoder: wgpu::CommandEncoder,
-        run: &mut EnumerationRun,
-    ) -> Result<wgpu::CommandEncoder, Error> {
-        let ctx = self.ctx;
-        let mut active: Vec<usize> = (0..buckets.len()).collect();
-        let mut per_submit = 1usize;
-        while !active.is_empty() {
-            for r in 0..per_submit {
-                if r + 1 == per_submit {
-                    // Count only what the last round of this submission leaves.
-                    let u = &out.unfinished;
-                    encoder.clear_buffer(&u.buffer, 0, Some(u.size));
-                }
-                for &b in &active {
-                    let bucket = &buckets[b];
-                    match &bucket.tree {
-                        Some(t) if run.figures.rounds + r == 0 => {
-                            let stage = self.pipelines.tree(ctx, bucket.n as usize)?;
-                            ctx.record(&mut encoder, stage, t);
-                            run.figures.dispatches += t.len();
-                        }
-                        _ => {
-                            ctx.record(&mut encoder, self.size_stage(bucket.n)?, &bucket.ranges);
-                            run.figures.dispatches += bucket.ranges.len();
-                        }
-                    }
-                }
-            }
-            run.figures.rounds += per_submit;
-            let unfinished = [(&out.unfinished.buffer, UNFINISHED_BYTES)];
-            let counts = ctx.submit_and_read(encoder, &unfinished)?;
-            let counts: &[u32] = bytemuck::try_cast_slice(&counts[0])
-                .map_err(|e| Error::Gpu(format!("unfinished counts: {e}")))?;
-            active.retain(|&b| counts.get(buckets[b].n as usize).copied().unwrap_or(0) > 0);
-            // Every round visits at least one basis of every unfinished island.
-            if run.figures.rounds > (1 << MAX_GPU_N) + 1 {
-                return Err(Error::Gpu(
-                    "enumeration made no progress (rounds exceed 2^16)".into(),
-                ));
-            }
-            encoder = ctx
-                .device
-                .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                    label: Some("enumeration readback"),
-                });
-            per_submit = (per_submit * 2).min(256);
-        }
-        Ok(encoder)
-    }
-
-    /// Reads results and z back, and counts the tree kernel's decisions.
-    fn read(
-        &self,
-        out: &Outputs,
-        encoder: wgpu::CommandEncoder,
-        run: &mut EnumerationRun,
-    ) -> Result<(), Error> {
-        let reads = [
-            (&out.results.buffer, out.results.bytes),
-            (&out.z.buffer, out.z.bytes),
-        ];
-        let mut read = self.ctx.submit_and_read(encoder, &reads)?.into_iter();
-        let r_bytes = read.next().unwrap_or_default();
-        let z_bytes = read.next().unwrap_or_default();
-        run.results = bytemuck::try_cast_slice(&r_bytes)
-            .map_err(|e| Error::Gpu(format!("results: {e}")))?
-            .to_vec();
-        run.z = scalars_from_bytes(&z_bytes, self.ctx.precision());
+    /// Counts the tree kernel's decisions in `run.results`.
+    fn count_tree(&self, run: &mut EnumerationRun) {
         let tree_count = |v: u32| {
             run.results
                 .iter()
@@ -382,6 +318,214 @@ impl<'a> EnumerationJob<'a> {
         };
         run.figures.tree_decided = tree_count(TREE_DECIDED);
         run.figures.tree_undecided = tree_count(TREE_UNDECIDED);
+    }
+}
+
+/// A job on the device ([`EnumerationJob::start`]): its buffers, the
+/// buckets still unfinished and the submission in flight.
+pub(crate) struct InFlight<'a> {
+    job: EnumerationJob<'a>,
+    /// The outputs and buckets (None: an empty table).
+    state: Option<(Outputs, Vec<Bucket>)>,
+    active: Vec<usize>,
+    per_submit: usize,
+    run: EnumerationRun,
+    stamps: Option<Stamps>,
+    submitted: Option<Submitted>,
+    /// Whether the last submission read results and z too (the Lemke
+    /// kernel: one round ends every island).
+    answers_read: bool,
+}
+
+impl InFlight<'_> {
+    /// Records `per_submit` rounds of the active buckets into `encoder`
+    /// (between timestamps where the device has them) and submits it with
+    /// the copies of the unfinished counts (and, for the Lemke kernel's
+    /// first round, of results and z), waiting for nothing.
+    fn submit(&mut self, mut encoder: wgpu::CommandEncoder) -> Result<(), Error> {
+        let job = &self.job;
+        let ctx = job.ctx;
+        let Some((out, buckets)) = &self.state else {
+            return Ok(());
+        };
+        if let Some(s) = &self.stamps {
+            s.write(&mut encoder, 0);
+        }
+        let rounds = self.run.figures.rounds;
+        for r in 0..self.per_submit {
+            if r + 1 == self.per_submit {
+                // Count only what the last round of this submission leaves.
+                let u = &out.unfinished;
+                encoder.clear_buffer(&u.buffer, 0, Some(u.size));
+            }
+            for &b in &self.active {
+                let bucket = &buckets[b];
+                match &bucket.tree {
+                    Some(t) if rounds + r == 0 => {
+                        let stage = job.pipelines.tree(ctx, bucket.n as usize)?;
+                        ctx.record(&mut encoder, stage, t);
+                        self.run.figures.dispatches += t.len();
+                    }
+                    _ => {
+                        ctx.record(&mut encoder, job.size_stage(bucket.n)?, &bucket.ranges);
+                        self.run.figures.dispatches += bucket.ranges.len();
+                    }
+                }
+            }
+        }
+        self.run.figures.rounds += self.per_submit;
+        let mut reads = vec![(&out.unfinished.buffer, UNFINISHED_BYTES)];
+        if let Some(s) = &self.stamps {
+            s.write(&mut encoder, 1);
+            encoder.resolve_query_set(&s.set, 0..2, &s.resolved, 0);
+            reads.push((&s.resolved, 16));
+        }
+        // The Lemke kernel ends every island in its one round: its answers
+        // come back with the counts, without a submission of their own.
+        self.answers_read = job.plan.lemke && rounds == 0;
+        if self.answers_read {
+            reads.push((&out.results.buffer, out.results.bytes));
+            reads.push((&out.z.buffer, out.z.bytes));
+        }
+        self.submitted = Some(ctx.submit_reads(encoder, &reads));
         Ok(())
+    }
+
+    /// Waits for the submission in flight and submits rounds (doubling the
+    /// rounds per submission, up to 256) until no island is unfinished;
+    /// then, with `read_back`, reads results and z. The buffers go back to
+    /// the context for the next chunk or call.
+    pub(crate) fn finish(mut self, read_back: bool) -> Result<EnumerationRun, Error> {
+        let ctx = self.job.ctx;
+        let t = Instant::now();
+        let mut answers = None;
+        while let Some(submitted) = self.submitted.take() {
+            let (stamps, with_answers) = (self.stamps.is_some(), self.answers_read);
+            let (counts, ticks, got) = ctx.map_reads(submitted, |bytes| {
+                let counts: Vec<u32> =
+                    bytemuck::pod_collect_to_vec(bytes.first().copied().unwrap_or(&[]));
+                let ticks: Option<Vec<u64>> = stamps
+                    .then(|| bytemuck::pod_collect_to_vec(bytes.get(1).copied().unwrap_or(&[])));
+                let at = 1 + stamps as usize;
+                let got = with_answers.then(|| {
+                    let r: Vec<BasisResult> =
+                        bytemuck::pod_collect_to_vec(bytes.get(at).copied().unwrap_or(&[]));
+                    let z = bytes.get(at + 1).copied().unwrap_or(&[]);
+                    (r, scalars_from_bytes(z, ctx.precision()))
+                });
+                (counts, ticks, got)
+            })?;
+            if let (Some(s), Some(&[t0, t1])) = (&self.stamps, ticks.as_deref()) {
+                let secs = t1.saturating_sub(t0) as f64 * s.period_ns * 1e-9;
+                *self.run.figures.kernel_device_seconds.get_or_insert(0.0) += secs;
+            }
+            let Some((_, buckets)) = &self.state else {
+                break;
+            };
+            self.active
+                .retain(|&b| counts.get(buckets[b].n as usize).copied().unwrap_or(0) > 0);
+            if self.active.is_empty() {
+                answers = got;
+                break;
+            }
+            // Every round visits at least one basis of every unfinished island.
+            if self.run.figures.rounds > (1 << MAX_GPU_N) + 1 {
+                return Err(Error::Gpu(
+                    "enumeration made no progress (rounds exceed 2^16)".into(),
+                ));
+            }
+            self.per_submit = (self.per_submit * 2).min(256);
+            self.submit(ctx.encoder("enumeration rounds"))?;
+        }
+        self.run.figures.kernel_seconds += t.elapsed().as_secs_f64();
+        let Some((out, buckets)) = self.state.take() else {
+            return Ok(self.run);
+        };
+        if read_back {
+            let t = Instant::now();
+            let (results, z) = match answers {
+                Some(got) => got,
+                None => {
+                    let reads = [
+                        (&out.results.buffer, out.results.bytes),
+                        (&out.z.buffer, out.z.bytes),
+                    ];
+                    let mut read = ctx
+                        .submit_and_read(ctx.encoder("enumeration readback"), &reads)?
+                        .into_iter();
+                    let r_bytes = read.next().unwrap_or_default();
+                    let z_bytes = read.next().unwrap_or_default();
+                    let results = bytemuck::try_cast_slice(&r_bytes)
+                        .map_err(|e| Error::Gpu(format!("results: {e}")))?
+                        .to_vec();
+                    (results, scalars_from_bytes(&z_bytes, ctx.precision()))
+                }
+            };
+            (self.run.results, self.run.z) = (results, z);
+            self.job.count_tree(&mut self.run);
+            self.run.figures.readback_seconds = t.elapsed().as_secs_f64();
+        }
+        // Every submission reading them has ended (the loop waited for the
+        // last): the next chunk or call may take them.
+        drop(buckets);
+        out.keep(ctx);
+        Ok(self.run)
+    }
+
+    /// The job's island table and values buffers, for the caller to keep.
+    pub(crate) fn buffers(&self) -> (wgpu::Buffer, wgpu::Buffer) {
+        (self.job.islands.clone(), self.job.values.clone())
+    }
+}
+
+/// GPU timestamps around each submission's rounds, where the device has
+/// `TIMESTAMP_QUERY`: a query set of two and the buffer they resolve into.
+struct Stamps {
+    set: wgpu::QuerySet,
+    resolved: wgpu::Buffer,
+    /// Nanoseconds per tick.
+    period_ns: f64,
+}
+
+impl Stamps {
+    fn new(ctx: &GpuContext) -> Option<Self> {
+        if !ctx
+            .device
+            .features()
+            .contains(wgpu::Features::TIMESTAMP_QUERY)
+        {
+            return None;
+        }
+        let set = ctx.device.create_query_set(&wgpu::QuerySetDescriptor {
+            label: Some("enumeration timestamps"),
+            ty: wgpu::QueryType::Timestamp,
+            count: 2,
+        });
+        let resolved = ctx.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("enumeration timestamps"),
+            size: 16,
+            usage: wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC,
+            mapped_at_creation: false,
+        });
+        let period_ns = ctx.queue.get_timestamp_period() as f64;
+        Some(Stamps {
+            set,
+            resolved,
+            period_ns,
+        })
+    }
+
+    /// An empty pass writing timestamp `at`: 0 at its beginning (before
+    /// the rounds), 1 at its end (after them).
+    fn write(&self, encoder: &mut wgpu::CommandEncoder, at: u32) {
+        let writes = wgpu::ComputePassTimestampWrites {
+            query_set: &self.set,
+            beginning_of_pass_write_index: (at == 0).then_some(0),
+            end_of_pass_write_index: (at == 1).then_some(1),
+        };
+        encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some("timestamp"),
+            timestamp_writes: Some(writes),
+        });
     }
 }

@@ -122,8 +122,8 @@ fn assemble_and_enumerate(
                 let job = EnumerationJob {
                     ctx,
                     pipelines: p,
-                    islands: &enum_islands,
-                    values: &values,
+                    islands: enum_islands,
+                    values: values.clone(),
                     tolerances,
                     table: &c.enum_table,
                     tree: &c.enum_tree,
@@ -398,11 +398,21 @@ pub fn solve_scenes_warm(
                 path: SolvePath::EnumeratedGpu,
                 solution: LcpSolution::invalid(0),
             };
-            settle_from_gpu(&built[s].lcps[k], answer, settings, exact, &mut island)
-                .map(|(verdict, gpu_error)| (island, verdict, gpu_error))
+            let mut repair = 0.0;
+            settle_from_gpu(
+                &built[s].lcps[k],
+                answer,
+                settings,
+                exact,
+                &mut island,
+                &mut repair,
+            )
+            .map(|(verdict, gpu_error)| (island, verdict, gpu_error, repair))
         });
+        let mut repair = 0.0;
         for (j, r) in checked.into_iter().enumerate() {
-            let (island, verdict, gpu_error) = r?;
+            let (island, verdict, gpu_error, secs) = r?;
+            repair += secs;
             let (s, k) = c.enum_keys[j];
             let mine = &mut islands[first[s] + k];
             (mine.method, mine.path, mine.solution) = (island.method, island.path, island.solution);
@@ -411,6 +421,9 @@ pub fn solve_scenes_warm(
                 figures.max_gpu_error = gpu_error;
             }
         }
+        let repair = repair / threads.max(1) as f64;
+        figures.repair_seconds += repair;
+        figures.check_seconds += (t.elapsed().as_secs_f64() - repair).max(0.0);
         validation += t.elapsed().as_secs_f64();
 
         // Impulses of the chunk's contacts, validated, to the impulse stage.

@@ -38,6 +38,8 @@ use crate::settings::Method;
 use crate::solver::{lemke_else_enumerate, textbook_checked};
 use crate::Error;
 
+use std::time::Instant;
+
 /// What the GPU reported for one island.
 #[derive(Clone, Copy, Debug)]
 pub struct GpuVerdict<'a> {
@@ -129,6 +131,7 @@ pub enum Verdict {
 /// is the CPU's choice) and it is within the relaxed tolerance in f64;
 /// otherwise the CPU decides. Returns the verdict and the error measure of
 /// the GPU's own z against the f64 problem (NaN when the GPU gave none).
+/// The seconds of a repair (the CPU enumeration) are added to `repair`.
 ///
 /// # Errors
 /// Those of the CPU enumeration (none for a checked problem of n ≤ 20).
@@ -138,6 +141,7 @@ pub fn check_answer(
     settings: &EnumerationSettings,
     accept_relaxed: bool,
     out: &mut LcpSolution,
+    repair: &mut f64,
 ) -> Result<(Verdict, f64), Error> {
     let n = lcp.n();
     let gpu_error = if gpu.basis.is_some() && gpu.z.len() == n {
@@ -166,7 +170,9 @@ pub fn check_answer(
             return Ok((Verdict::Polished, gpu_error));
         }
     }
+    let t = Instant::now();
     *out = enumerate(lcp, settings)?;
+    *repair += t.elapsed().as_secs_f64();
     let verdict = if gpu.basis.is_none() && out.status == Status::NoSolution {
         Verdict::ConfirmedNoSolution
     } else {
@@ -183,12 +189,14 @@ pub fn check_answer(
 /// by [`lemke`] (path Lemke), Auto by the checked Lemke (path Lemke), else
 /// the CPU enumeration (path Repaired). Returns (method, path, verdict:
 /// Polished for the GPU's basis, else Repaired) and the error of the GPU's
-/// own z (NaN where it gave none).
+/// own z (NaN where it gave none). The seconds of the CPU path's solve
+/// are added to `repair`.
 pub fn check_lemke_answer(
     lcp: &Lcp,
     (result, z): (&BasisResult, &[f64]),
     settings: &GpuSolveSettings,
     out: &mut LcpSolution,
+    repair: &mut f64,
 ) -> (Method, SolvePath, Verdict, f64) {
     let e = &settings.enumeration;
     let found = result.status == FOUND && result.mask >> lcp.n() == 0;
@@ -205,6 +213,7 @@ pub fn check_lemke_answer(
             gpu_error,
         );
     }
+    let t = Instant::now();
     let (mut method, mut path) = (Method::Lemke, SolvePath::Lemke);
     if settings.method == Method::Lemke {
         *out = lemke(lcp, &settings.lemke);
@@ -215,5 +224,6 @@ pub fn check_lemke_answer(
             path = SolvePath::Repaired;
         }
     }
+    *repair += t.elapsed().as_secs_f64();
     (method, path, Verdict::Repaired, gpu_error)
 }

@@ -12,7 +12,11 @@
 //! growing like n³ above them: see [`CostModel::per_island`]), and
 //! gpu_batch the GPU's fixed cost per call (upload, submissions, readback).
 //! `Auto` solves each batch where the estimate is lower; the report's
-//! `choice` gives both estimates.
+//! `choice` gives both estimates. The calibration's batches are one part
+//! of the GPU path's pipeline (`crate::gpu::batch`); on hardware a batch
+//! leaving 32,768+ islands to the GPU overlaps the host's share with the
+//! kernels, which the estimate leaves out (the model has no split of
+//! host and device seconds): it errs towards the CPU on such batches.
 //!
 //! Calibration ([`Solver::calibrate`](super::Solver::calibrate), [`calibrate`]): physical islands of each size in
 //! [`CALIBRATION_SIZES`] solved by the CPU path (every core) and by the GPU

@@ -22,6 +22,7 @@ mod gpu_friction;
 mod gpu_friction_assembly;
 mod gpu_friction_door;
 mod gpu_lemke;
+mod gpu_pipeline;
 mod gpu_prediction;
 mod gpu_seeds;
 mod gpu_stages;

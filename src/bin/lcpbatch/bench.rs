@@ -52,8 +52,17 @@ pub struct BenchRow {
     pub note: String,
     /// GPU rows: microseconds per island in each phase of the call, in
     /// order (host preparation: the checks, warm bases, prediction; the GPU
-    /// phase's parts; the f64 check; the rest: report and door).
+    /// phase's parts, the kernels as the host waits for them; the f64
+    /// check, its repairs, the report; the rest: the door). They add up to
+    /// the call's time.
     pub phases_us_per_island: Vec<(String, f64)>,
+    /// GPU rows: microseconds per island the device ran the kernels, by
+    /// its timestamps (None: no timestamps on this adapter, no kernel run,
+    /// or no GPU row).
+    pub device_kernels_us_per_island: Option<f64>,
+    /// GPU rows: microseconds per island of host work (upload, check) done
+    /// while a chunk was on the device.
+    pub overlapped_us_per_island: f64,
 }
 
 impl BenchRow {
@@ -77,6 +86,8 @@ impl BenchRow {
             .map(|(p, c)| format!("{p}={c}"))
             .collect();
         let mut phases = Vec::new();
+        let (mut device_kernels, mut overlapped) = (None, 0.0);
+        let per = 1e6 / report.islands.len().max(1) as f64;
         if let Some(g) = report.gpu.as_ref().filter(|_| report.on_gpu()) {
             note.push(format!(
                 "tree decided={} undecided={}; gpu's own max error {:.1e}",
@@ -84,7 +95,9 @@ impl BenchRow {
             ));
             let t = &report.timings;
             let parts = g.pack_seconds + g.upload_seconds + g.kernel_seconds + g.readback_seconds;
-            let per = 1e6 / report.islands.len().max(1) as f64;
+            let rest = seconds - t.prediction - t.gpu - t.validation - g.report_seconds;
+            device_kernels = g.kernel_device_seconds.map(|s| s * per);
+            overlapped = g.overlapped_seconds * per;
             phases = [
                 ("host preparation", t.prediction),
                 ("pack", g.pack_seconds),
@@ -92,11 +105,10 @@ impl BenchRow {
                 ("kernels", g.kernel_seconds),
                 ("readback", g.readback_seconds),
                 ("other GPU host work", (t.gpu - parts).max(0.0)),
-                ("f64 check", t.validation),
-                (
-                    "report and door",
-                    (seconds - t.prediction - t.gpu - t.validation).max(0.0),
-                ),
+                ("f64 check", (t.validation - g.repair_seconds).max(0.0)),
+                ("repair", g.repair_seconds),
+                ("report", g.report_seconds),
+                ("door", rest.max(0.0)),
             ]
             .into_iter()
             .map(|(name, secs)| (name.to_string(), secs * per))
@@ -119,6 +131,8 @@ impl BenchRow {
             statuses,
             note: note.join(" "),
             phases_us_per_island: phases,
+            device_kernels_us_per_island: device_kernels,
+            overlapped_us_per_island: overlapped,
         }
     }
 }
@@ -415,7 +429,11 @@ fn print_table(rows: &[BenchRow]) {
         .filter(|r| !r.phases_us_per_island.is_empty())
         .collect();
     if !gpu_rows.is_empty() {
-        println!("\nGPU rows, µs per island by phase (host side; kernels include the waits):");
+        println!(
+            "\nGPU rows, µs per island by phase (host side, adding up to the call; kernels: \
+             the host's wait for them), then the kernels by the device's timestamps and the \
+             host work overlapped with them:"
+        );
     }
     for r in gpu_rows {
         let phases: Vec<String> = r
@@ -423,7 +441,16 @@ fn print_table(rows: &[BenchRow]) {
             .iter()
             .map(|(name, us)| format!("{name} {us:.2}"))
             .collect();
-        println!("{:<17} {:<28} {}", r.family, r.solver, phases.join(", "));
+        let device = r
+            .device_kernels_us_per_island
+            .map_or("none".to_string(), |us| format!("{us:.2}"));
+        println!(
+            "{:<17} {:<28} {}; device kernels {device}, overlapped {:.2}",
+            r.family,
+            r.solver,
+            phases.join(", "),
+            r.overlapped_us_per_island
+        );
     }
 }
 
@@ -523,6 +550,14 @@ pub fn run(opts: &BenchOptions) -> Result<(), Error> {
     bar.set_message("time against batch size");
     let by_batch = time_vs_batch(opts, &mut gpus)?;
     bar.finish_and_clear();
+    println!("\nµs per island against the batch size (mixed n):");
+    for (label, points) in &by_batch {
+        let at: Vec<String> = points
+            .iter()
+            .map(|(size, secs)| format!("{size:.0}: {:.3}", secs * 1e6))
+            .collect();
+        println!("{label:<28} {}", at.join(", "));
+    }
     let dir = &opts.out_dir;
     write_json(
         &rows,
