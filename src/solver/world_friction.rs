@@ -20,9 +20,14 @@ use super::world_repair::{reapply, repair_island, Repairs};
 use crate::build::FrictionBuilt;
 use crate::cpu::assembly::{assemble_contacts, assemble_island};
 use crate::cpu::impulses::BodyVelocity;
+use crate::friction::assembly::FrictionContactRows;
 use crate::friction::assembly::{apply_friction_impulses, assemble_friction_island_into};
-use crate::friction::{solve_friction_problem, FrictionProblem};
+use crate::friction::{
+    project_on_cone, solve_friction_problem, FrictionProblem, FrictionResiduals, FrictionSettings,
+    FrictionSolution,
+};
 use crate::islands::Island;
+use crate::lcp::Status;
 use crate::report::{FrictionIslandReport, SceneFriction, SceneReport};
 use crate::scene::Scene;
 use crate::settings::Settings;
@@ -59,12 +64,15 @@ pub(super) fn step_frictional_world_on_cpu(
     // solve (W allocated once per thread; its seconds go to the build).
     let mut assembly = std::time::Duration::ZERO;
     let t1 = Instant::now();
-    for (island, start) in islands.into_iter().zip(&starts) {
+    let mut checked = checked_starts(scene, &rows, &islands, &starts, &friction);
+    for ((island, start), checked) in islands.into_iter().zip(&starts).zip(&mut checked) {
         let ta = Instant::now();
-        let solution = with_problem(|problem| {
-            assemble_friction_island_into(scene, &rows, &island, problem);
-            assembly += ta.elapsed();
-            solve_friction_problem(problem, start.as_deref(), &friction)
+        let solution = checked.take().unwrap_or_else(|| {
+            with_problem(|problem| {
+                assemble_friction_island_into(scene, &rows, &island, problem);
+                assembly += ta.elapsed();
+                solve_friction_problem(problem, start.as_deref(), &friction)
+            })
         });
         for (i, &c) in island.contacts.iter().enumerate() {
             r[c].copy_from_slice(&solution.r[3 * i..3 * i + 3]);
@@ -129,6 +137,86 @@ pub(super) fn step_frictional_world_on_cpu(
         .map(|d| d.as_secs_f64()),
         repairs,
     }
+}
+
+/// Each island's start (its warm start, else zero: as
+/// [`solve_friction_problem`] takes it) projected on its cones and judged
+/// without W: the starts of every island applied to the bodies at once
+/// (islands share no dynamic body), each row's u = J v⁺ + (q − v_rel) (=
+/// W r + q), its Coulomb error. Some(the answer, 0 iterations) where that
+/// is within the tolerance (a resting island's warm start, a separating
+/// island's zero): its W is never assembled (a resting 4-box stack's 48 ×
+/// 48 W was a fifth of its step). Every island is None for the projected
+/// methods (judged by another residual).
+fn checked_starts(
+    scene: &Scene,
+    rows: &[FrictionContactRows],
+    islands: &[Island],
+    starts: &[Option<Vec<f64>>],
+    s: &FrictionSettings,
+) -> Vec<Option<FrictionSolution>> {
+    if s.method.projected().is_some() {
+        return vec![None; islands.len()];
+    }
+    let mut r = vec![[0.0; 3]; scene.contacts.len()];
+    for (island, start) in islands.iter().zip(starts) {
+        let usable = |w: &&Vec<f64>| w.len() == 3 * island.len() && w.iter().all(|v| v.is_finite());
+        if let Some(w) = start.as_ref().filter(usable) {
+            for (i, &c) in island.contacts.iter().enumerate() {
+                let wi = [w[3 * i], w[3 * i + 1], w[3 * i + 2]];
+                r[c] = project_on_cone(wi, scene.contacts[c].friction);
+            }
+        }
+    }
+    let bodies = apply_friction_impulses(scene, rows, &r);
+    let velocity = |k: usize| {
+        bodies[k]
+            .velocity
+            .into_iter()
+            .chain(bodies[k].angular_velocity)
+    };
+    islands
+        .iter()
+        .map(|island| {
+            let contacts = &island.contacts;
+            let (mut q, mut u) = (Vec::with_capacity(3 * contacts.len()), Vec::new());
+            for &c in contacts {
+                let con = &scene.contacts[c];
+                for row in &rows[c].rows {
+                    let mut jv: f64 = (row.jacobian[..6].iter().zip(velocity(con.a)))
+                        .map(|(j, v)| j * v)
+                        .sum();
+                    if let Some(b) = con.b {
+                        jv += (row.jacobian[6..].iter().zip(velocity(b)))
+                            .map(|(j, v)| j * v)
+                            .sum::<f64>();
+                    }
+                    u.push(jv + (row.q - row.v_rel));
+                    q.push(row.q);
+                }
+            }
+            let mu = contacts
+                .iter()
+                .map(|&c| scene.contacts[c].friction)
+                .collect();
+            let p = FrictionProblem {
+                w: Vec::new(),
+                q,
+                mu,
+            };
+            let ri: Vec<f64> = contacts.iter().flat_map(|&c| r[c]).collect();
+            let residuals = FrictionResiduals::of_velocity(&p, &ri, &u);
+            let finite = ri.iter().chain(&u).all(|v| v.is_finite());
+            (finite && residuals.coulomb_error <= s.tolerance).then(|| FrictionSolution {
+                status: Status::Solved,
+                r: ri,
+                u,
+                residuals,
+                iterations: 0,
+                method: s.method,
+            })
+        })
+        .collect()
 }
 
 thread_local! {
