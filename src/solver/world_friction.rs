@@ -98,14 +98,8 @@ pub(super) fn step_frictional_world_on_cpu(
         .map(|i| i.contacts.as_slice());
     let repairs = repair_unsolved(scene, unsolved, &mut bodies, fix);
     if warm {
-        // Unsolved islands too (their best iterate, finite, in the cones;
-        // not what the repair applied): a start near the answer is what an
-        // island that missed the tolerance needs next step, where a cold
-        // start missed it again step after step in a rain of 32 bodies.
-        let finite = reports
-            .iter()
-            .filter(|i| i.solution.r.iter().all(|v| v.is_finite()));
-        item.warm.reactions.record(finite.flat_map(|isl| {
+        let solved = reports.iter().filter(|i| i.status().is_solution());
+        item.warm.reactions.record(solved.flat_map(|isl| {
             let ids = ids_of(scene, &isl.contacts);
             reaction_entries(ids, &isl.solution.r)
         }));

@@ -3,19 +3,19 @@
 //! on the CPU at the CLI's friction tolerance 1e-12. Some islands end
 //! unsolved at the iteration cap (single boxes on four corners and small
 //! piles whose W is singular: NSGS stalls at 1e-11–1e-9, Newton stalls,
-//! PROX needs 500–15,000 steps); each is repaired exactly, its best
-//! iterate is the next step's warm start, and penetration stays bounded.
+//! PROX needs 500–15,000 steps); each is repaired exactly, and
+//! penetration stays bounded.
 
 use crate::settings::{Backend, Method, Settings};
 use crate::world::generate::{standard_world, WorldKind};
 use crate::Solver;
 
 /// 4 worlds × 200 steps of 10 ms (the fall, the impacts, the settling):
-/// every unsolved island repaired exactly (normal impulses checked), an
-/// island unsolved in one step warm-started in the next when the same
-/// contacts form it again, and the deepest penetration below 10 cm.
+/// every unsolved island repaired exactly (normal impulses, checked), at
+/// most one island in 100 unsolved, and the deepest penetration below
+/// 10 cm.
 #[test]
-fn a_frictional_rain_repairs_exactly_restarts_warm_and_stays_bounded() {
+fn a_frictional_rain_repairs_exactly_and_stays_bounded() {
     let mut worlds: Vec<_> = (0..4)
         .map(|k| standard_world(WorldKind::Rain, 32, 1 + k))
         .collect();
@@ -25,32 +25,20 @@ fn a_frictional_rain_repairs_exactly_restarts_warm_and_stays_bounded() {
         ..Settings::new(Backend::Cpu, Method::Auto)
     })
     .unwrap();
-    let (mut unsolved, mut again, mut deepest) = (0, 0, 0.0f64);
-    let mut last: Vec<(usize, Vec<usize>)> = Vec::new();
+    let (mut unsolved, mut islands, mut deepest) = (0, 0, 0.0f64);
     for step in 0..200 {
         let r = solver.step_worlds(&mut worlds, 0.01).unwrap();
         assert_eq!(r.repairs.exact, r.unsolved, "step {step}: {:?}", r.repairs);
         unsolved += r.unsolved;
-        for isl in &r.solve.friction {
-            let key = (isl.scene.unwrap(), isl.contacts.clone());
-            if last.contains(&key) {
-                again += 1;
-                assert!(isl.warm_started, "step {step}: {key:?} started cold");
-            }
-        }
-        last = (r.solve.friction.iter())
-            .filter(|i| !i.status().is_solution())
-            .map(|i| (i.scene.unwrap(), i.contacts.clone()))
-            .collect();
+        islands += r.solve.friction.len();
         deepest = r
             .worlds
             .iter()
             .fold(deepest, |d, w| d.max(w.max_penetration));
     }
-    // Measured: 12 unsolved, 5 of them met again, 3.6 cm deepest.
     assert!(
-        again > 0,
-        "no unsolved island met again ({unsolved} unsolved)"
+        100 * unsolved <= islands,
+        "{unsolved} of {islands} islands unsolved"
     );
     assert!(deepest < 0.1, "deepest penetration {deepest} m");
 }
