@@ -266,3 +266,64 @@ pub(super) fn repair_unsolved<'a>(
     }
     repairs
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::friction::assembly::assemble_friction_island;
+    use crate::generate::Rng;
+    use crate::settings::{Backend, Method};
+    use crate::world::generate::{standard_world, WorldKind};
+    use crate::world::step::prepare;
+    use crate::Solver;
+
+    /// The check through the bodies computes W r + q: on the islands of a
+    /// pyramid at rest and of rains in flight and landing (bodies of
+    /// 1.7–730 kg, spheres and boxes, restitution), with random reactions
+    /// in the cones, its u equals the assembled W r + q to 1e-12 of the
+    /// largest entry, and a start is accepted (0 iterations) exactly where
+    /// its error is within the tolerance.
+    #[test]
+    fn the_check_through_the_bodies_is_w_r_plus_q() {
+        let mut rng = Rng::new(5);
+        let mut solver = Solver::new(Settings {
+            friction_tolerance: 1e-12,
+            ..Settings::new(Backend::Cpu, Method::Auto)
+        })
+        .unwrap();
+        let mut worlds = vec![standard_world(WorldKind::Pyramid, 4, 0)];
+        worlds.extend((0..3).map(|k| standard_world(WorldKind::Rain, 32, k)));
+        let mut islands_seen = 0;
+        for step in 0..120 {
+            for (index, world) in worlds.iter().enumerate() {
+                let scene = prepare(world, index, 0.01).scene;
+                let FrictionBuilt { islands, rows } = FrictionBuilt::new(&scene);
+                let starts: Vec<Option<Vec<f64>>> = (islands.iter())
+                    .map(|isl| Some((0..3 * isl.len()).map(|_| rng.range(0.0, 50.0)).collect()))
+                    .collect();
+                let accept_all = FrictionSettings {
+                    tolerance: f64::INFINITY,
+                    ..FrictionSettings::default()
+                };
+                let all = checked_starts(&scene, &rows, &islands, &starts, &accept_all);
+                let strict = FrictionSettings::default();
+                let some = checked_starts(&scene, &rows, &islands, &starts, &strict);
+                for ((isl, solution), kept) in islands.iter().zip(all).zip(some) {
+                    let solution = solution.expect("accepted at an infinite tolerance");
+                    assert_eq!(solution.iterations, 0);
+                    let p = assemble_friction_island(&scene, &rows, isl);
+                    let u = p.velocity(&solution.r);
+                    let scale = u.iter().chain(&p.q).fold(1.0f64, |m, v| m.max(v.abs()));
+                    for (a, b) in u.iter().zip(&solution.u) {
+                        assert!((a - b).abs() <= 1e-12 * scale, "step {step}: {a} vs {b}");
+                    }
+                    let within = solution.residuals.coulomb_error <= strict.tolerance;
+                    assert_eq!(kept.is_some(), within, "step {step}");
+                    islands_seen += 1;
+                }
+            }
+            solver.step_worlds(&mut worlds, 0.01).unwrap();
+        }
+        assert!(islands_seen > 1000, "{islands_seen} islands");
+    }
+}
