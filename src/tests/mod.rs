@@ -42,3 +42,4 @@ mod stress_gpu_f32;
 mod world;
 mod world_friction;
 mod world_impacts;
+mod world_rain;
