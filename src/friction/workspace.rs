@@ -44,7 +44,7 @@ pub struct Workspace {
     pub(crate) stuck: Vec<usize>,
     /// The rows of ∂Φ that are ρ_i W's rows (`newton::classify`).
     pub(crate) w_rows: Vec<usize>,
-    /// A Cholesky factor's envelope (`newton::cholesky_solve`).
+    /// A Cholesky factor's envelope (`sparse::cholesky_in`).
     pub(crate) first: Vec<usize>,
     /// The best r seen (hybrid rounds), 3k.
     pub(crate) best: Vec<f64>,
