@@ -1,0 +1,672 @@
+// One step of resident frictionless worlds (restitution 0), one invocation
+// per world, in two entry points dispatched in one submission:
+// `world_collide` (src/world/step.rs `prepare`: gravity, `world_contacts`)
+// and `world_solve` (src/islands.rs `find_islands`, src/cpu/assembly.rs
+// `assemble_contact` / `assemble_island`, Lemke's path `lemke_pivots`, the
+// door's check `lcp_error` <= tolerance, `apply_impulses`, `finish` with
+// `integrate_rotation`, the world's figures). Two entry points rather than
+// one: llvmpipe ends every loop of an invocation after about 65,535
+// iterations in all, and each dispatch starts that count afresh.
+//
+// Composed (src/gpu/shaders/compose.rs) after shaders/collide.wgsl (its
+// functions, up to its stage's bindings) and shaders/lemke.wgsl (up to its
+// kernel's part): collide_shapes and lemke_pivots are called as they are.
+//
+// A world the kernel cannot step is flagged (`flags` below) and its state
+// left as it was: the host steps it on the CPU from there. Flags: contact
+// slots full (CONTACTS_FULL), an island above 16 contacts
+// (ISLAND_TOO_LARGE), Lemke gave up or the check failed (NOT_SOLVED), a
+// non-finite velocity or pose after the step (NON_FINITE), the loop budget
+// spent (BUDGET).
+//
+// Layouts (src/gpu/resident/layout.rs, keep in sync):
+// - worlds[w] = (first body, bodies, sleep steps, 0);
+// - consts: per world WC scalars (gravity 3, margin, sleep linear, sleep
+//   angular), then from params.bodies_at per body BC scalars (kind, size 3,
+//   static flag, inverse mass, body-frame inverse inertia 3, mass,
+//   bounding radius, 0);
+// - state: per body BS scalars (position 3, orientation x, y, z, w,
+//   velocity 3, angular velocity 3);
+// - scratch: per body 6 scalars (v*, then v after the impulses), then per
+//   contact slot CP scalars (point 3, normal 3, gap, z);
+// - words: per body 2 (asleep, quiet steps); from params.out_at per world 4
+//   (contacts, moving-body mask, flags, islands); from params.keys_at per
+//   contact slot 4 (a, b, feature, island);
+// - records: per world REC scalars (kinetic, potential, max penetration,
+//   max error, awake, 0, 0, 0).
+
+const SCALAR_EPSILON: Scalar = 1.1920929e-7; // HOST scalar_epsilon
+
+const MAX_BODIES: u32 = 16u;
+const WC: u32 = 6u;
+const BC: u32 = 12u;
+const BS: u32 = 13u;
+const CP: u32 = 8u;
+const REC: u32 = 8u;
+const ISLAND_MAX: u32 = 16u;
+
+const CONTACTS_FULL: u32 = 1u;
+const ISLAND_TOO_LARGE: u32 = 2u;
+const NOT_SOLVED: u32 = 4u;
+const NON_FINITE: u32 = 8u;
+const BUDGET: u32 = 16u;
+
+struct StepParams {
+    // Worlds.
+    count: u32,
+    // Contact slots per world.
+    slots: u32,
+    // Where the bodies' constants start in `consts`.
+    bodies_at: u32,
+    // Where the worlds' out words and the contact keys start in `words`.
+    out_at: u32,
+    keys_at: u32,
+    // Loop work per invocation and dispatch (shaders/lemke.wgsl).
+    budget: u32,
+    // Where the contact slots start in `scratch`.
+    contacts_at: u32,
+    _pad: u32,
+    dt: Scalar,
+    // The door's final check: lcp_error <= tolerance.
+    tolerance: Scalar,
+    // Lemke: pivot tolerance and pivot cap.
+    pivot_tol: Scalar,
+    max_pivots: Scalar,
+}
+
+@group(0) @binding(0) var<uniform> sp: StepParams;
+@group(0) @binding(1) var<storage, read> worlds: array<vec4<u32>>;
+@group(0) @binding(2) var<storage, read> consts: array<Scalar>;
+@group(0) @binding(3) var<storage, read_write> state: array<Scalar>;
+@group(0) @binding(4) var<storage, read_write> scratch: array<Scalar>;
+@group(0) @binding(5) var<storage, read_write> words: array<u32>;
+@group(0) @binding(6) var<storage, read_write> records: array<Scalar>;
+
+fn vec3_at_consts(at: u32) -> vec3<Scalar> {
+    return vec3<Scalar>(consts[at], consts[at + 1u], consts[at + 2u]);
+}
+
+fn vec3_at_state(at: u32) -> vec3<Scalar> {
+    return vec3<Scalar>(state[at], state[at + 1u], state[at + 2u]);
+}
+
+fn vec3_at_scratch(at: u32) -> vec3<Scalar> {
+    return vec3<Scalar>(scratch[at], scratch[at + 1u], scratch[at + 2u]);
+}
+
+fn put_scratch(at: u32, v: vec3<Scalar>) {
+    scratch[at] = v.x;
+    scratch[at + 1u] = v.y;
+    scratch[at + 2u] = v.z;
+}
+
+fn put_state(at: u32, v: vec3<Scalar>) {
+    state[at] = v.x;
+    state[at + 1u] = v.y;
+    state[at + 2u] = v.z;
+}
+
+fn body_const(k: u32, i: u32) -> Scalar {
+    return consts[sp.bodies_at + k * BC + i];
+}
+
+fn is_static(k: u32) -> bool {
+    return body_const(k, 4u) != Scalar(0.0);
+}
+
+fn asleep(k: u32) -> bool {
+    return words[2u * k] != 0u;
+}
+
+// Body k at its pose (RigidBody::rotation normalises, as placed_from).
+fn placed_body(k: u32) -> Placed {
+    let o = k * BS;
+    let q = vec4<Scalar>(state[o + 3u], state[o + 4u], state[o + 5u], state[o + 6u]);
+    let kind = u32(body_const(k, 0u));
+    let size = vec3_at_consts(sp.bodies_at + k * BC + 1u);
+    return placed_from(kind, size, vec3_at_state(o), q);
+}
+
+// An axis-aligned box (broad.rs Aabb::of): `ok` false for a plane.
+struct Aabb {
+    lo: vec3<Scalar>,
+    hi: vec3<Scalar>,
+    ok: bool,
+}
+
+fn aabb_of(p: Placed, margin: Scalar) -> Aabb {
+    var half = vec3<Scalar>(p.size.x, p.size.x, p.size.x);
+    if p.kind == KIND_PLANE {
+        return Aabb(p.centre, p.centre, false);
+    }
+    if p.kind == KIND_BOX {
+        let h = p.size;
+        // |R| h by rows of R (the columns' components).
+        half = vec3<Scalar>(
+            dot3(abs(vec3<Scalar>(p.c0.x, p.c1.x, p.c2.x)), h),
+            dot3(abs(vec3<Scalar>(p.c0.y, p.c1.y, p.c2.y)), h),
+            dot3(abs(vec3<Scalar>(p.c0.z, p.c1.z, p.c2.z)), h),
+        );
+    }
+    half += vec3<Scalar>(margin, margin, margin);
+    return Aabb(p.centre - half, p.centre + half, true);
+}
+
+fn overlaps(a: Aabb, b: Aabb) -> bool {
+    return all(a.lo <= b.hi) && all(b.lo <= a.hi);
+}
+
+// Step part 1 (step.rs prepare without impacts: restitution 0): v* = v +
+// Δt g for the awake dynamic bodies, then world_contacts: candidate pairs
+// (broad.rs candidate_pairs: boxes grown by half the margin plus the reach,
+// planes with every movable body; all pairs, in the sweep's sorted order
+// i < j), the narrow phase with margin + both reaches, sleeping bodies
+// woken by an awake one's contact (their v* = Δt g), until none wakes.
+@compute @workgroup_size(64)
+fn world_collide(@builtin(global_invocation_id) gid: vec3<u32>) {
+    let w = gid.x;
+    if w >= sp.count {
+        return;
+    }
+    let info = worlds[w];
+    let first = info.x;
+    let nb = min(info.y, MAX_BODIES);
+    let g = vec3_at_consts(w * WC);
+    let margin = consts[w * WC + 3u];
+    let dt = sp.dt;
+    var placed: array<Placed, 16>;
+    var boxes: array<Aabb, 16>;
+    var reach: array<Scalar, 16>;
+    var awake_mask = 0u;
+    var movable = 0u;
+    for (var k = 0u; k < nb; k++) {
+        let b = first + k;
+        let awake = !is_static(b) && !asleep(b);
+        let o = b * BS;
+        var lin = vec3_at_state(o + 7u);
+        let ang = vec3_at_state(o + 10u);
+        if awake {
+            lin = lin + g * dt;
+            awake_mask |= 1u << k;
+            reach[k] = (length3(lin) + length3(ang) * body_const(b, 10u)) * dt;
+        } else {
+            reach[k] = Scalar(0.0);
+        }
+        if !is_static(b) {
+            movable |= 1u << k;
+        }
+        put_scratch(6u * b, lin);
+        put_scratch(6u * b + 3u, ang);
+        placed[k] = placed_body(b);
+        boxes[k] = aabb_of(placed[k], reach[k] + Scalar(0.5) * margin);
+    }
+    var done: array<u32, 4>;
+    var count = 0u;
+    var flags = 0u;
+    var spent = 0u;
+    let slot0 = w * sp.slots;
+    loop {
+        var woke = false;
+        var pair = 0u;
+        for (var i = 0u; i < nb; i++) {
+            for (var j = i + 1u; j < nb; j++) {
+                let bi = boxes[i];
+                let bj = boxes[j];
+                let either = ((movable >> i) | (movable >> j)) & 1u;
+                var candidate = false;
+                if bi.ok && bj.ok {
+                    candidate = either != 0u && overlaps(bi, bj);
+                } else if bi.ok != bj.ok {
+                    // A plane with a movable bounded body.
+                    let other = select(i, j, bj.ok);
+                    candidate = ((movable >> other) & 1u) != 0u;
+                }
+                let k = pair;
+                pair++;
+                spent += 1u;
+                let bit = 1u << (k & 31u);
+                let seen = (done[k >> 5u] & bit) != 0u;
+                let on = (((awake_mask >> i) | (awake_mask >> j)) & 1u) != 0u;
+                if !candidate || seen || !on {
+                    continue;
+                }
+                done[k >> 5u] |= bit;
+                spent += 400u;
+                let m = collide_shapes(placed[i], placed[j], margin + reach[i] + reach[j]);
+                if m.len == 0u {
+                    continue;
+                }
+                for (var s = 0u; s < 2u; s++) {
+                    let x = select(i, j, s == 1u);
+                    if ((movable >> x) & 1u) != 0u && ((awake_mask >> x) & 1u) == 0u {
+                        awake_mask |= 1u << x;
+                        // step.rs prepare: a woken body's v* is Δt g.
+                        put_scratch(6u * (first + x), g * dt);
+                        put_scratch(6u * (first + x) + 3u, vec3<Scalar>(0.0, 0.0, 0.0));
+                        woke = true;
+                    }
+                }
+                if m.overflow || m.len > SLOTS {
+                    flags |= CONTACTS_FULL;
+                }
+                // The dynamic body is a (normal from b to a).
+                let swap = is_static(first + i);
+                for (var h = 0u; h < min(m.len, SLOTS); h++) {
+                    if count >= sp.slots {
+                        flags |= CONTACTS_FULL;
+                        break;
+                    }
+                    let hit = m.hits[h];
+                    let slot = slot0 + count;
+                    count++;
+                    let at = sp.contacts_at + slot * CP;
+                    put_scratch(at, hit.point);
+                    put_scratch(at + 3u, select(hit.normal, -hit.normal, swap));
+                    scratch[at + 6u] = hit.gap;
+                    scratch[at + 7u] = Scalar(0.0);
+                    let a = select(i, j, swap);
+                    let b = select(j, i, swap);
+                    let key = sp.keys_at + 4u * slot;
+                    words[key] = a;
+                    words[key + 1u] = b;
+                    words[key + 2u] = hit.feature;
+                    words[key + 3u] = 0u;
+                }
+            }
+        }
+        if !woke || spent > sp.budget {
+            break;
+        }
+    }
+    if spent > sp.budget {
+        flags |= BUDGET;
+    }
+    let out = sp.out_at + 4u * w;
+    words[out] = count;
+    words[out + 1u] = awake_mask;
+    words[out + 2u] = flags;
+    words[out + 3u] = 0u;
+}
+
+// One island's contact rows (src/cpu/assembly.rs ContactRow), row i of the
+// island at 12 i: the Jacobian and the response M⁻¹Jᵀ of sides a (0..6)
+// and b (6..12); q; the dynamic body of each side (NONE: static in the
+// step's scene); the answer z.
+const NONE: u32 = 0xffffffffu;
+var<private> jac: array<Scalar, 192>;
+var<private> resp: array<Scalar, 192>;
+var<private> qv: array<Scalar, 16>;
+var<private> sides: array<vec2<u32>, 16>;
+var<private> zv: array<Scalar, 16>;
+// Per body of the world: v* and then the velocities after the impulses.
+var<private> lin: array<vec3<Scalar>, 16>;
+var<private> ang: array<vec3<Scalar>, 16>;
+
+fn put_row(dst: ptr<private, array<Scalar, 192>>, at: u32, v: vec3<Scalar>) {
+    (*dst)[at] = v.x;
+    (*dst)[at + 1u] = v.y;
+    (*dst)[at + 2u] = v.z;
+}
+
+fn row_vec3(src: ptr<private, array<Scalar, 192>>, at: u32) -> vec3<Scalar> {
+    return vec3<Scalar>((*src)[at], (*src)[at + 1u], (*src)[at + 2u]);
+}
+
+// The world-frame inverse inertia R diag(1/I) Rᵀ of body b (global index)
+// times v, at the step's start pose.
+fn inv_inertia_mul(b: u32, v: vec3<Scalar>) -> vec3<Scalar> {
+    let p = placed_body(b);
+    let inv = vec3_at_consts(sp.bodies_at + b * BC + 6u);
+    return rotate(p, inv * unrotate(p, v));
+}
+
+// assemble_contact: row i of the island from contact `slot` of world with
+// first body `first` and moving-body mask `moving`; bias φ/Δt, ε = 0.
+fn assemble_contact(slot: u32, i: u32, first: u32, moving: u32) {
+    let at = sp.contacts_at + slot * CP;
+    let key = sp.keys_at + 4u * slot;
+    let a = words[key];
+    let b = words[key + 1u];
+    let p = vec3_at_scratch(at);
+    let n = vec3_at_scratch(at + 3u);
+    let gap = scratch[at + 6u];
+    let ga = first + a;
+    let gb = first + b;
+    let ra = p - vec3_at_state(ga * BS);
+    let rb = p - vec3_at_state(gb * BS);
+    let ra_n = cross3(ra, n);
+    let rb_n = cross3(rb, n);
+    let r = 12u * i;
+    put_row(&jac, r, n);
+    put_row(&jac, r + 3u, ra_n);
+    put_row(&jac, r + 6u, -n);
+    put_row(&jac, r + 9u, -rb_n);
+    var s = vec2<u32>(NONE, NONE);
+    if ((moving >> a) & 1u) != 0u {
+        s.x = a;
+        put_row(&resp, r, n * body_const(ga, 5u));
+        put_row(&resp, r + 3u, inv_inertia_mul(ga, ra_n));
+    }
+    if ((moving >> b) & 1u) != 0u {
+        s.y = b;
+        put_row(&resp, r + 6u, -n * body_const(gb, 5u));
+        put_row(&resp, r + 9u, -inv_inertia_mul(gb, rb_n));
+    }
+    sides[i] = s;
+    let pdot = (lin[a] + cross3(ang[a], ra)) - (lin[b] + cross3(ang[b], rb));
+    qv[i] = dot3(pdot, n) + gap / sp.dt;
+}
+
+fn dot6(x: u32, y: u32) -> Scalar {
+    var m = Scalar(0.0);
+    for (var k = 0u; k < 6u; k++) {
+        m += jac[x + k] * resp[y + k];
+    }
+    return m;
+}
+
+// assembly.rs matrix_entry: M_ij over the dynamic bodies rows i and j share.
+fn matrix_entry(i: u32, j: u32) -> Scalar {
+    var m = Scalar(0.0);
+    for (var si = 0u; si < 2u; si++) {
+        for (var sj = 0u; sj < 2u; sj++) {
+            let bi = sides[i][si];
+            if bi != NONE && bi == sides[j][sj] {
+                m += dot6(12u * i + 6u * si, 12u * j + 6u * sj);
+            }
+        }
+    }
+    return m;
+}
+
+// lcp.rs norm2 of the first n entries of the rows given by `which`: 0: z −
+// max(0, z − w) (w in `wv`), 1: q.
+fn scaled_norm(n: u32, wv: ptr<function, array<Scalar, 16>>, which: u32) -> Scalar {
+    var big = Scalar(0.0);
+    for (var i = 0u; i < n; i++) {
+        var x = qv[i];
+        if which == 0u {
+            x = zv[i] - max(Scalar(0.0), zv[i] - (*wv)[i]);
+        }
+        big = max(big, abs(x));
+    }
+    if big == Scalar(0.0) || !finite(big) {
+        return big;
+    }
+    var sum = Scalar(0.0);
+    for (var i = 0u; i < n; i++) {
+        var x = qv[i];
+        if which == 0u {
+            x = zv[i] - max(Scalar(0.0), zv[i] - (*wv)[i]);
+        }
+        sum += (x / big) * (x / big);
+    }
+    return big * sqrt(sum);
+}
+
+// The door's final check of the island's z (check_solution): w = M z + q,
+// z and w finite, lcp_error(z, w, q) finite and <= tolerance. The error,
+// or -1 where the check fails.
+fn check(n: u32) -> Scalar {
+    var wv: array<Scalar, 16>;
+    var ok = true;
+    for (var i = 0u; i < n; i++) {
+        var s = Scalar(0.0);
+        for (var j = 0u; j < n; j++) {
+            s += matrix_entry(i, j) * zv[j];
+        }
+        wv[i] = qv[i] + s;
+        ok = ok && finite(wv[i]) && finite(zv[i]);
+    }
+    let num = scaled_norm(n, &wv, 0u);
+    let qn = scaled_norm(n, &wv, 1u);
+    var error = num;
+    if qn > SCALAR_EPSILON {
+        error = num / qn;
+    }
+    if !ok || !finite(error) || !(error <= sp.tolerance) {
+        return Scalar(-1.0);
+    }
+    return error;
+}
+
+fn find(parent: ptr<function, array<u32, 16>>, x0: u32) -> u32 {
+    var x = x0;
+    while (*parent)[x] != x {
+        (*parent)[x] = (*parent)[(*parent)[x]];
+        x = (*parent)[x];
+    }
+    return x;
+}
+
+// step.rs integrate_rotation: normalise(q + ½Δt (ω, 0) ⊗ q).
+fn integrate_rotation(q: vec4<Scalar>, w: vec3<Scalar>, dt: Scalar) -> vec4<Scalar> {
+    // glam's DQuat product (w.x, w.y, w.z, 0) ⊗ q.
+    let spin = vec4<Scalar>(
+        w.x * q.w + w.y * q.z - w.z * q.y,
+        -w.x * q.z + w.y * q.w + w.z * q.x,
+        w.x * q.y - w.y * q.x + w.z * q.w,
+        -w.x * q.x - w.y * q.y - w.z * q.z,
+    );
+    return normalize4(q + Scalar(0.5) * dt * spin);
+}
+
+fn normalize4(q: vec4<Scalar>) -> vec4<Scalar> {
+    let len = sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+    return q * (Scalar(1.0) / len);
+}
+
+// Step parts 2 and 3 for one world: find_islands (union–find through the
+// moving bodies, islands in the order of their first contact), per island
+// assembly, Lemke (lemke_pivots), the check, the impulses; then finish
+// (poses, sleep counters) and the world's figures. A flagged world (here
+// or in world_collide) keeps its state.
+@compute @workgroup_size(64)
+fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
+    let w = gid.x;
+    if w >= sp.count {
+        return;
+    }
+    let info = worlds[w];
+    let first = info.x;
+    let nb = min(info.y, MAX_BODIES);
+    let out = sp.out_at + 4u * w;
+    let count = words[out];
+    let moving = words[out + 1u];
+    var flags = words[out + 2u];
+    let dt = sp.dt;
+    let slot0 = w * sp.slots;
+    for (var k = 0u; k < nb; k++) {
+        lin[k] = vec3_at_scratch(6u * (first + k));
+        ang[k] = vec3_at_scratch(6u * (first + k) + 3u);
+    }
+    // Islands.
+    var parent: array<u32, 16>;
+    var island_of_root: array<u32, 16>;
+    for (var k = 0u; k < MAX_BODIES; k++) {
+        parent[k] = k;
+        island_of_root[k] = NONE;
+    }
+    for (var c = 0u; c < count; c++) {
+        let key = sp.keys_at + 4u * (slot0 + c);
+        let a = words[key];
+        let b = words[key + 1u];
+        if ((moving >> a) & (moving >> b) & 1u) != 0u {
+            let ra = find(&parent, a);
+            let rb = find(&parent, b);
+            parent[max(ra, rb)] = min(ra, rb);
+        }
+    }
+    var islands = 0u;
+    var max_penetration = Scalar(0.0);
+    for (var c = 0u; c < count; c++) {
+        let key = sp.keys_at + 4u * (slot0 + c);
+        let a = words[key];
+        let body = select(words[key + 1u], a, ((moving >> a) & 1u) != 0u);
+        let root = find(&parent, body);
+        if island_of_root[root] == NONE {
+            island_of_root[root] = islands;
+            islands++;
+        }
+        words[key + 3u] = island_of_root[root];
+        max_penetration = max(max_penetration, -scratch[sp.contacts_at + (slot0 + c) * CP + 6u]);
+    }
+    // Per island: assembly, Lemke, check, impulses.
+    var max_error = Scalar(0.0);
+    var spent = 0u;
+    var members: array<u32, 16>;
+    for (var isl = 0u; isl < islands && flags == 0u; isl++) {
+        var n = 0u;
+        for (var c = 0u; c < count; c++) {
+            if words[sp.keys_at + 4u * (slot0 + c) + 3u] == isl {
+                if n < ISLAND_MAX {
+                    members[n] = c;
+                }
+                n++;
+            }
+        }
+        if n > ISLAND_MAX {
+            flags |= ISLAND_TOO_LARGE;
+            break;
+        }
+        for (var i = 0u; i < n; i++) {
+            assemble_contact(slot0 + members[i], i, first, moving);
+        }
+        // The tableau B⁻¹ [I, −M, −e | q] with B = I (lemke.wgsl).
+        let cols = 2u * n + 2u;
+        let rhs = cols - 1u;
+        for (var i = 0u; i < n; i++) {
+            let ri = i * cols;
+            for (var j = 0u; j < n; j++) {
+                t[ri + j] = Scalar(0.0);
+                t[ri + n + j] = -matrix_entry(i, j);
+            }
+            t[ri + i] = Scalar(1.0);
+            t[ri + 2u * n] = Scalar(-1.0);
+            t[ri + rhs] = qv[i];
+            basic[i] = i;
+        }
+        spent += n * cols + count;
+        var visited = 0u;
+        let max_pivots = u32(max(sp.max_pivots, Scalar(1.0)));
+        let status = lemke_pivots(n, spent, sp.pivot_tol, max_pivots, sp.budget, &visited);
+        spent += n + (visited + 1u) * ((n + 1u) * cols + 2u * n * n + 6u * n);
+        if status != 1u {
+            flags |= NOT_SOLVED;
+            break;
+        }
+        for (var i = 0u; i < n; i++) {
+            zv[i] = Scalar(0.0);
+        }
+        if visited > 0u {
+            for (var i = 0u; i < n; i++) {
+                let v = basic[i];
+                if v >= n && v < 2u * n {
+                    zv[v - n] = max(t[i * cols + rhs], Scalar(0.0));
+                }
+            }
+        }
+        let error = check(n);
+        if error < Scalar(0.0) {
+            flags |= NOT_SOLVED;
+            break;
+        }
+        max_error = max(max_error, error);
+        // cpu/impulses.rs velocities_after: v += M⁻¹Jᵀ z per side.
+        for (var i = 0u; i < n; i++) {
+            let zi = zv[i];
+            scratch[sp.contacts_at + (slot0 + members[i]) * CP + 7u] = zi;
+            if zi == Scalar(0.0) {
+                continue;
+            }
+            let s = sides[i];
+            let r = 12u * i;
+            if s.x != NONE {
+                lin[s.x] += row_vec3(&resp, r) * zi;
+                ang[s.x] += row_vec3(&resp, r + 3u) * zi;
+            }
+            if s.y != NONE {
+                lin[s.y] += row_vec3(&resp, r + 6u) * zi;
+                ang[s.y] += row_vec3(&resp, r + 9u) * zi;
+            }
+        }
+    }
+    // finish: woken bodies awake, moving bodies integrated, sleep counters.
+    let g = vec3_at_consts(w * WC);
+    let sleep_linear = consts[w * WC + 4u];
+    let sleep_angular = consts[w * WC + 5u];
+    var xs: array<vec3<Scalar>, 16>;
+    var qs: array<vec4<Scalar>, 16>;
+    for (var k = 0u; k < nb && flags == 0u; k++) {
+        let b = first + k;
+        if ((moving >> k) & 1u) == 0u {
+            continue;
+        }
+        let o = b * BS;
+        let q0 = normalize4(vec4<Scalar>(state[o + 3u], state[o + 4u], state[o + 5u], state[o + 6u]));
+        xs[k] = vec3_at_state(o) + lin[k] * dt;
+        qs[k] = integrate_rotation(q0, ang[k], dt);
+        let mag = abs(xs[k]) + abs(qs[k].xyz) + abs(lin[k]) + abs(ang[k]);
+        if !finite(mag.x + mag.y + mag.z + abs(qs[k].w)) {
+            flags |= NON_FINITE;
+        }
+    }
+    var kinetic = Scalar(0.0);
+    var potential = Scalar(0.0);
+    var awake = 0u;
+    if flags == 0u {
+        for (var k = 0u; k < nb; k++) {
+            let b = first + k;
+            if is_static(b) {
+                continue;
+            }
+            let o = b * BS;
+            if ((moving >> k) & 1u) != 0u {
+                // A woken body counts its quiet steps afresh.
+                var quiet = select(words[2u * b + 1u], 0u, asleep(b));
+                let still = length3(lin[k]) < sleep_linear && length3(ang[k]) < sleep_angular;
+                if still {
+                    quiet = min(quiet, 0xfffffffeu) + 1u;
+                } else {
+                    quiet = 0u;
+                }
+                var sleeps = 0u;
+                if info.z > 0u && quiet >= info.z {
+                    sleeps = 1u;
+                    lin[k] = vec3<Scalar>(0.0, 0.0, 0.0);
+                    ang[k] = vec3<Scalar>(0.0, 0.0, 0.0);
+                }
+                words[2u * b] = sleeps;
+                words[2u * b + 1u] = quiet;
+                put_state(o, xs[k]);
+                state[o + 3u] = qs[k].x;
+                state[o + 4u] = qs[k].y;
+                state[o + 5u] = qs[k].z;
+                state[o + 6u] = qs[k].w;
+                put_state(o + 7u, lin[k]);
+                put_state(o + 10u, ang[k]);
+            }
+            // RigidBody::kinetic_energy and World::potential_energy after
+            // the step.
+            let v = vec3_at_state(o + 7u);
+            let om = vec3_at_state(o + 10u);
+            let p = placed_body(b);
+            let wb = unrotate(p, om);
+            let inertia = Scalar(1.0) / vec3_at_consts(sp.bodies_at + b * BC + 6u);
+            let m = body_const(b, 9u);
+            kinetic += Scalar(0.5) * m * dot3(v, v) + Scalar(0.5) * dot3(wb * wb, inertia);
+            potential += -m * dot3(g, vec3_at_state(o));
+            if !asleep(b) {
+                awake++;
+            }
+        }
+    }
+    words[out + 2u] = flags;
+    words[out + 3u] = islands;
+    let r = w * REC;
+    records[r] = kinetic;
+    records[r + 1u] = potential;
+    records[r + 2u] = max_penetration;
+    records[r + 3u] = max_error;
+    records[r + 4u] = Scalar(awake);
+}
