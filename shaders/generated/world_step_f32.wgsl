@@ -1271,6 +1271,69 @@ fn check(n: u32) -> Scalar {
     return error;
 }
 
+// The basis Lemke ended on, re-solved in f64 as the CPU path re-solves it
+// (textbook_checked): M_SS z_S = −q_S over the basic z's S by Gaussian
+// elimination with partial pivoting, z = max(z_S, 0); Lemke's own z where
+// M_SS is singular or the answer not finite. The tableau `t` is reused.
+fn resolve_basis(n: u32) {
+    var k = 0u;
+    for (var i = 0u; i < n; i++) {
+        let v = basic[i];
+        if v >= n && v < 2u * n {
+            cand[k] = v - n;
+            k++;
+        }
+    }
+    let cols = k + 1u;
+    for (var r = 0u; r < k; r++) {
+        for (var c = 0u; c < k; c++) {
+            t[r * cols + c] = matrix_entry(cand[r], cand[c]);
+        }
+        t[r * cols + k] = -qv[cand[r]];
+    }
+    for (var p = 0u; p < k; p++) {
+        var best = p;
+        var big = abs(t[p * cols + p]);
+        for (var r = p + 1u; r < k; r++) {
+            let v = abs(t[r * cols + p]);
+            if v > big {
+                big = v;
+                best = r;
+            }
+        }
+        if !(big > Scalar(0.0)) || !finite(big) {
+            return;
+        }
+        for (var c = p; c <= k; c++) {
+            let v = t[p * cols + c];
+            t[p * cols + c] = t[best * cols + c];
+            t[best * cols + c] = v;
+        }
+        for (var r = p + 1u; r < k; r++) {
+            let f = t[r * cols + p] / t[p * cols + p];
+            for (var c = p; c <= k; c++) {
+                t[r * cols + c] -= f * t[p * cols + c];
+            }
+        }
+    }
+    var x: array<Scalar, 16>;
+    var ok = true;
+    for (var r = k; r > 0u; r--) {
+        let i = r - 1u;
+        var s = t[i * cols + k];
+        for (var c = i + 1u; c < k; c++) {
+            s -= t[i * cols + c] * x[c];
+        }
+        x[i] = s / t[i * cols + i];
+        ok = ok && finite(x[i]);
+    }
+    if ok {
+        for (var i = 0u; i < k; i++) {
+            zv[cand[i]] = max(x[i], Scalar(0.0));
+        }
+    }
+}
+
 fn find(parent: ptr<function, array<u32, 16>>, x0: u32) -> u32 {
     var x = x0;
     while (*parent)[x] != x {
@@ -1406,6 +1469,8 @@ fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
                     zv[v - n] = max(t[i * cols + rhs], Scalar(0.0));
                 }
             }
+            resolve_basis(n);
+            spent += n * n * n;
         }
         let error = check(n);
         if error < Scalar(0.0) {

@@ -170,6 +170,21 @@ pub(super) enum SceneResults {
     InBatch(Option<Vec<BodyVelocity>>),
 }
 
+impl ResidentStep {
+    /// Adds another step's counts (the byte figures: the latest step's).
+    pub fn add(&mut self, o: &ResidentStep) {
+        self.on_device += o.on_device;
+        self.on_cpu += o.on_cpu;
+        self.contacts_full += o.contacts_full;
+        self.island_too_large += o.island_too_large;
+        self.not_solved += o.not_solved;
+        self.non_finite += o.non_finite;
+        self.budget += o.budget;
+        self.bytes_up = o.bytes_up;
+        self.bytes_back = o.bytes_back;
+    }
+}
+
 /// One world in pass 2.
 pub(super) struct WorldStep<'a> {
     pub world: &'a mut World,

@@ -89,10 +89,10 @@ fn compare(worlds: Vec<World>, steps: usize, gpu: GpuSettings) -> (usize, usize)
 #[test]
 fn resident_stacks_follow_the_cpu_path_for_500_steps() {
     let Some(gpu) = f64_gpu() else { return };
-    let mut worlds = frictionless(WorldKind::Stack, 4, 3);
-    // A push and a spin, so that the stack is not at rest from the start.
-    worlds[1].bodies[4].velocity = [0.3, 0.0, 0.1];
-    worlds[2].bodies[2].angular_velocity = [0.0, 0.5, 0.2];
+    // Stacks of 4, 2 and 3 boxes in one batch.
+    let mut worlds = frictionless(WorldKind::Stack, 4, 1);
+    worlds.extend(frictionless(WorldKind::Stack, 2, 1));
+    worlds.extend(frictionless(WorldKind::Stack, 3, 1));
     let (device, host) = compare(worlds, 500, gpu);
     assert_eq!(host, 0, "every world on the device");
     assert_eq!(device, 1500);
@@ -174,4 +174,32 @@ fn a_world_past_its_contact_slots_is_flagged_and_stepped_on_the_cpu() {
     }
     set_test_slots(None);
     assert_eq!(on_gpu, on_cpu);
+}
+
+/// Where the kernel's time goes: 1,000 frictionless 4-box stacks, the two
+/// dispatches timed apart (`cargo test --release resident_phase_times --
+/// --ignored --nocapture`).
+#[test]
+#[ignore = "a measurement, not a check"]
+fn resident_phase_times() {
+    if f64_gpu().is_none() {
+        return;
+    }
+    let ctx = GpuContext::new(&GpuOptions {
+        precision: Precision::F64,
+        ..GpuOptions::from_env().unwrap()
+    })
+    .unwrap();
+    let worlds = frictionless(WorldKind::Stack, 4, 1000);
+    let settings = Settings::default();
+    let r = ResidentWorlds::new(&ctx, &worlds, 1e-8, &settings.gpu_solve(), None).unwrap();
+    r.time_phases(&ctx, 0.01).unwrap();
+    for _ in 0..5 {
+        let [c, s] = r.time_phases(&ctx, 0.01).unwrap();
+        println!(
+            "1000 stack:4 worlds: world_collide {:.1} ms, world_solve {:.1} ms",
+            1e3 * c,
+            1e3 * s
+        );
+    }
 }

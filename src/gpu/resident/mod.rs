@@ -229,13 +229,7 @@ impl ResidentWorlds {
             self.write_params(ctx, dt);
             let mut encoder = ctx.encoder("resident world step");
             for stage in [collide, solve] {
-                let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-                    label: Some("world step"),
-                    timestamp_writes: None,
-                });
-                pass.set_pipeline(&stage.pipeline);
-                pass.set_bind_group(0, &self.bind, &[]);
-                pass.dispatch_workgroups(groups.max(1), 1, 1);
+                self.record(&mut encoder, stage, groups);
             }
             let words_back = ((2 * bodies + 4 * n) * 4) as u64;
             let reads = [
@@ -268,6 +262,48 @@ impl ResidentWorlds {
                 (records, States { state, sleep })
             })
         })?
+    }
+
+    /// One step as [`Self::step`] does it, but each of its two dispatches
+    /// in a submission of its own, waited for: the wall seconds of
+    /// `world_collide` and `world_solve` (for benches; nothing read back).
+    ///
+    /// # Errors
+    /// [`Error::Gpu`] for device trouble.
+    pub fn time_phases(&self, ctx: &GpuContext, dt: f64) -> Result<[f64; 2], Error> {
+        let stages = ctx.pipelines()?;
+        let groups = (self.count() as u32).div_ceil(super::pipelines::WORKGROUP);
+        let mut seconds = [0.0; 2];
+        self.write_params(ctx, dt);
+        for (stage, s) in stages.world_step(ctx)?.iter().zip(&mut seconds) {
+            let start = std::time::Instant::now();
+            ctx.scoped("resident world step", || {
+                let mut encoder = ctx.encoder("resident world step");
+                self.record(&mut encoder, stage, groups);
+                ctx.queue.submit([encoder.finish()]);
+                ctx.device
+                    .poll(wgpu::PollType::wait_indefinitely())
+                    .map_err(|e| Error::Gpu(format!("waiting for the GPU: {e}")))
+            })??;
+            *s = start.elapsed().as_secs_f64();
+        }
+        Ok(seconds)
+    }
+
+    /// A dispatch of `stage` over the worlds.
+    fn record(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        stage: &super::pipelines::Stage,
+        groups: u32,
+    ) {
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some("world step"),
+            timestamp_writes: None,
+        });
+        pass.set_pipeline(&stage.pipeline);
+        pass.set_bind_group(0, &self.bind, &[]);
+        pass.dispatch_workgroups(groups.max(1), 1, 1);
     }
 
     /// The states held, copied into `worlds` (the batch uploaded, in
