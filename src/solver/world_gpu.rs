@@ -21,6 +21,7 @@
 //! device; the host steps them from there by the CPU path's own code
 //! (`prepare`, `step_world_on_cpu`, with the world's warm memory) and
 //! writes them back; [`StepReport::resident`] counts them. Device trouble
+//! (an error or a panic inside wgpu, as `gpu_path::guarded` catches it)
 //! before the states came back leaves every world as it was: the device is
 //! dropped (a warning) and the CPU path steps the batch from there.
 //!
@@ -29,6 +30,7 @@
 
 use std::time::Instant;
 
+use super::gpu_path::guarded;
 use super::world_cpu::step_world_on_cpu;
 use super::world_path::{ResidentStep, StepReport, StepTimings, WorldStep, WorldStepReport};
 use super::world_repair::{repair_settings, Repairs};
@@ -103,7 +105,7 @@ impl Solver {
         }
         let ctx = self.gpu.clone()?;
         let start = Instant::now();
-        let stepped = self.device_step(&ctx, worlds, dt);
+        let stepped = guarded(|| self.device_step(&ctx, worlds, dt));
         let device_seconds = start.elapsed().as_secs_f64();
         let (records, states) = match stepped {
             Ok(r) => r,
@@ -143,7 +145,8 @@ impl Solver {
             let s = step_world_on_cpu(&self.settings, k, &mut item, dt, &fix);
             reports[k] = s.world;
             repairs.merge(s.repairs);
-            if let Err(Error::Gpu(why)) = resident.worlds.write_world(&ctx, k, &worlds[k]) {
+            let written = guarded(|| resident.worlds.write_world(&ctx, k, &worlds[k]));
+            if let Err(Error::Gpu(why)) = written {
                 trouble = Some(why);
             }
         }

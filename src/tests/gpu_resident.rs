@@ -23,6 +23,15 @@ fn f64_gpu() -> Option<GpuSettings> {
     (g.precision == Precision::F64).then_some(g)
 }
 
+/// A context in f64 (the caller has checked that the adapter has it).
+fn f64_context() -> GpuContext {
+    GpuContext::new(&GpuOptions {
+        precision: Precision::F64,
+        ..GpuOptions::from_env().unwrap()
+    })
+    .unwrap()
+}
+
 fn solver(backend: Backend, gpu: GpuSettings) -> Solver {
     Solver::new(Settings {
         gpu,
@@ -114,11 +123,7 @@ fn states_come_back_bit_for_bit() {
     if f64_gpu().is_none() {
         return;
     }
-    let ctx = GpuContext::new(&GpuOptions {
-        precision: Precision::F64,
-        ..GpuOptions::from_env().unwrap()
-    })
-    .unwrap();
+    let ctx = f64_context();
     let mut worlds = frictionless(WorldKind::Spheres, 5, 2);
     worlds.extend(frictionless(WorldKind::Stack, 3, 1));
     worlds[0].bodies[1].velocity = [0.1, -0.2, 1e-300];
@@ -144,11 +149,7 @@ fn states_come_back_bit_for_bit() {
 #[test]
 fn a_world_past_its_contact_slots_is_flagged_and_stepped_on_the_cpu() {
     let Some(gpu) = f64_gpu() else { return };
-    let ctx = GpuContext::new(&GpuOptions {
-        precision: Precision::F64,
-        ..GpuOptions::from_env().unwrap()
-    })
-    .unwrap();
+    let ctx = f64_context();
     // Stack of 2 at rest: 8 contacts; 6 slots cannot hold them.
     let worlds = frictionless(WorldKind::Stack, 2, 2);
     let settings = Settings::default();
@@ -185,11 +186,7 @@ fn resident_phase_times() {
     if f64_gpu().is_none() {
         return;
     }
-    let ctx = GpuContext::new(&GpuOptions {
-        precision: Precision::F64,
-        ..GpuOptions::from_env().unwrap()
-    })
-    .unwrap();
+    let ctx = f64_context();
     let worlds = frictionless(WorldKind::Stack, 4, 1000);
     let settings = Settings::default();
     let r = ResidentWorlds::new(&ctx, &worlds, 1e-8, &settings.gpu_solve(), None).unwrap();
@@ -202,4 +199,28 @@ fn resident_phase_times() {
             1e3 * s
         );
     }
+}
+
+/// The device is lost in the middle of a run: the step that finds it is
+/// taken by the CPU path from the last good state, and the trajectory is
+/// the CPU's (within 1e-9 m: the steps before ran on the device).
+#[test]
+fn a_device_lost_mid_run_hands_the_worlds_to_the_cpu() {
+    let Some(gpu) = f64_gpu() else { return };
+    let worlds = frictionless(WorldKind::Spheres, 4, 2);
+    let mut on_gpu = worlds.clone();
+    let mut on_cpu = worlds;
+    let mut g = solver(Backend::Gpu, gpu);
+    let mut c = solver(Backend::Cpu, GpuSettings::default());
+    for step in 0..60 {
+        if step == 30 {
+            g.shared_device().unwrap().simulate_device_loss();
+        }
+        let r = g.step_worlds(&mut on_gpu, 0.01).unwrap();
+        c.step_worlds(&mut on_cpu, 0.01).unwrap();
+        assert_eq!(r.resident.is_some(), step < 30, "step {step}");
+        let d = max_distance(&on_gpu, &on_cpu);
+        assert!(d < 1e-9, "step {step}: {d} m");
+    }
+    assert!(g.fallback().is_some());
 }

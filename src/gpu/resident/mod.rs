@@ -270,6 +270,13 @@ impl ResidentWorlds {
     ///
     /// # Errors
     /// [`Error::Gpu`] for device trouble.
+    #[cfg_attr(
+        not(test),
+        allow(
+            dead_code,
+            reason = "the phase measurement of src/tests/gpu_resident.rs"
+        )
+    )]
     pub fn time_phases(&self, ctx: &GpuContext, dt: f64) -> Result<[f64; 2], Error> {
         let stages = ctx.pipelines()?;
         let groups = (self.count() as u32).div_ceil(super::pipelines::WORKGROUP);
