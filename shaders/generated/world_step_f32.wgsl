@@ -1,4 +1,4 @@
-// GENERATED from shaders/collide.wgsl (functions) + shaders/lemke.wgsl (functions) + shaders/world_step.wgsl by src/gpu/shaders/compose.rs: do not edit.
+// GENERATED from shaders/collide.wgsl (functions) + shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_solve.wgsl by src/gpu/shaders/compose.rs: do not edit.
 // Regenerate: LCPBATCH_BLESS_SHADERS=1 cargo test --release generated_shaders_are_committed
 
 // Narrow phase: the contact points of candidate pairs of bodies (entry
@@ -851,7 +851,9 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 //
 // Composed (src/gpu/shaders/compose.rs) after shaders/collide.wgsl (its
 // functions, up to its stage's bindings) and shaders/lemke.wgsl (up to its
-// kernel's part): collide_shapes and lemke_pivots are called as they are.
+// kernel's part), and before shaders/world_solve.wgsl (`world_solve`, a
+// file of its own by phase): collide_shapes and lemke_pivots are called as
+// they are.
 //
 // A world the kernel cannot step is flagged (`flags` below) and its state
 // left as it was: the host steps it on the CPU from there. Flags: contact
@@ -1128,6 +1130,9 @@ fn world_collide(@builtin(global_invocation_id) gid: vec3<u32>) {
     words[out + 2u] = flags;
     words[out + 3u] = 0u;
 }
+
+// The second phase of shaders/world_step.wgsl (composed after it): one
+// island's rows, the check, the islands, `world_solve`.
 
 // One island's contact rows (src/cpu/assembly.rs ContactRow), row i of the
 // island at 12 i: the Jacobian and the response M⁻¹Jᵀ of sides a (0..6)

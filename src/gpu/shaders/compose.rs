@@ -32,6 +32,7 @@ const FRICTION_PROJECTED_GLOBAL_WGSL: &str =
     include_str!("../../../shaders/friction_projected_global.wgsl");
 const COLLIDE_WGSL: &str = include_str!("../../../shaders/collide.wgsl");
 const WORLD_STEP_WGSL: &str = include_str!("../../../shaders/world_step.wgsl");
+const WORLD_SOLVE_WGSL: &str = include_str!("../../../shaders/world_solve.wgsl");
 
 /// Where `shaders/collide.wgsl`'s own stage starts: the world step kernel
 /// takes the functions above it.
@@ -79,7 +80,7 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
     let src = match shader {
         Shader::FrictionProjected(_) => format!("{FRICTION_COMMON_WGSL}\n{body}"),
         Shader::WorldStep => format!(
-            "{}\n{}\n{body}",
+            "{}\n{}\n{body}\n{WORLD_SOLVE_WGSL}",
             text_before(COLLIDE_WGSL, COLLIDE_STAGE)?,
             text_before(LEMKE_WGSL, LEMKE_KERNEL)?
         ),
@@ -141,7 +142,7 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         }
         _ if standalone => format!("shaders/{file}.wgsl"),
         Shader::WorldStep => "shaders/collide.wgsl (functions) + shaders/lemke.wgsl (functions) + \
-             shaders/world_step.wgsl"
+             shaders/world_step.wgsl + shaders/world_solve.wgsl"
             .to_string(),
         _ => format!("shaders/enumeration_basis.wgsl + shaders/{file}.wgsl"),
     };
