@@ -11,6 +11,11 @@
 //! and assembly, the LCP or Coulomb solves, impulses, integration, and the
 //! islands left unsolved. Groups are small (10 samples, 1 s).
 //!
+//! Frictionless cases also get a row `resident_gpu_wall` at 100 and 1000
+//! worlds where a GPU with SHADER_F64 opens (`Backend::Gpu`: the resident
+//! path, `src/solver/world_gpu.rs`; states read back every step, as
+//! `step_worlds` returns them); skipped, with a line, elsewhere.
+//!
 //! On one thread the time measured is the thread's CPU time (Linux
 //! `/proc/thread-self/schedstat`, ns; wall time elsewhere), so that other
 //! processes on a shared machine slow the figure less; on every core it is
@@ -90,6 +95,16 @@ fn solver(threads: usize) -> Solver {
     .expect("valid settings")
 }
 
+/// A solver on the GPU (the resident path for frictionless worlds).
+fn gpu_solver() -> Solver {
+    Solver::new(Settings {
+        warm_start: true,
+        warn_on_stderr: false,
+        ..Settings::new(Backend::Gpu, Method::Auto)
+    })
+    .expect("valid settings")
+}
+
 /// Where a step's time goes, in words, from `reports` (one per step).
 fn phases(reports: &[StepReport]) -> String {
     let sum = |f: &dyn Fn(&StepReport) -> f64| reports.iter().map(f).sum::<f64>();
@@ -144,11 +159,19 @@ fn bench_worlds(c: &mut Criterion) {
             .warm_up_time(Duration::from_millis(300))
             .measurement_time(Duration::from_secs(1));
         for count in COUNTS {
-            for (threads, label) in [(1, "1_thread_cpu_time"), (0, "all_cores_wall")] {
-                if !wanted(&format!("{}/{label}/{count}", case.name)) {
+            let rows = [
+                (Some(1), "1_thread_cpu_time"),
+                (Some(0), "all_cores_wall"),
+                (None, "resident_gpu_wall"),
+            ];
+            for (threads, label) in rows {
+                let resident = threads.is_none();
+                if !wanted(&format!("{}/{label}/{count}", case.name))
+                    || (resident && (case.friction != Some(0.0) || count < 100))
+                {
                     continue;
                 }
-                let mut s = solver(threads);
+                let mut s = threads.map_or_else(gpu_solver, solver);
                 let mut batch = worlds(case, count);
                 for _ in 0..50 {
                     s.step_worlds(&mut batch, DT).expect("valid worlds");
@@ -156,11 +179,18 @@ fn bench_worlds(c: &mut Criterion) {
                 let reports: Vec<StepReport> = (0..10)
                     .map(|_| s.step_worlds(&mut batch, DT).expect("valid worlds"))
                     .collect();
+                if resident && reports[0].resident.is_none() {
+                    println!(
+                        "{}/{label}/{count}: skipped (no GPU with SHADER_F64)",
+                        case.name
+                    );
+                    continue;
+                }
                 println!("{}/{label}/{count}: {}", case.name, phases(&reports));
                 group.throughput(Throughput::Elements(count as u64));
                 group.bench_with_input(BenchmarkId::new(label, count), &count, |b, _| {
                     b.iter_custom(|iters| {
-                        time_steps(iters, threads == 1, || {
+                        time_steps(iters, threads == Some(1), || {
                             black_box(s.step_worlds(&mut batch, DT).expect("valid worlds"));
                         })
                     })

@@ -367,19 +367,22 @@ fn leaving_row(n: u32, e: u32, count: u32) -> u32 {
     return tied[0];
 }
 
-// The path on island `island` of n contacts; returns FOUND (the basis in
-// state.mask) or GAVE_UP, the pivots in state.visited.
-fn lemke_path(island: Island, n: u32, state: ptr<function, BasisResult>) -> u32 {
+// The path from the tableau in `t` (B = I: rows w_i = q_i, columns
+// [I, -M, -e | q], basic[i] = i), n contacts; `spent`: the loop work of
+// filling it. Returns FOUND (1; the basis in `basic`, zero pivots where q >=
+// 0) or GAVE_UP, the pivots in `visited`. Takes values only (the tableau is
+// private), so that another kernel (shaders/world_step.wgsl) can fill `t`
+// and call it.
+fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget: u32, visited: ptr<function, u32>) -> u32 {
     let cols = 2u * n + 2u;
     let rhs = cols - 1u;
     let z0 = 2u * n;
-    let qbase = island.data + n * n;
     var q_scale = Scalar(0.0);
     var separating = true;
-    var qmin = values[qbase];
+    var qmin = t[rhs];
     var first = 0u;
     for (var i = 0u; i < n; i++) {
-        let qi = values[qbase + i];
+        let qi = t[i * cols + rhs];
         separating = separating && qi >= Scalar(0.0);
         q_scale = max(q_scale, abs(qi));
         // The first leaving row: the most negative q_i, ties to the
@@ -390,34 +393,19 @@ fn lemke_path(island: Island, n: u32, state: ptr<function, BasisResult>) -> u32 
         }
     }
     if separating {
-        (*state).mask = 0u;
         return 1u;
-    }
-    for (var i = 0u; i < n; i++) {
-        let ri = i * cols;
-        let mi = island.data + i * n;
-        for (var j = 0u; j < n; j++) {
-            t[ri + j] = Scalar(0.0);
-            t[ri + n + j] = -values[mi + j];
-        }
-        t[ri + i] = Scalar(1.0);
-        t[ri + z0] = Scalar(-1.0);
-        t[ri + rhs] = values[qbase + i];
-        basic[i] = i;
     }
     // Loop work of one pivot and its tests, an upper bound.
     let step = (n + 1u) * cols + 2u * n * n + 6u * n;
-    var spent = n * cols + n + step;
-    let pivot_tol = tol._pad0;
-    let max_pivots = u32(max(tol._pad1, Scalar(1.0)));
+    var spent = spent0 + n + step;
     if !pivot(n, first, z0) {
         return GAVE_UP;
     }
-    (*state).visited = 1u;
+    *visited = 1u;
     var entering = basic[first] + n;
     basic[first] = z0;
     loop {
-        if (*state).visited >= max_pivots || spent + step > params.budget {
+        if *visited >= max_pivots || spent + step > budget {
             return GAVE_UP;
         }
         spent += step;
@@ -452,7 +440,7 @@ fn lemke_path(island: Island, n: u32, state: ptr<function, BasisResult>) -> u32 
         if best >= n || !pivot(n, best, entering) {
             return GAVE_UP;
         }
-        (*state).visited++;
+        *visited += 1u;
         let leaving = basic[best];
         basic[best] = entering;
         if leaving == z0 {
@@ -465,6 +453,36 @@ fn lemke_path(island: Island, n: u32, state: ptr<function, BasisResult>) -> u32 
         }
     }
     return GAVE_UP;
+}
+
+// LEMKE KERNEL: the kernel's own part (reads its bindings) from here on;
+// shaders/world_step.wgsl is composed with the text above this line.
+
+// The path on island `island` of n contacts (M, q from `values`); returns
+// FOUND (the basis in state.mask) or GAVE_UP, the pivots in state.visited.
+fn lemke_path(island: Island, n: u32, state: ptr<function, BasisResult>) -> u32 {
+    let cols = 2u * n + 2u;
+    let rhs = cols - 1u;
+    let z0 = 2u * n;
+    let qbase = island.data + n * n;
+    for (var i = 0u; i < n; i++) {
+        let ri = i * cols;
+        let mi = island.data + i * n;
+        for (var j = 0u; j < n; j++) {
+            t[ri + j] = Scalar(0.0);
+            t[ri + n + j] = -values[mi + j];
+        }
+        t[ri + i] = Scalar(1.0);
+        t[ri + z0] = Scalar(-1.0);
+        t[ri + rhs] = values[qbase + i];
+        basic[i] = i;
+    }
+    let pivot_tol = tol._pad0;
+    let max_pivots = u32(max(tol._pad1, Scalar(1.0)));
+    var visited = 0u;
+    let status = lemke_pivots(n, n * cols, pivot_tol, max_pivots, params.budget, &visited);
+    (*state).visited = visited;
+    return status;
 }
 
 @compute @workgroup_size(64)

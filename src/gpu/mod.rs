@@ -11,6 +11,7 @@
 //! | `shaders/enumeration.wgsl`| [`crate::cpu::enumeration`]      | per island the first valid complementary basis |
 //! | `shaders/impulses.wgsl`   | [`crate::cpu::impulses`]         | per body its velocities after the impulses    |
 //! | `shaders/collide.wgsl`    | `world::collide`, `collide_box`  | per candidate pair its contact points (narrow phase) |
+//! | `shaders/world_step.wgsl` | `world::step`, `solver::world_cpu` | per resident world one step ([`resident`]) |
 //!
 //! A [`GpuContext`] is created once (adapter, device, queue, pipelines) and
 //! reused for every batch; tests create their own. wgpu's errors never panic:
@@ -56,7 +57,9 @@
 //!   and rounds); [`friction_assembly`] (W and q of frictional islands on
 //!   the GPU, through assembly.wgsl on the direction contacts);
 //! - [`layout`]: buffer layouts shared with the CPU twins;
-//! - [`collide`]: the narrow phase (`shaders/collide.wgsl`), its test door.
+//! - [`collide`]: the narrow phase (`shaders/collide.wgsl`), its test door;
+//! - [`resident`]: worlds kept on the device and stepped there
+//!   (`shaders/world_step.wgsl`).
 
 pub(crate) mod all_bases;
 pub mod batch;
@@ -71,6 +74,7 @@ pub(crate) mod friction_rounds;
 pub mod kernel;
 pub mod layout;
 pub(crate) mod pipelines;
+pub(crate) mod resident;
 pub(crate) mod scene_chunks;
 pub mod scenes;
 pub(crate) mod shaders;

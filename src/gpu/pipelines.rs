@@ -103,6 +103,18 @@ pub(crate) const COLLIDE_BINDINGS: Bindings = &[
     (6, ReadWrite),
 ];
 
+/// `world_collide` and `world_solve` (shaders/world_step.wgsl): params,
+/// worlds, consts, state, scratch, words, records.
+pub(crate) const WORLD_STEP_BINDINGS: Bindings = &[
+    (0, Uniform),
+    (1, Read),
+    (2, Read),
+    (3, ReadWrite),
+    (4, ReadWrite),
+    (5, ReadWrite),
+    (6, ReadWrite),
+];
+
 /// Workgroup size of every entry point (`@workgroup_size(64)`).
 pub const WORKGROUP: u32 = 64;
 
@@ -225,6 +237,9 @@ pub(crate) struct Pipelines {
     friction_projected: Vec<OnceLock<Stage>>,
     /// [`Shader::Collide`] (the narrow phase), built on first use.
     collide: OnceLock<Stage>,
+    /// [`Shader::WorldStep`]'s `world_collide` and `world_solve`, built on
+    /// first use.
+    world_step: OnceLock<[Stage; 2]>,
 }
 
 /// The stage in `cache` (index n − 1), built on first use.
@@ -271,6 +286,7 @@ impl Pipelines {
                 impulses: Stage::new(ctx, Shader::Impulses, "main", IMPULSES_BINDINGS)?,
                 friction_projected: (0..2 * FRICTION_MAX_K).map(|_| OnceLock::new()).collect(),
                 collide: OnceLock::new(),
+                world_step: OnceLock::new(),
             })
         })?
     }
@@ -308,6 +324,17 @@ impl Pipelines {
         }
         let stage = Stage::new(ctx, Shader::Collide, "collide_pairs", COLLIDE_BINDINGS)?;
         Ok(self.collide.get_or_init(|| stage))
+    }
+
+    /// The resident world step's stages `world_collide` and `world_solve`
+    /// (one layout), built on first use.
+    pub(crate) fn world_step(&self, ctx: &GpuContext) -> Result<&[Stage; 2], Error> {
+        if let Some(s) = self.world_step.get() {
+            return Ok(s);
+        }
+        let stage = |entry| Stage::new(ctx, Shader::WorldStep, entry, WORLD_STEP_BINDINGS);
+        let stages = [stage("world_collide")?, stage("world_solve")?];
+        Ok(self.world_step.get_or_init(|| stages))
     }
 
     /// The tree stage for islands of n contacts (1 ≤ n ≤ [`TREE_MAX_N`]),

@@ -38,6 +38,7 @@ mod gpu_path;
 mod view;
 mod world_cpu;
 mod world_friction;
+pub(crate) mod world_gpu;
 pub mod world_path;
 mod world_repair;
 
@@ -92,6 +93,8 @@ pub struct Solver {
     world_warm: Vec<Warm>,
     /// `Backend::Auto` with a GPU open: the costs that choose per batch.
     cost: Option<CostModel>,
+    /// The worlds held on the device by `step_worlds`' resident path.
+    resident: Option<world_gpu::Resident>,
 }
 
 impl Solver {
@@ -115,6 +118,7 @@ impl Solver {
             threads,
             world_warm: Vec::new(),
             cost: None,
+            resident: None,
         };
         solver.choose_device()?;
         if solver.settings.backend == Backend::Auto && solver.gpu.is_some() {

@@ -109,6 +109,38 @@ pub struct StepReport {
     pub unsolved: usize,
     /// What the unsolved islands got instead (see `world_repair`).
     pub repairs: Repairs,
+    /// The resident GPU path's figures (None on the other paths; see
+    /// `world_gpu.rs`). Its steps report no islands in `solve`: the
+    /// per-world figures in `worlds` come from the device.
+    pub resident: Option<ResidentStep>,
+}
+
+/// One step on the resident GPU path: where the worlds were stepped, why
+/// the kernel left some to the CPU (worlds per flag), bytes moved.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+#[non_exhaustive]
+pub struct ResidentStep {
+    /// Worlds the kernel stepped.
+    pub on_device: usize,
+    /// Worlds it flagged, stepped on the CPU from their state before the
+    /// step and written back.
+    pub on_cpu: usize,
+    /// Flagged worlds by flag: contact slots full, an island above 16
+    /// contacts, Lemke gave up or the f64 check failed, a non-finite state,
+    /// the loop budget spent.
+    pub contacts_full: usize,
+    /// See `contacts_full`.
+    pub island_too_large: usize,
+    /// See `contacts_full`.
+    pub not_solved: usize,
+    /// See `contacts_full`.
+    pub non_finite: usize,
+    /// See `contacts_full`.
+    pub budget: usize,
+    /// Bytes uploaded when the batch went to the device (once per batch).
+    pub bytes_up: u64,
+    /// Bytes read back per step (states, sleep words, records).
+    pub bytes_back: u64,
 }
 
 /// What pass 2 gives back for one world.
@@ -138,6 +170,21 @@ pub(super) enum SceneResults {
     InBatch(Option<Vec<BodyVelocity>>),
 }
 
+impl ResidentStep {
+    /// Adds another step's counts (the byte figures: the latest step's).
+    pub fn add(&mut self, o: &ResidentStep) {
+        self.on_device += o.on_device;
+        self.on_cpu += o.on_cpu;
+        self.contacts_full += o.contacts_full;
+        self.island_too_large += o.island_too_large;
+        self.not_solved += o.not_solved;
+        self.non_finite += o.non_finite;
+        self.budget += o.budget;
+        self.bytes_up = o.bytes_up;
+        self.bytes_back = o.bytes_back;
+    }
+}
+
 /// One world in pass 2.
 pub(super) struct WorldStep<'a> {
     pub world: &'a mut World,
@@ -165,6 +212,16 @@ impl Solver {
                 format!("{dt} is not a positive number"),
             ));
         }
+        // The resident GPU path where the batch is in its scope
+        // (`world_gpu.rs`), the worlds checked first.
+        if self.gpu.is_some() {
+            if let Some(i) = worlds.iter().position(|w| w.validate("world").is_err()) {
+                return Err(named_error(worlds, i));
+            }
+            if let Some(report) = self.step_worlds_resident(worlds, dt) {
+                return Ok(report);
+            }
+        }
         // Checked and collided in one pass over the cores (nothing is
         // changed before every world has passed); the first bad world (in
         // order) is checked again by name for the error (the name is
@@ -176,11 +233,7 @@ impl Solver {
             ok.then(|| prepare(&shared[i], i, dt))
         });
         if let Some(i) = prepared.iter().position(Option::is_none) {
-            let item = format!("world {i}");
-            return Err(match worlds[i].validate(&item) {
-                Err(e) => e,
-                Ok(()) => Error::invalid(&item, "world", "failed its check".to_string()),
-            });
+            return Err(named_error(worlds, i));
         }
         let mut prepared: Vec<Prepared> = prepared.into_iter().flatten().collect();
         let kicks: Vec<Vec<f64>> = (prepared.iter_mut())
@@ -246,6 +299,15 @@ impl Solver {
     }
 }
 
+/// The error of world `i`, which failed its check: checked again by name.
+fn named_error(worlds: &[World], i: usize) -> Error {
+    let item = format!("world {i}");
+    match worlds[i].validate(&item) {
+        Err(e) => e,
+        Ok(()) => Error::invalid(&item, "world", "failed its check".to_string()),
+    }
+}
+
 /// The step's report: `solve`, the batch's report (or an empty one on the
 /// CPU device), with every world solved in pass 2 pushed in world order,
 /// the repairs' velocities in place; pass 2's seconds added per phase;
@@ -298,6 +360,7 @@ fn step_report(
         },
         solve,
         repairs,
+        resident: None,
     }
 }
 

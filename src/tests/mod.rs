@@ -24,6 +24,7 @@ mod gpu_friction_door;
 mod gpu_lemke;
 mod gpu_pipeline;
 mod gpu_prediction;
+mod gpu_resident;
 mod gpu_seeds;
 mod gpu_stages;
 mod gpu_stress;

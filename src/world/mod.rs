@@ -33,7 +33,7 @@ pub mod generate;
 pub(crate) mod impact;
 pub(crate) mod step;
 
-pub use crate::solver::world_path::{StepReport, StepTimings, WorldStepReport};
+pub use crate::solver::world_path::{ResidentStep, StepReport, StepTimings, WorldStepReport};
 pub use crate::solver::Repairs;
 
 /// The shape of a body, in its own frame.

@@ -16,6 +16,7 @@ use super::{BackendArg, FrictionSolverArg, GpuArgs};
 use lcpbatch::io::write_atomically;
 use lcpbatch::world::format::{parse_worlds, worlds_to_json};
 use lcpbatch::world::generate::{standard_world, WorldKind};
+use lcpbatch::world::ResidentStep;
 use lcpbatch::{Error, Settings, Solver, StepReport, World};
 use plotters::style::BLACK;
 
@@ -318,6 +319,9 @@ struct Run {
     /// (time, largest error) of the frictionless islands, of the
     /// frictional ones (Coulomb error), at the steps that had them.
     errors: [Vec<(f64, f64)>; 2],
+    /// The resident GPU path's figures summed over its steps (None when no
+    /// step took it).
+    resident: Option<ResidentStep>,
 }
 
 impl Run {
@@ -327,10 +331,14 @@ impl Run {
             frictional: 0,
             friction_dropped: vec![0; worlds],
             errors: [Vec::new(), Vec::new()],
+            resident: None,
         }
     }
 
     fn add(&mut self, step: usize, time: f64, r: &StepReport) {
+        if let Some(f) = &r.resident {
+            (self.resident.get_or_insert_with(ResidentStep::default)).add(f);
+        }
         let errors = [r.solve.max_error, r.solve.max_coulomb_error];
         for (line, e) in self.errors.iter_mut().zip(errors) {
             line.extend(e.map(|(e, _)| (time, e)));
@@ -411,6 +419,20 @@ fn print_summary(lines: &[StepLine], run: &Run, worlds: usize, wall: f64) {
         total(|l| l.repaired_approximate),
         total(|l| l.repaired_dropped),
     );
+    if let Some(f) = &run.resident {
+        println!(
+            "  resident on the GPU: {} world-steps on the device, {} on the CPU (flagged: contacts full {}, island above 16 contacts {}, not solved {}, non-finite {}, loop budget {}); {} bytes up per batch, {} back per step",
+            f.on_device,
+            f.on_cpu,
+            f.contacts_full,
+            f.island_too_large,
+            f.not_solved,
+            f.non_finite,
+            f.budget,
+            f.bytes_up,
+            f.bytes_back,
+        );
+    }
     let dropped: usize = run.friction_dropped.iter().sum();
     if dropped > 0 {
         let (worst, most) = run

@@ -31,6 +31,15 @@ const FRICTION_COMMON_WGSL: &str = include_str!("../../../shaders/friction_commo
 const FRICTION_PROJECTED_GLOBAL_WGSL: &str =
     include_str!("../../../shaders/friction_projected_global.wgsl");
 const COLLIDE_WGSL: &str = include_str!("../../../shaders/collide.wgsl");
+const WORLD_STEP_WGSL: &str = include_str!("../../../shaders/world_step.wgsl");
+const WORLD_SOLVE_WGSL: &str = include_str!("../../../shaders/world_solve.wgsl");
+
+/// Where `shaders/collide.wgsl`'s own stage starts: the world step kernel
+/// takes the functions above it.
+const COLLIDE_STAGE: &str = "// Stage `collide_pairs`.";
+/// Where `shaders/lemke.wgsl`'s own kernel starts: the world step kernel
+/// takes the functions above it.
+const LEMKE_KERNEL: &str = "// LEMKE KERNEL";
 
 /// Largest island (contacts) whose friction kernels come from
 /// `shaders/friction_projected.wgsl` (private copies, marked loops unrolled
@@ -62,6 +71,7 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
             ("friction_projected_global", FRICTION_PROJECTED_GLOBAL_WGSL)
         }
         Shader::Collide => ("collide", COLLIDE_WGSL),
+        Shader::WorldStep => ("world_step", WORLD_STEP_WGSL),
     };
     let standalone = matches!(
         shader,
@@ -69,6 +79,11 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
     );
     let src = match shader {
         Shader::FrictionProjected(_) => format!("{FRICTION_COMMON_WGSL}\n{body}"),
+        Shader::WorldStep => format!(
+            "{}\n{}\n{body}\n{WORLD_SOLVE_WGSL}",
+            text_before(COLLIDE_WGSL, COLLIDE_STAGE)?,
+            text_before(LEMKE_WGSL, LEMKE_KERNEL)?
+        ),
         _ if standalone => body.to_string(),
         _ => format!("{ENUMERATION_BASIS_WGSL}\n{body}"),
     };
@@ -85,17 +100,7 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         // (finiteness and rounding tests).
         Shader::FrictionProjected(k) if (1..=FRICTION_MAX_K).contains(&k) => {
             let s = replace_host_line(&s, "fixed_k", &format!("const FIXED_K: u32 = {k}u;"))?;
-            let (max, eps) = scalar_limits(precision);
-            let s = replace_host_line(
-                &s,
-                "scalar_max",
-                &format!("const SCALAR_MAX: Scalar = {max};"),
-            )?;
-            let s = replace_host_line(
-                &s,
-                "scalar_epsilon",
-                &format!("const SCALAR_EPSILON: Scalar = {eps};"),
-            )?;
+            let s = with_scalar_limits(&s, precision)?;
             let n = 3 * k as u64;
             // The vec4 counts of shaders/friction_projected.wgsl (its
             // VALUES4, APGD4, X4, SWEEPS4: the same formulas).
@@ -111,6 +116,9 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
             ];
             unroll_marked_loops(&s, &constants, true)?
         }
+        // The world step: Lemke's finiteness tests and the error measure's
+        // epsilon (lcp_error's f64::EPSILON).
+        Shader::WorldStep => with_scalar_limits(&s, precision)?,
         // Lemke: the scalar type's largest finite value (finiteness tests).
         Shader::Lemke => {
             let max = scalar_limits(precision).0;
@@ -133,6 +141,9 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
             format!("shaders/friction_common.wgsl + shaders/{file}.wgsl")
         }
         _ if standalone => format!("shaders/{file}.wgsl"),
+        Shader::WorldStep => "shaders/collide.wgsl (functions) + shaders/lemke.wgsl (functions) + \
+             shaders/world_step.wgsl + shaders/world_solve.wgsl"
+            .to_string(),
         _ => format!("shaders/enumeration_basis.wgsl + shaders/{file}.wgsl"),
     };
     Ok(format!(
@@ -150,6 +161,29 @@ fn scalar_limits(precision: Precision) -> (&'static str, &'static str) {
     } else {
         ("3.4028234663852886e38", "1.1920929e-7")
     }
+}
+
+/// `src` with its `// HOST scalar_max` and `// HOST scalar_epsilon` lines
+/// set to `precision`'s largest finite value and epsilon.
+fn with_scalar_limits(src: &str, precision: Precision) -> Result<String, Error> {
+    let (max, eps) = scalar_limits(precision);
+    let s = replace_host_line(
+        src,
+        "scalar_max",
+        &format!("const SCALAR_MAX: Scalar = {max};"),
+    )?;
+    replace_host_line(
+        &s,
+        "scalar_epsilon",
+        &format!("const SCALAR_EPSILON: Scalar = {eps};"),
+    )
+}
+
+/// The text of `src` before its line `marker`.
+fn text_before<'a>(src: &'a str, marker: &str) -> Result<&'a str, Error> {
+    src.find(marker)
+        .map(|at| &src[..at])
+        .ok_or_else(|| Error::Gpu(format!("shader has no `{marker}` line")))
 }
 
 /// Replaces the `// HOST <what>` line of `src` with `line`.

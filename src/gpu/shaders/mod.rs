@@ -63,6 +63,10 @@ pub(crate) enum Shader {
     FrictionProjected(usize),
     /// `shaders/collide.wgsl` (entry point collide_pairs): the narrow phase.
     Collide,
+    /// `shaders/world_step.wgsl` after the functions of `collide.wgsl` and
+    /// `lemke.wgsl` (entry points world_collide, world_solve): one step of
+    /// resident frictionless worlds.
+    WorldStep,
 }
 
 impl Shader {
@@ -79,7 +83,7 @@ impl Shader {
         v.extend((1..=TREE_MAX_N).map(Shader::Tree));
         v.extend([Shader::Assembly, Shader::Impulses]);
         v.extend((1..=FRICTION_MAX_K).map(Shader::FrictionProjected));
-        v.push(Shader::Collide);
+        v.extend([Shader::Collide, Shader::WorldStep]);
         v
     }
 
@@ -96,6 +100,7 @@ impl Shader {
             Shader::Impulses => "impulses".into(),
             Shader::FrictionProjected(k) => format!("friction_projected_k{k}"),
             Shader::Collide => "collide".into(),
+            Shader::WorldStep => "world_step".into(),
         }
     }
 
@@ -182,4 +187,5 @@ pub(crate) static GENERATED: &[(&str, &str, &str)] = generated!(
     "friction_projected_k15",
     "friction_projected_k16",
     "collide",
+    "world_step",
 );

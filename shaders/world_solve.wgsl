@@ -1,0 +1,450 @@
+// The second phase of shaders/world_step.wgsl (composed after it): one
+// island's rows, the check, the islands, `world_solve`.
+
+// One island's contact rows (src/cpu/assembly.rs ContactRow), row i of the
+// island at 12 i: the Jacobian and the response M⁻¹Jᵀ of sides a (0..6)
+// and b (6..12); q; the dynamic body of each side (NONE: static in the
+// step's scene); the answer z.
+const NONE: u32 = 0xffffffffu;
+var<private> jac: array<Scalar, 192>;
+var<private> resp: array<Scalar, 192>;
+var<private> qv: array<Scalar, 16>;
+var<private> sides: array<vec2<u32>, 16>;
+var<private> zv: array<Scalar, 16>;
+// Per body of the world: v* and then the velocities after the impulses.
+var<private> lin: array<vec3<Scalar>, 16>;
+var<private> ang: array<vec3<Scalar>, 16>;
+
+fn put_row(dst: ptr<private, array<Scalar, 192>>, at: u32, v: vec3<Scalar>) {
+    (*dst)[at] = v.x;
+    (*dst)[at + 1u] = v.y;
+    (*dst)[at + 2u] = v.z;
+}
+
+fn row_vec3(src: ptr<private, array<Scalar, 192>>, at: u32) -> vec3<Scalar> {
+    return vec3<Scalar>((*src)[at], (*src)[at + 1u], (*src)[at + 2u]);
+}
+
+// The world-frame inverse inertia R diag(1/I) Rᵀ of body b (global index)
+// times v, at the step's start pose.
+fn inv_inertia_mul(b: u32, v: vec3<Scalar>) -> vec3<Scalar> {
+    let p = placed_body(b);
+    let inv = vec3_at_consts(sp.bodies_at + b * BC + 6u);
+    return rotate(p, inv * unrotate(p, v));
+}
+
+// assemble_contact: row i of the island from contact `slot` of world with
+// first body `first` and moving-body mask `moving`; bias φ/Δt, ε = 0.
+fn assemble_contact(slot: u32, i: u32, first: u32, moving: u32) {
+    let at = sp.contacts_at + slot * CP;
+    let key = sp.keys_at + 4u * slot;
+    let a = words[key];
+    let b = words[key + 1u];
+    let p = vec3_at_scratch(at);
+    let n = vec3_at_scratch(at + 3u);
+    let gap = scratch[at + 6u];
+    let ga = first + a;
+    let gb = first + b;
+    let ra = p - vec3_at_state(ga * BS);
+    let rb = p - vec3_at_state(gb * BS);
+    let ra_n = cross3(ra, n);
+    let rb_n = cross3(rb, n);
+    let r = 12u * i;
+    put_row(&jac, r, n);
+    put_row(&jac, r + 3u, ra_n);
+    put_row(&jac, r + 6u, -n);
+    put_row(&jac, r + 9u, -rb_n);
+    var s = vec2<u32>(NONE, NONE);
+    if ((moving >> a) & 1u) != 0u {
+        s.x = a;
+        put_row(&resp, r, n * body_const(ga, 5u));
+        put_row(&resp, r + 3u, inv_inertia_mul(ga, ra_n));
+    }
+    if ((moving >> b) & 1u) != 0u {
+        s.y = b;
+        put_row(&resp, r + 6u, -n * body_const(gb, 5u));
+        put_row(&resp, r + 9u, -inv_inertia_mul(gb, rb_n));
+    }
+    sides[i] = s;
+    let pdot = (lin[a] + cross3(ang[a], ra)) - (lin[b] + cross3(ang[b], rb));
+    qv[i] = dot3(pdot, n) + gap / sp.dt;
+}
+
+fn dot6(x: u32, y: u32) -> Scalar {
+    var m = Scalar(0.0);
+    for (var k = 0u; k < 6u; k++) {
+        m += jac[x + k] * resp[y + k];
+    }
+    return m;
+}
+
+// assembly.rs matrix_entry: M_ij over the dynamic bodies rows i and j share.
+fn matrix_entry(i: u32, j: u32) -> Scalar {
+    var m = Scalar(0.0);
+    for (var si = 0u; si < 2u; si++) {
+        for (var sj = 0u; sj < 2u; sj++) {
+            let bi = sides[i][si];
+            if bi != NONE && bi == sides[j][sj] {
+                m += dot6(12u * i + 6u * si, 12u * j + 6u * sj);
+            }
+        }
+    }
+    return m;
+}
+
+// lcp.rs norm2 of the first n entries of the rows given by `which`: 0: z −
+// max(0, z − w) (w in `wv`), 1: q.
+fn scaled_norm(n: u32, wv: ptr<function, array<Scalar, 16>>, which: u32) -> Scalar {
+    var big = Scalar(0.0);
+    for (var i = 0u; i < n; i++) {
+        var x = qv[i];
+        if which == 0u {
+            x = zv[i] - max(Scalar(0.0), zv[i] - (*wv)[i]);
+        }
+        big = max(big, abs(x));
+    }
+    if big == Scalar(0.0) || !finite(big) {
+        return big;
+    }
+    var sum = Scalar(0.0);
+    for (var i = 0u; i < n; i++) {
+        var x = qv[i];
+        if which == 0u {
+            x = zv[i] - max(Scalar(0.0), zv[i] - (*wv)[i]);
+        }
+        sum += (x / big) * (x / big);
+    }
+    return big * sqrt(sum);
+}
+
+// The door's final check of the island's z (check_solution): w = M z + q,
+// z and w finite, lcp_error(z, w, q) finite and <= tolerance. The error,
+// or -1 where the check fails.
+fn check(n: u32) -> Scalar {
+    var wv: array<Scalar, 16>;
+    var ok = true;
+    for (var i = 0u; i < n; i++) {
+        var s = Scalar(0.0);
+        for (var j = 0u; j < n; j++) {
+            s += matrix_entry(i, j) * zv[j];
+        }
+        wv[i] = qv[i] + s;
+        ok = ok && finite(wv[i]) && finite(zv[i]);
+    }
+    let num = scaled_norm(n, &wv, 0u);
+    let qn = scaled_norm(n, &wv, 1u);
+    var error = num;
+    if qn > SCALAR_EPSILON {
+        error = num / qn;
+    }
+    if !ok || !finite(error) || !(error <= sp.tolerance) {
+        return Scalar(-1.0);
+    }
+    return error;
+}
+
+// The basis Lemke ended on, re-solved in f64 as the CPU path re-solves it
+// (textbook_checked): M_SS z_S = −q_S over the basic z's S by Gaussian
+// elimination with partial pivoting, z = max(z_S, 0); Lemke's own z where
+// M_SS is singular or the answer not finite. The tableau `t` is reused.
+fn resolve_basis(n: u32) {
+    var k = 0u;
+    for (var i = 0u; i < n; i++) {
+        let v = basic[i];
+        if v >= n && v < 2u * n {
+            cand[k] = v - n;
+            k++;
+        }
+    }
+    let cols = k + 1u;
+    for (var r = 0u; r < k; r++) {
+        for (var c = 0u; c < k; c++) {
+            t[r * cols + c] = matrix_entry(cand[r], cand[c]);
+        }
+        t[r * cols + k] = -qv[cand[r]];
+    }
+    for (var p = 0u; p < k; p++) {
+        var best = p;
+        var big = abs(t[p * cols + p]);
+        for (var r = p + 1u; r < k; r++) {
+            let v = abs(t[r * cols + p]);
+            if v > big {
+                big = v;
+                best = r;
+            }
+        }
+        if !(big > Scalar(0.0)) || !finite(big) {
+            return;
+        }
+        for (var c = p; c <= k; c++) {
+            let v = t[p * cols + c];
+            t[p * cols + c] = t[best * cols + c];
+            t[best * cols + c] = v;
+        }
+        for (var r = p + 1u; r < k; r++) {
+            let f = t[r * cols + p] / t[p * cols + p];
+            for (var c = p; c <= k; c++) {
+                t[r * cols + c] -= f * t[p * cols + c];
+            }
+        }
+    }
+    var x: array<Scalar, 16>;
+    var ok = true;
+    for (var r = k; r > 0u; r--) {
+        let i = r - 1u;
+        var s = t[i * cols + k];
+        for (var c = i + 1u; c < k; c++) {
+            s -= t[i * cols + c] * x[c];
+        }
+        x[i] = s / t[i * cols + i];
+        ok = ok && finite(x[i]);
+    }
+    if ok {
+        for (var i = 0u; i < k; i++) {
+            zv[cand[i]] = max(x[i], Scalar(0.0));
+        }
+    }
+}
+
+fn find(parent: ptr<function, array<u32, 16>>, x0: u32) -> u32 {
+    var x = x0;
+    while (*parent)[x] != x {
+        (*parent)[x] = (*parent)[(*parent)[x]];
+        x = (*parent)[x];
+    }
+    return x;
+}
+
+// step.rs integrate_rotation: normalise(q + ½Δt (ω, 0) ⊗ q).
+fn integrate_rotation(q: vec4<Scalar>, w: vec3<Scalar>, dt: Scalar) -> vec4<Scalar> {
+    // glam's DQuat product (w.x, w.y, w.z, 0) ⊗ q.
+    let spin = vec4<Scalar>(
+        w.x * q.w + w.y * q.z - w.z * q.y,
+        -w.x * q.z + w.y * q.w + w.z * q.x,
+        w.x * q.y - w.y * q.x + w.z * q.w,
+        -w.x * q.x - w.y * q.y - w.z * q.z,
+    );
+    return normalize4(q + Scalar(0.5) * dt * spin);
+}
+
+fn normalize4(q: vec4<Scalar>) -> vec4<Scalar> {
+    let len = sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+    return q * (Scalar(1.0) / len);
+}
+
+// Step parts 2 and 3 for one world: find_islands (union–find through the
+// moving bodies, islands in the order of their first contact), per island
+// assembly, Lemke (lemke_pivots), the check, the impulses; then finish
+// (poses, sleep counters) and the world's figures. A flagged world (here
+// or in world_collide) keeps its state.
+@compute @workgroup_size(64)
+fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
+    let w = gid.x;
+    if w >= sp.count {
+        return;
+    }
+    let info = worlds[w];
+    let first = info.x;
+    let nb = min(info.y, MAX_BODIES);
+    let out = sp.out_at + 4u * w;
+    let count = words[out];
+    let moving = words[out + 1u];
+    var flags = words[out + 2u];
+    let dt = sp.dt;
+    let slot0 = w * sp.slots;
+    for (var k = 0u; k < nb; k++) {
+        lin[k] = vec3_at_scratch(6u * (first + k));
+        ang[k] = vec3_at_scratch(6u * (first + k) + 3u);
+    }
+    // Islands.
+    var parent: array<u32, 16>;
+    var island_of_root: array<u32, 16>;
+    for (var k = 0u; k < MAX_BODIES; k++) {
+        parent[k] = k;
+        island_of_root[k] = NONE;
+    }
+    for (var c = 0u; c < count; c++) {
+        let key = sp.keys_at + 4u * (slot0 + c);
+        let a = words[key];
+        let b = words[key + 1u];
+        if ((moving >> a) & (moving >> b) & 1u) != 0u {
+            let ra = find(&parent, a);
+            let rb = find(&parent, b);
+            parent[max(ra, rb)] = min(ra, rb);
+        }
+    }
+    var islands = 0u;
+    var max_penetration = Scalar(0.0);
+    for (var c = 0u; c < count; c++) {
+        let key = sp.keys_at + 4u * (slot0 + c);
+        let a = words[key];
+        let body = select(words[key + 1u], a, ((moving >> a) & 1u) != 0u);
+        let root = find(&parent, body);
+        if island_of_root[root] == NONE {
+            island_of_root[root] = islands;
+            islands++;
+        }
+        words[key + 3u] = island_of_root[root];
+        max_penetration = max(max_penetration, -scratch[sp.contacts_at + (slot0 + c) * CP + 6u]);
+    }
+    // Per island: assembly, Lemke, check, impulses.
+    var max_error = Scalar(0.0);
+    var spent = 0u;
+    var members: array<u32, 16>;
+    for (var isl = 0u; isl < islands && flags == 0u; isl++) {
+        var n = 0u;
+        for (var c = 0u; c < count; c++) {
+            if words[sp.keys_at + 4u * (slot0 + c) + 3u] == isl {
+                if n < ISLAND_MAX {
+                    members[n] = c;
+                }
+                n++;
+            }
+        }
+        if n > ISLAND_MAX {
+            flags |= ISLAND_TOO_LARGE;
+            break;
+        }
+        for (var i = 0u; i < n; i++) {
+            assemble_contact(slot0 + members[i], i, first, moving);
+        }
+        // The tableau B⁻¹ [I, −M, −e | q] with B = I (lemke.wgsl).
+        let cols = 2u * n + 2u;
+        let rhs = cols - 1u;
+        for (var i = 0u; i < n; i++) {
+            let ri = i * cols;
+            for (var j = 0u; j < n; j++) {
+                t[ri + j] = Scalar(0.0);
+                t[ri + n + j] = -matrix_entry(i, j);
+            }
+            t[ri + i] = Scalar(1.0);
+            t[ri + 2u * n] = Scalar(-1.0);
+            t[ri + rhs] = qv[i];
+            basic[i] = i;
+        }
+        spent += n * cols + count;
+        var visited = 0u;
+        let max_pivots = u32(max(sp.max_pivots, Scalar(1.0)));
+        let status = lemke_pivots(n, spent, sp.pivot_tol, max_pivots, sp.budget, &visited);
+        spent += n + (visited + 1u) * ((n + 1u) * cols + 2u * n * n + 6u * n);
+        if status != 1u {
+            flags |= NOT_SOLVED;
+            break;
+        }
+        for (var i = 0u; i < n; i++) {
+            zv[i] = Scalar(0.0);
+        }
+        if visited > 0u {
+            for (var i = 0u; i < n; i++) {
+                let v = basic[i];
+                if v >= n && v < 2u * n {
+                    zv[v - n] = max(t[i * cols + rhs], Scalar(0.0));
+                }
+            }
+            resolve_basis(n);
+            spent += n * n * n;
+        }
+        let error = check(n);
+        if error < Scalar(0.0) {
+            flags |= NOT_SOLVED;
+            break;
+        }
+        max_error = max(max_error, error);
+        // cpu/impulses.rs velocities_after: v += M⁻¹Jᵀ z per side.
+        for (var i = 0u; i < n; i++) {
+            let zi = zv[i];
+            scratch[sp.contacts_at + (slot0 + members[i]) * CP + 7u] = zi;
+            if zi == Scalar(0.0) {
+                continue;
+            }
+            let s = sides[i];
+            let r = 12u * i;
+            if s.x != NONE {
+                lin[s.x] += row_vec3(&resp, r) * zi;
+                ang[s.x] += row_vec3(&resp, r + 3u) * zi;
+            }
+            if s.y != NONE {
+                lin[s.y] += row_vec3(&resp, r + 6u) * zi;
+                ang[s.y] += row_vec3(&resp, r + 9u) * zi;
+            }
+        }
+    }
+    // finish: woken bodies awake, moving bodies integrated, sleep counters.
+    let g = vec3_at_consts(w * WC);
+    let sleep_linear = consts[w * WC + 4u];
+    let sleep_angular = consts[w * WC + 5u];
+    var xs: array<vec3<Scalar>, 16>;
+    var qs: array<vec4<Scalar>, 16>;
+    for (var k = 0u; k < nb && flags == 0u; k++) {
+        let b = first + k;
+        if ((moving >> k) & 1u) == 0u {
+            continue;
+        }
+        let o = b * BS;
+        let q0 = normalize4(vec4<Scalar>(state[o + 3u], state[o + 4u], state[o + 5u], state[o + 6u]));
+        xs[k] = vec3_at_state(o) + lin[k] * dt;
+        qs[k] = integrate_rotation(q0, ang[k], dt);
+        let mag = abs(xs[k]) + abs(qs[k].xyz) + abs(lin[k]) + abs(ang[k]);
+        if !finite(mag.x + mag.y + mag.z + abs(qs[k].w)) {
+            flags |= NON_FINITE;
+        }
+    }
+    var kinetic = Scalar(0.0);
+    var potential = Scalar(0.0);
+    var awake = 0u;
+    if flags == 0u {
+        for (var k = 0u; k < nb; k++) {
+            let b = first + k;
+            if is_static(b) {
+                continue;
+            }
+            let o = b * BS;
+            if ((moving >> k) & 1u) != 0u {
+                // A woken body counts its quiet steps afresh.
+                var quiet = select(words[2u * b + 1u], 0u, asleep(b));
+                let still = length3(lin[k]) < sleep_linear && length3(ang[k]) < sleep_angular;
+                if still {
+                    quiet = min(quiet, 0xfffffffeu) + 1u;
+                } else {
+                    quiet = 0u;
+                }
+                var sleeps = 0u;
+                if info.z > 0u && quiet >= info.z {
+                    sleeps = 1u;
+                    lin[k] = vec3<Scalar>(0.0, 0.0, 0.0);
+                    ang[k] = vec3<Scalar>(0.0, 0.0, 0.0);
+                }
+                words[2u * b] = sleeps;
+                words[2u * b + 1u] = quiet;
+                put_state(o, xs[k]);
+                state[o + 3u] = qs[k].x;
+                state[o + 4u] = qs[k].y;
+                state[o + 5u] = qs[k].z;
+                state[o + 6u] = qs[k].w;
+                put_state(o + 7u, lin[k]);
+                put_state(o + 10u, ang[k]);
+            }
+            // RigidBody::kinetic_energy and World::potential_energy after
+            // the step.
+            let v = vec3_at_state(o + 7u);
+            let om = vec3_at_state(o + 10u);
+            let p = placed_body(b);
+            let wb = unrotate(p, om);
+            let inertia = Scalar(1.0) / vec3_at_consts(sp.bodies_at + b * BC + 6u);
+            let m = body_const(b, 9u);
+            kinetic += Scalar(0.5) * m * dot3(v, v) + Scalar(0.5) * dot3(wb * wb, inertia);
+            potential += -m * dot3(g, vec3_at_state(o));
+            if !asleep(b) {
+                awake++;
+            }
+        }
+    }
+    words[out + 2u] = flags;
+    words[out + 3u] = islands;
+    let r = w * REC;
+    records[r] = kinetic;
+    records[r + 1u] = potential;
+    records[r + 2u] = max_penetration;
+    records[r + 3u] = max_error;
+    records[r + 4u] = Scalar(awake);
+}

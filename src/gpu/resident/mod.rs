@@ -1,0 +1,391 @@
+//! Worlds resident on the GPU (issue 23): a batch of frictionless worlds
+//! (restitution 0) uploaded once and stepped by `shaders/world_step.wgsl`,
+//! one submission per step (two dispatches: `world_collide`, `world_solve`)
+//! with nothing read back but the states and a small record per world.
+//!
+//! [`ResidentWorlds::new`] packs the worlds ([`layout`]) and uploads them;
+//! [`ResidentWorlds::step`] runs one step and reads back the per-world
+//! figures and the states; [`ResidentWorlds::read_states`] copies the
+//! states into `World`s; [`ResidentWorlds::write_world`] replaces one
+//! world's state (after the host stepped it on the CPU).
+//!
+//! Buffers are sized once from the worlds: [`layout::contact_slots`]
+//! contact slots per world (4 per pair that may touch: never reached by
+//! the narrow phase, which gives at most 4 points per pair), islands up to
+//! [`layout::ISLAND_MAX`] contacts; a world past either is flagged
+//! ([`layout::flags`]) and keeps its state on the device.
+
+pub mod layout;
+
+use super::kernel::round_budget;
+use super::layout::{scalars_from_bytes, scalars_to_bytes};
+use super::{GpuContext, GpuSolveSettings, Precision};
+use crate::world::World;
+use crate::Error;
+use layout::{
+    contact_slots, pack_body_consts, pack_body_state, pack_world_consts, unpack_body_state, BC, BS,
+    CP, REC, WC,
+};
+
+/// What one step gave for one world.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct WorldRecord {
+    /// [`layout::flags`] bits: 0 when the kernel stepped the world.
+    pub flags: u32,
+    /// Contacts and islands this step.
+    pub contacts: usize,
+    pub islands: usize,
+    /// Kinetic and potential energy after the step (J).
+    pub kinetic: f64,
+    pub potential: f64,
+    /// Deepest penetration among this step's contacts (m, ≥ 0).
+    pub max_penetration: f64,
+    /// Largest LCP error measure of the world's islands.
+    pub max_error: f64,
+    /// Dynamic bodies awake after the step.
+    pub awake: usize,
+}
+
+/// The states after a step, as read back: per body [`BS`] scalars and 2
+/// sleep words, in world order.
+pub struct States {
+    state: Vec<f64>,
+    sleep: Vec<u32>,
+}
+
+impl States {
+    /// Copies world `k`'s bodies (first body `first`) into `w`.
+    pub fn unpack(&self, first: usize, w: &mut World) {
+        for (j, b) in w.bodies.iter_mut().enumerate() {
+            let at = first + j;
+            unpack_body_state(
+                b,
+                &self.state[at * BS..(at + 1) * BS],
+                &self.sleep[2 * at..2 * at + 2],
+            );
+        }
+    }
+}
+
+/// A batch of worlds on the device (see the module docs).
+pub struct ResidentWorlds {
+    /// First body of each world, and the total at the end.
+    first: Vec<usize>,
+    slots: usize,
+    budget: u32,
+    tolerances: [f64; 3],
+    precision: Precision,
+    params: wgpu::Buffer,
+    state: wgpu::Buffer,
+    words: wgpu::Buffer,
+    records: wgpu::Buffer,
+    bind: wgpu::BindGroup,
+    /// Bytes read back per step.
+    pub bytes_back: u64,
+    /// Bytes uploaded by [`Self::new`].
+    pub bytes_up: u64,
+}
+
+impl ResidentWorlds {
+    /// Uploads `worlds` (each within [`layout::out_of_scope`]'s limits,
+    /// checked by the caller) to `ctx`. `tolerance`: the door's final
+    /// check; `gpu`: Lemke's pivot tolerance and cap, the loop budget;
+    /// `slots`: contact slots per world (None: [`contact_slots`]).
+    ///
+    /// # Errors
+    /// [`Error::Unsupported`] where a buffer would pass the device's
+    /// binding limit or there are more worlds than one dispatch takes;
+    /// [`Error::Gpu`] for device trouble.
+    pub fn new(
+        ctx: &GpuContext,
+        worlds: &[World],
+        tolerance: f64,
+        gpu: &GpuSolveSettings,
+        slots: Option<usize>,
+    ) -> Result<Self, Error> {
+        let slots = slots.unwrap_or_else(|| contact_slots(worlds)).max(1);
+        let precision = ctx.precision();
+        let sb = precision.bytes() as usize;
+        let mut first = Vec::with_capacity(worlds.len() + 1);
+        let mut info: Vec<[u32; 4]> = Vec::with_capacity(worlds.len());
+        let total: usize = worlds.iter().map(|w| w.bodies.len()).sum();
+        let mut consts = Vec::with_capacity(worlds.len() * WC + total * BC);
+        let (mut state, mut sleep) = (Vec::new(), Vec::new());
+        let mut bodies = 0;
+        for w in worlds {
+            first.push(bodies);
+            info.push([bodies as u32, w.bodies.len() as u32, w.sleep.steps, 0]);
+            pack_world_consts(w, &mut consts);
+            bodies += w.bodies.len();
+        }
+        first.push(bodies);
+        for b in worlds.iter().flat_map(|w| &w.bodies) {
+            pack_body_consts(b, &mut consts);
+            pack_body_state(b, &mut state, &mut sleep);
+        }
+        let n = worlds.len();
+        let contacts_at = 6 * bodies;
+        let scratch_len = contacts_at + n * slots * CP;
+        let out_at = 2 * bodies;
+        let keys_at = out_at + 4 * n;
+        let words_len = keys_at + 4 * n * slots;
+        let largest = [scratch_len * sb, words_len * 4, consts.len() * sb];
+        let limit = ctx.limits().max_storage_buffer_binding_size;
+        let groups = n.div_ceil(super::pipelines::WORKGROUP as usize);
+        if largest.iter().any(|&b| b as u64 > limit) || groups > 65_535 {
+            return Err(Error::Unsupported(format!(
+                "{n} resident worlds of {slots} contact slots do not fit the device's limits"
+            )));
+        }
+        let budget = round_budget(ctx, gpu);
+        let lemke = &gpu.lemke;
+        let stages = ctx.pipelines()?;
+        ctx.scoped("uploading resident worlds", || -> Result<Self, Error> {
+            let mut words = sleep;
+            words.resize(words_len.max(4), 0);
+            let info_buffer = ctx.storage("worlds", bytemuck::cast_slice(&info));
+            let consts_buffer = ctx.storage("consts", &scalars_to_bytes(&consts, precision));
+            let state_buffer = ctx.storage("state", &scalars_to_bytes(&state, precision));
+            let scratch = ctx.storage_zeroed("scratch", (scratch_len * sb) as u64);
+            let words_buffer = ctx.storage("words", bytemuck::cast_slice(&words));
+            let records = ctx.storage_zeroed("records", (n * REC * sb) as u64);
+            let params = ctx.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("world step params"),
+                size: 64,
+                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+            let stage = &stages.world_step(ctx)?[0];
+            let bind = stage.bind(
+                ctx,
+                &[
+                    &params,
+                    &info_buffer,
+                    &consts_buffer,
+                    &state_buffer,
+                    &scratch,
+                    &words_buffer,
+                    &records,
+                ],
+            );
+            let r = ResidentWorlds {
+                bytes_up: ((consts.len() + state.len()) * sb + words.len() * 4 + n * 16) as u64,
+                bytes_back: (((state.len() + n * REC) * sb) + keys_at * 4) as u64,
+                first,
+                slots,
+                budget,
+                tolerances: [tolerance, lemke.pivot_tol, lemke.max_pivots as f64],
+                precision,
+                params,
+                state: state_buffer,
+                words: words_buffer,
+                records,
+                bind,
+            };
+            r.write_params(ctx, 0.0);
+            Ok(r)
+        })?
+    }
+
+    /// Worlds held.
+    fn count(&self) -> usize {
+        self.first.len() - 1
+    }
+
+    /// The uniform for a step of `dt` (see `StepParams` in the shader).
+    fn write_params(&self, ctx: &GpuContext, dt: f64) {
+        let n = self.count();
+        let bodies = self.first[n];
+        let ints: [u32; 8] = [
+            n as u32,
+            self.slots as u32,
+            (n * WC) as u32,
+            (2 * bodies) as u32,
+            (2 * bodies + 4 * n) as u32,
+            self.budget,
+            (6 * bodies) as u32,
+            0,
+        ];
+        let [tol, pivot, pivots] = self.tolerances;
+        let mut bytes = bytemuck::cast_slice(&ints).to_vec();
+        bytes.extend(scalars_to_bytes(&[dt, tol, pivot, pivots], self.precision));
+        bytes.resize(64, 0);
+        ctx.queue.write_buffer(&self.params, 0, &bytes);
+    }
+
+    /// One step of `dt` for every world held: one submission, then the
+    /// per-world records and the states read back.
+    ///
+    /// # Errors
+    /// [`Error::Gpu`] for device trouble.
+    pub fn step(&self, ctx: &GpuContext, dt: f64) -> Result<(Vec<WorldRecord>, States), Error> {
+        let n = self.count();
+        let bodies = self.first[n];
+        let sb = self.precision.bytes();
+        let stages = ctx.pipelines()?;
+        let [collide, solve] = stages.world_step(ctx)?;
+        let groups = (n as u32).div_ceil(super::pipelines::WORKGROUP);
+        ctx.scoped("resident world step", || {
+            self.write_params(ctx, dt);
+            let mut encoder = ctx.encoder("resident world step");
+            for stage in [collide, solve] {
+                self.record(&mut encoder, stage, groups);
+            }
+            let words_back = ((2 * bodies + 4 * n) * 4) as u64;
+            let reads = [
+                (&self.state, bodies as u64 * BS as u64 * sb),
+                (&self.words, words_back),
+                (&self.records, (n * REC) as u64 * sb),
+            ];
+            ctx.submit_and_map(encoder, &reads, |v| {
+                let state = scalars_from_bytes(v[0], self.precision);
+                let words: Vec<u32> = bytemuck::pod_collect_to_vec(v[1]);
+                let rec = scalars_from_bytes(v[2], self.precision);
+                let out = &words[2 * bodies..];
+                let records = (0..n)
+                    .map(|k| {
+                        let r = &rec[k * REC..(k + 1) * REC];
+                        WorldRecord {
+                            flags: out[4 * k + 2],
+                            contacts: out[4 * k] as usize,
+                            islands: out[4 * k + 3] as usize,
+                            kinetic: r[0],
+                            potential: r[1],
+                            max_penetration: r[2],
+                            max_error: r[3],
+                            awake: r[4] as usize,
+                        }
+                    })
+                    .collect();
+                let mut sleep = words;
+                sleep.truncate(2 * bodies);
+                (records, States { state, sleep })
+            })
+        })?
+    }
+
+    /// One step as [`Self::step`] does it, but each of its two dispatches
+    /// in a submission of its own, waited for: the wall seconds of
+    /// `world_collide` and `world_solve` (for benches; nothing read back).
+    ///
+    /// # Errors
+    /// [`Error::Gpu`] for device trouble.
+    #[cfg_attr(
+        not(test),
+        allow(
+            dead_code,
+            reason = "the phase measurement of src/tests/gpu_resident.rs"
+        )
+    )]
+    pub fn time_phases(&self, ctx: &GpuContext, dt: f64) -> Result<[f64; 2], Error> {
+        let stages = ctx.pipelines()?;
+        let groups = (self.count() as u32).div_ceil(super::pipelines::WORKGROUP);
+        let mut seconds = [0.0; 2];
+        self.write_params(ctx, dt);
+        for (stage, s) in stages.world_step(ctx)?.iter().zip(&mut seconds) {
+            let start = std::time::Instant::now();
+            ctx.scoped("resident world step", || {
+                let mut encoder = ctx.encoder("resident world step");
+                self.record(&mut encoder, stage, groups);
+                ctx.queue.submit([encoder.finish()]);
+                ctx.device
+                    .poll(wgpu::PollType::wait_indefinitely())
+                    .map_err(|e| Error::Gpu(format!("waiting for the GPU: {e}")))
+            })??;
+            *s = start.elapsed().as_secs_f64();
+        }
+        Ok(seconds)
+    }
+
+    /// A dispatch of `stage` over the worlds.
+    fn record(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        stage: &super::pipelines::Stage,
+        groups: u32,
+    ) {
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some("world step"),
+            timestamp_writes: None,
+        });
+        pass.set_pipeline(&stage.pipeline);
+        pass.set_bind_group(0, &self.bind, &[]);
+        pass.dispatch_workgroups(groups.max(1), 1, 1);
+    }
+
+    /// The states held, copied into `worlds` (the batch uploaded, in
+    /// order): bit for bit what was uploaded when no step ran.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] where `worlds` is not the batch's shape;
+    /// [`Error::Gpu`] for device trouble.
+    #[cfg_attr(
+        not(test),
+        allow(
+            dead_code,
+            reason = "the states come back with every step; tests read them"
+        )
+    )]
+    pub fn read_states(&self, ctx: &GpuContext, worlds: &mut [World]) -> Result<(), Error> {
+        let n = self.count();
+        let shape_differs = worlds.len() != n
+            || (worlds.iter().enumerate()).any(|(k, w)| w.bodies.len() != self.bodies_of(k));
+        if shape_differs {
+            return Err(Error::invalid(
+                "read_states",
+                "worlds",
+                "not the batch the device holds".to_string(),
+            ));
+        }
+        let bodies = self.first[n];
+        let sb = self.precision.bytes();
+        let states = ctx.scoped("reading resident states", || {
+            let reads = [
+                (&self.state, bodies as u64 * BS as u64 * sb),
+                (&self.words, (2 * bodies * 4) as u64),
+            ];
+            ctx.submit_and_map(ctx.encoder("read states"), &reads, |v| States {
+                state: scalars_from_bytes(v[0], self.precision),
+                sleep: bytemuck::pod_collect_to_vec(v[1]),
+            })
+        })??;
+        for (k, w) in worlds.iter_mut().enumerate() {
+            states.unpack(self.first[k], w);
+        }
+        Ok(())
+    }
+
+    /// Bodies of world `k`.
+    #[cfg_attr(not(test), allow(dead_code, reason = "read_states' check"))]
+    fn bodies_of(&self, k: usize) -> usize {
+        self.first[k + 1] - self.first[k]
+    }
+
+    /// First body of world `k` in the batch.
+    pub fn first_body(&self, k: usize) -> usize {
+        self.first[k]
+    }
+
+    /// Replaces world `k`'s state on the device with `w`'s (the same
+    /// bodies; stepped on the CPU).
+    ///
+    /// # Errors
+    /// [`Error::Gpu`] for device trouble.
+    pub fn write_world(&self, ctx: &GpuContext, k: usize, w: &World) -> Result<(), Error> {
+        let (mut state, mut sleep) = (Vec::new(), Vec::new());
+        for b in &w.bodies {
+            pack_body_state(b, &mut state, &mut sleep);
+        }
+        let at = self.first[k] as u64;
+        let sb = self.precision.bytes();
+        ctx.scoped("writing a resident world", || {
+            let q = &ctx.queue;
+            q.write_buffer(
+                &self.state,
+                at * BS as u64 * sb,
+                &scalars_to_bytes(&state, self.precision),
+            );
+            q.write_buffer(&self.words, at * 8, bytemuck::cast_slice(&sleep));
+        })
+    }
+}
