@@ -140,7 +140,12 @@ class Report:
       sorting by size, the tree kernel's routes), "upload_seconds" (writing
       M and q into the device's buffers), "kernel_seconds" (submission to
       the end of the last round, waits included), "readback_seconds"
-      (reading the answers back);
+      (reading the answers back), "check_seconds" (the f64 check of the
+      GPU's answers), "repair_seconds" (answers the check rejected, solved
+      again on the CPU), "report_seconds" (the batch's report),
+      "overlapped_seconds" (host seconds spent while a part was on the
+      device), "kernel_device_seconds" (the kernels as GPU timestamps
+      measure them; None where the adapter has no TIMESTAMP_QUERY);
     - ``chunks``: parts the call was solved in (Ctrl-C is seen between them);
     - ``friction_islands``: frictional islands (or problems of
       ``solve_friction``); ``friction_statuses``: their statuses;

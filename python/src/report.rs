@@ -106,9 +106,14 @@ fn gpu_dict<'py>(py: Python<'py>, g: &GpuFigures) -> PyResult<Bound<'py, PyDict>
         ("upload_seconds", g.upload_seconds),
         ("kernel_seconds", g.kernel_seconds),
         ("readback_seconds", g.readback_seconds),
+        ("check_seconds", g.check_seconds),
+        ("repair_seconds", g.repair_seconds),
+        ("report_seconds", g.report_seconds),
+        ("overlapped_seconds", g.overlapped_seconds),
     ];
     for (name, v) in floats {
         d.set_item(name, v)?;
     }
+    d.set_item("kernel_device_seconds", g.kernel_device_seconds)?;
     Ok(d)
 }

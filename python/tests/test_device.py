@@ -34,6 +34,10 @@ def test_cpu_and_gpu_give_the_same_statuses_and_answers(gpu):
         parts = [g[k] for k in ("pack_seconds", "upload_seconds", "kernel_seconds", "readback_seconds")]
         assert all(np.isfinite(t) and t >= 0 for t in parts), g
         assert sum(parts) <= on_gpu.report.timings["total"], (g, on_gpu.report.timings)
+        host = [g[k] for k in ("check_seconds", "repair_seconds", "report_seconds", "overlapped_seconds")]
+        assert all(np.isfinite(t) and t >= 0 for t in host), g
+        device = g["kernel_device_seconds"]
+        assert device is None or (np.isfinite(device) and device >= 0), g
         counts = on_gpu.report.counts
         if counts["enumerated_gpu"] + counts["lemke_gpu"] > 0:
             assert g["kernel_seconds"] > 0 and g["dispatches"] > 0, g
