@@ -5,9 +5,10 @@
 //! ([`crate::world::collide`]'s `collide_shapes` with `world_contacts`'
 //! ordering of a pair: the dynamic body is a).
 //!
-//! The shader's functions take values only (no bindings), so that the
-//! resident stepper of issue 23 can call them from its own kernel with its
-//! own body state; the body record here is laid out for that state.
+//! The shader's functions take values only (no bindings): the resident
+//! world step (`shaders/world_step.wgsl`, `src/gpu/resident/`) calls them
+//! from its own kernel with its own body state, whose shape record is
+//! [`shape_record`]'s.
 //!
 //! # Layouts (keep in sync with `shaders/collide.wgsl`)
 //! - body, [`BODY`] scalars: position (3), orientation quaternion
@@ -23,13 +24,13 @@
 //!   are reduced to four), so the bound is never reached by the CPU twins'
 //!   algorithms; a pair that would exceed it is flagged, never cut silently.
 
-// Until the resident stepper calls the WGSL, this door serves the tests
-// (src/tests/gpu_collide.rs) only.
+// Besides `shape_record`, this door serves the tests (src/tests/gpu_collide.rs)
+// only: the resident step runs the WGSL functions from its own kernel.
 #![cfg_attr(
     not(test),
     allow(
         dead_code,
-        reason = "the narrow phase's test door; the resident stepper is to come"
+        reason = "the narrow phase's test door; the resident step calls the WGSL itself"
     )
 )]
 
@@ -51,13 +52,19 @@ pub const POINT: usize = 8;
 /// Set in a pair's count word where its manifold did not fit its slots.
 pub const OVERFLOW: u32 = 1 << 31;
 
-/// Appends body `b`'s record (see the module docs) to `out`.
-pub fn pack_collide_body(b: &RigidBody, out: &mut Vec<f64>) {
-    let (kind, size) = match b.shape {
+/// A shape as the shaders read it: its kind (0 sphere, 1 box, 2 plane) and
+/// parameters (radius, 0, 0 | half extents | plane normal).
+pub fn shape_record(shape: &Shape) -> (f64, [f64; 3]) {
+    match *shape {
         Shape::Sphere { radius } => (0.0, [radius, 0.0, 0.0]),
         Shape::Box { half_extents } => (1.0, half_extents),
         Shape::Plane { normal } => (2.0, normal),
-    };
+    }
+}
+
+/// Appends body `b`'s record (see the module docs) to `out`.
+pub fn pack_collide_body(b: &RigidBody, out: &mut Vec<f64>) {
+    let (kind, size) = shape_record(&b.shape);
     out.extend_from_slice(&b.position);
     out.extend_from_slice(&b.orientation);
     out.push(kind);

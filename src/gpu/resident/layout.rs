@@ -2,7 +2,8 @@
 //! `shaders/world_step.wgsl`'s header): what goes up once, what comes back
 //! per step.
 
-use crate::world::{RigidBody, Shape, World};
+use crate::gpu::collide::shape_record;
+use crate::world::{RigidBody, World};
 
 /// Largest world (bodies) the kernel steps: its masks are one `u32`, its
 /// per-body arrays private.
@@ -73,11 +74,7 @@ pub fn contact_slots(worlds: &[World]) -> usize {
 
 /// Appends body `b`'s constants (see [`BC`]).
 pub fn pack_body_consts(b: &RigidBody, out: &mut Vec<f64>) {
-    let (kind, size) = match b.shape {
-        Shape::Sphere { radius } => (0.0, [radius, 0.0, 0.0]),
-        Shape::Box { half_extents } => (1.0, half_extents),
-        Shape::Plane { normal } => (2.0, normal),
-    };
+    let (kind, size) = shape_record(&b.shape);
     let props = b.mass_properties();
     out.push(kind);
     out.extend_from_slice(&size);
