@@ -196,13 +196,10 @@ def forward(M: np.ndarray, q: np.ndarray, settings: Dict[str, Any]) -> Tuple[np.
     from ._solver import _cached
 
     m, qa, shape = _flat(M, q)
-    r = _cached(**settings).solve(m, qa)
-    z, w = r.z, r.w
-    bad = ~r.ok
-    if bad.any():
-        z, w = z.copy(), w.copy()
-        z[bad] = np.nan
-        w[bad] = np.nan
+    z, w, ok = _cached(**settings)._solve_zw(m, qa)
+    if not ok.all():  # z and w are this call's own arrays
+        z[~ok] = np.nan
+        w[~ok] = np.nan
     return z.reshape(shape), w.reshape(shape)
 
 

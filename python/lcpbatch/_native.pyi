@@ -72,6 +72,9 @@ class NativeSolver:
         q: npt.NDArray[np.float64],
         ids: Optional[npt.NDArray[np.uint64]] = None,
     ) -> Dict[str, Any]: ...
+    def solve_dense_zw(
+        self, m: npt.NDArray[np.float64], q: npt.NDArray[np.float64]
+    ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.int8], Optional[str]]: ...
     def solve_ragged(
         self,
         m: List[npt.NDArray[np.float64]],

@@ -12,7 +12,7 @@ import numpy as np
 
 from . import _friction, _inputs, _native
 from ._friction import FRICTION_FIELDS_DOC, FrictionResult
-from ._results import LCP_FIELDS_DOC, SCENES_FIELDS_DOC, LcpResult, ScenesResult, fill_doc
+from ._results import LCP_FIELDS_DOC, SCENES_FIELDS_DOC, LcpResult, ScenesResult, Status, fill_doc
 from ._scenes import scene_arrays
 from ._worlds import STEP_FIELDS_DOC, StepResult, World
 
@@ -289,6 +289,18 @@ class Solver:
             result = LcpResult(d, ragged=False, n=m.shape[1])
         self._warn_fallback(result.report.fallback)
         return result
+
+    def _solve_zw(self, M: ArrayLike, q: ArrayLike) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """For the differentiable adapters: z and w (B, n) and ``ok`` (B,) of
+        a dense batch, solved (checked, warned about) as :meth:`solve` solves
+        it, without the rest of its result (the extension builds only these
+        arrays and reuses its copy of the last batch's problems)."""
+        m, qa, _ = _inputs.dense(M, q, None)
+        if len(m):
+            _inputs.check_enumeration_size([m.shape[1]], self.settings["method"], self.settings["backend"])
+        z, w, status, fallback = self._native.solve_dense_zw(m, qa)
+        self._warn_fallback(fallback)
+        return z, w, status <= Status.MULTIPLE_SOLUTIONS
 
     def solve_scenes(self, bodies: Union[SceneArrays, Sequence[SceneArrays]],
                      contacts: Union[SceneArrays, Sequence[SceneArrays]]) -> ScenesResult:

@@ -17,7 +17,7 @@ use lcpbatch::lcp::SolutionSet;
 use lcpbatch::report::IslandReport;
 use lcpbatch::Lcp;
 use numpy::ndarray::{Array2, ArrayView1, ArrayView2, ArrayView3, Axis};
-use numpy::{IntoPyArray, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3};
+use numpy::{IntoPyArray, PyArray2, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
@@ -107,29 +107,59 @@ pub(crate) fn all_finite(values: &[f64]) -> bool {
     values.iter().fold(true, |ok, v| ok & v.is_finite())
 }
 
+/// A dense batch M (B, n, n), q (B, n) (shapes checked in Python) as n and
+/// its two flat slices, where both arrays are C-ordered, n > 0 and every
+/// entry is finite: the batches [`refill`] copies slice by slice; None for
+/// any other (read element by element by [`dense`], which names a bad entry).
+pub(crate) fn dense_slices<'a>(
+    m: &'a PyReadonlyArray3<f64>,
+    q: &'a PyReadonlyArray2<f64>,
+) -> Option<(usize, &'a [f64], &'a [f64])> {
+    let n = q.as_array().shape()[1];
+    // ndarray's `to_slice`: C order only (NumPy's `as_slice` also takes Fortran order).
+    let (ms, qs) = (m.as_array().to_slice()?, q.as_array().to_slice()?);
+    (n > 0 && all_finite(ms) && all_finite(qs)).then_some((n, ms, qs))
+}
+
 /// A dense batch: M (B, n, n), q (B, n) (shapes checked in Python). C-ordered
 /// arrays with finite entries are copied slice by slice; any other layout,
 /// or an array with an entry to name in an error, goes element by element.
 pub(crate) fn dense(m: &PyReadonlyArray3<f64>, q: &PyReadonlyArray2<f64>) -> PyResult<Vec<Lcp>> {
-    let (m, q): (ArrayView3<f64>, ArrayView2<f64>) = (m.as_array(), q.as_array());
-    let n = q.shape()[1];
-    if let (Some(ms), Some(qs)) = (m.as_slice(), q.as_slice()) {
-        if n > 0 && all_finite(ms) && all_finite(qs) {
-            return Ok(ms
-                .chunks_exact(n * n)
-                .zip(qs.chunks_exact(n))
-                .map(|(mb, qb)| Lcp {
-                    m: mb.to_vec(),
-                    q: qb.to_vec(),
-                })
-                .collect());
-        }
+    if let Some((n, ms, qs)) = dense_slices(m, q) {
+        let mut lcps = Vec::new();
+        refill(&mut lcps, n, ms, qs);
+        return Ok(lcps);
     }
+    let (m, q): (ArrayView3<f64>, ArrayView2<f64>) = (m.as_array(), q.as_array());
     m.outer_iter()
         .zip(q.outer_iter())
         .enumerate()
         .map(|(b, (mb, qb))| lcp_of(mb, qb, &|ix| format!("[{b}, {}]", join(&ix))))
         .collect()
+}
+
+/// Overwrites `lcps` with the C-ordered batch `ms` (B·n·n) and `qs` (B·n)
+/// of size `n` > 0, in the allocations it already holds: a caller that keeps
+/// `lcps` between calls of the same shapes allocates nothing (and touches no
+/// fresh page) after the first. Entries are copied as they are (finiteness
+/// is the caller's check).
+pub(crate) fn refill(lcps: &mut Vec<Lcp>, n: usize, ms: &[f64], qs: &[f64]) {
+    let b = qs.len() / n;
+    lcps.truncate(b);
+    lcps.resize_with(b, || Lcp {
+        m: Vec::with_capacity(n * n),
+        q: Vec::with_capacity(n),
+    });
+    for ((lcp, mb), qb) in lcps
+        .iter_mut()
+        .zip(ms.chunks_exact(n * n))
+        .zip(qs.chunks_exact(n))
+    {
+        lcp.m.clear();
+        lcp.m.extend_from_slice(mb);
+        lcp.q.clear();
+        lcp.q.extend_from_slice(qb);
+    }
 }
 
 /// A ragged batch: lists of (nᵢ, nᵢ) and (nᵢ,) arrays (shapes checked in Python).
@@ -168,6 +198,25 @@ fn solution_set_name(s: &Option<SolutionSet>) -> Option<&'static str> {
         SolutionSet::BoundedContinuum => "bounded_continuum",
         SolutionSet::UnboundedContinuum => "unbounded_continuum",
     })
+}
+
+/// The z and w of a dense batch's islands as two (B, n) arrays (`dim`).
+pub(crate) fn zw<'py>(
+    py: Python<'py>,
+    islands: &[IslandReport],
+    dim: (usize, usize),
+) -> PyResult<(Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<f64>>)> {
+    let err = |e: numpy::ndarray::ShapeError| PyValueError::new_err(e.to_string());
+    let flat = |f: &dyn Fn(&IslandReport) -> &[f64]| -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let mut v = Vec::with_capacity(dim.0 * dim.1);
+        for i in islands {
+            v.extend_from_slice(f(i));
+        }
+        Ok(Array2::from_shape_vec(dim, v)
+            .map_err(err)?
+            .into_pyarray(py))
+    };
+    Ok((flat(&|i| &i.solution.z)?, flat(&|i| &i.solution.w)?))
 }
 
 /// Per-island results as flat arrays in `d`: `offsets` (I + 1), `z`, `w`,

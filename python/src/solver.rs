@@ -10,11 +10,21 @@ use std::sync::{Mutex, MutexGuard};
 use std::time::Instant;
 
 use lcpbatch::{FrictionProblem, Lcp, Report, Scene, Settings, Solver};
-use numpy::{IntoPyArray, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3};
+use numpy::{
+    IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3,
+};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::{batch, friction, guard, report, scenes, settings::Args, to_py_err, worlds};
+
+/// What [`NativeSolver::solve_dense_zw`] returns: z, w, status codes, fallback.
+type ZwArrays<'py> = (
+    Bound<'py, PyArray2<f64>>,
+    Bound<'py, PyArray2<f64>>,
+    Bound<'py, PyArray1<i8>>,
+    Option<String>,
+);
 
 /// The library's solver behind a mutex (see the module docs).
 #[pyclass(module = "lcpbatch._native")]
@@ -23,6 +33,10 @@ pub(crate) struct NativeSolver {
     /// Calls now in `run_chunks` with their chunks joined (several Python
     /// threads may share the solver): the join ends when the last ends.
     joins: Mutex<usize>,
+    /// The problems of [`NativeSolver::solve_dense_zw`]'s last chunk, kept
+    /// so that the next call of the same shapes copies into them instead of
+    /// allocating (at most one chunk: about 30 MB at the worst n).
+    scratch: Mutex<Vec<Lcp>>,
 }
 
 impl NativeSolver {
@@ -178,6 +192,7 @@ impl NativeSolver {
         Ok(NativeSolver {
             solver: Mutex::new(solver),
             joins: Mutex::new(0),
+            scratch: Mutex::new(Vec::new()),
         })
     }
 
@@ -217,6 +232,45 @@ impl NativeSolver {
     ) -> PyResult<Bound<'py, PyDict>> {
         let lcps = batch::dense(&m, &q)?;
         self.lcps(py, lcps, ids.as_ref().map(batch::dense_ids))
+    }
+
+    /// For the differentiable adapters (`lcpbatch.jax`, `lcpbatch.torch`):
+    /// a dense batch M (B, n, n), q (B, n) solved as [`Self::solve_dense`]
+    /// solves it, returning only z and w (B, n), the status codes (B,) and
+    /// the report's fallback. A C-ordered finite batch is copied chunk by
+    /// chunk into the problems kept from the last call (GIL released), not
+    /// into fresh ones; any other is read (and its errors named) as
+    /// `solve_dense` reads it.
+    fn solve_dense_zw<'py>(
+        &self,
+        py: Python<'py>,
+        m: PyReadonlyArray3<'py, f64>,
+        q: PyReadonlyArray2<'py, f64>,
+    ) -> PyResult<ZwArrays<'py>> {
+        let (b, n) = q.as_array().dim();
+        let (r, _) = match batch::dense_slices(&m, &q) {
+            Some((n, ms, qs)) => {
+                let ranges = batch::chunks(std::iter::repeat_n(n, b));
+                self.run_chunks(py, ranges, |s, r| {
+                    let mut lcps = self.scratch.lock().unwrap_or_else(|p| p.into_inner());
+                    let (mr, qr) = (r.start * n * n..r.end * n * n, r.start * n..r.end * n);
+                    batch::refill(&mut lcps, n, &ms[mr], &qs[qr]);
+                    s.solve_lcps(&lcps)
+                })?
+            }
+            None => {
+                let lcps = batch::dense(&m, &q)?;
+                let ranges = batch::chunks(lcps.iter().map(Lcp::n));
+                self.run_chunks(py, ranges, |s, r| s.solve_lcps(&lcps[r]))?
+            }
+        };
+        let (z, w) = batch::zw(py, &r.islands, (b, n))?;
+        let status: Vec<i8> = r
+            .islands
+            .iter()
+            .map(|i| report::status_code(i.status()))
+            .collect();
+        Ok((z, w, status.into_pyarray(py), r.fallback))
     }
 
     /// A ragged batch: lists of (nᵢ, nᵢ) and (nᵢ,) arrays, ids a list or None.
