@@ -15,7 +15,7 @@ the minimums (the least disturbed runs), and the time each Python call spent
 outside the library (its wall time less the library's own total, measured
 inside the same call: the least noisy of the three) over the Rust call.
 
-    python python/bench_overhead.py [--problems 20000] [--n 8] [--repeats 9] [--backend cpu]
+    python python/bench_overhead.py [--problems 20000] [--n 8] [--repeats 9] [--backend cpu] [--threads 0]
 
 With ``--grad``: the differentiable solve of the adapters instead, solve
 plus gradient of L = c·z with respect to M and q on the same batch:
@@ -26,6 +26,10 @@ plus gradient of L = c·z with respect to M and q on the same batch:
 - rust: the library's ``Solver::solve_lcps`` plus its ``lcp_vjp_batch`` on
   the same batch, each timed in Rust with its problems already built
   (``time_solve_lcps``, ``time_lcp_vjp``).
+
+And each adapter's forward alone (the solve, with what a backward needs
+kept) against the Rust solve alone. ``--threads 1``: the solver on one
+thread (with ``--torch-threads 1``, the one-thread figures).
 
 Each adapter is also timed on the same loss with the solve replaced by a
 framework op of the same shapes (z = q + M[..., 0]): the framework's own
@@ -59,10 +63,11 @@ def batch(problems: int, n: int, seed: int = 0):
     return M, q
 
 
-def adapters(M, q, c, backend: str, torch_threads: int):
+def adapters(M, q, c, settings: dict, torch_threads: int):
     """The solve + gradient of each adapter installed, and the same loss's
     gradient without the solve (the framework's own cost), as pairs of
-    functions of no argument that return when the gradient is ready."""
+    functions of no argument that return when the gradient is ready, and
+    the forward alone (the solve, its graph recorded for a backward)."""
     calls = {}
     try:
         import jax
@@ -75,10 +80,12 @@ def adapters(M, q, c, backend: str, torch_threads: int):
         jax.config.update("jax_enable_x64", True)
         Mj, qj, cj = jnp.asarray(M), jnp.asarray(q), jnp.asarray(c)
         step = jax.jit(jax.value_and_grad(
-            lambda M, q: jnp.sum(cj * lcpbatch.jax.solve(M, q, backend=backend)[0]), argnums=(0, 1)))
+            lambda M, q: jnp.sum(cj * lcpbatch.jax.solve(M, q, **settings)[0]), argnums=(0, 1)))
         base = jax.jit(jax.value_and_grad(lambda M, q: jnp.sum(cj * (q + M[..., 0])), argnums=(0, 1)))
+        forward = jax.jit(lambda M, q: lcpbatch.jax.solve(M, q, **settings))
         calls["jax"] = (lambda: jax.block_until_ready(step(Mj, qj)),
-                        lambda: jax.block_until_ready(base(Mj, qj)))
+                        lambda: jax.block_until_ready(base(Mj, qj)),
+                        lambda: jax.block_until_ready(forward(Mj, qj)))
     try:
         import torch
     except ImportError:
@@ -93,39 +100,42 @@ def adapters(M, q, c, backend: str, torch_threads: int):
         qt.requires_grad_(True)
 
         def torch_step():
-            z, _ = lcpbatch.torch.solve(Mt, qt, backend=backend)
+            z, _ = lcpbatch.torch.solve(Mt, qt, **settings)
             return torch.autograd.grad((ct * z).sum(), (Mt, qt))
 
         def torch_base():
             return torch.autograd.grad((ct * (qt + Mt[..., 0])).sum(), (Mt, qt))
 
-        calls["torch"] = (torch_step, torch_base)
+        calls["torch"] = (torch_step, torch_base, lambda: lcpbatch.torch.solve(Mt, qt, **settings))
     return calls
 
 
 def grad_overhead(args: argparse.Namespace) -> None:
     M, q = batch(args.problems, args.n)
     c = np.random.default_rng(1).standard_normal(q.shape)
-    s = lcpbatch.Solver(backend=args.backend)
+    settings = dict(backend=args.backend, threads=args.threads)
+    s = lcpbatch.Solver(**settings)
     z = s.solve(M, q).z
-    calls = adapters(M, q, c, args.backend, args.torch_threads)
-    for f, base in calls.values():
-        f()  # warm-up: compilation, the cached solver, thread pool
-        base()
+    calls = adapters(M, q, c, settings, args.torch_threads)
+    for fs in calls.values():
+        for f in fs:
+            f()  # warm-up: compilation, the cached solver, thread pool
     times = {name: [] for name in calls}
     bases = {name: [] for name in calls}
-    rust = []
+    forwards = {name: [] for name in calls}
+    rust, rust_solve = [], []
     for _ in range(args.repeats):
-        for name, (f, base) in calls.items():
-            t = time.perf_counter()
-            f()
-            times[name].append(time.perf_counter() - t)
-            t = time.perf_counter()
-            base()
-            bases[name].append(time.perf_counter() - t)
-        rust.append(s._native.time_solve_lcps(M, q, 1)[0] + lcpbatch._native.time_lcp_vjp(M, q, z, c, 1)[0])
+        for name, fs in calls.items():
+            for f, into in zip(fs, (times, bases, forwards)):
+                t = time.perf_counter()
+                f()
+                into[name].append(time.perf_counter() - t)
+        rust_solve.append(s._native.time_solve_lcps(M, q, 1)[0])
+        rust.append(rust_solve[-1] + lcpbatch._native.time_lcp_vjp(M, q, z, c, 1)[0])
     out = {"problems": args.problems, "n": args.n, "device": s.device, "repeats": args.repeats,
-           "rust_solve_plus_vjp_s_median": statistics.median(rust), "rust_solve_plus_vjp_s_min": min(rust)}
+           "torch_threads": args.torch_threads,
+           "rust_solve_plus_vjp_s_median": statistics.median(rust), "rust_solve_plus_vjp_s_min": min(rust),
+           "rust_solve_s_median": statistics.median(rust_solve), "rust_solve_s_min": min(rust_solve)}
     for name, ts in times.items():
         out[f"{name}_s_median"] = statistics.median(ts)
         out[f"{name}_s_min"] = min(ts)
@@ -135,6 +145,10 @@ def grad_overhead(args: argparse.Namespace) -> None:
         net = [t - b for t, b in zip(ts, bases[name])]
         out[f"{name}_net_overhead_of_medians"] = statistics.median(net) / statistics.median(rust) - 1.0
         out[f"{name}_net_overhead_of_minimums"] = min(net) / min(rust) - 1.0
+        fw = forwards[name]
+        out[f"{name}_forward_s_median"] = statistics.median(fw)
+        out[f"{name}_forward_overhead_of_medians"] = statistics.median(fw) / statistics.median(rust_solve) - 1.0
+        out[f"{name}_forward_overhead_of_minimums"] = min(fw) / min(rust_solve) - 1.0
     print(json.dumps(out, indent=2))
     for name in times:
         print(f"overhead of lcpbatch.{name} solve + grad over the Rust solve + VJP ({args.problems} problems, "
@@ -144,6 +158,10 @@ def grad_overhead(args: argparse.Namespace) -> None:
               f"{100 * out[f'{name}_net_overhead_of_medians']:+.1f}%, minimums "
               f"{100 * out[f'{name}_net_overhead_of_minimums']:+.1f}% "
               f"({1e3 * out['rust_solve_plus_vjp_s_median']:.1f} ms Rust median of {args.repeats})")
+        print(f"overhead of the lcpbatch.{name} forward alone over the Rust solve: medians "
+              f"{100 * out[f'{name}_forward_overhead_of_medians']:+.1f}%, minimums "
+              f"{100 * out[f'{name}_forward_overhead_of_minimums']:+.1f}% "
+              f"({1e3 * out['rust_solve_s_median']:.1f} ms Rust median)")
 
 
 def main() -> None:
@@ -153,6 +171,7 @@ def main() -> None:
     ap.add_argument("--repeats", type=int, default=9)
     ap.add_argument("--backend", default="cpu")
     ap.add_argument("--solver", default="auto")
+    ap.add_argument("--threads", type=int, default=0, help="the solver's threads (0: every core)")
     ap.add_argument("--grad", action="store_true", help="time the adapters' solve + gradient")
     ap.add_argument("--torch-threads", type=int, default=0,
                     help="torch.set_num_threads for --grad (0: PyTorch's default)")
@@ -162,7 +181,7 @@ def main() -> None:
         return
 
     M, q = batch(args.problems, args.n)
-    s = lcpbatch.Solver(backend=args.backend, method=args.solver)
+    s = lcpbatch.Solver(backend=args.backend, method=args.solver, threads=args.threads)
     s.solve(M, q)  # warm-up: pipelines, thread pool, page faults
     python, rust, inside = [], [], []
     for _ in range(args.repeats):

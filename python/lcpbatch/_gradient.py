@@ -230,10 +230,12 @@ def backward(M: np.ndarray, q: np.ndarray, z: np.ndarray, dz: np.ndarray, dw: Op
     dwa = None if dw is None or not np.any(dw) else np.asarray(dw, dtype=np.float64).reshape(-1, n)
     # The extension's product straight on the float64 arrays (their shapes
     # are the batch's here): no checks or derivative names it does not need.
-    ok = np.isfinite(za).all(axis=1)
-    if ok.all():
+    # One sum finds whether the forward gave any NaN row (a sum that
+    # overflows goes row by row too, to the same numbers).
+    if np.isfinite(za.sum()):
         dm, dq, _ = _native.lcp_vjp(m, qa, za, dza, dwa, tolerance)
     else:
+        ok = np.isfinite(za).all(axis=1)
         dm = np.full(m.shape, np.nan)
         dq = np.full(qa.shape, np.nan)
         dm[ok], dq[ok], _ = _native.lcp_vjp(m[ok], qa[ok], za[ok], dza[ok], None if dwa is None else dwa[ok],

@@ -16,6 +16,8 @@ from __future__ import annotations
 
 from typing import Any, Optional, Tuple
 
+import numpy as np
+
 from . import _gradient
 
 torch = _gradient.framework("torch", "PyTorch",
@@ -42,13 +44,18 @@ class _LcpSolve(torch.autograd.Function):
         z_t, w_t = _tensor(z, q), _tensor(w, q)
         ctx.save_for_backward(M, q, z_t)
         ctx.vjp_tolerance = key[0]
+        # An output the loss does not use gets None in backward, not zeros.
+        ctx.set_materialize_grads(False)
         return z_t, w_t
 
     @staticmethod
     @torch.autograd.function.once_differentiable
-    def backward(ctx: Any, dz: "torch.Tensor", dw: "torch.Tensor") -> Tuple[Any, Any, None]:
+    def backward(ctx: Any, dz: Optional["torch.Tensor"],
+                 dw: Optional["torch.Tensor"]) -> Tuple[Any, Any, None]:
         M, q, z = ctx.saved_tensors
-        dm, dq = _gradient.backward(_numpy(M), _numpy(q), _numpy(z), _numpy(dz), _numpy(dw),
+        z_a = _numpy(z)
+        dz_a = np.zeros(z_a.shape, dtype=z_a.dtype) if dz is None else _numpy(dz)
+        dm, dq = _gradient.backward(_numpy(M), _numpy(q), z_a, dz_a, None if dw is None else _numpy(dw),
                                     ctx.vjp_tolerance)
         return _tensor(dm, M), _tensor(dq, q), None
 

@@ -16,8 +16,10 @@ use std::ops::Range;
 use lcpbatch::lcp::SolutionSet;
 use lcpbatch::report::IslandReport;
 use lcpbatch::Lcp;
-use numpy::ndarray::{Array2, ArrayView1, ArrayView2, ArrayView3, Axis};
-use numpy::{IntoPyArray, PyArray2, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3};
+use numpy::ndarray::{Array2, ArrayView1, ArrayView2, ArrayView3, Axis, Dimension};
+use numpy::{
+    IntoPyArray, PyArray2, PyReadonlyArray, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3,
+};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
@@ -107,6 +109,13 @@ pub(crate) fn all_finite(values: &[f64]) -> bool {
     values.iter().fold(true, |ok, v| ok & v.is_finite())
 }
 
+/// The entries of `a` in C order as one slice, where they lie so in memory
+/// (None otherwise). Not NumPy's `as_slice`, which also takes an array in
+/// Fortran order: its flat order is not the batch's.
+pub(crate) fn c_slice<'a, D: Dimension>(a: &'a PyReadonlyArray<'_, f64, D>) -> Option<&'a [f64]> {
+    a.as_array().to_slice()
+}
+
 /// A dense batch M (B, n, n), q (B, n) (shapes checked in Python) as n and
 /// its two flat slices, where both arrays are C-ordered, n > 0 and every
 /// entry is finite: the batches [`refill`] copies slice by slice; None for
@@ -116,8 +125,7 @@ pub(crate) fn dense_slices<'a>(
     q: &'a PyReadonlyArray2<f64>,
 ) -> Option<(usize, &'a [f64], &'a [f64])> {
     let n = q.as_array().shape()[1];
-    // ndarray's `to_slice`: C order only (NumPy's `as_slice` also takes Fortran order).
-    let (ms, qs) = (m.as_array().to_slice()?, q.as_array().to_slice()?);
+    let (ms, qs) = (c_slice(m)?, c_slice(q)?);
     (n > 0 && all_finite(ms) && all_finite(qs)).then_some((n, ms, qs))
 }
 

@@ -58,7 +58,8 @@ fn rows_of<'a>(
     Ok(if v.is_standard_layout() {
         CowArray::from(v)
     } else {
-        CowArray::from(v.to_owned())
+        // In C order: `to_owned` would keep a Fortran-ordered view's order.
+        CowArray::from(v.as_standard_layout().into_owned())
     })
 }
 
@@ -184,15 +185,14 @@ fn dense_into<'py>(
     if n == 0 || m.as_array().dim() != (b, n, n) || !same(z) || !same(dz) || !dw.is_none_or(same) {
         return Ok(None);
     }
-    let (Ok(ms), Ok(qs), Ok(zs), Ok(dzs)) =
-        (m.as_slice(), q.as_slice(), z.as_slice(), dz.as_slice())
-    else {
+    use batch::c_slice as c;
+    let (Some(ms), Some(qs), Some(zs), Some(dzs)) = (c(m), c(q), c(z), c(dz)) else {
         return Ok(None);
     };
-    let dws = match dw.map(|d| d.as_slice()) {
+    let dws = match dw.map(c) {
         None => None,
-        Some(Ok(s)) => Some(s),
-        Some(Err(_)) => return Ok(None),
+        Some(Some(s)) => Some(s),
+        Some(None) => return Ok(None),
     };
     if !batch::all_finite(ms) || !batch::all_finite(qs) {
         return Ok(None);

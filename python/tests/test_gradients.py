@@ -207,6 +207,23 @@ def test_an_island_without_solution_gives_nan_and_leaves_the_others():
     assert float(gq[1, 0]) == -0.5
 
 
+def test_memory_order_does_not_change_the_vjp():
+    """Each argument in Fortran order, or strided, gives the C-ordered
+    call's numbers (NumPy's flat view of a Fortran array is not the
+    batch's order: the in-place path must not take it)."""
+    rng = np.random.default_rng(77)
+    M, q = stable_batch(rng, 6, 3)
+    z = lcpbatch.solve(M, q, backend="cpu").z
+    dz, dw = rng.standard_normal(q.shape), rng.standard_normal(q.shape)
+    want = lcpbatch.lcp_vjp(M, q, z, dz, dw)
+    for k in range(5):
+        for change in (np.asfortranarray, lambda a: np.repeat(a, 2, axis=0)[::2]):
+            args = [M, q, z, dz, dw]
+            args[k] = change(args[k])
+            got = lcpbatch.lcp_vjp(*args)
+            assert np.array_equal(got.M, want.M) and np.array_equal(got.q, want.q), k
+
+
 def test_bad_input_names_the_argument_and_the_island():
     M = np.array([[[2.0, 1.0], [1.0, 2.0]]] * 3)
     q = np.array([[-5.0, -6.0]] * 3)
@@ -411,3 +428,28 @@ def test_torch_shapes_dtypes_and_docstring(torch):
         lcpbatch.torch.solve(M[:1], q)
     result = doctest.testmod(lcpbatch.torch, verbose=False)
     assert result.attempted > 0 and result.failed == 0, result
+
+
+def test_torch_one_output_and_any_memory_order_give_the_rust_vjp(torch):
+    """A loss of z alone or of w alone (backward gets None for the other),
+    with M and q as C-ordered or transposed (Fortran-ordered) tensors,
+    gives lcp_vjp's numbers."""
+    import lcpbatch.torch
+
+    rng = np.random.default_rng(404)
+    M, q = stable_batch(rng, 6, 3)
+    c = rng.standard_normal(q.shape)
+    z = lcpbatch.solve(M, q, backend="cpu").z
+    for uses_w in (False, True):
+        want = lcpbatch.lcp_vjp(M, q, z, np.zeros_like(c) if uses_w else c, c if uses_w else None)
+        for fortran in (False, True):
+            if fortran:
+                Mt = torch.tensor(np.ascontiguousarray(M.transpose(2, 1, 0)), requires_grad=True).permute(2, 1, 0)
+                qt = torch.tensor(np.ascontiguousarray(q.T), requires_grad=True).t()
+                assert not Mt.is_contiguous() and not qt.is_contiguous()
+            else:
+                Mt, qt = torch.tensor(M, requires_grad=True), torch.tensor(q, requires_grad=True)
+            zt, wt = lcpbatch.torch.solve(Mt, qt, backend="cpu")
+            assert np.array_equal(zt.detach().numpy(), z)
+            gM, gq = torch.autograd.grad((torch.tensor(c) * (wt if uses_w else zt)).sum(), (Mt, qt))
+            assert np.array_equal(gM.numpy(), want.M) and np.array_equal(gq.numpy(), want.q), (uses_w, fortran)
