@@ -298,7 +298,7 @@ class Solver:
         m, qa, _ = _inputs.dense(M, q, None)
         if len(m):
             _inputs.check_enumeration_size([m.shape[1]], self.settings["method"], self.settings["backend"])
-        z, w, status, fallback = self._native.solve_dense_zw(m, qa)
+        (z, w, status), fallback = self._native.solve_dense_zw(m, qa)
         self._warn_fallback(fallback)
         return z, w, status <= Status.MULTIPLE_SOLUTIONS
 

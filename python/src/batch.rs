@@ -18,7 +18,8 @@ use lcpbatch::report::IslandReport;
 use lcpbatch::Lcp;
 use numpy::ndarray::{Array2, ArrayView1, ArrayView2, ArrayView3, Axis, Dimension};
 use numpy::{
-    IntoPyArray, PyArray2, PyReadonlyArray, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3,
+    IntoPyArray, PyArray1, PyArray2, PyReadonlyArray, PyReadonlyArray1, PyReadonlyArray2,
+    PyReadonlyArray3,
 };
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -208,24 +209,39 @@ fn solution_set_name(s: &Option<SolutionSet>) -> Option<&'static str> {
     })
 }
 
-/// The z and w of a dense batch's islands as two (B, n) arrays (`dim`).
+/// The z and w of a dense batch's islands as two (B, n) arrays (`dim`),
+/// and their status codes (B,), in one pass over the islands.
 pub(crate) fn zw<'py>(
     py: Python<'py>,
     islands: &[IslandReport],
     dim: (usize, usize),
-) -> PyResult<(Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<f64>>)> {
+) -> PyResult<ZwArrays<'py>> {
+    let (mut z, mut w) = (
+        Vec::with_capacity(dim.0 * dim.1),
+        Vec::with_capacity(dim.0 * dim.1),
+    );
+    let mut status = Vec::with_capacity(islands.len());
+    for i in islands {
+        z.extend_from_slice(&i.solution.z);
+        w.extend_from_slice(&i.solution.w);
+        status.push(crate::report::status_code(i.status()));
+    }
     let err = |e: numpy::ndarray::ShapeError| PyValueError::new_err(e.to_string());
-    let flat = |f: &dyn Fn(&IslandReport) -> &[f64]| -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let mut v = Vec::with_capacity(dim.0 * dim.1);
-        for i in islands {
-            v.extend_from_slice(f(i));
-        }
-        Ok(Array2::from_shape_vec(dim, v)
-            .map_err(err)?
-            .into_pyarray(py))
-    };
-    Ok((flat(&|i| &i.solution.z)?, flat(&|i| &i.solution.w)?))
+    let z = Array2::from_shape_vec(dim, z)
+        .map_err(err)?
+        .into_pyarray(py);
+    let w = Array2::from_shape_vec(dim, w)
+        .map_err(err)?
+        .into_pyarray(py);
+    Ok((z, w, status.into_pyarray(py)))
 }
+
+/// What [`zw`] returns: z, w and the status codes.
+pub(crate) type ZwArrays<'py> = (
+    Bound<'py, PyArray2<f64>>,
+    Bound<'py, PyArray2<f64>>,
+    Bound<'py, PyArray1<i8>>,
+);
 
 /// Per-island results as flat arrays in `d`: `offsets` (I + 1), `z`, `w`,
 /// `basis` (flat, bool), and per island `status`, `path` (codes), `error`,

@@ -10,21 +10,11 @@ use std::sync::{Mutex, MutexGuard};
 use std::time::Instant;
 
 use lcpbatch::{FrictionProblem, Lcp, Report, Scene, Settings, Solver};
-use numpy::{
-    IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3,
-};
+use numpy::{IntoPyArray, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::{batch, friction, guard, report, scenes, settings::Args, to_py_err, worlds};
-
-/// What [`NativeSolver::solve_dense_zw`] returns: z, w, status codes, fallback.
-type ZwArrays<'py> = (
-    Bound<'py, PyArray2<f64>>,
-    Bound<'py, PyArray2<f64>>,
-    Bound<'py, PyArray1<i8>>,
-    Option<String>,
-);
 
 /// The library's solver behind a mutex (see the module docs).
 #[pyclass(module = "lcpbatch._native")]
@@ -246,7 +236,7 @@ impl NativeSolver {
         py: Python<'py>,
         m: PyReadonlyArray3<'py, f64>,
         q: PyReadonlyArray2<'py, f64>,
-    ) -> PyResult<ZwArrays<'py>> {
+    ) -> PyResult<(batch::ZwArrays<'py>, Option<String>)> {
         let (b, n) = q.as_array().dim();
         let (r, _) = match batch::dense_slices(&m, &q) {
             Some((n, ms, qs)) => {
@@ -264,13 +254,7 @@ impl NativeSolver {
                 self.run_chunks(py, ranges, |s, r| s.solve_lcps(&lcps[r]))?
             }
         };
-        let (z, w) = batch::zw(py, &r.islands, (b, n))?;
-        let status: Vec<i8> = r
-            .islands
-            .iter()
-            .map(|i| report::status_code(i.status()))
-            .collect();
-        Ok((z, w, status.into_pyarray(py), r.fallback))
+        Ok((batch::zw(py, &r.islands, (b, n))?, r.fallback))
     }
 
     /// A ragged batch: lists of (nᵢ, nᵢ) and (nᵢ,) arrays, ids a list or None.
