@@ -226,14 +226,23 @@ pub(crate) fn zw<'py>(
         w.extend_from_slice(&i.solution.w);
         status.push(crate::report::status_code(i.status()));
     }
+    Ok((
+        array2(py, dim, z)?,
+        array2(py, dim, w)?,
+        status.into_pyarray(py),
+    ))
+}
+
+/// `v` as a NumPy array of shape `dim` (`ValueError` if its length is not that).
+fn array2<T: numpy::Element>(
+    py: Python<'_>,
+    dim: (usize, usize),
+    v: Vec<T>,
+) -> PyResult<Bound<'_, PyArray2<T>>> {
     let err = |e: numpy::ndarray::ShapeError| PyValueError::new_err(e.to_string());
-    let z = Array2::from_shape_vec(dim, z)
+    Ok(Array2::from_shape_vec(dim, v)
         .map_err(err)?
-        .into_pyarray(py);
-    let w = Array2::from_shape_vec(dim, w)
-        .map_err(err)?
-        .into_pyarray(py);
-    Ok((z, w, status.into_pyarray(py)))
+        .into_pyarray(py))
 }
 
 /// What [`zw`] returns: z, w and the status codes.
@@ -329,13 +338,7 @@ fn all_bases<'py>(py: Python<'py>, islands: &[IslandReport]) -> PyResult<Vec<Bou
                 .flat_map(|b| (0..n).map(move |i| i < 32 && b.basis >> i & 1 == 1))
                 .collect();
             let shape = (found.len(), n);
-            let err = |e: numpy::ndarray::ShapeError| PyValueError::new_err(e.to_string());
-            let z = Array2::from_shape_vec(shape, z)
-                .map_err(err)?
-                .into_pyarray(py);
-            let basis = Array2::from_shape_vec(shape, basis)
-                .map_err(err)?
-                .into_pyarray(py);
+            let (z, basis) = (array2(py, shape, z)?, array2(py, shape, basis)?);
             PyTuple::new(py, [z.into_any(), basis.into_any()])
         })
         .collect()
