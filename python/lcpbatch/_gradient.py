@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import importlib
 import types
-from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -249,6 +249,41 @@ def backward(M: np.ndarray, q: np.ndarray, z: np.ndarray, dz: np.ndarray, dw: Op
 #: and restitution (..., C).
 SCENE_FLOATS = ("inv_mass", "inv_inertia", "position", "velocity", "angular_velocity",
                 "point", "normal", "restitution")
+
+
+def scene_inputs(bodies: Mapping[str, Any], contacts: Mapping[str, Any], caller: str,
+                 asarray: Callable[[Any], Any], zeros: Callable[[Tuple[int, ...]], Any],
+                 diag: Callable[[Any], Any]) -> Tuple[np.ndarray, np.ndarray, List[Any]]:
+    """The layout (``a``, ``b`` as int64 arrays) and the :data:`SCENE_FLOATS`
+    arrays of a batch of scenes given to an adapter's ``solve_scenes``
+    (``caller``), as the framework's arrays (``asarray``; ``zeros`` for the
+    velocities and restitution left out, ``diag`` to make (..., N, 3)
+    inverse inertias (..., N, 3, 3)); ``ValueError`` naming a key that is
+    unknown, missing or of the wrong shape."""
+    for name, d, known, needed in (
+            ("bodies", bodies, SCENE_FLOATS[:5], ("inv_mass", "inv_inertia", "position")),
+            ("contacts", contacts, ("a", "b") + SCENE_FLOATS[5:], ("a", "point", "normal"))):
+        unknown, missing = sorted(set(d) - set(known)), [k for k in needed if k not in d]
+        if unknown or missing:
+            raise ValueError(f"{name}: {f'unknown key(s) {unknown}' if unknown else f'missing key(s) {missing}'}; "
+                             f"{caller} takes {list(known)} (frictionless scenes)")
+    a = np.asarray(contacts["a"], dtype=np.int64)
+    b = np.asarray(contacts.get("b", np.full(a.shape, -1)), dtype=np.int64)
+    inv_mass = asarray(bodies["inv_mass"])
+    lead, count = tuple(inv_mass.shape[:-1]), inv_mass.shape[-1]
+    inertia = asarray(bodies["inv_inertia"])
+    if tuple(inertia.shape) == lead + (count, 3):
+        inertia = diag(inertia)
+    arrays = [inv_mass, inertia, bodies["position"], bodies.get("velocity", zeros(lead + (count, 3))),
+              bodies.get("angular_velocity", zeros(lead + (count, 3))), contacts["point"], contacts["normal"],
+              contacts.get("restitution", zeros(lead + a.shape))]
+    arrays = [asarray(x) for x in arrays]
+    for key, x, want in zip(SCENE_FLOATS, arrays,
+                            [(count,), (count, 3, 3)] + [(count, 3)] * 3 + [a.shape + (3,)] * 2 + [a.shape]):
+        if tuple(x.shape) != lead + want:
+            raise ValueError(f"{key}: expected shape {lead + want} (leading dimensions {lead} of inv_mass), "
+                             f"got {tuple(x.shape)}")
+    return a, b, arrays
 
 
 def _scene_dicts(arrays: Sequence[np.ndarray], a: np.ndarray,

@@ -97,31 +97,9 @@ def solve_scenes(bodies: Dict[str, Any], contacts: Dict[str, Any], *, vjp_tolera
     >>> float(bounce(0.5)), float(jax.grad(bounce)(0.5))   # v⁺ = e · 1
     (0.5, 1.0)
     """
-    for name, d, known, needed in (
-            ("bodies", bodies, _gradient.SCENE_FLOATS[:5], ("inv_mass", "inv_inertia", "position")),
-            ("contacts", contacts, ("a", "b") + _gradient.SCENE_FLOATS[5:], ("a", "point", "normal"))):
-        unknown, missing = sorted(set(d) - set(known)), [k for k in needed if k not in d]
-        if unknown or missing:
-            raise ValueError(f"{name}: {f'unknown key(s) {unknown}' if unknown else f'missing key(s) {missing}'}; "
-                             f"lcpbatch.jax.solve_scenes takes {list(known)} (frictionless scenes)")
-    a = np.asarray(contacts["a"], dtype=np.int64)
-    b = np.asarray(contacts.get("b", np.full(a.shape, -1)), dtype=np.int64)
-    inv_mass = jnp.asarray(bodies["inv_mass"])
-    lead, count = inv_mass.shape[:-1], inv_mass.shape[-1]
-    inertia = jnp.asarray(bodies["inv_inertia"])
-    if inertia.shape == lead + (count, 3):
-        inertia = inertia[..., None] * jnp.eye(3)
-    zeros = jnp.zeros(lead + (count, 3))
-    arrays = [inv_mass, inertia, bodies["position"], bodies.get("velocity", zeros),
-              bodies.get("angular_velocity", zeros), contacts["point"], contacts["normal"],
-              contacts.get("restitution", jnp.zeros(lead + a.shape))]
-    arrays = [jnp.asarray(x) for x in arrays]
+    a, b, arrays = _gradient.scene_inputs(bodies, contacts, "lcpbatch.jax.solve_scenes", jnp.asarray, jnp.zeros,
+                                          lambda d: d[..., None] * jnp.eye(3))
     dtype = jnp.result_type(*[x.dtype for x in arrays], jnp.float32)
-    for key, x, want in zip(_gradient.SCENE_FLOATS, arrays,
-                            [(count,), (count, 3, 3)] + [(count, 3)] * 3 + [a.shape + (3,)] * 2 + [a.shape]):
-        if x.shape != lead + want:
-            raise ValueError(f"{key}: expected shape {lead + want} (leading dimensions {lead} of inv_mass), "
-                             f"got {x.shape}")
     key = (_gradient.settings_of(vjp_tolerance, settings), a.tobytes(), b.tobytes())
     return _scene_function(key)(*[x.astype(dtype) for x in arrays])
 

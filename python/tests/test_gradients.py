@@ -453,3 +453,41 @@ def test_torch_one_output_and_any_memory_order_give_the_rust_vjp(torch):
             assert np.array_equal(zt.detach().numpy(), z)
             gM, gq = torch.autograd.grad((torch.tensor(c) * (wt if uses_w else zt)).sum(), (Mt, qt))
             assert np.array_equal(gM.numpy(), want.M) and np.array_equal(gq.numpy(), want.q), (uses_w, fortran)
+
+
+def test_torch_solve_scenes_is_scene_vjp_and_batches(torch):
+    """lcpbatch.torch.solve_scenes: torch.autograd.grad gives scene_vjp's
+    numbers (the diagonal inverse inertia's through its expansion), a
+    leading batch dimension solves each scene, and friction is refused."""
+    import lcpbatch.torch
+
+    bodies, contacts = stacked_balls()
+    rng = np.random.default_rng(9)
+    gz, gv, gw = rng.standard_normal(2), rng.standard_normal((2, 3)), rng.standard_normal((2, 3))
+    tb = {k: torch.tensor(v, requires_grad=True) for k, v in bodies.items()}
+    tc = dict(contacts, **{k: torch.tensor(contacts[k], requires_grad=True) for k in ("point", "normal", "restitution")})
+    imp, vel, ang = lcpbatch.torch.solve_scenes(tb, tc, backend="cpu")
+    loss = (torch.tensor(gz) * imp).sum() + (torch.tensor(gv) * vel).sum() + (torch.tensor(gw) * ang).sum()
+    keys = list(tb) + ["point", "normal", "restitution"]
+    got = torch.autograd.grad(loss, [tb[k] for k in keys[:5]] + [tc[k] for k in keys[5:]])
+    r = lcpbatch.solve_scenes(bodies, contacts, backend="cpu")
+    np.testing.assert_allclose(imp.detach().numpy(), r.impulses, rtol=1e-13)
+    g = lcpbatch.scene_vjp(bodies, contacts, r.impulses, gz, gv, gw)
+    want = {**g.bodies, **g.contacts}
+    want["inv_inertia"] = np.diagonal(want["inv_inertia"], axis1=-2, axis2=-1)   # given as its diagonal
+    for k, x in zip(keys, got):
+        np.testing.assert_allclose(x.numpy(), want[k], rtol=1e-13, atol=1e-13, err_msg=k)
+    # A batch of 3 scenes (a leading dimension on every float array).
+    es = torch.tensor([[0.0, 0.0], [0.3, 0.5], [1.0, 1.0]])
+    stack = {k: torch.tensor(np.stack([v] * 3)) for k, v in bodies.items()}
+    layout = dict(a=contacts["a"], b=contacts["b"], point=torch.tensor(np.stack([contacts["point"]] * 3)),
+                  normal=torch.tensor(np.stack([contacts["normal"]] * 3)), restitution=es)
+    imp = lcpbatch.torch.solve_scenes(stack, layout, backend="cpu")[0]
+    assert imp.shape == (3, 2) and imp.dtype == torch.float64
+    for k in range(3):
+        want = lcpbatch.solve_scenes(bodies, dict(contacts, restitution=es[k].numpy()), backend="cpu").impulses
+        np.testing.assert_allclose(imp[k].numpy(), want, rtol=1e-13)
+    with pytest.raises(ValueError, match=r"contacts: unknown key\(s\) \['mu'\]"):
+        lcpbatch.torch.solve_scenes(tb, dict(tc, mu=0.5))
+    with pytest.raises(ValueError, match=r"point: expected shape \(2, 3\)"):
+        lcpbatch.torch.solve_scenes(tb, dict(tc, point=torch.zeros(3, 3)))
