@@ -29,7 +29,10 @@ plus gradient of L = c·z with respect to M and q on the same batch:
 
 And each adapter's forward alone (the solve, with what a backward needs
 kept) against the Rust solve alone. ``--threads 1``: the solver on one
-thread (with ``--torch-threads 1``, the one-thread figures).
+thread (with ``--torch-threads 1``, the one-thread figures). Beside wall
+time, the process's CPU seconds of each call (medians; the Rust calls' as a
+call of two less a call of one): on one thread the same measure, and the
+one a loaded machine disturbs least.
 
 Each adapter is also timed on the same loss with the solve replaced by a
 framework op of the same shapes (z = q + M[..., 0]): the framework's own
@@ -123,19 +126,31 @@ def grad_overhead(args: argparse.Namespace) -> None:
     times = {name: [] for name in calls}
     bases = {name: [] for name in calls}
     forwards = {name: [] for name in calls}
-    rust, rust_solve = [], []
+    cpu = {(name, k): [] for name in calls for k in range(3)}
+    rust, rust_solve, rust_cpu = [], [], {"solve": [], "vjp": []}
+    rust_calls = {"solve": lambda k: s._native.time_solve_lcps(M, q, k),
+                  "vjp": lambda k: lcpbatch._native.time_lcp_vjp(M, q, z, c, k)}
     for _ in range(args.repeats):
         for name, fs in calls.items():
-            for f, into in zip(fs, (times, bases, forwards)):
-                t = time.perf_counter()
+            for k, (f, into) in enumerate(zip(fs, (times, bases, forwards))):
+                t, p = time.perf_counter(), time.process_time()
                 f()
                 into[name].append(time.perf_counter() - t)
+                cpu[name, k].append(time.process_time() - p)
         rust_solve.append(s._native.time_solve_lcps(M, q, 1)[0])
         rust.append(rust_solve[-1] + lcpbatch._native.time_lcp_vjp(M, q, z, c, 1)[0])
+        for key, f in rust_calls.items():  # CPU of one call alone: two less one (the building cancels)
+            p = time.process_time()
+            f(2)
+            p2 = time.process_time()
+            f(1)
+            rust_cpu[key].append((p2 - p) - (time.process_time() - p2))
     out = {"problems": args.problems, "n": args.n, "device": s.device, "repeats": args.repeats,
            "torch_threads": args.torch_threads,
            "rust_solve_plus_vjp_s_median": statistics.median(rust), "rust_solve_plus_vjp_s_min": min(rust),
-           "rust_solve_s_median": statistics.median(rust_solve), "rust_solve_s_min": min(rust_solve)}
+           "rust_solve_s_median": statistics.median(rust_solve), "rust_solve_s_min": min(rust_solve),
+           "rust_cpu_solve_s_median": statistics.median(rust_cpu["solve"]),
+           "rust_cpu_vjp_s_median": statistics.median(rust_cpu["vjp"])}
     for name, ts in times.items():
         out[f"{name}_s_median"] = statistics.median(ts)
         out[f"{name}_s_min"] = min(ts)
@@ -149,6 +164,13 @@ def grad_overhead(args: argparse.Namespace) -> None:
         out[f"{name}_forward_s_median"] = statistics.median(fw)
         out[f"{name}_forward_overhead_of_medians"] = statistics.median(fw) / statistics.median(rust_solve) - 1.0
         out[f"{name}_forward_overhead_of_minimums"] = min(fw) / min(rust_solve) - 1.0
+        # Process CPU seconds, medians: the figures that a loaded machine
+        # disturbs least (equal to wall time only on one thread: --threads 1
+        # and, for torch, --torch-threads 1).
+        med = {k: statistics.median(cpu[name, k]) for k in range(3)}
+        rs, rv = statistics.median(rust_cpu["solve"]), statistics.median(rust_cpu["vjp"])
+        out[f"{name}_cpu_net_overhead"] = (med[0] - med[1]) / (rs + rv) - 1.0
+        out[f"{name}_cpu_forward_overhead"] = med[2] / rs - 1.0
     print(json.dumps(out, indent=2))
     for name in times:
         print(f"overhead of lcpbatch.{name} solve + grad over the Rust solve + VJP ({args.problems} problems, "
@@ -162,6 +184,10 @@ def grad_overhead(args: argparse.Namespace) -> None:
               f"{100 * out[f'{name}_forward_overhead_of_medians']:+.1f}%, minimums "
               f"{100 * out[f'{name}_forward_overhead_of_minimums']:+.1f}% "
               f"({1e3 * out['rust_solve_s_median']:.1f} ms Rust median)")
+        print(f"process CPU seconds, medians, lcpbatch.{name}: solve + grad net "
+              f"{100 * out[f'{name}_cpu_net_overhead']:+.1f}% over the Rust solve + VJP, forward "
+              f"{100 * out[f'{name}_cpu_forward_overhead']:+.1f}% over the Rust solve "
+              f"({1e3 * out['rust_cpu_solve_s_median']:.1f} + {1e3 * out['rust_cpu_vjp_s_median']:.1f} ms)")
 
 
 def main() -> None:
