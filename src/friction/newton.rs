@@ -427,6 +427,9 @@ fn slope(jac: &[f64], phi: &[f64], delta: &[f64], pattern: &Pattern) -> f64 {
         .sum()
 }
 
+/// The longest window of a nonmonotone line search (`Workspace::window`).
+const WINDOW_MAX: usize = 16;
+
 /// Newton from `r` with `ws` prepared for `p` and `ws.u` = W r + q (see
 /// [`newton`]); `ws.u` is exact for the final r.
 pub(crate) fn newton_in(
@@ -448,6 +451,9 @@ pub(crate) fn newton_in(
     let mut merit = half_squared(&ws.phi);
     let mut error = ws.error(p, r);
     let mut steps = 0;
+    // The last merits, for a nonmonotone line search (`ws.window` > 1).
+    let mut recent = [merit; WINDOW_MAX];
+    let window = ws.window.clamp(1, WINDOW_MAX);
     while steps < max_steps && !(error <= tolerance) && merit > 0.0 {
         let Some(slope) = step(p, r, ws) else {
             break;
@@ -464,8 +470,10 @@ pub(crate) fn newton_in(
             }
             alart_curnier(p, &ws.trial, &ws.trial_u, &ws.rho, &mut ws.trial_phi, None);
             let m = half_squared(&ws.trial_phi);
-            // Armijo on ½‖Φ‖² (slope −2·merit for a Newton step).
-            if m <= merit + 1e-4 * t * slope {
+            // Armijo on ½‖Φ‖² (slope −2·merit for a Newton step), against
+            // the largest of the last `window` merits.
+            let reference = recent[..window].iter().fold(merit, |a, &b| a.max(b));
+            if m <= reference + 1e-4 * t * slope {
                 accepted = true;
                 break;
             }
@@ -491,6 +499,7 @@ pub(crate) fn newton_in(
             Some((&mut ws.jac, &ws.pattern)),
         );
         merit = half_squared(&ws.phi);
+        recent[steps as usize % window] = merit;
     }
     if !(error <= tolerance) {
         ws.refresh(p, r);

@@ -59,6 +59,10 @@ pub struct Workspace {
     /// The LU of ∂Φ failed on this island (W rank-deficient, as for a box on
     /// four coplanar corners): later steps go to Levenberg–Marquardt directly.
     pub(crate) singular: bool,
+    /// Newton's line search compares a trial's merit with the largest of
+    /// the last `window` merits (nonmonotone, Grippo–Lampariello–Lucidi);
+    /// 0 or 1: with the current one (monotone Armijo, the default).
+    pub(crate) window: usize,
 }
 
 thread_local! {

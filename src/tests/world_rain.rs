@@ -1,19 +1,23 @@
 //! A frictional rain (`rain:32`: spheres and boxes of mixed sizes and
 //! densities falling on the ground, μ = 0.4) through `Solver::step_worlds`
-//! on the CPU at the CLI's friction tolerance 1e-12. Some islands end
-//! unsolved at the iteration cap (single boxes on four corners and small
-//! piles whose W is singular: NSGS stalls at 1e-11–1e-9, Newton stalls,
-//! PROX needs 500–15,000 steps); each is repaired exactly, and
-//! penetration stays bounded.
+//! on the CPU at the CLI's friction tolerance 1e-12. A few islands end
+//! unsolved at the iteration cap of 1,000 (single boxes on four corners
+//! and small piles whose W is singular and whose solution is degenerate:
+//! NSGS stalls at 1e-11–1e-9, Newton stalls, PROX converges linearly and
+//! needs 1,200–75,000 inner steps); each is repaired exactly, and
+//! penetration stays bounded. Over 4 worlds × 1,000 steps: 107 unsolved
+//! before PROX's nonmonotone inner line search and `auto`'s PROX from the
+//! start, 24 after (of 97,907 islands).
 
 use crate::settings::{Backend, Method, Settings};
 use crate::world::generate::{standard_world, WorldKind};
 use crate::Solver;
 
-/// 4 worlds × 200 steps of 10 ms (the fall, the impacts, the settling):
-/// every unsolved island repaired exactly (normal impulses, checked), at
-/// most one island in 100 unsolved, and the deepest penetration below
-/// 10 cm.
+/// 4 worlds × 1,000 steps of 10 ms (the fall, the impacts, the settling,
+/// the rest): every unsolved island repaired exactly (normal impulses,
+/// checked), at most one island in 2,000 unsolved (24 of 97,907 measured;
+/// 107 before), the deepest penetration below 5 cm (3.6 cm at the
+/// landing) and below 1 mm after the first 200 steps (0.1 mm measured).
 #[test]
 fn a_frictional_rain_repairs_exactly_and_stays_bounded() {
     let mut worlds: Vec<_> = (0..4)
@@ -25,20 +29,26 @@ fn a_frictional_rain_repairs_exactly_and_stays_bounded() {
         ..Settings::new(Backend::Cpu, Method::Auto)
     })
     .unwrap();
-    let (mut unsolved, mut islands, mut deepest) = (0, 0, 0.0f64);
-    for step in 0..200 {
+    let (mut unsolved, mut islands) = (0, 0);
+    let (mut deepest, mut late) = (0.0f64, 0.0f64);
+    for step in 0..1000 {
         let r = solver.step_worlds(&mut worlds, 0.01).unwrap();
         assert_eq!(r.repairs.exact, r.unsolved, "step {step}: {:?}", r.repairs);
         unsolved += r.unsolved;
         islands += r.solve.friction.len();
-        deepest = r
+        let now = r
             .worlds
             .iter()
-            .fold(deepest, |d, w| d.max(w.max_penetration));
+            .fold(0.0f64, |d, w| d.max(w.max_penetration));
+        deepest = deepest.max(now);
+        if step >= 200 {
+            late = late.max(now);
+        }
     }
     assert!(
-        100 * unsolved <= islands,
+        2000 * unsolved <= islands,
         "{unsolved} of {islands} islands unsolved"
     );
-    assert!(deepest < 0.1, "deepest penetration {deepest} m");
+    assert!(deepest < 0.05, "deepest penetration {deepest} m");
+    assert!(late < 1e-3, "deepest penetration after step 200: {late} m");
 }
