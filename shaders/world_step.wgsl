@@ -83,7 +83,10 @@ struct StepParams {
     reactions_at: u32,
     memory_at: u32,
     memory_r_at: u32,
-    _pad: u32,
+    // Loop work per invocation and round of world_friction: a quarter of
+    // `budget` (llvmpipe runs 8 invocations in lockstep and counts their
+    // loops together: lanes in different phases add up).
+    friction_budget: u32,
     dt: Scalar,
     // The door's final check: lcp_error <= tolerance.
     tolerance: Scalar,

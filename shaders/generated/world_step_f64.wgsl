@@ -924,7 +924,10 @@ struct StepParams {
     reactions_at: u32,
     memory_at: u32,
     memory_r_at: u32,
-    _pad: u32,
+    // Loop work per invocation and round of world_friction: a quarter of
+    // `budget` (llvmpipe runs 8 invocations in lockstep and counts their
+    // loops together: lanes in different phases add up).
+    friction_budget: u32,
     dt: Scalar,
     // The door's final check: lcp_error <= tolerance.
     tolerance: Scalar,
@@ -1645,8 +1648,9 @@ fn finish_world(w: u32, flags0: u32, max_penetration: Scalar, max_error: Scalar)
 // which stays until the world is finished), one invocation per world.
 // `world_friction` is dispatched several times per step (rounds, after
 // world_solve, in the same submission); each invocation goes on where the
-// last round stopped and does at most `sp.budget` of loop work (llvmpipe
-// ends an invocation's loops after about 65,535 iterations in all). A world
+// last round stopped and does at most `sp.friction_budget` of loop work
+// (llvmpipe ends an invocation's loops after about 65,535 iterations in
+// all, counted over 8 invocations in lockstep). A world
 // not finished after the step's last round keeps BUDGET: the host steps it
 // on the CPU.
 //
@@ -2049,7 +2053,7 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
         let dim = 3u * n;
         if phase == F_ASSEMBLE {
             let cost = dim * dim * 3u + 64u * n;
-            if spent > count && spent + cost > sp.budget {
+            if spent > count && spent + cost > sp.friction_budget {
                 break;
             }
             spent += cost;
@@ -2076,7 +2080,7 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
         var done = false;
         var failed = false;
         loop {
-            if spent + cost > sp.budget {
+            if spent + cost > sp.friction_budget {
                 break;
             }
             spent += cost;
@@ -2095,7 +2099,7 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
             sweep(base, n);
             words[fs + 2u] = it + 1u;
         }
-        if !done || spent + cost > sp.budget {
+        if !done || spent + cost > sp.friction_budget {
             // The next round goes on from x (and judges it there).
             break;
         }

@@ -79,6 +79,20 @@ fn compare(worlds: Vec<World>, steps: usize, gpu: GpuSettings) -> (usize, usize)
 /// [`compare`] with these settings (`s.backend` Gpu; the CPU path's
 /// solver takes them with `Backend::Cpu`).
 pub(super) fn compare_with(worlds: Vec<World>, steps: usize, s: Settings) -> (usize, usize) {
+    let (device, host, _) = compare_within(worlds, steps, s, 1e-9);
+    (device, host)
+}
+
+/// [`compare_with`] with positions within `bound` (m) instead of 1e-9;
+/// above 1e-9 the energies and awake bodies are not compared (a
+/// displacement of `bound` moves the potential energy by m|g| `bound`).
+/// Returns also the largest distance seen.
+pub(super) fn compare_within(
+    worlds: Vec<World>,
+    steps: usize,
+    s: Settings,
+    bound: f64,
+) -> (usize, usize, f64) {
     let mut on_gpu = worlds.clone();
     let mut on_cpu = worlds;
     let cpu = Settings {
@@ -88,7 +102,8 @@ pub(super) fn compare_with(worlds: Vec<World>, steps: usize, s: Settings) -> (us
     };
     let mut g = Solver::new(s).unwrap();
     let mut c = Solver::new(cpu).unwrap();
-    let (mut device, mut host) = (0, 0);
+    let (mut device, mut host, mut largest) = (0, 0, 0.0f64);
+    let strict = bound <= 1e-9;
     for step in 0..steps {
         let rg = g.step_worlds(&mut on_gpu, 0.01).unwrap();
         let rc = c.step_worlds(&mut on_cpu, 0.01).unwrap();
@@ -96,10 +111,15 @@ pub(super) fn compare_with(worlds: Vec<World>, steps: usize, s: Settings) -> (us
         device += r.on_device;
         host += r.on_cpu;
         let d = max_distance(&on_gpu, &on_cpu);
-        assert!(d < 1e-9, "step {step}: positions differ by {d} m");
+        largest = largest.max(d);
+        assert!(d < bound, "step {step}: positions differ by {d} m");
         for (k, (a, b)) in rg.worlds.iter().zip(&rc.worlds).enumerate() {
-            let same = (a.contacts, a.islands, a.awake) == (b.contacts, b.islands, b.awake);
+            let same = (a.contacts, a.islands) == (b.contacts, b.islands);
             assert!(same, "step {step}, world {k}: {a:?} vs {b:?}");
+            if !strict {
+                continue;
+            }
+            assert_eq!(a.awake, b.awake, "step {step}, world {k}");
             let close = |x: f64, y: f64| (x - y).abs() <= 1e-9 * x.abs().max(1.0);
             let same = close(a.kinetic, b.kinetic) && close(a.potential, b.potential);
             assert!(same, "step {step}, world {k}: energies {a:?} vs {b:?}");
@@ -107,7 +127,7 @@ pub(super) fn compare_with(worlds: Vec<World>, steps: usize, s: Settings) -> (us
         }
         assert_eq!(rg.unsolved, rc.unsolved);
     }
-    (device, host)
+    (device, host, largest)
 }
 
 #[test]

@@ -32,14 +32,16 @@ fn settings(gpu: GpuSettings, method: FrictionMethod, warm_start: bool) -> Setti
     }
 }
 
+/// Stacks of 2, 3 and 4 boxes in one batch within 1e-9 m for 500 steps.
+/// Tolerance 1e-6: Gauss–Seidel sweeps stall short of 1e-8 on a cold
+/// 4-box stack within the 1,000 sweeps (on the CPU too: every step
+/// unsolved).
 #[test]
 fn resident_frictional_stacks_follow_the_cpu_path_for_500_steps() {
     let Some(gpu) = f64_gpu() else { return };
     let mut worlds = frictional(WorldKind::Stack, 4, 1);
     worlds.extend(frictional(WorldKind::Stack, 2, 1));
     worlds.extend(frictional(WorldKind::Stack, 3, 1));
-    // 1e-6: Gauss–Seidel sweeps stall short of 1e-8 on a cold 4-box
-    // stack within the 1,000 sweeps (on the CPU too: every step unsolved).
     let s = Settings {
         friction_tolerance: 1e-6,
         ..settings(gpu, FrictionMethod::Pgs, false)
@@ -101,33 +103,28 @@ fn a_frictional_world_that_misses_the_tolerance_is_stepped_on_the_cpu() {
     assert!(not_solved >= 90, "{not_solved} world-steps flagged");
 }
 
-/// Warm starts on the device: μ = 0.5 stacks (tolerance 1e-6, as above:
-/// an island left unsolved records no reactions, so at 1e-8 every step
-/// starts cold and stalls, on the CPU alike), and with a cap of 30 sweeps,
-/// where the first, cold steps are flagged and stepped on the CPU (their
-/// memory goes to the device) and the warm ones stay on the device: the
-/// CPU's trajectory within 1e-9 m either way.
+/// Warm starts on the device: μ = 0.5 stacks of 2, 3 and 4 in one batch
+/// (tolerance 1e-6, as above: an island left unsolved records no
+/// reactions, so at 1e-8 every step starts cold and stalls, on the CPU
+/// alike). The first steps' rounds are too few for the cold stacks: those
+/// worlds are stepped on the CPU, whose recorded reactions go to the
+/// device's memory, and the device goes on warm from there: the CPU's
+/// trajectory within 1e-9 m.
 #[test]
 fn warm_started_frictional_stacks_follow_the_cpu_path() {
     let Some(gpu) = f64_gpu() else { return };
-    let mut worlds = frictional(WorldKind::Stack, 4, 1);
-    worlds.extend(frictional(WorldKind::Stack, 2, 1));
+    let mut worlds = frictional(WorldKind::Stack, 2, 1);
+    worlds.extend(frictional(WorldKind::Stack, 3, 1));
+    worlds.extend(frictional(WorldKind::Stack, 4, 1));
     let s = Settings {
         friction_tolerance: 1e-6,
-        ..settings(gpu.clone(), FrictionMethod::Pgs, true)
+        ..settings(gpu, FrictionMethod::Pgs, true)
     };
-    let (device, host) = compare_with(worlds.clone(), 500, s.clone());
+    let (device, host) = compare_with(worlds, 500, s);
     println!("warm pgs stacks: {device} on the device, {host} on the CPU");
-    assert_eq!(device + host, 1000);
-    assert!(device >= 900, "{device} on the device");
-    let s = Settings {
-        friction_max_iterations: 30,
-        ..s
-    };
-    let (device, host) = compare_with(worlds, 200, s);
-    println!("warm pgs stacks, 30 sweeps: {device} on the device, {host} on the CPU");
+    assert_eq!(device + host, 1500);
     assert!(
-        device > 0 && host > 0,
+        device >= 1400 && host > 0,
         "{device} on the device, {host} on the CPU"
     );
 }
