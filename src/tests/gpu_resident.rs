@@ -87,7 +87,7 @@ pub(super) fn compare_with(worlds: Vec<World>, steps: usize, s: Settings) -> (us
 /// above 1e-9 the energies and awake bodies are not compared (a
 /// displacement of `bound` moves the potential energy by m|g| `bound`).
 /// Returns also the largest distance seen.
-pub(super) fn compare_within(
+fn compare_within(
     worlds: Vec<World>,
     steps: usize,
     s: Settings,
