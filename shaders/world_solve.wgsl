@@ -237,25 +237,28 @@ fn normalize4(q: vec4<Scalar>) -> vec4<Scalar> {
 // assembly, Lemke (lemke_pivots), the check, the impulses; then finish
 // (poses, sleep counters) and the world's figures. A flagged world (here
 // or in world_collide) keeps its state.
+// lin, ang: the velocities of world w's bodies in `scratch`.
+fn load_velocities(w: u32) {
+    let first = worlds[w].x;
+    for (var k = 0u; k < min(worlds[w].y, MAX_BODIES); k++) {
+        lin[k] = vec3_at_scratch(6u * (first + k));
+        ang[k] = vec3_at_scratch(6u * (first + k) + 3u);
+    }
+}
+
 @compute @workgroup_size(64)
 fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
     let w = gid.x;
     if w >= sp.count {
         return;
     }
-    let info = worlds[w];
-    let first = info.x;
-    let nb = min(info.y, MAX_BODIES);
+    let first = worlds[w].x;
     let out = sp.out_at + 4u * w;
     let count = words[out];
     let moving = words[out + 1u];
     var flags = words[out + 2u];
-    let dt = sp.dt;
     let slot0 = w * sp.slots;
-    for (var k = 0u; k < nb; k++) {
-        lin[k] = vec3_at_scratch(6u * (first + k));
-        ang[k] = vec3_at_scratch(6u * (first + k) + 3u);
-    }
+    load_velocities(w);
     // Islands.
     var parent: array<u32, 16>;
     var island_of_root: array<u32, 16>;
@@ -286,6 +289,29 @@ fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
         }
         words[key + 3u] = island_of_root[root];
         max_penetration = max(max_penetration, -scratch[sp.contacts_at + (slot0 + c) * CP + 6u]);
+    }
+    // A world with friction (a contact with μ > 0: Scene::has_friction)
+    // goes to world_friction, flagged BUDGET until that finishes it.
+    var frictional = false;
+    for (var c = 0u; c < count; c++) {
+        let key = sp.keys_at + 4u * (slot0 + c);
+        frictional = frictional || pair_friction(first + words[key], first + words[key + 1u]) > Scalar(0.0);
+    }
+    let fs = sp.fstate_at + 4u * w;
+    words[fs] = F_IDLE;
+    words[out + 3u] = islands;
+    if frictional && flags == 0u {
+        if sp.friction_at == 0u {
+            flags |= NOT_SOLVED;
+        } else {
+            words[fs] = F_ASSEMBLE;
+            words[fs + 1u] = 0u;
+            words[fs + 2u] = 0u;
+            words[out + 2u] = BUDGET;
+            records[w * REC + 2u] = max_penetration;
+            records[w * REC + 3u] = Scalar(0.0);
+            return;
+        }
     }
     // Per island: assembly, Lemke, check, impulses.
     var max_error = Scalar(0.0);
@@ -369,7 +395,20 @@ fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
             }
         }
     }
-    // finish: woken bodies awake, moving bodies integrated, sleep counters.
+    finish_world(w, flags, max_penetration, max_error);
+}
+
+// step.rs finish for world w after its impulses (velocities in lin, ang):
+// woken bodies awake, moving bodies integrated, sleep counters; then the
+// world's flags and figures. A flagged world keeps its state.
+fn finish_world(w: u32, flags0: u32, max_penetration: Scalar, max_error: Scalar) {
+    let info = worlds[w];
+    let first = info.x;
+    let nb = min(info.y, MAX_BODIES);
+    let out = sp.out_at + 4u * w;
+    let moving = words[out + 1u];
+    var flags = flags0;
+    let dt = sp.dt;
     let g = vec3_at_consts(w * WC);
     let sleep_linear = consts[w * WC + 4u];
     let sleep_angular = consts[w * WC + 5u];
@@ -440,7 +479,6 @@ fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
         }
     }
     words[out + 2u] = flags;
-    words[out + 3u] = islands;
     let r = w * REC;
     records[r] = kinetic;
     records[r + 1u] = potential;

@@ -1,18 +1,21 @@
-// One step of resident frictionless worlds (restitution 0), one invocation
-// per world, in two entry points dispatched in one submission:
-// `world_collide` (src/world/step.rs `prepare`: gravity, `world_contacts`)
-// and `world_solve` (src/islands.rs `find_islands`, src/cpu/assembly.rs
+// One step of resident worlds (restitution 0), one invocation per world,
+// in entry points dispatched in one submission:
+// `world_collide` (src/world/step.rs `prepare`: gravity, `world_contacts`),
+// `world_solve` (src/islands.rs `find_islands`, src/cpu/assembly.rs
 // `assemble_contact` / `assemble_island`, Lemke's path `lemke_pivots`, the
 // door's check `lcp_error` <= tolerance, `apply_impulses`, `finish` with
-// `integrate_rotation`, the world's figures). Two entry points rather than
-// one: llvmpipe ends every loop of an invocation after about 65,535
-// iterations in all, and each dispatch starts that count afresh.
+// `integrate_rotation`, the world's figures; worlds with friction are
+// handed over to) `world_friction` (shaders/world_friction.wgsl, in
+// rounds). Several entry points rather than one: llvmpipe ends every loop
+// of an invocation after about 65,535 iterations in all, and each dispatch
+// starts that count afresh.
 //
 // Composed (src/gpu/shaders/compose.rs) after shaders/collide.wgsl (its
 // functions, up to its stage's bindings) and shaders/lemke.wgsl (up to its
 // kernel's part), and before shaders/world_solve.wgsl (`world_solve`, a
-// file of its own by phase): collide_shapes and lemke_pivots are called as
-// they are.
+// file of its own by phase), shaders/world_friction.wgsl and the cone
+// projection of shaders/friction_common.wgsl: collide_shapes, lemke_pivots
+// and project_on_cone are called as they are.
 //
 // A world the kernel cannot step is flagged (`flags` below) and its state
 // left as it was: the host steps it on the CPU from there. Flags: contact
@@ -26,7 +29,7 @@
 // - consts: per world WC scalars (gravity 3, margin, sleep linear, sleep
 //   angular), then from params.bodies_at per body BC scalars (kind, size 3,
 //   static flag, inverse mass, body-frame inverse inertia 3, mass,
-//   bounding radius, 0);
+//   bounding radius, friction coefficient);
 // - state: per body BS scalars (position 3, orientation x, y, z, w,
 //   velocity 3, angular velocity 3);
 // - scratch: per body 6 scalars (v*, then v after the impulses), then per
@@ -67,13 +70,31 @@ struct StepParams {
     budget: u32,
     // Where the contact slots start in `scratch`.
     contacts_at: u32,
-    _pad: u32,
+    // The frictional phase (shaders/world_friction.wgsl): where its
+    // per-world regions start in `scratch` (0: none, no world has
+    // friction), its per-world words in `words`, the sweeps' cap, 1 for
+    // Gauss–Seidel (0: Jacobi), 1 for warm starts; this step's reactions
+    // and the warm-start memory (ids in `words`, reactions in `scratch`).
+    friction_at: u32,
+    fstate_at: u32,
+    max_iterations: u32,
+    gauss_seidel: u32,
+    warm_start: u32,
+    reactions_at: u32,
+    memory_at: u32,
+    memory_r_at: u32,
+    // Loop work per invocation and round of world_friction: a quarter of
+    // `budget` (llvmpipe runs 8 invocations in lockstep and counts their
+    // loops together: lanes in different phases add up).
+    friction_budget: u32,
     dt: Scalar,
     // The door's final check: lcp_error <= tolerance.
     tolerance: Scalar,
     // Lemke: pivot tolerance and pivot cap.
     pivot_tol: Scalar,
     max_pivots: Scalar,
+    // The frictional islands' check: cone error <= friction_tolerance.
+    friction_tolerance: Scalar,
 }
 
 @group(0) @binding(0) var<uniform> sp: StepParams;

@@ -240,6 +240,8 @@ pub(crate) struct Pipelines {
     /// [`Shader::WorldStep`]'s `world_collide` and `world_solve`, built on
     /// first use.
     world_step: OnceLock<[Stage; 2]>,
+    /// [`Shader::WorldStep`]'s `world_friction`, built on first use.
+    world_friction: OnceLock<Stage>,
 }
 
 /// The stage in `cache` (index n − 1), built on first use.
@@ -287,6 +289,7 @@ impl Pipelines {
                 friction_projected: (0..2 * FRICTION_MAX_K).map(|_| OnceLock::new()).collect(),
                 collide: OnceLock::new(),
                 world_step: OnceLock::new(),
+                world_friction: OnceLock::new(),
             })
         })?
     }
@@ -335,6 +338,21 @@ impl Pipelines {
         let stage = |entry| Stage::new(ctx, Shader::WorldStep, entry, WORLD_STEP_BINDINGS);
         let stages = [stage("world_collide")?, stage("world_solve")?];
         Ok(self.world_step.get_or_init(|| stages))
+    }
+
+    /// The resident world step's frictional stage `world_friction` (the
+    /// layout of [`Self::world_step`]'s), built on first use.
+    pub(crate) fn world_friction(&self, ctx: &GpuContext) -> Result<&Stage, Error> {
+        if let Some(s) = self.world_friction.get() {
+            return Ok(s);
+        }
+        let stage = Stage::new(
+            ctx,
+            Shader::WorldStep,
+            "world_friction",
+            WORLD_STEP_BINDINGS,
+        )?;
+        Ok(self.world_friction.get_or_init(|| stage))
     }
 
     /// The tree stage for islands of n contacts (1 ≤ n ≤ [`TREE_MAX_N`]),

@@ -3,9 +3,9 @@
 //! step ([`crate::gpu::resident`], `shaders/world_step.wgsl`).
 //!
 //! **Scope.** `Backend::Gpu` on an adapter with SHADER_F64 (precision f64),
-//! method Auto or Lemke without `all_solutions`, and every world
-//! frictionless (no pair with μ > 0), with restitution 0 and at most 16
-//! bodies. Any other batch takes the path of `world_path.rs` as a whole
+//! method Auto or Lemke without `all_solutions`, every world with
+//! restitution 0 and at most 16 bodies, and either frictionless (no pair
+//! with μ > 0) or with a friction method the kernel twins (below). Any other batch takes the path of `world_path.rs` as a whole
 //! (the resident state is dropped).
 //!
 //! **State between calls.** `step_worlds` takes the worlds by `&mut` and
@@ -25,21 +25,33 @@
 //! before the states came back leaves every world as it was: the device is
 //! dropped (a warning) and the CPU path steps the batch from there.
 //!
-//! No warm start in the kernel: Lemke starts from the empty basis every
-//! step.
+//! **Friction** (issue 23): with `friction_method` `pgs` or `jacobi` a
+//! batch with friction stays resident; `world_friction` is the twin of
+//! the CPU path's projected sweeps. Warm starts (one call kept, the
+//! default) live on the device: the last step's reactions by (a, b,
+//! feature); a flagged world's memory comes to the host before its CPU step
+//! and what that step recorded goes back. Other friction methods (the
+//! exact Coulomb default, `apgd`) take the other paths.
+//!
+//! No warm start for the frictionless islands: Lemke starts from the empty
+//! basis every step.
 
 use std::time::Instant;
 
 use super::gpu_path::guarded;
 use super::world_cpu::step_world_on_cpu;
+use super::world_friction::step_frictional_world_on_cpu;
 use super::world_path::{ResidentStep, StepReport, StepTimings, WorldStep, WorldStepReport};
 use super::world_repair::{repair_settings, Repairs};
 use super::Solver;
-use crate::gpu::resident::layout::{flags, out_of_scope};
-use crate::gpu::resident::{ResidentWorlds, WorldRecord};
+use crate::friction::FrictionMethod;
+use crate::gpu::resident::layout::{cpu_id, device_key, flags, may_have_friction, out_of_scope};
+use crate::gpu::resident::{MemoryEntry, ResidentFriction, ResidentWorlds, WorldRecord};
 use crate::gpu::{GpuContext, Precision};
-use crate::report::Device;
+use crate::report::{Device, FrictionIslandReport};
+use crate::scene::Scene;
 use crate::settings::{Backend, Method};
+use crate::warm::reaction_entries;
 use crate::warm::Warm;
 use crate::world::step::prepare;
 use crate::world::World;
@@ -88,6 +100,28 @@ impl Solver {
             && !s.all_solutions
             && !worlds.is_empty()
             && worlds.iter().all(|w| out_of_scope(w).is_none())
+            && (self.resident_friction().is_some() || !worlds.iter().any(may_have_friction))
+    }
+
+    /// The frictional phase's settings where the friction method has a
+    /// resident twin (`pgs`, `jacobi`: the sweeps of `friction/projected.rs`,
+    /// as the CPU path runs them) and warm starts (if on) keep one call's
+    /// reactions (`warm_start_calls` 1, the default); None otherwise (a
+    /// batch with friction then takes the other paths).
+    fn resident_friction(&self) -> Option<ResidentFriction> {
+        let s = &self.settings;
+        let gauss_seidel = match s.friction_method {
+            FrictionMethod::Pgs => true,
+            FrictionMethod::Jacobi => false,
+            _ => return None,
+        };
+        let p = s.friction().projected_settings();
+        (!s.warm_start || s.warm_start_calls == 1).then_some(ResidentFriction {
+            tolerance: p.f64_tolerance(),
+            max_iterations: p.max_iterations,
+            gauss_seidel,
+            warm_start: s.warm_start,
+        })
     }
 
     /// One step of `worlds` on the resident path, or None where the batch
@@ -118,6 +152,7 @@ impl Solver {
             }
         };
         let start = Instant::now();
+        let warm = self.settings.warm_start && self.resident_friction().is_some();
         let resident = self.resident.as_mut()?;
         let mut flagged = Vec::new();
         for (k, (w, r)) in worlds.iter_mut().zip(&records).enumerate() {
@@ -136,13 +171,37 @@ impl Solver {
         let mut repairs = Repairs::default();
         let mut trouble = None;
         for &k in &flagged {
+            // The world's warm-start memory is the device's (a step there
+            // recorded it last, or one here wrote it).
+            if warm && may_have_friction(&worlds[k]) {
+                match guarded(|| resident.worlds.read_memory(&ctx, k)) {
+                    Ok(m) => {
+                        let entries = m.into_iter().map(|(key, r)| (cpu_id(k, key), r));
+                        self.world_warm[k].reactions.record(entries);
+                    }
+                    Err(Error::Gpu(why)) => trouble = Some(why),
+                    Err(_) => {}
+                }
+            }
             let prepared = prepare(&worlds[k], k, dt);
             let mut item = WorldStep {
                 world: &mut worlds[k],
                 prepared,
                 warm: &mut self.world_warm[k],
             };
-            let s = step_world_on_cpu(&self.settings, k, &mut item, dt, &fix);
+            let frictional = item.prepared.scene.has_friction();
+            let s = match frictional {
+                true => step_frictional_world_on_cpu(&self.settings, k, &mut item, dt, &fix),
+                false => step_world_on_cpu(&self.settings, k, &mut item, dt, &fix),
+            };
+            // What the step recorded goes to the device's memory.
+            if warm && frictional {
+                let entries = recorded(&item.prepared.scene, &s.friction);
+                let written = guarded(|| resident.worlds.write_memory(&ctx, k, &entries));
+                if let Err(Error::Gpu(why)) = written {
+                    trouble = Some(why);
+                }
+            }
             reports[k] = s.world;
             repairs.merge(s.repairs);
             let written = guarded(|| resident.worlds.write_world(&ctx, k, &worlds[k]));
@@ -199,14 +258,27 @@ impl Solver {
             self.resident = None;
             let gpu = self.settings.gpu_solve();
             let tolerance = self.settings.tolerance;
+            let friction = self.resident_friction();
             self.resident = Some(Resident {
-                worlds: ResidentWorlds::new(ctx, worlds, tolerance, &gpu, test_slots())?,
+                worlds: ResidentWorlds::new(ctx, worlds, tolerance, &gpu, friction, test_slots())?,
                 held: Vec::new(),
             });
         }
         let r = self.resident.as_ref().expect("uploaded above");
         r.worlds.step(ctx, dt)
     }
+}
+
+/// The warm-start entries a frictional step on the CPU recorded (its
+/// solved islands' reactions by contact id), as the device keeps them.
+fn recorded(scene: &Scene, islands: &[FrictionIslandReport]) -> Vec<MemoryEntry> {
+    let solved = islands.iter().filter(|i| i.status().is_solution());
+    solved
+        .flat_map(|isl| {
+            let ids = isl.contacts.iter().map(|&c| scene.contacts[c].id);
+            reaction_entries(ids, &isl.solution.r).map(|(id, r)| (device_key(id), r))
+        })
+        .collect()
 }
 
 /// A world's figures from its record (the kernel stepped it).

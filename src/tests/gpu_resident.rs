@@ -18,7 +18,7 @@ use crate::world::World;
 use crate::{Backend, GpuSettings, Method, Settings, Solver};
 
 /// The GPU settings in f64, or None (skipped) without an f64 adapter.
-fn f64_gpu() -> Option<GpuSettings> {
+pub(super) fn f64_gpu() -> Option<GpuSettings> {
     let g = gpu_settings_or_skip()?;
     (g.precision == Precision::F64).then_some(g)
 }
@@ -33,17 +33,21 @@ fn f64_context() -> GpuContext {
 }
 
 fn solver(backend: Backend, gpu: GpuSettings) -> Solver {
-    Solver::new(Settings {
+    Solver::new(settings(backend, gpu)).unwrap()
+}
+
+/// Settings of both paths' solvers: warm starts, no warning lines.
+fn settings(backend: Backend, gpu: GpuSettings) -> Settings {
+    Settings {
         gpu,
         warm_start: true,
         warn_on_stderr: false,
         ..Settings::new(backend, Method::Auto)
-    })
-    .unwrap()
+    }
 }
 
 /// `kind:size` worlds, frictionless, restitution 0, seeds 0..count.
-fn frictionless(kind: WorldKind, size: usize, count: usize) -> Vec<World> {
+pub(super) fn frictionless(kind: WorldKind, size: usize, count: usize) -> Vec<World> {
     (0..count as u64)
         .map(|seed| {
             let mut w = standard_world(kind, size, seed);
@@ -57,7 +61,7 @@ fn frictionless(kind: WorldKind, size: usize, count: usize) -> Vec<World> {
 }
 
 /// Largest distance between the bodies' positions of two batches.
-fn max_distance(a: &[World], b: &[World]) -> f64 {
+pub(super) fn max_distance(a: &[World], b: &[World]) -> f64 {
     (a.iter().zip(b))
         .flat_map(|(wa, wb)| wa.bodies.iter().zip(&wb.bodies))
         .map(|(x, y)| (x.position() - y.position()).length())
@@ -69,11 +73,37 @@ fn max_distance(a: &[World], b: &[World]) -> f64 {
 /// bodies after every step, energies within 1e-9 relative. Returns the worlds
 /// the kernel stepped and those it left to the CPU, over all steps.
 fn compare(worlds: Vec<World>, steps: usize, gpu: GpuSettings) -> (usize, usize) {
+    compare_with(worlds, steps, settings(Backend::Gpu, gpu))
+}
+
+/// [`compare`] with these settings (`s.backend` Gpu; the CPU path's
+/// solver takes them with `Backend::Cpu`).
+pub(super) fn compare_with(worlds: Vec<World>, steps: usize, s: Settings) -> (usize, usize) {
+    let (device, host, _) = compare_within(worlds, steps, s, 1e-9);
+    (device, host)
+}
+
+/// [`compare_with`] with positions within `bound` (m) instead of 1e-9;
+/// above 1e-9 the energies and awake bodies are not compared (a
+/// displacement of `bound` moves the potential energy by m|g| `bound`).
+/// Returns also the largest distance seen.
+fn compare_within(
+    worlds: Vec<World>,
+    steps: usize,
+    s: Settings,
+    bound: f64,
+) -> (usize, usize, f64) {
     let mut on_gpu = worlds.clone();
     let mut on_cpu = worlds;
-    let mut g = solver(Backend::Gpu, gpu);
-    let mut c = solver(Backend::Cpu, GpuSettings::default());
-    let (mut device, mut host) = (0, 0);
+    let cpu = Settings {
+        backend: Backend::Cpu,
+        gpu: GpuSettings::default(),
+        ..s.clone()
+    };
+    let mut g = Solver::new(s).unwrap();
+    let mut c = Solver::new(cpu).unwrap();
+    let (mut device, mut host, mut largest) = (0, 0, 0.0f64);
+    let strict = bound <= 1e-9;
     for step in 0..steps {
         let rg = g.step_worlds(&mut on_gpu, 0.01).unwrap();
         let rc = c.step_worlds(&mut on_cpu, 0.01).unwrap();
@@ -81,10 +111,15 @@ fn compare(worlds: Vec<World>, steps: usize, gpu: GpuSettings) -> (usize, usize)
         device += r.on_device;
         host += r.on_cpu;
         let d = max_distance(&on_gpu, &on_cpu);
-        assert!(d < 1e-9, "step {step}: positions differ by {d} m");
+        largest = largest.max(d);
+        assert!(d < bound, "step {step}: positions differ by {d} m");
         for (k, (a, b)) in rg.worlds.iter().zip(&rc.worlds).enumerate() {
-            let same = (a.contacts, a.islands, a.awake) == (b.contacts, b.islands, b.awake);
+            let same = (a.contacts, a.islands) == (b.contacts, b.islands);
             assert!(same, "step {step}, world {k}: {a:?} vs {b:?}");
+            if !strict {
+                continue;
+            }
+            assert_eq!(a.awake, b.awake, "step {step}, world {k}");
             let close = |x: f64, y: f64| (x - y).abs() <= 1e-9 * x.abs().max(1.0);
             let same = close(a.kinetic, b.kinetic) && close(a.potential, b.potential);
             assert!(same, "step {step}, world {k}: energies {a:?} vs {b:?}");
@@ -92,7 +127,7 @@ fn compare(worlds: Vec<World>, steps: usize, gpu: GpuSettings) -> (usize, usize)
         }
         assert_eq!(rg.unsolved, rc.unsolved);
     }
-    (device, host)
+    (device, host, largest)
 }
 
 #[test]
@@ -131,7 +166,7 @@ fn states_come_back_bit_for_bit() {
     worlds[0].bodies[2].quiet_steps = 9;
     worlds[2].bodies[1].orientation = [0.1, 0.2, 0.3, 0.9];
     let settings = Settings::default();
-    let r = ResidentWorlds::new(&ctx, &worlds, 1e-8, &settings.gpu_solve(), None).unwrap();
+    let r = ResidentWorlds::new(&ctx, &worlds, 1e-8, &settings.gpu_solve(), None, None).unwrap();
     let mut back = worlds.clone();
     for b in back.iter_mut().flat_map(|w| w.bodies.iter_mut()) {
         b.position = [0.0; 3];
@@ -153,7 +188,7 @@ fn a_world_past_its_contact_slots_is_flagged_and_stepped_on_the_cpu() {
     // Stack of 2 at rest: 8 contacts; 6 slots cannot hold them.
     let worlds = frictionless(WorldKind::Stack, 2, 2);
     let settings = Settings::default();
-    let r = ResidentWorlds::new(&ctx, &worlds, 1e-8, &settings.gpu_solve(), Some(6)).unwrap();
+    let r = ResidentWorlds::new(&ctx, &worlds, 1e-8, &settings.gpu_solve(), None, Some(6)).unwrap();
     let (records, _) = r.step(&ctx, 0.01).unwrap();
     assert!(records.iter().all(|x| x.flags & flags::CONTACTS_FULL != 0));
     // The device kept the state of a flagged world.
@@ -189,7 +224,7 @@ fn resident_phase_times() {
     let ctx = f64_context();
     let worlds = frictionless(WorldKind::Stack, 4, 1000);
     let settings = Settings::default();
-    let r = ResidentWorlds::new(&ctx, &worlds, 1e-8, &settings.gpu_solve(), None).unwrap();
+    let r = ResidentWorlds::new(&ctx, &worlds, 1e-8, &settings.gpu_solve(), None, None).unwrap();
     r.time_phases(&ctx, 0.01).unwrap();
     for _ in 0..5 {
         let [c, s] = r.time_phases(&ctx, 0.01).unwrap();

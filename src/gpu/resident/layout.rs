@@ -12,7 +12,8 @@ pub const MAX_BODIES: usize = 16;
 /// angular.
 pub const WC: usize = 6;
 /// Scalars per body in `consts`: kind, size (3), static flag, inverse mass,
-/// body-frame inverse inertia (3), mass, bounding radius, 0.
+/// body-frame inverse inertia (3), mass, bounding radius, friction
+/// coefficient.
 pub const BC: usize = 12;
 /// Scalars per body in `state`: position (3), orientation `[x, y, z, w]`,
 /// velocity (3), angular velocity (3).
@@ -22,6 +23,10 @@ pub const CP: usize = 8;
 /// Scalars per world in `records`: kinetic, potential, max penetration,
 /// max error, awake, 3 pads.
 pub const REC: usize = 8;
+/// Scalars per world of the frictional phase's region in `scratch`
+/// (`shaders/world_friction.wgsl`): an island's rows (48 × 24), W (48 × 48),
+/// q, x, u and two temporaries (48 each), μ and η (16 each).
+pub const FR: usize = 3728;
 
 /// A world's flag bits (`words`, per world, third word).
 pub mod flags {
@@ -35,12 +40,13 @@ pub mod flags {
     pub const NOT_SOLVED: u32 = 4;
     /// A velocity or pose after the step is not finite.
     pub const NON_FINITE: u32 = 8;
-    /// The loop budget of an invocation was spent.
+    /// The loop budget of an invocation was spent (or the step's rounds of
+    /// the frictional phase ended before the world was finished).
     pub const BUDGET: u32 = 16;
 }
 
 /// Why a world cannot be stepped by the resident kernel at all (None: it
-/// can): friction, restitution or more bodies than [`MAX_BODIES`].
+/// can): restitution or more bodies than [`MAX_BODIES`].
 pub fn out_of_scope(w: &World) -> Option<&'static str> {
     if w.bodies.len() > MAX_BODIES {
         return Some("more than 16 bodies");
@@ -48,11 +54,30 @@ pub fn out_of_scope(w: &World) -> Option<&'static str> {
     if w.bodies.iter().any(|b| b.restitution != 0.0) {
         return Some("restitution");
     }
-    // μ = √(μ_a μ_b) > 0 needs two bodies with friction.
-    if w.bodies.iter().filter(|b| b.friction > 0.0).count() > 1 {
-        return Some("friction");
-    }
     None
+}
+
+/// Whether a contact of `w` may have friction: μ = √(μ_a μ_b) > 0 needs
+/// two bodies with friction.
+pub fn may_have_friction(w: &World) -> bool {
+    w.bodies.iter().filter(|b| b.friction > 0.0).count() > 1
+}
+
+/// The id the shader packs for a contact from its id on the CPU
+/// (`world::step::contact_id`: world, a, b, feature): (a << 16) | (b << 12)
+/// | feature, the world left out (each world's memory is its own). Bodies
+/// below [`MAX_BODIES`] keep a and b apart.
+pub fn device_key(id: u64) -> u32 {
+    let a = ((id >> 28) & 0xffff) as u32;
+    let b = ((id >> 12) & 0xffff) as u32;
+    (a << 16) | (b << 12) | (id & 0xfff) as u32
+}
+
+/// The CPU's contact id of world `world`'s contact with the shader's id
+/// `key`: the inverse of [`device_key`].
+pub fn cpu_id(world: usize, key: u32) -> u64 {
+    let (a, b) = (u64::from(key >> 16), u64::from((key >> 12) & 0xf));
+    ((world as u64 & 0xf_ffff) << 44) | (a << 28) | (b << 12) | u64::from(key & 0xfff)
 }
 
 /// Contact slots per world: 4 per pair that may touch (every pair type
@@ -83,7 +108,7 @@ pub fn pack_body_consts(b: &RigidBody, out: &mut Vec<f64>) {
     out.extend_from_slice(&props.inv_inertia.to_array());
     out.push(if b.fixed { 0.0 } else { b.mass() });
     out.push(if b.fixed { 0.0 } else { b.bounding_radius() });
-    out.push(0.0);
+    out.push(b.friction);
 }
 
 /// Appends world `w`'s constants (see [`WC`]).
@@ -153,6 +178,8 @@ mod tests {
                 "{name}"
             );
         }
+        let friction = include_str!("../../../shaders/world_friction.wgsl");
+        assert!(friction.contains(&format!("const FR: u32 = {FR}u;")));
         for (name, v) in [
             ("CONTACTS_FULL", flags::CONTACTS_FULL),
             ("ISLAND_TOO_LARGE", flags::ISLAND_TOO_LARGE),
@@ -164,6 +191,24 @@ mod tests {
                 src.contains(&format!("const {name}: u32 = {v}u;")),
                 "{name}"
             );
+        }
+    }
+
+    #[test]
+    fn contact_ids_go_to_the_device_and_back() {
+        use crate::world::collide::ContactPoint;
+        use crate::world::step::contact_id;
+        for (world, a, b, feature) in [(0, 1, 0, 0), (7, 15, 14, 0xfff), (1 << 19, 3, 9, 0x123)] {
+            let p = ContactPoint {
+                a,
+                b,
+                point: glam::DVec3::ZERO,
+                normal: glam::DVec3::Z,
+                gap: 0.0,
+                feature,
+            };
+            let id = contact_id(world, &p);
+            assert_eq!(cpu_id(world, device_key(id)), id);
         }
     }
 

@@ -1,7 +1,8 @@
-//! Worlds resident on the GPU (issue 23): a batch of frictionless worlds
-//! (restitution 0) uploaded once and stepped by `shaders/world_step.wgsl`,
-//! one submission per step (two dispatches: `world_collide`, `world_solve`)
-//! with nothing read back but the states and a small record per world.
+//! Worlds resident on the GPU (issue 23): a batch of worlds (restitution 0)
+//! uploaded once and stepped by `shaders/world_step.wgsl`, one submission
+//! per step (dispatches `world_collide`, `world_solve`, and where a world
+//! may have friction rounds of `world_friction`) with nothing read back but
+//! the states and a small record per world.
 //!
 //! [`ResidentWorlds::new`] packs the worlds ([`layout`]) and uploads them;
 //! [`ResidentWorlds::step`] runs one step and reads back the per-world
@@ -13,7 +14,10 @@
 //! contact slots per world (4 per pair that may touch: never reached by
 //! the narrow phase, which gives at most 4 points per pair), islands up to
 //! [`layout::ISLAND_MAX`] contacts; a world past either is flagged
-//! ([`layout::flags`]) and keeps its state on the device.
+//! ([`layout::flags`]) and keeps its state on the device. With friction,
+//! [`layout::FR`] more scalars per world (one island's rows, W, q and the
+//! sweeps' vectors) and 6 per contact slot (this step's reactions and the
+//! warm-start memory).
 
 pub mod layout;
 
@@ -23,9 +27,32 @@ use super::{GpuContext, GpuSolveSettings, Precision};
 use crate::world::World;
 use crate::Error;
 use layout::{
-    contact_slots, pack_body_consts, pack_body_state, pack_world_consts, unpack_body_state, BC, BS,
-    CP, REC, WC,
+    contact_slots, may_have_friction, pack_body_consts, pack_body_state, pack_world_consts,
+    unpack_body_state, BC, BS, CP, FR, REC, WC,
 };
+use std::cell::Cell;
+
+/// The frictional phase's settings: those of its CPU twin, the projected
+/// sweeps of `friction/projected.rs` (relaxation 1).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ResidentFriction {
+    /// An island is solved when its cone error is at most this.
+    pub tolerance: f64,
+    /// Sweeps before the iteration stops (not solved unless within the
+    /// tolerance).
+    pub max_iterations: u32,
+    /// Gauss–Seidel sweeps (`pgs`); false: Jacobi.
+    pub gauss_seidel: bool,
+    /// Start from the reactions of the last step (by contact id).
+    pub warm_start: bool,
+}
+
+/// Sweeps of a 16-contact island the first step's rounds of the frictional
+/// phase are sized for; a step that leaves worlds unfinished doubles the
+/// rounds of the next (up to [`MAX_ROUNDS`]).
+const FIRST_SWEEPS: u32 = 32;
+/// Most rounds of the frictional phase in one step.
+const MAX_ROUNDS: u32 = 1024;
 
 /// What one step gave for one world.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -67,6 +94,31 @@ impl States {
     }
 }
 
+/// Offsets of the frictional phase's parts (see `StepParams` in the
+/// shader), 0 where no world may have friction.
+#[derive(Clone, Copy, Debug, Default)]
+struct FrictionAt {
+    region: usize,
+    reactions: usize,
+    memory_r: usize,
+    memory: usize,
+}
+
+/// One entry of a world's warm-start memory on the device: the contact's
+/// id as the shader packs it ([`layout::device_key`]) and its reaction
+/// (r_n, r_t₁, r_t₂).
+pub type MemoryEntry = (u32, [f64; 3]);
+
+/// Loop work per invocation and round of `world_friction`: a quarter of
+/// the loop budget. llvmpipe runs 8 invocations in lockstep and counts
+/// their loop iterations together; worlds in different phases (assembly,
+/// sweeps, judgement) add up, and past about 65,535 the loops end early
+/// (seen: a 4-box stack batched with smaller ones left the CPU's
+/// trajectory by 3 µm, alone it kept it to 2e-15 m).
+fn friction_budget(budget: u32) -> u32 {
+    (budget / 4).max(1)
+}
+
 /// A batch of worlds on the device (see the module docs).
 pub struct ResidentWorlds {
     /// First body of each world, and the total at the end.
@@ -74,9 +126,14 @@ pub struct ResidentWorlds {
     slots: usize,
     budget: u32,
     tolerances: [f64; 3],
+    friction: Option<ResidentFriction>,
+    at: FrictionAt,
+    /// Rounds of `world_friction` per step (0: none).
+    rounds: Cell<u32>,
     precision: Precision,
     params: wgpu::Buffer,
     state: wgpu::Buffer,
+    scratch: wgpu::Buffer,
     words: wgpu::Buffer,
     records: wgpu::Buffer,
     bind: wgpu::BindGroup,
@@ -90,7 +147,9 @@ impl ResidentWorlds {
     /// Uploads `worlds` (each within [`layout::out_of_scope`]'s limits,
     /// checked by the caller) to `ctx`. `tolerance`: the door's final
     /// check; `gpu`: Lemke's pivot tolerance and cap, the loop budget;
-    /// `slots`: contact slots per world (None: [`contact_slots`]).
+    /// `friction`: the frictional phase's settings (None: a world with
+    /// friction is flagged NOT_SOLVED); `slots`: contact slots per world
+    /// (None: [`contact_slots`]).
     ///
     /// # Errors
     /// [`Error::Unsupported`] where a buffer would pass the device's
@@ -101,6 +160,7 @@ impl ResidentWorlds {
         worlds: &[World],
         tolerance: f64,
         gpu: &GpuSolveSettings,
+        friction: Option<ResidentFriction>,
         slots: Option<usize>,
     ) -> Result<Self, Error> {
         let slots = slots.unwrap_or_else(|| contact_slots(worlds)).max(1);
@@ -125,10 +185,21 @@ impl ResidentWorlds {
         }
         let n = worlds.len();
         let contacts_at = 6 * bodies;
-        let scratch_len = contacts_at + n * slots * CP;
+        let mut scratch_len = contacts_at + n * slots * CP;
         let out_at = 2 * bodies;
         let keys_at = out_at + 4 * n;
-        let words_len = keys_at + 4 * n * slots;
+        let fstate_at = keys_at + 4 * n * slots;
+        let mut words_len = fstate_at + 4 * n;
+        let friction = friction.filter(|_| worlds.iter().any(may_have_friction));
+        let mut at = FrictionAt::default();
+        if friction.is_some() {
+            at.reactions = scratch_len;
+            at.memory_r = at.reactions + 3 * n * slots;
+            at.region = at.memory_r + 3 * n * slots;
+            scratch_len = at.region + n * FR;
+            at.memory = words_len;
+            words_len += n * (slots + 1);
+        }
         let largest = [scratch_len * sb, words_len * 4, consts.len() * sb];
         let limit = ctx.limits().max_storage_buffer_binding_size;
         let groups = n.div_ceil(super::pipelines::WORKGROUP as usize);
@@ -138,6 +209,17 @@ impl ResidentWorlds {
             )));
         }
         let budget = round_budget(ctx, gpu);
+        // The first step's rounds: an island of min(16, slots) contacts
+        // assembled and FIRST_SWEEPS sweeps (the shader's costs).
+        let dim = 3 * slots.min(16) as u64;
+        let work = 3 * dim * dim + 1024 + u64::from(FIRST_SWEEPS) * (2 * dim * dim + 16 * dim + 64);
+        let rounds = match friction {
+            Some(_) => {
+                let per_round = u64::from(friction_budget(budget));
+                work.div_ceil(per_round).clamp(1, u64::from(MAX_ROUNDS)) as u32
+            }
+            None => 0,
+        };
         let lemke = &gpu.lemke;
         let stages = ctx.pipelines()?;
         ctx.scoped("uploading resident worlds", || -> Result<Self, Error> {
@@ -151,7 +233,7 @@ impl ResidentWorlds {
             let records = ctx.storage_zeroed("records", (n * REC * sb) as u64);
             let params = ctx.device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some("world step params"),
-                size: 64,
+                size: 128,
                 usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
                 mapped_at_creation: false,
             });
@@ -175,9 +257,13 @@ impl ResidentWorlds {
                 slots,
                 budget,
                 tolerances: [tolerance, lemke.pivot_tol, lemke.max_pivots as f64],
+                friction,
+                at,
+                rounds: Cell::new(rounds),
                 precision,
                 params,
                 state: state_buffer,
+                scratch: scratch.clone(),
                 words: words_buffer,
                 records,
                 bind,
@@ -196,20 +282,37 @@ impl ResidentWorlds {
     fn write_params(&self, ctx: &GpuContext, dt: f64) {
         let n = self.count();
         let bodies = self.first[n];
-        let ints: [u32; 8] = [
+        let keys_at = 2 * bodies + 4 * n;
+        let f = self.friction.unwrap_or(ResidentFriction {
+            tolerance: 0.0,
+            max_iterations: 0,
+            gauss_seidel: false,
+            warm_start: false,
+        });
+        let at = self.at;
+        let ints: [u32; 16] = [
             n as u32,
             self.slots as u32,
             (n * WC) as u32,
             (2 * bodies) as u32,
-            (2 * bodies + 4 * n) as u32,
+            keys_at as u32,
             self.budget,
             (6 * bodies) as u32,
-            0,
+            at.region as u32,
+            (keys_at + 4 * n * self.slots) as u32,
+            f.max_iterations,
+            u32::from(f.gauss_seidel),
+            u32::from(f.warm_start),
+            at.reactions as u32,
+            at.memory as u32,
+            at.memory_r as u32,
+            friction_budget(self.budget),
         ];
         let [tol, pivot, pivots] = self.tolerances;
         let mut bytes = bytemuck::cast_slice(&ints).to_vec();
-        bytes.extend(scalars_to_bytes(&[dt, tol, pivot, pivots], self.precision));
-        bytes.resize(64, 0);
+        let scalars = [dt, tol, pivot, pivots, f.tolerance];
+        bytes.extend(scalars_to_bytes(&scalars, self.precision));
+        bytes.resize(128, 0);
         ctx.queue.write_buffer(&self.params, 0, &bytes);
     }
 
@@ -224,11 +327,22 @@ impl ResidentWorlds {
         let sb = self.precision.bytes();
         let stages = ctx.pipelines()?;
         let [collide, solve] = stages.world_step(ctx)?;
+        let rounds = self.rounds.get();
+        let friction = match rounds {
+            0 => None,
+            _ => Some(stages.world_friction(ctx)?),
+        };
         let groups = (n as u32).div_ceil(super::pipelines::WORKGROUP);
-        ctx.scoped("resident world step", || {
+        let stepped = ctx.scoped("resident world step", || {
             self.write_params(ctx, dt);
             let mut encoder = ctx.encoder("resident world step");
             for stage in [collide, solve] {
+                self.record(&mut encoder, stage, groups);
+            }
+            for stage in friction
+                .iter()
+                .flat_map(|s| std::iter::repeat_n(*s, rounds as usize))
+            {
                 self.record(&mut encoder, stage, groups);
             }
             let words_back = ((2 * bodies + 4 * n) * 4) as u64;
@@ -242,7 +356,7 @@ impl ResidentWorlds {
                 let words: Vec<u32> = bytemuck::pod_collect_to_vec(v[1]);
                 let rec = scalars_from_bytes(v[2], self.precision);
                 let out = &words[2 * bodies..];
-                let records = (0..n)
+                let records: Vec<WorldRecord> = (0..n)
                     .map(|k| {
                         let r = &rec[k * REC..(k + 1) * REC];
                         WorldRecord {
@@ -261,7 +375,16 @@ impl ResidentWorlds {
                 sleep.truncate(2 * bodies);
                 (records, States { state, sleep })
             })
-        })?
+        })??;
+        // Worlds the rounds left unfinished: more rounds from the next step.
+        let unfinished = stepped
+            .0
+            .iter()
+            .any(|r| r.flags & layout::flags::BUDGET != 0);
+        if rounds > 0 && unfinished {
+            self.rounds.set((2 * rounds).min(MAX_ROUNDS));
+        }
+        Ok(stepped)
     }
 
     /// One step as [`Self::step`] does it, but each of its two dispatches
@@ -364,6 +487,71 @@ impl ResidentWorlds {
     /// First body of world `k` in the batch.
     pub fn first_body(&self, k: usize) -> usize {
         self.first[k]
+    }
+
+    /// World `k`'s warm-start memory on the device: per entry the id as
+    /// the shader packs it ([`layout::device_key`]) and the reaction
+    /// (empty where no world may have friction).
+    ///
+    /// # Errors
+    /// [`Error::Gpu`] for device trouble.
+    pub fn read_memory(&self, ctx: &GpuContext, k: usize) -> Result<Vec<MemoryEntry>, Error> {
+        if self.at.region == 0 {
+            return Ok(Vec::new());
+        }
+        let sb = self.precision.bytes();
+        let ids_at = ((self.at.memory + k * (self.slots + 1)) * 4) as u64;
+        let ids_len = ((self.slots + 1) * 4) as u64;
+        let r_at = (self.at.memory_r + 3 * k * self.slots) as u64 * sb;
+        let r_len = (3 * self.slots) as u64 * sb;
+        ctx.scoped("reading a warm-start memory", || {
+            // Copies of the two ranges: reads start at a buffer's first byte.
+            let ids = ctx.storage_zeroed("memory ids", ids_len);
+            let rs = ctx.storage_zeroed("memory reactions", r_len);
+            let mut encoder = ctx.encoder("read memory");
+            encoder.copy_buffer_to_buffer(&self.words, ids_at, &ids, 0, ids_len);
+            encoder.copy_buffer_to_buffer(&self.scratch, r_at, &rs, 0, r_len);
+            ctx.submit_and_map(encoder, &[(&ids, ids_len), (&rs, r_len)], |v| {
+                let words: Vec<u32> = bytemuck::pod_collect_to_vec(v[0]);
+                let r = scalars_from_bytes(v[1], self.precision);
+                let n = (words[0] as usize).min(self.slots);
+                (0..n)
+                    .map(|e| (words[1 + e], [r[3 * e], r[3 * e + 1], r[3 * e + 2]]))
+                    .collect()
+            })
+        })?
+    }
+
+    /// Replaces world `k`'s warm-start memory on the device with `entries`
+    /// (a step on the CPU recorded them; past the world's contact slots
+    /// they are cut: such a world overflows its slots and is stepped on the
+    /// CPU). Nothing where no world may have friction.
+    ///
+    /// # Errors
+    /// [`Error::Gpu`] for device trouble.
+    pub fn write_memory(
+        &self,
+        ctx: &GpuContext,
+        k: usize,
+        entries: &[MemoryEntry],
+    ) -> Result<(), Error> {
+        if self.at.region == 0 {
+            return Ok(());
+        }
+        let kept = &entries[..entries.len().min(self.slots)];
+        let mut ids = vec![kept.len() as u32];
+        ids.extend(kept.iter().map(|e| e.0));
+        let r: Vec<f64> = kept.iter().flat_map(|e| e.1).collect();
+        let ids_at = ((self.at.memory + k * (self.slots + 1)) * 4) as u64;
+        let r_at = (self.at.memory_r + 3 * k * self.slots) as u64 * self.precision.bytes();
+        ctx.scoped("writing a warm-start memory", || {
+            ctx.queue
+                .write_buffer(&self.words, ids_at, bytemuck::cast_slice(&ids));
+            if !r.is_empty() {
+                let bytes = scalars_to_bytes(&r, self.precision);
+                ctx.queue.write_buffer(&self.scratch, r_at, &bytes);
+            }
+        })
     }
 
     /// Replaces world `k`'s state on the device with `w`'s (the same

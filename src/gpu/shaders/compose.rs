@@ -33,6 +33,7 @@ const FRICTION_PROJECTED_GLOBAL_WGSL: &str =
 const COLLIDE_WGSL: &str = include_str!("../../../shaders/collide.wgsl");
 const WORLD_STEP_WGSL: &str = include_str!("../../../shaders/world_step.wgsl");
 const WORLD_SOLVE_WGSL: &str = include_str!("../../../shaders/world_solve.wgsl");
+const WORLD_FRICTION_WGSL: &str = include_str!("../../../shaders/world_friction.wgsl");
 
 /// Where `shaders/collide.wgsl`'s own stage starts: the world step kernel
 /// takes the functions above it.
@@ -40,6 +41,9 @@ const COLLIDE_STAGE: &str = "// Stage `collide_pairs`.";
 /// Where `shaders/lemke.wgsl`'s own kernel starts: the world step kernel
 /// takes the functions above it.
 const LEMKE_KERNEL: &str = "// LEMKE KERNEL";
+/// Where `shaders/friction_common.wgsl`'s cone projection starts (the last
+/// function of the file): the world step kernel takes it from there.
+const CONE_PROJECTION: &str = "// Siconos' fc3d projection on";
 
 /// Largest island (contacts) whose friction kernels come from
 /// `shaders/friction_projected.wgsl` (private copies, marked loops unrolled
@@ -80,9 +84,10 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
     let src = match shader {
         Shader::FrictionProjected(_) => format!("{FRICTION_COMMON_WGSL}\n{body}"),
         Shader::WorldStep => format!(
-            "{}\n{}\n{body}\n{WORLD_SOLVE_WGSL}",
+            "{}\n{}\n{body}\n{WORLD_SOLVE_WGSL}\n{WORLD_FRICTION_WGSL}\n{}",
             text_before(COLLIDE_WGSL, COLLIDE_STAGE)?,
-            text_before(LEMKE_WGSL, LEMKE_KERNEL)?
+            text_before(LEMKE_WGSL, LEMKE_KERNEL)?,
+            text_from(FRICTION_COMMON_WGSL, CONE_PROJECTION)?
         ),
         _ if standalone => body.to_string(),
         _ => format!("{ENUMERATION_BASIS_WGSL}\n{body}"),
@@ -142,7 +147,8 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         }
         _ if standalone => format!("shaders/{file}.wgsl"),
         Shader::WorldStep => "shaders/collide.wgsl (functions) + shaders/lemke.wgsl (functions) + \
-             shaders/world_step.wgsl + shaders/world_solve.wgsl"
+             shaders/world_step.wgsl + shaders/world_solve.wgsl + shaders/world_friction.wgsl + \
+             shaders/friction_common.wgsl (project_on_cone)"
             .to_string(),
         _ => format!("shaders/enumeration_basis.wgsl + shaders/{file}.wgsl"),
     };
@@ -183,6 +189,13 @@ fn with_scalar_limits(src: &str, precision: Precision) -> Result<String, Error> 
 fn text_before<'a>(src: &'a str, marker: &str) -> Result<&'a str, Error> {
     src.find(marker)
         .map(|at| &src[..at])
+        .ok_or_else(|| Error::Gpu(format!("shader has no `{marker}` line")))
+}
+
+/// The text of `src` from its line `marker` on.
+fn text_from<'a>(src: &'a str, marker: &str) -> Result<&'a str, Error> {
+    src.find(marker)
+        .map(|at| &src[at..])
         .ok_or_else(|| Error::Gpu(format!("shader has no `{marker}` line")))
 }
 

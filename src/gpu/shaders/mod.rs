@@ -64,8 +64,9 @@ pub(crate) enum Shader {
     /// `shaders/collide.wgsl` (entry point collide_pairs): the narrow phase.
     Collide,
     /// `shaders/world_step.wgsl` after the functions of `collide.wgsl` and
-    /// `lemke.wgsl` (entry points world_collide, world_solve): one step of
-    /// resident frictionless worlds.
+    /// `lemke.wgsl`, with `world_solve.wgsl`, `world_friction.wgsl` and
+    /// `friction_common.wgsl`'s cone projection (entry points world_collide,
+    /// world_solve, world_friction): one step of resident worlds.
     WorldStep,
 }
 

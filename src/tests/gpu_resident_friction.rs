@@ -1,0 +1,133 @@
+//! Worlds with friction resident on the GPU (`shaders/world_friction.wgsl`)
+//! against the CPU path with the same projected method (`pgs`, `jacobi`):
+//! in f64 on lavapipe, μ = 0.5 stacks of 2–4 boxes, a sliding box and
+//! boxes on inclines follow the CPU's trajectory within 1e-9 m over 500
+//! steps with the same contacts, islands and awake bodies every step; a
+//! world whose island misses the tolerance is flagged (NOT_SOLVED) and
+//! follows the CPU's trajectory. Skipped without an f64 adapter.
+
+use super::gpu_resident::{compare_with, f64_gpu, frictionless, max_distance};
+use crate::friction::FrictionMethod;
+use crate::world::generate::{incline, standard_world, WorldKind};
+use crate::world::World;
+use crate::{Backend, GpuSettings, Method, Settings, Solver};
+
+/// `kind:size` worlds with μ = 0.5 on every body, restitution 0.
+fn frictional(kind: WorldKind, size: usize, count: usize) -> Vec<World> {
+    let mut worlds = frictionless(kind, size, count);
+    for b in worlds.iter_mut().flat_map(|w| w.bodies.iter_mut()) {
+        b.friction = 0.5;
+    }
+    worlds
+}
+
+/// Both paths' settings: `method`, warm starts as given.
+fn settings(gpu: GpuSettings, method: FrictionMethod, warm_start: bool) -> Settings {
+    Settings {
+        gpu,
+        warm_start,
+        friction_method: method,
+        warn_on_stderr: false,
+        ..Settings::new(Backend::Gpu, Method::Auto)
+    }
+}
+
+/// Stacks of 2 and 3 boxes in one batch, and of 4 boxes in a batch of its
+/// own, within 1e-9 m for 500 steps. Tolerance 1e-6: Gauss–Seidel sweeps
+/// stall short of 1e-8 on a cold 4-box stack within the 1,000 sweeps (on
+/// the CPU too: every step unsolved). Not yet held (open): a 4-box stack
+/// batched with smaller stacks leaves the CPU's trajectory by about 3 µm
+/// from its first step on the device.
+#[test]
+fn resident_frictional_stacks_follow_the_cpu_path_for_500_steps() {
+    let Some(gpu) = f64_gpu() else { return };
+    let mut worlds = frictional(WorldKind::Stack, 2, 1);
+    worlds.extend(frictional(WorldKind::Stack, 3, 1));
+    let s = Settings {
+        friction_tolerance: 1e-6,
+        ..settings(gpu, FrictionMethod::Pgs, false)
+    };
+    let (device, host) = compare_with(worlds, 500, s.clone());
+    println!("pgs stacks of 2, 3: {device} on the device, {host} on the CPU");
+    assert_eq!(device + host, 1000);
+    assert!(device >= 950, "{device} on the device");
+    let (device, host) = compare_with(frictional(WorldKind::Stack, 4, 1), 500, s);
+    println!("pgs stack of 4: {device} on the device, {host} on the CPU");
+    assert!(device >= 450, "{device} on the device");
+}
+
+#[test]
+fn resident_sliding_and_inclined_boxes_follow_the_cpu_path() {
+    let Some(gpu) = f64_gpu() else { return };
+    let worlds = vec![
+        standard_world(WorldKind::Slide, 1, 0),
+        standard_world(WorldKind::Incline, 1, 0),
+        incline(30f64.to_radians(), 0.3, 0.5),
+    ];
+    for method in [FrictionMethod::Pgs, FrictionMethod::Jacobi] {
+        let s = settings(gpu.clone(), method, false);
+        let (device, host) = compare_with(worlds.clone(), 500, s);
+        println!("{method:?}: {device} world-steps on the device, {host} on the CPU");
+        assert_eq!(device + host, 1500);
+        assert!(device >= 1400, "{method:?}: {device} on the device");
+    }
+}
+
+/// Two sweeps cannot bring a cold 3-box stack within 1e-8: its island is
+/// not solved on either path; the resident path flags it, the CPU steps
+/// it (and repairs the island as the CPU path does), same trajectory.
+#[test]
+fn a_frictional_world_that_misses_the_tolerance_is_stepped_on_the_cpu() {
+    let Some(gpu) = f64_gpu() else { return };
+    let worlds = frictional(WorldKind::Stack, 3, 2);
+    let s = Settings {
+        friction_max_iterations: 2,
+        ..settings(gpu, FrictionMethod::Pgs, false)
+    };
+    let cpu = Settings {
+        backend: Backend::Cpu,
+        gpu: GpuSettings::default(),
+        ..s.clone()
+    };
+    let mut on_gpu = worlds.clone();
+    let mut on_cpu = worlds;
+    let mut g = Solver::new(s).unwrap();
+    let mut c = Solver::new(cpu).unwrap();
+    let mut not_solved = 0;
+    for step in 0..50 {
+        let rg = g.step_worlds(&mut on_gpu, 0.01).unwrap();
+        let rc = c.step_worlds(&mut on_cpu, 0.01).unwrap();
+        let f = rg.resident.expect("the resident path ran");
+        not_solved += f.not_solved;
+        assert_eq!(f.not_solved, f.on_cpu, "step {step}");
+        assert_eq!(rg.unsolved, rc.unsolved, "step {step}");
+        let d = max_distance(&on_gpu, &on_cpu);
+        assert!(d < 1e-9, "step {step}: {d} m");
+    }
+    assert!(not_solved >= 90, "{not_solved} world-steps flagged");
+}
+
+/// Warm starts on the device: μ = 0.5 stacks of 2 and 3 in one batch
+/// (tolerance 1e-6, as above: an island left unsolved records no
+/// reactions, so at 1e-8 every step starts cold and stalls, on the CPU
+/// alike). The first steps' rounds are too few for the cold stacks: those
+/// worlds are stepped on the CPU, whose recorded reactions go to the
+/// device's memory, and the device goes on warm from there: the CPU's
+/// trajectory within 1e-9 m.
+#[test]
+fn warm_started_frictional_stacks_follow_the_cpu_path() {
+    let Some(gpu) = f64_gpu() else { return };
+    let mut worlds = frictional(WorldKind::Stack, 2, 1);
+    worlds.extend(frictional(WorldKind::Stack, 3, 1));
+    let s = Settings {
+        friction_tolerance: 1e-6,
+        ..settings(gpu, FrictionMethod::Pgs, true)
+    };
+    let (device, host) = compare_with(worlds, 500, s);
+    println!("warm pgs stacks: {device} on the device, {host} on the CPU");
+    assert_eq!(device + host, 1000);
+    assert!(
+        device >= 950 && host > 0,
+        "{device} on the device, {host} on the CPU"
+    );
+}
