@@ -32,8 +32,9 @@ pub enum SolvePath {
     WarmStart,
     /// The basis of the approaching contacts was valid and M positive definite.
     PredictedBasis,
-    /// Enumerated on the GPU; its basis is valid in f64 (polished), or its
-    /// "no solution" was confirmed on the CPU.
+    /// Enumerated on the GPU; its z passed the f64 check (accepted) or its
+    /// basis is valid in f64 (polished), or its "no solution" was
+    /// confirmed on the CPU.
     EnumeratedGpu,
     /// Lemke's textbook path on the GPU (`shaders/lemke.wgsl`); its basis
     /// re-solved and checked in f64 as the CPU path checks Lemke's.
@@ -224,8 +225,8 @@ pub struct PathCounts {
     pub warm_start: usize,
     /// The basis of the approaching contacts was valid, M positive definite.
     pub predicted_basis: usize,
-    /// Enumerated on the GPU and confirmed in f64 (`polished` + GPU "no
-    /// solution" confirmed on the CPU).
+    /// Enumerated on the GPU and confirmed in f64 (`accepted` +
+    /// `polished` + GPU "no solution" confirmed on the CPU).
     pub enumerated_gpu: usize,
     /// Settled by the GPU's Lemke kernel, its basis checked in f64.
     pub lemke_gpu: usize,
@@ -237,7 +238,15 @@ pub struct PathCounts {
     pub pgs: usize,
     /// Failed their checks.
     pub invalid: usize,
-    /// GPU answers whose basis was valid in f64 (z, w recomputed in f64).
+    /// GPU answers kept as the GPU gave them: its z passed the f64 check
+    /// (w = M z + q recomputed in f64 from the input: signs,
+    /// complementarity, the error measure within tolerance); f64 shaders
+    /// on LCP batches only (a scene's islands, assembled on the device,
+    /// are re-solved on the CPU's assembly: polished).
+    pub accepted: usize,
+    /// GPU answers whose basis was re-solved in f64 and valid there (z, w
+    /// recomputed in f64): where the check of the GPU's own z failed, and
+    /// every answer of an f32 shader.
     pub polished: usize,
     /// GPU answers that failed in f64 and were re-solved on the CPU.
     pub repaired: usize,
@@ -267,7 +276,7 @@ impl PathCounts {
 
     /// (name, count) of every count, in a fixed order (the order of the
     /// report's text and of Python's `counts`).
-    pub fn named(&self) -> [(&'static str, usize); 13] {
+    pub fn named(&self) -> [(&'static str, usize); 14] {
         [
             ("separating", self.separating),
             ("single_contact", self.single_contact),
@@ -275,6 +284,7 @@ impl PathCounts {
             ("predicted_basis", self.predicted_basis),
             ("enumerated_gpu", self.enumerated_gpu),
             ("lemke_gpu", self.lemke_gpu),
+            ("accepted", self.accepted),
             ("polished", self.polished),
             ("repaired", self.repaired),
             ("enumerated_cpu", self.enumerated_cpu),
@@ -304,6 +314,7 @@ impl AddAssign for PathCounts {
         self.lemke += b.lemke;
         self.pgs += b.pgs;
         self.invalid += b.invalid;
+        self.accepted += b.accepted;
         self.polished += b.polished;
         self.repaired += b.repaired;
         self.cpu_fallback += b.cpu_fallback;
@@ -422,8 +433,8 @@ pub struct GpuFigures {
     /// `TIMESTAMP_QUERY`. Beside [`Self::kernel_seconds`] it says how much
     /// of the host's wait was the kernels themselves.
     pub kernel_device_seconds: Option<f64>,
-    /// Seconds of the f64 check of the GPU's answers (each answer re-solved
-    /// on its basis and checked, on every thread; wall time of the passes,
+    /// Seconds of the f64 check of the GPU's answers (each answer's z
+    /// checked, its basis re-solved where that fails, on every thread; wall time of the passes,
     /// [`Self::repair_seconds`] left out). LCP batches only.
     pub check_seconds: f64,
     /// Seconds of the repairs in the check: answers the check rejected,
@@ -503,7 +514,7 @@ pub struct Report {
 
 impl Report {
     /// Counts per path (from the islands' paths alone: the GPU's
-    /// `polished` and `cpu_fallback` start at 0), per status and the
+    /// `accepted`, `polished` and `cpu_fallback` start at 0), per status and the
     /// largest error from `islands`.
     pub(crate) fn new(
         islands: Vec<IslandReport>,

@@ -366,7 +366,9 @@ struct Block<'a> {
     pending: Vec<(usize, Option<bool>)>,
     /// Position of the first of them in the GPU's list.
     gpu_first: usize,
-    /// The answers kept (polished) and the largest error of the GPU's own z.
+    /// The answers kept as the GPU gave them (accepted), those re-solved on
+    /// their basis (polished), and the largest error of the GPU's own z.
+    accepted: usize,
     polished: usize,
     max_gpu_error: f64,
     /// Seconds this block's thread spent on repairs.
@@ -385,6 +387,7 @@ fn blocks(islands: &mut [IslandReport]) -> Vec<Block<'_>> {
             islands,
             pending: Vec::new(),
             gpu_first: 0,
+            accepted: 0,
             polished: 0,
             max_gpu_error: 0.0,
             repair: 0.0,
@@ -434,19 +437,28 @@ pub(crate) fn settle_on_cpu(
 /// The GPU's answer for `lcp` (its record and z) checked in f64 into `out`
 /// ([`check_answer`]; the Lemke kernel's, with `settings.method` Auto or
 /// Lemke, by [`check_lemke_answer`]), path and method set, the final check
-/// applied; the seconds of a repair added to `repair`.
+/// applied; the seconds of a repair added to `repair`. `exact_twin`: the
+/// shaders are the f64 twin; `accept`: and the GPU solved `lcp` itself (M
+/// and q uploaded as given, not assembled on the device), so that its z,
+/// where it passes the check, is kept as it is.
 /// Returns the verdict and the error of the GPU's own z.
 pub(crate) fn settle_from_gpu(
     lcp: &Lcp,
     (result, z): (&BasisResult, &[f64]),
     settings: &GpuSolveSettings,
-    exact_twin: bool,
+    (exact_twin, accept): (bool, bool),
     out: &mut IslandReport,
     repair: &mut f64,
 ) -> Result<(Verdict, f64), Error> {
+    let accept = exact_twin && accept;
     if settings.method != Method::Enumeration {
-        let (method, path, verdict, gpu_error) =
-            check_lemke_answer(lcp, (result, z), settings, &mut out.solution, repair);
+        let (method, path, verdict, gpu_error) = check_lemke_answer(
+            lcp,
+            (result, z),
+            (settings, accept),
+            &mut out.solution,
+            repair,
+        );
         (out.method, out.path) = (method, path);
         check_solution(&mut out.solution, settings.tolerance);
         return Ok((verdict, gpu_error));
@@ -456,7 +468,7 @@ pub(crate) fn settle_from_gpu(
         lcp,
         &verdict,
         &settings.enumeration,
-        exact_twin,
+        (exact_twin, accept, settings.tolerance),
         &mut out.solution,
         repair,
     )?;
@@ -539,7 +551,7 @@ pub fn solve_lcp_batch_warm(
         return Ok(batch_report(
             ctx,
             islands,
-            0,
+            [0, 0],
             figures,
             [prediction, 0.0, 0.0],
             threads,
@@ -563,8 +575,10 @@ pub fn solve_lcp_batch_warm(
                 let i = b.pending[k].0;
                 let answer = answers.of(b.gpu_first + k, lcps[i].n());
                 let island = &mut b.islands[i - b.first];
-                match settle_from_gpu(&lcps[i], answer, settings, exact, island, &mut b.repair) {
+                let twin = (exact, true);
+                match settle_from_gpu(&lcps[i], answer, settings, twin, island, &mut b.repair) {
                     Ok((verdict, gpu_error)) => {
+                        b.accepted += (verdict == Verdict::Accepted) as usize;
                         b.polished += (verdict == Verdict::Polished) as usize;
                         if gpu_error > b.max_gpu_error {
                             b.max_gpu_error = gpu_error;
@@ -582,12 +596,13 @@ pub fn solve_lcp_batch_warm(
         enumerate_known(ctx, &on_gpu, &definite, settings, &gpu_parts, &mut check)?;
     drop(check);
     let gpu = t.elapsed().as_secs_f64() - validation;
-    let mut polished = 0;
+    let mut kept = [0, 0];
     for b in &mut blocks {
         if let Some(e) = b.error.take() {
             return Err(e);
         }
-        polished += b.polished;
+        kept[0] += b.accepted;
+        kept[1] += b.polished;
         repair += b.repair;
         figures.max_gpu_error = figures.max_gpu_error.max(b.max_gpu_error);
     }
@@ -596,9 +611,7 @@ pub fn solve_lcp_batch_warm(
     figures.check_seconds = (validation - figures.repair_seconds).max(0.0);
     figures.report_seconds = reports;
     let seconds = [prediction, gpu, validation];
-    Ok(batch_report(
-        ctx, islands, polished, figures, seconds, threads,
-    ))
+    Ok(batch_report(ctx, islands, kept, figures, seconds, threads))
 }
 
 /// Islands of the GPU's list per part of a batch's pipeline, at the least:
@@ -633,13 +646,14 @@ fn gpu_range(blocks: &[Block<'_>], part: &std::ops::Range<usize>) -> std::ops::R
     blocks[part.start].gpu_first..last.gpu_first + last.pending.len()
 }
 
-/// The report of an LCP batch: `polished` GPU answers kept, the figures,
+/// The report of an LCP batch: `[accepted, polished]` GPU answers kept
+/// (as the GPU gave them, re-solved on their basis), the figures,
 /// and the seconds of prediction, the GPU and the f64 check; the islands
 /// counted on up to `threads` threads.
 fn batch_report(
     ctx: &GpuContext,
     islands: Vec<IslandReport>,
-    polished: usize,
+    [accepted, polished]: [usize; 2],
     mut figures: GpuFigures,
     [prediction, gpu, validation]: [f64; 3],
     threads: usize,
@@ -647,6 +661,7 @@ fn batch_report(
     let t = Instant::now();
     let mut r = Report::new_on(islands, Vec::new(), Device::of(ctx), String::new(), threads);
     figures.report_seconds += t.elapsed().as_secs_f64();
+    r.counts.accepted = accepted;
     r.counts.polished = polished;
     r.counts.cpu_fallback = r.counts.lemke;
     r.timings.prediction = prediction;

@@ -332,7 +332,7 @@ pub fn solve_scenes_warm(
         in_alone[s] = true;
     }
     let mut figures = GpuFigures::default();
-    let mut polished = 0;
+    let (mut accepted, mut polished) = (0, 0);
 
     // Prediction (and Lemke above n = 16) on the CPU's f64 assembly; each
     // island left to the GPU gets its route through the tree kernel (from
@@ -403,7 +403,9 @@ pub fn solve_scenes_warm(
                 &built[s].lcps[k],
                 answer,
                 settings,
-                exact,
+                // The GPU solved its own assembly: its basis re-solved on
+                // the CPU's (the CPU's bytes), not its z kept.
+                (exact, false),
                 &mut island,
                 &mut repair,
             )
@@ -416,6 +418,7 @@ pub fn solve_scenes_warm(
             let (s, k) = c.enum_keys[j];
             let mine = &mut islands[first[s] + k];
             (mine.method, mine.path, mine.solution) = (island.method, island.path, island.solution);
+            accepted += (verdict == Verdict::Accepted) as usize;
             polished += (verdict == Verdict::Polished) as usize;
             if gpu_error > figures.max_gpu_error {
                 figures.max_gpu_error = gpu_error;
@@ -454,6 +457,7 @@ pub fn solve_scenes_warm(
             (mine.method, mine.path, mine.solution) = (isl.method, isl.path, isl.solution);
         }
         figures += r.gpu.unwrap_or_default();
+        accepted += r.counts.accepted;
         polished += r.counts.polished;
         gpu += r.timings.gpu;
         validation += r.timings.validation;
@@ -485,6 +489,7 @@ pub fn solve_scenes_warm(
     figures.max_velocity_deviation = deviations.into_iter().fold(0.0, f64::max);
     let impulses = t.elapsed().as_secs_f64();
     let mut r = Report::new(islands, out_scenes, Device::of(ctx), String::new());
+    r.counts.accepted = accepted;
     r.counts.polished = polished;
     r.counts.cpu_fallback = r.counts.lemke;
     r.timings.prediction = prediction;

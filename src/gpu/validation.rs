@@ -1,8 +1,16 @@
 //! Validation of every GPU answer on the CPU, in f64.
 //!
-//! The GPU's enumeration names a basis (or says that none is valid). The CPU
-//! then
-//! - solves that basis again in f64 ("polish",
+//! The check, not a second solve: where the shader ran in f64 (the exact
+//! twin: the CPU's tolerances) and named a basis with its z, the CPU
+//! recomputes w = M z + q in f64 from the input and checks the GPU's z
+//! ([`accept_gpu_z`]): every entry finite, z ≥ 0 and 0 outside the basis,
+//! w ≥ 0 within the feasibility tolerance (relative, as the enumeration
+//! measures it: −w_i ≤ tol·(|q_i| + Σ_j |M_ij z_j|)), and the error measure
+//! (complementarity included) at most [`ACCEPT_ERROR`] and the door's
+//! tolerance. Such an answer is kept as the GPU gave it ("accepted": z the
+//! GPU's bytes, w and the residuals the CPU's f64), O(n²), nothing
+//! allocated. Otherwise, and for every answer of an f32 shader, the CPU
+//! - solves that basis again in f64 ("polished",
 //!   [`crate::cpu::enumeration::feasible_basis_into`]: one k×k solve and
 //!   one n×n product, O(k³ + n²), the very function the CPU path settles
 //!   its islands with, so the bytes are the CPU's) and keeps it when it is
@@ -17,21 +25,24 @@
 //!   the status equals the CPU's.
 //!
 //! The Lemke kernel (methods Auto and Lemke) names the basis its textbook
-//! path ended on; [`check_lemke_answer`] re-solves and checks it with the
-//! CPU path's own test of Lemke's textbook basis
-//! ([`crate::solver::textbook_checked`]), and where that fails, or the
-//! kernel gave up, solves the island by the CPU path's code for the rest.
+//! path ended on; [`check_lemke_answer`] accepts its f64 z by the same
+//! check, else re-solves and checks the basis with the CPU path's own test
+//! of Lemke's textbook basis ([`crate::solver::textbook_checked`]), and
+//! where that fails, or the kernel gave up, solves the island by the CPU
+//! path's code for the rest.
 //!
 //! With the same visit order and rule (fewest basic z, then the smallest
 //! mask) as the CPU, an island's chosen basis is the CPU's whenever the GPU
 //! accepted every basis f64 accepts before it; the f64 shaders use the CPU's
-//! tolerances for that reason.
+//! tolerances for that reason. An accepted z differs from the CPU's
+//! re-solve of the same basis by rounding only (the error bound keeps it
+//! within about 1e-12 of it, relative).
 
 use crate::cpu::enumeration::{enumerate, feasible_basis_into, EnumerationSettings};
 use crate::cpu::lemke::lemke;
 use crate::gpu::batch::GpuSolveSettings;
 use crate::gpu::layout::{BasisResult, FOUND, RELAXED};
-use crate::lcp::{lcp_error, Counters, Lcp, LcpSolution, Status};
+use crate::lcp::{Counters, Lcp, LcpSolution, Residuals, Status};
 use crate::linalg::solve_in_place;
 use crate::report::SolvePath;
 use crate::settings::Method;
@@ -114,10 +125,89 @@ pub fn basis_infeasibility(
     Some((worst, z.into_iter().map(|v| v.max(0.0)).collect()))
 }
 
+/// The largest error measure at which the GPU's own z is accepted (the
+/// door's tolerance caps it too): the CPU path's bound for Lemke's
+/// textbook basis (`TEXTBOOK_ACCEPT` in `src/solver/cpu_path.rs`), which
+/// keeps an accepted z within rounding of its basis's f64 re-solve.
+pub const ACCEPT_ERROR: f64 = 1e-12;
+
+/// The GPU's `z` for basis `mask` written into `out` as an answer would
+/// be: z as given, w = M z + q and the residuals recomputed in f64 from
+/// the input. Returns the error measure of the GPU's z (NaN where it has
+/// not n entries: then `out` is untouched) and whether z is well formed
+/// and feasible: every z_i and w_i finite, z ≥ 0 and 0 outside the basis,
+/// and −w_i ≤ `feasibility_tol` · (|q_i| + Σ_j |M_ij z_j|) (the
+/// enumeration's relative measure). O(n²), nothing allocated for n ≤ 8
+/// (`out`'s own z and w are the scratch).
+pub(crate) fn gpu_answer_into(
+    lcp: &Lcp,
+    mask: u32,
+    z: &[f64],
+    feasibility_tol: f64,
+    out: &mut LcpSolution,
+) -> (f64, bool) {
+    let n = lcp.n();
+    if z.len() != n {
+        return (f64::NAN, false);
+    }
+    out.z.reset(0.0, n);
+    out.z.copy_from_slice(z);
+    out.w.reset(0.0, n);
+    lcp.w_into(&out.z, &mut out.w);
+    out.residuals = Residuals::of(&out.z, &out.w, &lcp.q);
+    let feasible = mask >> n == 0
+        && (0..n).all(|i| {
+            let (zi, wi, basic) = (out.z[i], out.w[i], mask >> i & 1 == 1);
+            let row = &lcp.m[i * n..(i + 1) * n];
+            zi.is_finite()
+                && wi.is_finite()
+                && zi >= 0.0
+                && (basic || zi == 0.0)
+                && (basic
+                    || wi >= 0.0
+                    || -wi
+                        <= feasibility_tol
+                            * row
+                                .iter()
+                                .zip(z)
+                                .fold(lcp.q[i].abs(), |s, (a, b)| s + (a * b).abs()))
+        });
+    (out.residuals.error, feasible)
+}
+
+/// The GPU's own `z` for basis `mask` checked in f64, not solved again
+/// ([`gpu_answer_into`], then the error measure at most [`ACCEPT_ERROR`]
+/// and `tolerance`): where it passes and `exact_twin` (an f64 shader with
+/// the CPU's tolerances), `out` is that answer (status Solved, basis
+/// `mask`, `counters`) and the first value is true. The second is the
+/// error of the GPU's z (NaN where it gave none), measured in every case.
+pub(crate) fn accept_gpu_z(
+    lcp: &Lcp,
+    (mask, z): (u32, &[f64]),
+    (exact_twin, feasibility_tol, tolerance): (bool, f64, f64),
+    counters: Counters,
+    out: &mut LcpSolution,
+) -> (bool, f64) {
+    let (error, feasible) = gpu_answer_into(lcp, mask, z, feasibility_tol, out);
+    let accepted = exact_twin && feasible && error <= ACCEPT_ERROR.min(tolerance);
+    if accepted {
+        out.status = Status::Solved;
+        out.counters = counters;
+        out.basis = Some(mask);
+        out.all_bases.clear();
+        out.solution_set = None;
+    }
+    (accepted, error)
+}
+
 /// What validation decided.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Verdict {
-    /// The GPU's basis is valid in f64; z, w recomputed in f64.
+    /// The GPU's z passed the f64 check and is the answer as it gave it
+    /// (w and the residuals recomputed in f64): [`accept_gpu_z`].
+    Accepted,
+    /// The GPU's basis is valid in f64; z, w recomputed in f64 (the basis
+    /// re-solved).
     Polished,
     /// The GPU found no valid basis and the CPU agrees.
     ConfirmedNoSolution,
@@ -126,12 +216,16 @@ pub enum Verdict {
 }
 
 /// Checks the GPU's answer for `lcp` in f64 and writes the island's answer
-/// into `out` (see the module docs). A relaxed basis (no valid one exists)
-/// is kept when `accept_relaxed` (the shaders are the exact f64 twin, so it
-/// is the CPU's choice) and it is within the relaxed tolerance in f64;
-/// otherwise the CPU decides. Returns the verdict and the error measure of
-/// the GPU's own z against the f64 problem (NaN when the GPU gave none).
-/// The seconds of a repair (the CPU enumeration) are added to `repair`.
+/// into `out` (see the module docs): its own z accepted where `accept`
+/// (an f64 shader with the CPU's tolerances that solved `lcp` itself) and
+/// it passes [`accept_gpu_z`] (`tolerance`: the door's), else its basis
+/// re-solved.
+/// A relaxed basis (no valid one exists) is kept when `exact_twin` (the
+/// shaders are the exact f64 twin, so it is the CPU's choice) and it is
+/// within the relaxed tolerance in f64; otherwise the CPU decides. Returns
+/// the verdict and the error measure of the GPU's own z against the f64
+/// problem (NaN when the GPU gave none). The seconds of a repair (the CPU
+/// enumeration) are added to `repair`.
 ///
 /// # Errors
 /// Those of the CPU enumeration (none for a checked problem of n ≤ 20).
@@ -139,72 +233,104 @@ pub fn check_answer(
     lcp: &Lcp,
     gpu: &GpuVerdict<'_>,
     settings: &EnumerationSettings,
-    accept_relaxed: bool,
+    (exact_twin, accept, tolerance): (bool, bool, f64),
     out: &mut LcpSolution,
     repair: &mut f64,
 ) -> Result<(Verdict, f64), Error> {
     let n = lcp.n();
-    let gpu_error = if gpu.basis.is_some() && gpu.z.len() == n {
-        lcp_error(gpu.z, &lcp.w(gpu.z), &lcp.q)
-    } else {
-        f64::NAN
-    };
     let counters = Counters {
         bases_visited: gpu.visited,
         singular_bases: gpu.singular,
         ..Counters::default()
     };
-    if let (Some(mask), true) = (gpu.basis, gpu.relaxed && accept_relaxed) {
-        if mask >> n == 0 {
-            if let Some((v, z)) = basis_infeasibility(lcp, mask, settings) {
-                if v > settings.feasibility_tol && v <= settings.relaxed_feasibility_tol {
-                    *out = LcpSolution::from_z(lcp, Status::Solved, z, counters);
-                    out.basis = Some(mask);
-                    return Ok((Verdict::Polished, gpu_error));
-                }
+    let Some(mask) = gpu.basis else {
+        return enumerate_instead(lcp, settings, true, out, repair).map(|v| (v, f64::NAN));
+    };
+    let feasibility = settings.feasibility_tol;
+    let strict = accept && !gpu.relaxed;
+    let check = (strict, feasibility, tolerance);
+    let (accepted, gpu_error) = accept_gpu_z(lcp, (mask, gpu.z), check, counters, out);
+    if accepted {
+        return Ok((Verdict::Accepted, gpu_error));
+    }
+    if gpu.relaxed && exact_twin && mask >> n == 0 {
+        if let Some((v, z)) = basis_infeasibility(lcp, mask, settings) {
+            if v > settings.feasibility_tol && v <= settings.relaxed_feasibility_tol {
+                *out = LcpSolution::from_z(lcp, Status::Solved, z, counters);
+                out.basis = Some(mask);
+                return Ok((Verdict::Polished, gpu_error));
             }
         }
     }
-    if let (Some(mask), false) = (gpu.basis, gpu.relaxed) {
-        if mask >> n == 0 && feasible_basis_into(lcp, mask, settings, counters, || true, out) {
-            return Ok((Verdict::Polished, gpu_error));
-        }
+    if !gpu.relaxed
+        && mask >> n == 0
+        && feasible_basis_into(lcp, mask, settings, counters, || true, out)
+    {
+        return Ok((Verdict::Polished, gpu_error));
     }
+    enumerate_instead(lcp, settings, false, out, repair).map(|v| (v, gpu_error))
+}
+
+/// The CPU enumeration's answer for `lcp` in `out`, its seconds added to
+/// `repair`: [`Verdict::ConfirmedNoSolution`] where the GPU found no basis
+/// (`gpu_none`) and neither does the CPU, else [`Verdict::Repaired`].
+fn enumerate_instead(
+    lcp: &Lcp,
+    settings: &EnumerationSettings,
+    gpu_none: bool,
+    out: &mut LcpSolution,
+    repair: &mut f64,
+) -> Result<Verdict, Error> {
     let t = Instant::now();
     *out = enumerate(lcp, settings)?;
     *repair += t.elapsed().as_secs_f64();
-    let verdict = if gpu.basis.is_none() && out.status == Status::NoSolution {
+    Ok(if gpu_none && out.status == Status::NoSolution {
         Verdict::ConfirmedNoSolution
     } else {
         Verdict::Repaired
-    };
-    Ok((verdict, gpu_error))
+    })
 }
 
 /// The Lemke kernel's answer for `lcp` (its record and z) checked in f64
-/// into `out`: a FOUND basis that passes the CPU path's check of Lemke's
-/// textbook basis is the answer (method Lemke, path LemkeGpu: the CPU's
-/// bytes where the GPU ended on the CPU's basis); otherwise the CPU path
-/// solves the island as it would after prediction: `settings.method` Lemke
-/// by [`lemke`] (path Lemke), Auto by the checked Lemke (path Lemke), else
-/// the CPU enumeration (path Repaired). Returns (method, path, verdict:
-/// Polished for the GPU's basis, else Repaired) and the error of the GPU's
+/// into `out`: a FOUND basis whose z passes [`accept_gpu_z`] (with
+/// `accept`: an f64 shader that solved `lcp` itself) is the answer as the
+/// GPU gave it (verdict Accepted); else
+/// one that passes the CPU path's check of Lemke's textbook basis is
+/// (re-solved in f64, verdict Polished: the CPU's bytes where the GPU
+/// ended on the CPU's basis); both method Lemke, path LemkeGpu. Otherwise
+/// the CPU path solves the island as it would after prediction:
+/// `settings.method` Lemke by [`lemke`] (path Lemke), Auto by the checked
+/// Lemke (path Lemke), else the CPU enumeration (path Repaired), verdict
+/// Repaired. Returns (method, path, verdict) and the error of the GPU's
 /// own z (NaN where it gave none). The seconds of the CPU path's solve
 /// are added to `repair`.
 pub fn check_lemke_answer(
     lcp: &Lcp,
     (result, z): (&BasisResult, &[f64]),
-    settings: &GpuSolveSettings,
+    (settings, accept): (&GpuSolveSettings, bool),
     out: &mut LcpSolution,
     repair: &mut f64,
 ) -> (Method, SolvePath, Verdict, f64) {
     let e = &settings.enumeration;
     let found = result.status == FOUND && result.mask >> lcp.n() == 0;
-    let gpu_error = if found && z.len() == lcp.n() {
-        lcp_error(z, &lcp.w(z), &lcp.q)
-    } else {
-        f64::NAN
-    };
+    let mut gpu_error = f64::NAN;
+    if found {
+        let counters = Counters {
+            pivots: result.visited.into(),
+            ..Counters::default()
+        };
+        let check = (accept, e.feasibility_tol, settings.tolerance);
+        let accepted;
+        (accepted, gpu_error) = accept_gpu_z(lcp, (result.mask, z), check, counters, out);
+        if accepted {
+            return (
+                Method::Lemke,
+                SolvePath::LemkeGpu,
+                Verdict::Accepted,
+                gpu_error,
+            );
+        }
+    }
     if found && textbook_checked(lcp, result.mask, result.visited.into(), e, out) {
         return (
             Method::Lemke,

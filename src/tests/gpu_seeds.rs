@@ -88,7 +88,13 @@ fn check(precision: Precision) {
         }
         assert!(o.solution.residuals.error < 1e-14);
     }
-    assert_eq!(r.counts.polished, 3);
+    // f64: the GPU's z passes the check as it is (accepted); f32: every
+    // basis re-solved in f64 (polished).
+    let kept = match ctx.precision() {
+        Precision::F64 => (r.counts.accepted, r.counts.polished),
+        _ => (r.counts.polished, r.counts.accepted),
+    };
+    assert_eq!(kept, (3, 0));
     assert_eq!(r.counts.repaired, 0);
 }
 

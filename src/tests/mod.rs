@@ -15,6 +15,7 @@ mod friction_conformance;
 mod friction_conformance_large;
 mod friction_hard;
 mod gpu_all_solutions;
+mod gpu_check;
 mod gpu_collide;
 mod gpu_conformance;
 mod gpu_cost_model;
