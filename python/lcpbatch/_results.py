@@ -118,7 +118,8 @@ class Report:
       definite), "enumerated_gpu" (enumerated on the GPU, confirmed in f64),
       "lemke_gpu" (Lemke's path on the GPU, its basis checked in f64: method
       "auto" or "lemke" on the GPU),
-      "polished" (GPU answers whose basis held in f64), "repaired" (GPU
+      "accepted" (GPU answers whose own z passed the f64 check),
+      "polished" (GPU answers whose basis, re-solved in f64, held), "repaired" (GPU
       answers re-solved on the CPU), "enumerated_cpu", "lemke",
       "cpu_fallback" (handed by the GPU to Lemke on the CPU: n > 16, or
       the GPU's Lemke kernel could not settle them),
