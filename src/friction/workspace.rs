@@ -52,6 +52,9 @@ pub struct Workspace {
     pub(crate) start: Vec<f64>,
     /// W's nonzero blocks (products and sweeps over them only).
     pub(crate) pattern: Pattern,
+    /// Those blocks' copy by block column (`nsgs::gather_columns`), for the
+    /// NSGS sweeps on islands of at least `sparse::SPARSE_FROM` contacts.
+    pub(crate) columns: Vec<Block>,
     /// W's envelope (`sparse::envelope`), on islands of at least
     /// `sparse::SPARSE_FROM` contacts (else empty: dense LU).
     pub(crate) env_first: Vec<usize>,
@@ -158,10 +161,16 @@ impl Workspace {
 
 /// Contact i's 3×3 diagonal block of W.
 pub fn diagonal_block(p: &FrictionProblem, i: usize) -> Block {
-    let (n, at) = (p.dim(), 3 * i);
+    block_at(p, i, i)
+}
+
+/// W's 3×3 block (j, i): the rows of contact j, the columns of contact i.
+#[inline]
+pub fn block_at(p: &FrictionProblem, j: usize, i: usize) -> Block {
+    let n = p.dim();
     std::array::from_fn(|a| {
-        let row = &p.w[(at + a) * n + at..(at + a) * n + at + 3];
-        [row[0], row[1], row[2]]
+        let at = (3 * j + a) * n + 3 * i;
+        [p.w[at], p.w[at + 1], p.w[at + 2]]
     })
 }
 
