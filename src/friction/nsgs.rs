@@ -133,3 +133,39 @@ pub(crate) fn nsgs_in(
     }
     (sweeps, error)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::friction::random::random_problem;
+    use crate::generate::Rng;
+
+    #[test]
+    fn sweeps_over_the_compact_blocks_give_the_dense_sweeps_bits() {
+        let mut rng = Rng::new(24);
+        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        for _ in 0..4 {
+            let p = random_problem(&mut rng, SPARSE_FROM + 8, 100.0);
+            let runs = [true, false].map(|compact| {
+                let (mut ws, mut r) = (Workspace::default(), vec![0.0; p.dim()]);
+                ws.prepare(&p, &r);
+                gather_columns(&p, &ws.pattern, &mut ws.columns);
+                assert_eq!(ws.columns.len(), ws.pattern.cols.len());
+                if !compact {
+                    ws.columns.clear();
+                }
+                for _ in 0..10 {
+                    sweep(&p, &mut ws, &mut r);
+                }
+                (ws, r)
+            });
+            // W is block-sparse here (so the pattern skips blocks) and the
+            // sweeps moved r.
+            assert!(runs[0].0.pattern.cols.len() < p.contacts() * p.contacts());
+            assert!(runs[0].1.iter().any(|&x| x != 0.0));
+            let [compact, dense] = &runs;
+            assert_eq!(bits(&compact.1), bits(&dense.1));
+            assert_eq!(bits(&compact.0.u), bits(&dense.0.u));
+        }
+    }
+}
