@@ -440,6 +440,7 @@ pub(crate) fn newton_in(
     tolerance: f64,
 ) -> (u64, f64) {
     let n = p.dim();
+    ws.newton_buffers();
     alart_curnier(
         p,
         r,

@@ -52,6 +52,9 @@ pub struct Workspace {
     pub(crate) start: Vec<f64>,
     /// W's nonzero blocks (products and sweeps over them only).
     pub(crate) pattern: Pattern,
+    /// Those blocks' copy by block column (`nsgs::gather_columns`), for the
+    /// NSGS sweeps on islands of at least `sparse::SPARSE_FROM` contacts.
+    pub(crate) columns: Vec<Block>,
     /// W's envelope (`sparse::envelope`), on islands of at least
     /// `sparse::SPARSE_FROM` contacts (else empty: dense LU).
     pub(crate) env_first: Vec<usize>,
@@ -63,6 +66,9 @@ pub struct Workspace {
     /// the last `window` merits (nonmonotone, Grippo–Lampariello–Lucidi);
     /// 0 or 1: with the current one (monotone Armijo, the default).
     pub(crate) window: usize,
+    /// `jac`, `matrix` and `normal` are sized for the prepared problem
+    /// ([`Workspace::newton_buffers`]).
+    pub(crate) newton_ready: bool,
 }
 
 thread_local! {
@@ -104,13 +110,10 @@ impl Workspace {
             v.clear();
             v.resize(n, 0.0);
         }
-        // Written in full before they are read: sized, not cleared; ∂Φ is
-        // written only within W's pattern: zero elsewhere.
-        for v in [&mut self.matrix, &mut self.normal] {
-            v.resize(n * n, 0.0);
-        }
-        self.jac.clear();
-        self.jac.resize(n * n, 0.0);
+        // The 3k × 3k buffers wait for the first Newton step
+        // ([`Workspace::newton_buffers`]): NSGS alone never reads them
+        // (on 570 contacts, 70 MB).
+        self.newton_ready = false;
         self.blocks.clear();
         self.blocks
             .extend((0..p.contacts()).map(|i| diagonal_block(p, i)));
@@ -133,6 +136,23 @@ impl Workspace {
             self.env_last.clear();
         }
         self.refresh(p, r);
+    }
+
+    /// Sizes the Newton step's 3k × 3k buffers for the problem of the last
+    /// [`Workspace::prepare`], once after it: ∂Φ cleared (it is written
+    /// only within W's pattern: zero elsewhere), the others written in
+    /// full before they are read (sized, not cleared).
+    pub(crate) fn newton_buffers(&mut self) {
+        if self.newton_ready {
+            return;
+        }
+        let n = self.u.len();
+        for v in [&mut self.matrix, &mut self.normal] {
+            v.resize(n * n, 0.0);
+        }
+        self.jac.clear();
+        self.jac.resize(n * n, 0.0);
+        self.newton_ready = true;
     }
 
     /// u = W r + q recomputed exactly (the sweeps update it incrementally):
@@ -158,10 +178,16 @@ impl Workspace {
 
 /// Contact i's 3×3 diagonal block of W.
 pub fn diagonal_block(p: &FrictionProblem, i: usize) -> Block {
-    let (n, at) = (p.dim(), 3 * i);
+    block_at(p, i, i)
+}
+
+/// W's 3×3 block (j, i): the rows of contact j, the columns of contact i.
+#[inline]
+pub fn block_at(p: &FrictionProblem, j: usize, i: usize) -> Block {
+    let n = p.dim();
     std::array::from_fn(|a| {
-        let row = &p.w[(at + a) * n + at..(at + a) * n + at + 3];
-        [row[0], row[1], row[2]]
+        let at = (3 * j + a) * n + 3 * i;
+        [p.w[at], p.w[at + 1], p.w[at + 2]]
     })
 }
 
