@@ -241,8 +241,8 @@ pub struct PathCounts {
     /// GPU answers kept as the GPU gave them: its z passed the f64 check
     /// (w = M z + q recomputed in f64 from the input: signs,
     /// complementarity, the error measure within tolerance); f64 shaders
-    /// on LCP batches only (a scene's islands, assembled on the device,
-    /// are re-solved on the CPU's assembly: polished).
+    /// on LCP batches (a scene's islands assembled on the device are
+    /// re-solved on the CPU's assembly: polished).
     pub accepted: usize,
     /// GPU answers whose basis was re-solved in f64 and valid there (z, w
     /// recomputed in f64): where the check of the GPU's own z failed, and

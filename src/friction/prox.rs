@@ -16,8 +16,7 @@
 
 use super::newton::newton_in;
 use super::problem::FrictionProblem;
-use super::residual::norm;
-use super::workspace::{diagonal_block, Workspace};
+use super::workspace::Workspace;
 
 /// σ of α = σ e d̄ (Siconos' default 5).
 const SIGMA: f64 = 5.0;
@@ -82,7 +81,7 @@ pub(crate) fn prox_in(
             inner_ws.prepare(&inner, r);
             inner_ws.window = WINDOW;
         } else {
-            refit(&inner, &mut inner_ws, r);
+            inner_ws.refit(&inner, r);
         }
         let inner_tolerance = (error / INNER_RATIO).max(tolerance);
         let budget = INNER_STEPS.min(max_steps - steps);
@@ -100,25 +99,4 @@ pub(crate) fn prox_in(
         alpha = SIGMA * error * scale * boost;
     }
     (steps, error)
-}
-
-/// What [`Workspace::prepare`] computes from W's diagonal and q, anew for
-/// `inner`, whose W differs from the one `ws` was prepared for on the
-/// diagonal only (W + αI for another α): the diagonal blocks, the scalings
-/// ρ_i = 1 / W_ii,nn (1 when not positive), ‖q‖, and u = W r + q, the
-/// numbers `prepare` gives. W's pattern, its envelope and every buffer's
-/// size stay; ∂Φ is rewritten within the pattern before it is read.
-fn refit(inner: &FrictionProblem, ws: &mut Workspace, r: &[f64]) {
-    for (i, (block, rho)) in ws.blocks.iter_mut().zip(&mut ws.rho).enumerate() {
-        *block = diagonal_block(inner, i);
-        let d = block[0][0];
-        *rho = if d > 0.0 && d.is_finite() {
-            1.0 / d
-        } else {
-            1.0
-        };
-    }
-    ws.q_norm = norm(&inner.q);
-    ws.singular = false;
-    ws.refresh(inner, r);
 }

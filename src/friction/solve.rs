@@ -165,7 +165,7 @@ pub fn solve_friction_problem(
     s: &FrictionSettings,
 ) -> FrictionSolution {
     let mut r = match warm {
-        Some(w) if w.len() == p.dim() && w.iter().all(|v| v.is_finite()) => w.to_vec(),
+        Some(w) if usable_start(w, p.dim()) => w.to_vec(),
         _ => vec![0.0; p.dim()],
     };
     if s.method.projected().is_some() {
@@ -213,6 +213,13 @@ fn solve_in(
         FrictionMethod::Prox => (prox_in(p, ws, r, cap, tolerance).0, false),
         _ => hybrid(p, ws, r, cap, tolerance),
     }
+}
+
+/// Whether a warm start `w` can start a problem of `dim` unknowns: its
+/// length is `dim` and every entry is finite (otherwise the solve starts
+/// from r = 0).
+pub(crate) fn usable_start(w: &[f64], dim: usize) -> bool {
+    w.len() == dim && w.iter().all(|v| v.is_finite())
 }
 
 /// Each contact's reaction projected on its cone, in place; whether any

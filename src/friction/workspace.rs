@@ -114,6 +114,23 @@ impl Workspace {
         // ([`Workspace::newton_buffers`]): NSGS alone never reads them
         // (on 570 contacts, 70 MB).
         self.newton_ready = false;
+        self.pattern.build(p);
+        if p.contacts() >= SPARSE_FROM {
+            envelope(&self.pattern, &mut self.env_first, &mut self.env_last);
+        } else {
+            self.env_first.clear();
+            self.env_last.clear();
+        }
+        self.refit(p, r);
+    }
+
+    /// What [`Workspace::prepare`] computes from W's diagonal and q: the
+    /// diagonal blocks, the scalings ρ_i = 1 / W_ii,nn (1 when not
+    /// positive), ‖q‖, and u = W r + q. Alone, for a problem whose W
+    /// differs from the prepared one's on the diagonal only (PROX's
+    /// W + αI for another α): W's pattern, its envelope and every
+    /// buffer's size stay.
+    pub(crate) fn refit(&mut self, p: &FrictionProblem, r: &[f64]) {
         self.blocks.clear();
         self.blocks
             .extend((0..p.contacts()).map(|i| diagonal_block(p, i)));
@@ -128,13 +145,6 @@ impl Workspace {
         }));
         self.q_norm = norm(&p.q);
         self.singular = false;
-        self.pattern.build(p);
-        if p.contacts() >= SPARSE_FROM {
-            envelope(&self.pattern, &mut self.env_first, &mut self.env_last);
-        } else {
-            self.env_first.clear();
-            self.env_last.clear();
-        }
         self.refresh(p, r);
     }
 

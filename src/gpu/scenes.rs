@@ -418,7 +418,6 @@ pub fn solve_scenes_warm(
             let (s, k) = c.enum_keys[j];
             let mine = &mut islands[first[s] + k];
             (mine.method, mine.path, mine.solution) = (island.method, island.path, island.solution);
-            accepted += (verdict == Verdict::Accepted) as usize;
             polished += (verdict == Verdict::Polished) as usize;
             if gpu_error > figures.max_gpu_error {
                 figures.max_gpu_error = gpu_error;

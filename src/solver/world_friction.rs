@@ -22,6 +22,7 @@ use crate::cpu::assembly::{assemble_contacts, assemble_island};
 use crate::cpu::impulses::BodyVelocity;
 use crate::friction::assembly::FrictionContactRows;
 use crate::friction::assembly::{apply_friction_impulses, assemble_friction_island_into};
+use crate::friction::solve::usable_start;
 use crate::friction::{
     project_on_cone, solve_friction_problem, FrictionProblem, FrictionResiduals, FrictionSettings,
     FrictionSolution,
@@ -98,11 +99,9 @@ pub(super) fn step_frictional_world_on_cpu(
         .map(|i| i.contacts.as_slice());
     let repairs = repair_unsolved(scene, unsolved, &mut bodies, fix);
     if warm {
-        let solved = reports.iter().filter(|i| i.status().is_solution());
-        item.warm.reactions.record(solved.flat_map(|isl| {
-            let ids = ids_of(scene, &isl.contacts);
-            reaction_entries(ids, &isl.solution.r)
-        }));
+        item.warm
+            .reactions
+            .record(solved_reactions(scene, &reports));
     }
     let t3 = Instant::now();
     let error = max_error(std::iter::empty(), reports.iter());
@@ -154,7 +153,7 @@ fn checked_starts(
     }
     let mut r = vec![[0.0; 3]; scene.contacts.len()];
     for (island, start) in islands.iter().zip(starts) {
-        let usable = |w: &&Vec<f64>| w.len() == 3 * island.len() && w.iter().all(|v| v.is_finite());
+        let usable = |w: &&Vec<f64>| usable_start(w, 3 * island.len());
         if let Some(w) = start.as_ref().filter(usable) {
             for (i, &c) in island.contacts.iter().enumerate() {
                 let wi = [w[3 * i], w[3 * i + 1], w[3 * i + 2]];
@@ -326,4 +325,14 @@ mod tests {
         }
         assert!(islands_seen > 1000, "{islands_seen} islands");
     }
+}
+
+/// The warm-start entries of a frictional step: its solved islands'
+/// reactions by contact id (unsolved islands record none).
+pub(super) fn solved_reactions<'a>(
+    scene: &'a Scene,
+    reports: &'a [FrictionIslandReport],
+) -> impl Iterator<Item = (u64, [f64; 3])> + 'a {
+    let solved = reports.iter().filter(|i| i.status().is_solution());
+    solved.flat_map(|isl| reaction_entries(ids_of(scene, &isl.contacts), &isl.solution.r))
 }

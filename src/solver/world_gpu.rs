@@ -40,7 +40,7 @@ use std::time::Instant;
 
 use super::gpu_path::guarded;
 use super::world_cpu::step_world_on_cpu;
-use super::world_friction::step_frictional_world_on_cpu;
+use super::world_friction::{solved_reactions, step_frictional_world_on_cpu};
 use super::world_path::{ResidentStep, StepReport, StepTimings, WorldStep, WorldStepReport};
 use super::world_repair::{repair_settings, Repairs};
 use super::Solver;
@@ -51,7 +51,6 @@ use crate::gpu::{GpuContext, Precision};
 use crate::report::{Device, FrictionIslandReport};
 use crate::scene::Scene;
 use crate::settings::{Backend, Method};
-use crate::warm::reaction_entries;
 use crate::warm::Warm;
 use crate::world::step::prepare;
 use crate::world::World;
@@ -272,12 +271,8 @@ impl Solver {
 /// The warm-start entries a frictional step on the CPU recorded (its
 /// solved islands' reactions by contact id), as the device keeps them.
 fn recorded(scene: &Scene, islands: &[FrictionIslandReport]) -> Vec<MemoryEntry> {
-    let solved = islands.iter().filter(|i| i.status().is_solution());
-    solved
-        .flat_map(|isl| {
-            let ids = isl.contacts.iter().map(|&c| scene.contacts[c].id);
-            reaction_entries(ids, &isl.solution.r).map(|(id, r)| (device_key(id), r))
-        })
+    solved_reactions(scene, islands)
+        .map(|(id, r)| (device_key(id), r))
         .collect()
 }
 

@@ -105,7 +105,7 @@ impl BenchRow {
                 ("kernels", g.kernel_seconds),
                 ("readback", g.readback_seconds),
                 ("other GPU host work", (t.gpu - parts).max(0.0)),
-                ("f64 check", (t.validation - g.repair_seconds).max(0.0)),
+                ("f64 check", g.check_seconds),
                 ("repair", g.repair_seconds),
                 ("report", g.report_seconds),
                 ("door", rest.max(0.0)),
