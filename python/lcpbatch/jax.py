@@ -3,12 +3,18 @@ function (``jax.custom_vjp``), for ``jax.grad``, ``jit`` and ``vmap``; and
 ``lcpbatch.jax.solve_scenes``, the same for frictionless scenes (bodies and
 contacts as arrays), differentiable through assembly.
 
-The forward pass (the solve) and the backward pass (the library's VJP,
-:func:`lcpbatch.lcp_vjp`) run on the host through ``jax.pure_callback``,
-on every CPU core with the GIL released: inside ``jit`` they are two host
-calls per step, whatever the batch size. Under ``vmap`` the callbacks use
-``vmap_method="broadcast_all"``: the mapped axis is prepended to every
-argument and the whole mapped batch is one host call (not one per element).
+``solve``'s forward pass (the solve) and backward pass (the library's VJP,
+:func:`lcpbatch.lcp_vjp`) are XLA FFI calls (``jax.ffi.ffi_call``) of two
+handlers the extension exports (``lcpbatch_solve``, ``lcpbatch_vjp``):
+XLA hands them its own buffers, so nothing is copied into Python and the
+GIL is not taken; they run on every CPU core. That is when JAX's default
+backend is the CPU; otherwise (a GPU jaxlib), and for ``solve_scenes``,
+the two passes run through ``jax.pure_callback``, which copies the arrays
+to the host and back. Either way, inside ``jit`` they are two host calls
+per step, whatever the batch size, and under ``vmap`` (``vmap_method=
+"broadcast_all"``) the mapped axis is prepended to every argument and the
+whole mapped batch is one call (not one per element). Both paths give the
+same numbers, bit for bit. Ctrl-C is not seen during an FFI call.
 
 Imported on first use (``import lcpbatch`` does not import JAX); without
 JAX, an ``ImportError`` says what to install: ``pip install "jax[cpu]"``.
@@ -21,7 +27,7 @@ from typing import Any, Callable, Dict, List, Optional, Tuple
 
 import numpy as np
 
-from . import _gradient
+from . import _gradient, _inputs, _native
 
 jax = _gradient.framework("jax", "JAX", 'pip install "jax[cpu]" (or pip install "lcpbatch[jax]")')
 jnp = jax.numpy
@@ -64,7 +70,10 @@ def solve(M: Any, q: Any, *, vjp_tolerance: Optional[float] = None, **settings: 
     if q.ndim < 1 or M.shape != q.shape + q.shape[-1:]:
         raise ValueError(f"M: expected shape {q.shape + q.shape[-1:]} to match q {q.shape} "
                          f"(M (..., n, n), q (..., n)), got {M.shape}")
-    return _function(_gradient.settings_of(vjp_tolerance, settings))(M.astype(dtype), q.astype(dtype))
+    key = _gradient.settings_of(vjp_tolerance, settings)
+    # An empty batch or n = 0: nothing to solve, the callbacks' empty arrays.
+    function = _ffi_function(key) if q.size and _ffi_ready() else _function(key)
+    return function(M.astype(dtype), q.astype(dtype))
 
 
 def solve_scenes(bodies: Dict[str, Any], contacts: Dict[str, Any], *, vjp_tolerance: Optional[float] = None,
@@ -140,10 +149,77 @@ def _differentiable(host_forward: Callable[..., Tuple[np.ndarray, ...]], host_ba
     return f
 
 
+#: Whether ``solve`` may use the FFI handlers (tests turn it off to compare
+#: with the ``pure_callback`` path).
+_USE_FFI = True
+
+
+def _ffi_ready() -> bool:
+    """Whether ``solve`` calls the FFI handlers: ``jax.ffi`` exists and
+    JAX's default backend is the CPU (the handlers are registered for the
+    CPU platform; on first use)."""
+    if not _USE_FFI or not hasattr(jax, "ffi") or jax.default_backend() != "cpu":
+        return False
+    _register_ffi_targets()
+    return True
+
+
+@functools.lru_cache(maxsize=1)
+def _register_ffi_targets() -> None:
+    for name, capsule in _native.ffi_targets().items():
+        jax.ffi.register_ffi_target(name, capsule, platform="cpu", api_version=1)
+
+
+#: The solver id (``_native.ffi_register``) of each set of settings the FFI
+#: path has used. Never dropped: a compiled program holds only the id, and
+#: the extension keeps the solver for the process's life.
+_FFI_SOLVERS: Dict[Tuple[Any, ...], Tuple[Any, int]] = {}
+
+
+@functools.lru_cache(maxsize=32)
+def _ffi_function(key: Tuple[Any, ...]) -> Callable[[Any, Any], Tuple[Any, Any]]:
+    """The custom_vjp function of one set of settings through the FFI
+    handlers (see the module docs): the same solve and VJP as
+    :func:`_function`'s callbacks, bit for bit."""
+    from ._solver import _cached
+
+    vjp_tolerance, items = key
+    if items not in _FFI_SOLVERS:
+        solver = _cached(**dict(items))
+        _FFI_SOLVERS[items] = (solver, _native.ffi_register(solver))
+    solver, solver_id = _FFI_SOLVERS[items]
+
+    def forward(M: Any, q: Any) -> Tuple[Any, Any, Any]:
+        batch, n = q.shape[:-1], q.shape[-1]
+        _inputs.check_enumeration_size([n], solver.settings["method"], solver.settings["backend"])
+        out = (jax.ShapeDtypeStruct(q.shape, q.dtype),) * 2 + (jax.ShapeDtypeStruct(batch, np.int8),)
+        return jax.ffi.ffi_call("lcpbatch_solve", out, vmap_method="broadcast_all")(
+            M, q, solver=np.int64(solver_id))
+
+    @jax.custom_vjp
+    def f(M: Any, q: Any) -> Tuple[Any, Any]:
+        return forward(M, q)[:2]
+
+    def f_fwd(M: Any, q: Any) -> Tuple[Tuple[Any, Any], Tuple[Any, ...]]:
+        z, w, _ = forward(M, q)
+        return (z, w), (M, q, z)
+
+    def f_bwd(res: Tuple[Any, ...], g: Tuple[Any, Any]) -> Tuple[Any, Any]:
+        M, q, z = res
+        tolerance = _gradient._tolerance_for(vjp_tolerance, np.zeros(0, z.dtype))
+        out = (jax.ShapeDtypeStruct(M.shape, M.dtype), jax.ShapeDtypeStruct(q.shape, q.dtype))
+        return tuple(jax.ffi.ffi_call("lcpbatch_vjp", out, vmap_method="broadcast_all")(
+            M, q, z, *g, tolerance=np.float64(tolerance)))
+
+    f.defvjp(f_fwd, f_bwd)
+    return f
+
+
 @functools.lru_cache(maxsize=32)
 def _function(key: Tuple[Any, ...]) -> Callable[[Any, Any], Tuple[Any, Any]]:
-    """The custom_vjp function of one set of settings (cached, so that jit
-    sees the same function on every call)."""
+    """The custom_vjp function of one set of settings through
+    ``pure_callback`` (cached, so that jit sees the same function on every
+    call): the path without the FFI handlers."""
     vjp_tolerance, items = key
     settings = dict(items)
 

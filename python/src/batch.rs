@@ -73,9 +73,12 @@ pub(crate) fn first_non_finite<'a>(values: impl Iterator<Item = &'a f64>) -> Opt
 }
 
 fn non_finite(arg: &str, index: String, v: f64) -> PyErr {
-    PyValueError::new_err(format!(
-        "{arg}{index} is {v}: every entry of {arg} must be finite"
-    ))
+    PyValueError::new_err(non_finite_message(arg, &index, v))
+}
+
+/// The error of a non-finite entry: `arg` and its `index` ("[3, 0, 1]").
+pub(crate) fn non_finite_message(arg: &str, index: &str, v: f64) -> String {
+    format!("{arg}{index} is {v}: every entry of {arg} must be finite")
 }
 
 /// One problem from a (n, n) view of M and a (n,) view of q; `at` prefixes
@@ -216,21 +219,40 @@ pub(crate) fn zw<'py>(
     islands: &[IslandReport],
     dim: (usize, usize),
 ) -> PyResult<ZwArrays<'py>> {
-    let (mut z, mut w) = (
-        Vec::with_capacity(dim.0 * dim.1),
-        Vec::with_capacity(dim.0 * dim.1),
-    );
-    let mut status = Vec::with_capacity(islands.len());
-    for i in islands {
-        z.extend_from_slice(&i.solution.z);
-        w.extend_from_slice(&i.solution.w);
-        status.push(crate::report::status_code(i.status()));
-    }
+    let (mut z, mut w) = (vec![0.0; dim.0 * dim.1], vec![0.0; dim.0 * dim.1]);
+    let mut status = vec![0; islands.len()];
+    zw_into(islands, &mut z, &mut w, &mut status, |v| v);
     Ok((
         array2(py, dim, z)?,
         array2(py, dim, w)?,
         status.into_pyarray(py),
     ))
+}
+
+/// Writes the islands' z and w one after the other into `z` and `w` (as
+/// `to` converts each entry) and their status codes into `status`, in one
+/// pass; an island whose z would run past the end is cut short (the
+/// callers size the slices for their islands).
+pub(crate) fn zw_into<T>(
+    islands: &[IslandReport],
+    z: &mut [T],
+    w: &mut [T],
+    status: &mut [i8],
+    to: impl Fn(f64) -> T,
+) {
+    let mut at = 0;
+    for (i, code) in islands.iter().zip(status.iter_mut()) {
+        let (sz, sw) = (&i.solution.z, &i.solution.w);
+        let end = (at + sz.len()).min(z.len());
+        for (o, &v) in z[at..end].iter_mut().zip(sz) {
+            *o = to(v);
+        }
+        for (o, &v) in w[at..end].iter_mut().zip(sw) {
+            *o = to(v);
+        }
+        *code = crate::report::status_code(i.status());
+        at = end;
+    }
 }
 
 /// `v` as a NumPy array of shape `dim` (`ValueError` if its length is not that).

@@ -10,7 +10,9 @@
 //! become `ValueError`s naming the argument, the index and the fault.
 //!
 //! Gradients: [`gradient`] binds the library's vector–Jacobian product of
-//! the solve (`lcpbatch.lcp_vjp`, and the JAX and PyTorch adapters).
+//! the solve (`lcpbatch.lcp_vjp`, and the JAX and PyTorch adapters);
+//! [`ffi`] exports the solve and the product as XLA FFI handlers, which
+//! `lcpbatch.jax` calls from inside compiled JAX programs.
 //!
 //! No Rust panic reaches Python: every call into the library runs under
 //! [`guard`], which turns a panic into a `RuntimeError`.
@@ -22,6 +24,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 mod batch;
+mod ffi;
 mod friction;
 mod gradient;
 mod report;
@@ -46,17 +49,20 @@ pub(crate) fn to_py_err(e: lcpbatch::Error) -> PyErr {
 pub(crate) fn guard<T>(f: impl FnOnce() -> PyResult<T>) -> PyResult<T> {
     match catch_unwind(AssertUnwindSafe(f)) {
         Ok(r) => r,
-        Err(payload) => {
-            let msg = payload
-                .downcast_ref::<&str>()
-                .map(|s| s.to_string())
-                .or_else(|| payload.downcast_ref::<String>().cloned())
-                .unwrap_or_else(|| "unknown panic".into());
-            Err(PyRuntimeError::new_err(format!(
-                "lcpbatch internal error (a bug, please report it): {msg}"
-            )))
-        }
+        Err(payload) => Err(PyRuntimeError::new_err(format!(
+            "lcpbatch internal error (a bug, please report it): {}",
+            panic_message(&payload)
+        ))),
     }
+}
+
+/// A caught panic's message ("unknown panic" when it carries none).
+pub(crate) fn panic_message(payload: &Box<dyn std::any::Any + Send>) -> String {
+    payload
+        .downcast_ref::<&str>()
+        .map(|s| s.to_string())
+        .or_else(|| payload.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "unknown panic".into())
 }
 
 /// Every adapter wgpu finds on `api` ("auto", "vulkan", "gl", "metal",
@@ -113,6 +119,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(gradient::derivative_names, m)?)?;
     m.add_function(wrap_pyfunction!(gradient::time_lcp_vjp, m)?)?;
     m.add_function(wrap_pyfunction!(gradient::scene_vjp_batch, m)?)?;
+    m.add_function(wrap_pyfunction!(ffi::ffi_targets, m)?)?;
+    m.add_function(wrap_pyfunction!(ffi::ffi_register, m)?)?;
     m.add("DEFAULT_VJP_TOLERANCE", gradient::default_tolerance())?;
     m.add("CHUNK_PROBLEMS", batch::CHUNK_PROBLEMS)?;
     m.add("CHUNK_WORK", batch::CHUNK_WORK)?;

@@ -17,7 +17,9 @@ use pyo3::types::PyDict;
 use crate::{batch, friction, guard, report, scenes, settings::Args, to_py_err, worlds};
 
 /// The library's solver behind a mutex (see the module docs).
-#[pyclass(module = "lcpbatch._native")]
+/// Frozen (every method takes `&self`, state sits behind mutexes): the
+/// XLA FFI handlers reach it without the GIL (`ffi.rs`).
+#[pyclass(module = "lcpbatch._native", frozen)]
 pub(crate) struct NativeSolver {
     solver: Mutex<Solver>,
     /// Calls now in `run_chunks` with their chunks joined (several Python
@@ -37,11 +39,7 @@ impl NativeSolver {
     }
 
     /// Solves `ranges` one after the other with the GIL released, checking
-    /// for Ctrl-C between them; one report ([`Report::append`]: the ranges
-    /// are consecutive from 0, so scene indices shift by the scenes before).
-    /// The chunks are one call of the warm-start memory
-    /// ([`Solver::join_warm_start_calls`]): `warm_start_calls` counts
-    /// Python calls, and every chunk finds the ids of the calls before.
+    /// for Ctrl-C between them; one report ([`Self::solve_joined`]).
     fn run_chunks(
         &self,
         py: Python<'_>,
@@ -49,26 +47,11 @@ impl NativeSolver {
         solve: impl Fn(&mut Solver, Range<usize>) -> Result<Report, lcpbatch::Error> + Sync,
     ) -> PyResult<(Report, usize)> {
         let count = ranges.len();
-        let joined = count > 1;
-        if joined {
-            self.join_chunks(true);
-        }
-        let chunks = (|| -> PyResult<Option<Report>> {
-            let mut total: Option<Report> = None;
-            for r in ranges {
-                let next = py.detach(|| guard(|| solve(&mut self.lock(), r).map_err(to_py_err)))?;
-                match &mut total {
-                    Some(t) => t.append(next),
-                    None => total = Some(next),
-                }
-                py.check_signals()?;
-            }
-            Ok(total)
-        })();
-        // Also after an error or Ctrl-C: the chunks solved count as the call.
-        if joined {
-            self.join_chunks(false);
-        }
+        let chunks = self.solve_joined(ranges, |r| -> PyResult<Report> {
+            let next = py.detach(|| guard(|| solve(&mut self.lock(), r).map_err(to_py_err)))?;
+            py.check_signals()?;
+            Ok(next)
+        });
         match chunks? {
             Some(t) => Ok((t, count)),
             // An empty batch: the library's own (empty) report.
@@ -77,6 +60,73 @@ impl NativeSolver {
                 0,
             )),
         }
+    }
+
+    /// Solves `ranges` one after the other (`chunk` solves one) into one
+    /// report ([`Report::append`]: the ranges are consecutive from 0, so
+    /// scene indices shift by the scenes before); None for no range. The
+    /// chunks are one call of the warm-start memory
+    /// ([`Solver::join_warm_start_calls`]): `warm_start_calls` counts
+    /// calls, and every chunk finds the ids of the calls before.
+    fn solve_joined<E>(
+        &self,
+        ranges: Vec<Range<usize>>,
+        mut chunk: impl FnMut(Range<usize>) -> Result<Report, E>,
+    ) -> Result<Option<Report>, E> {
+        let joined = ranges.len() > 1;
+        if joined {
+            self.join_chunks(true);
+        }
+        let chunks = (|| {
+            let mut total: Option<Report> = None;
+            for r in ranges {
+                let next = chunk(r)?;
+                match &mut total {
+                    Some(t) => t.append(next),
+                    None => total = Some(next),
+                }
+            }
+            Ok(total)
+        })();
+        // Also after an error or Ctrl-C: the chunks solved count as the call.
+        if joined {
+            self.join_chunks(false);
+        }
+        chunks
+    }
+
+    /// Solves rows `r` of the C-ordered finite batch `ms` (B·n·n), `qs`
+    /// (B·n) of size n > 0, copied into the problems kept from the last
+    /// call ([`batch::refill`]).
+    fn solve_dense_chunk(
+        &self,
+        s: &mut Solver,
+        n: usize,
+        ms: &[f64],
+        qs: &[f64],
+        r: Range<usize>,
+    ) -> Result<Report, lcpbatch::Error> {
+        let mut lcps = self.scratch.lock().unwrap_or_else(|p| p.into_inner());
+        let (mr, qr) = (r.start * n * n..r.end * n * n, r.start * n..r.end * n);
+        batch::refill(&mut lcps, n, &ms[mr], &qs[qr]);
+        s.solve_lcps(&lcps)
+    }
+
+    /// For the XLA FFI handler (`ffi.rs`), without Python: the C-ordered
+    /// finite batch `ms` (B·n·n), `qs` (B·n) of size n > 0 solved as
+    /// [`Self::solve_dense_zw`] solves it (the same chunks and kept
+    /// problems, on the calling thread; no Ctrl-C check). The report, None
+    /// for an empty batch.
+    pub(crate) fn solve_dense_report(
+        &self,
+        n: usize,
+        ms: &[f64],
+        qs: &[f64],
+    ) -> Result<Option<Report>, lcpbatch::Error> {
+        let ranges = batch::chunks(std::iter::repeat_n(n, qs.len() / n));
+        self.solve_joined(ranges, |r| {
+            self.solve_dense_chunk(&mut self.lock(), n, ms, qs, r)
+        })
     }
 
     /// Starts (`true`) or ends a call whose chunks are one call of the
@@ -241,12 +291,7 @@ impl NativeSolver {
         let (r, _) = match batch::dense_slices(&m, &q) {
             Some((n, ms, qs)) => {
                 let ranges = batch::chunks(std::iter::repeat_n(n, b));
-                self.run_chunks(py, ranges, |s, r| {
-                    let mut lcps = self.scratch.lock().unwrap_or_else(|p| p.into_inner());
-                    let (mr, qr) = (r.start * n * n..r.end * n * n, r.start * n..r.end * n);
-                    batch::refill(&mut lcps, n, &ms[mr], &qs[qr]);
-                    s.solve_lcps(&lcps)
-                })?
+                self.run_chunks(py, ranges, |s, r| self.solve_dense_chunk(s, n, ms, qs, r))?
             }
             None => {
                 let lcps = batch::dense(&m, &q)?;

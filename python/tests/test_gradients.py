@@ -133,7 +133,9 @@ def test_jax_forward_is_the_solve_and_jit_gives_the_same():
         np.testing.assert_allclose(np.asarray(a), np.asarray(b), rtol=1e-14, atol=1e-14)
 
 
-def test_jax_vmap_is_one_host_call_and_matches_the_batch(monkeypatch):
+@pytest.mark.parametrize("ffi", [True, False])
+def test_jax_vmap_is_one_host_call_and_matches_the_batch(monkeypatch, ffi):
+    monkeypatch.setattr(lcpbatch.jax, "_USE_FFI", ffi)
     rng = np.random.default_rng(4)
     M, q = stable_batch(rng, 6, 3)
     c = rng.standard_normal(q.shape)
@@ -150,8 +152,16 @@ def test_jax_vmap_is_one_host_call_and_matches_the_batch(monkeypatch):
         z, _ = lcpbatch.jax.solve(M1, q1, backend="cpu")
         return jnp.sum(c1 * z)
 
-    per_problem = jax.jit(jax.vmap(jax.grad(one, argnums=(0, 1))))(M, q, c)
-    assert calls == [(6, 3)], calls  # broadcast_all: the mapped axis, one call
+    step = jax.jit(jax.vmap(jax.grad(one, argnums=(0, 1))))
+    per_problem = step(M, q, c)
+    if ffi:  # one FFI call each of the whole mapped batch (no loop around it)
+        hlo = step.lower(M, q, c).as_text()
+        assert calls == [] and "while" not in hlo
+        for target, m_shape in (("lcpbatch_solve", "6x3x3"), ("lcpbatch_vjp", "6x3x3")):
+            lines = [x for x in hlo.splitlines() if f"custom_call @{target}(" in x]
+            assert len(lines) == 1 and f": (tensor<{m_shape}xf64>, tensor<6x3xf64>" in lines[0], lines
+    else:
+        assert calls == [(6, 3)], calls  # broadcast_all: the mapped axis, one call
     batched = jax.grad(jax_loss(c, np.zeros_like(c), backend="cpu"), argnums=(0, 1))(M, q)
     for a, b in zip(per_problem, batched):
         np.testing.assert_allclose(np.asarray(a), np.asarray(b), rtol=1e-13, atol=1e-13)
