@@ -43,14 +43,22 @@ PyTorch's intra-op threads compete with the solver's (use
 
 Target: each adapter ≤ 10% over the Rust calls (ratios of medians and of
 minimums).
+
+With ``--grad --ab PACKAGE``: old and new in one process, paired, the
+steadier comparison on a loaded machine (see ``ab_overhead``):
+
+    PYTHONPATH=/tmp/old python -P python/bench_overhead.py --grad --ab lcpbatch_old --threads 1
 """
 
 from __future__ import annotations
 
 import argparse
+import collections
+import importlib
 import json
 import statistics
 import time
+from typing import Dict, List, Tuple
 
 import numpy as np
 
@@ -66,11 +74,12 @@ def batch(problems: int, n: int, seed: int = 0):
     return M, q
 
 
-def adapters(M, q, c, settings: dict, torch_threads: int):
+def adapters(M, q, c, settings: dict, torch_threads: int, package: str = "lcpbatch"):
     """The solve + gradient of each adapter installed, and the same loss's
     gradient without the solve (the framework's own cost), as pairs of
     functions of no argument that return when the gradient is ready, and
-    the forward alone (the solve, its graph recorded for a backward)."""
+    the forward alone (the solve, its graph recorded for a backward).
+    ``package``: the lcpbatch build whose adapters are timed (``--ab``)."""
     calls = {}
     try:
         import jax
@@ -78,14 +87,14 @@ def adapters(M, q, c, settings: dict, torch_threads: int):
     except ImportError:
         print("jax not installed: no jax timing")
     else:
-        import lcpbatch.jax
+        lcp_jax = importlib.import_module(f"{package}.jax")
 
         jax.config.update("jax_enable_x64", True)
         Mj, qj, cj = jnp.asarray(M), jnp.asarray(q), jnp.asarray(c)
         step = jax.jit(jax.value_and_grad(
-            lambda M, q: jnp.sum(cj * lcpbatch.jax.solve(M, q, **settings)[0]), argnums=(0, 1)))
+            lambda M, q: jnp.sum(cj * lcp_jax.solve(M, q, **settings)[0]), argnums=(0, 1)))
         base = jax.jit(jax.value_and_grad(lambda M, q: jnp.sum(cj * (q + M[..., 0])), argnums=(0, 1)))
-        forward = jax.jit(lambda M, q: lcpbatch.jax.solve(M, q, **settings))
+        forward = jax.jit(lambda M, q: lcp_jax.solve(M, q, **settings))
         calls["jax"] = (lambda: jax.block_until_ready(step(Mj, qj)),
                         lambda: jax.block_until_ready(base(Mj, qj)),
                         lambda: jax.block_until_ready(forward(Mj, qj)))
@@ -94,7 +103,7 @@ def adapters(M, q, c, settings: dict, torch_threads: int):
     except ImportError:
         print("torch not installed: no torch timing")
     else:
-        import lcpbatch.torch
+        lcp_torch = importlib.import_module(f"{package}.torch")
 
         if torch_threads > 0:
             torch.set_num_threads(torch_threads)
@@ -103,14 +112,111 @@ def adapters(M, q, c, settings: dict, torch_threads: int):
         qt.requires_grad_(True)
 
         def torch_step():
-            z, _ = lcpbatch.torch.solve(Mt, qt, **settings)
+            z, _ = lcp_torch.solve(Mt, qt, **settings)
             return torch.autograd.grad((ct * z).sum(), (Mt, qt))
 
         def torch_base():
             return torch.autograd.grad((ct * (qt + Mt[..., 0])).sum(), (Mt, qt))
 
-        calls["torch"] = (torch_step, torch_base, lambda: lcpbatch.torch.solve(Mt, qt, **settings))
+        calls["torch"] = (torch_step, torch_base, lambda: lcp_torch.solve(Mt, qt, **settings))
     return calls
+
+
+def timed(f) -> Tuple[float, float]:
+    """The wall and process CPU seconds of one call of ``f``."""
+    t, p = time.perf_counter(), time.process_time()
+    f()
+    return time.perf_counter() - t, time.process_time() - p
+
+
+def rust_round(s, M, q, z, c) -> Tuple[Dict[str, float], Dict[str, float]]:
+    """One round of the Rust calls: the wall seconds of the library's solve
+    and VJP, each timed in Rust with its problems built, and the process CPU
+    seconds of each (a call of two less a call of one: the building cancels)."""
+    calls = {"solve": lambda k: s._native.time_solve_lcps(M, q, k),
+             "vjp": lambda k: lcpbatch._native.time_lcp_vjp(M, q, z, c, k)}
+    wall = {key: f(1)[0] for key, f in calls.items()}
+    cpu = {}
+    for key, f in calls.items():
+        p = time.process_time()
+        f(2)
+        p2 = time.process_time()
+        f(1)
+        cpu[key] = (p2 - p) - (time.process_time() - p2)
+    return wall, cpu
+
+
+def ab_overhead(args: argparse.Namespace) -> None:
+    """``--grad --ab PACKAGE``: this lcpbatch's adapters and another build's
+    (importable as PACKAGE, e.g. an old build's package folder copied as
+    ``lcpbatch_old`` onto PYTHONPATH), called in turns in one process: per
+    iteration each adapter's solve + grad of both builds, the forward of
+    both, the framework's own loss and gradient, and the Rust calls, the two
+    builds' order reversed every other iteration. Per build: the medians
+    over iterations of each iteration's wall-time overheads (net of the
+    framework's own, over the Rust solve + VJP; the forward over the Rust
+    solve), the process CPU overheads (medians of CPU seconds), and the
+    paired saving, old less new, per iteration (medians)."""
+    M, q = batch(args.problems, args.n)
+    c = np.random.default_rng(1).standard_normal(q.shape)
+    settings = dict(backend=args.backend, threads=args.threads)
+    s = lcpbatch.Solver(**settings)
+    z = s.solve(M, q).z
+    sides = {"new": adapters(M, q, c, settings, args.torch_threads),
+             "old": adapters(M, q, c, settings, args.torch_threads, args.ab)}
+    names = [name for name in sides["new"] if name in sides["old"]]
+    for calls in sides.values():
+        for fs in calls.values():
+            for f in fs:
+                f()  # warm-up: compilation, the cached solver, thread pool
+    wall: Dict[Tuple[str, ...], List[float]] = collections.defaultdict(list)
+    cpu: Dict[Tuple[str, ...], List[float]] = collections.defaultdict(list)
+    for i in range(args.repeats):
+        order = ("new", "old") if i % 2 == 0 else ("old", "new")
+        for name in names:
+            for k, part in ((0, "step"), (2, "forward")):
+                for side in order:
+                    w, p = timed(sides[side][name][k])
+                    wall[side, name, part].append(w)
+                    cpu[side, name, part].append(p)
+            w, p = timed(sides["new"][name][1])
+            wall["base", name].append(w)
+            cpu["base", name].append(p)
+        w, p = rust_round(s, M, q, z, c)
+        for key in ("solve", "vjp"):
+            wall["rust", key].append(w[key])
+            cpu["rust", key].append(p[key])
+    med = statistics.median
+    rs, rv = med(cpu["rust", "solve"]), med(cpu["rust", "vjp"])
+    out = {"problems": args.problems, "n": args.n, "device": s.device, "repeats": args.repeats, "old": args.ab,
+           "rust_solve_s_median": med(wall["rust", "solve"]), "rust_vjp_s_median": med(wall["rust", "vjp"]),
+           "rust_cpu_solve_s_median": rs, "rust_cpu_vjp_s_median": rv}
+    for name in names:
+        for side in ("new", "old"):
+            net = [(t - b) / (a + v) - 1 for t, b, a, v in zip(wall[side, name, "step"], wall["base", name],
+                                                               wall["rust", "solve"], wall["rust", "vjp"])]
+            fw = [t / a - 1 for t, a in zip(wall[side, name, "forward"], wall["rust", "solve"])]
+            out[f"{name}_{side}_net_overhead_wall"] = med(net)
+            out[f"{name}_{side}_forward_overhead_wall"] = med(fw)
+            out[f"{name}_{side}_net_overhead_cpu"] = (med(cpu[side, name, "step"]) - med(cpu["base", name])) / (rs + rv) - 1
+            out[f"{name}_{side}_forward_overhead_cpu"] = med(cpu[side, name, "forward"]) / rs - 1
+        for part in ("step", "forward"):
+            for kind, d in (("wall", wall), ("cpu", cpu)):
+                saved = [o - n for o, n in zip(d["old", name, part], d["new", name, part])]
+                out[f"{name}_{part}_saved_ms_{kind}"] = 1e3 * med(saved)
+    print(json.dumps(out, indent=2))
+    for name in names:
+        for side in ("old", "new"):
+            x = {k: 100 * out[f"{name}_{side}_{k}"] for k in ("net_overhead_wall", "net_overhead_cpu",
+                                                           "forward_overhead_wall", "forward_overhead_cpu")}
+            print(f"lcpbatch.{name}, {side} ({args.ab if side == 'old' else 'lcpbatch'}): solve + grad net "
+                  f"{x['net_overhead_wall']:+.1f}% wall / {x['net_overhead_cpu']:+.1f}% CPU over the Rust solve + "
+                  f"VJP; forward {x['forward_overhead_wall']:+.1f}% / {x['forward_overhead_cpu']:+.1f}% over the "
+                  f"Rust solve")
+        print(f"lcpbatch.{name}: paired saving per call, old less new (medians of {args.repeats}): solve + grad "
+              f"{out[f'{name}_step_saved_ms_wall']:.2f} ms wall, {out[f'{name}_step_saved_ms_cpu']:.2f} ms CPU; "
+              f"forward {out[f'{name}_forward_saved_ms_wall']:.2f} ms wall, "
+              f"{out[f'{name}_forward_saved_ms_cpu']:.2f} ms CPU (Rust {1e3 * rs:.1f} + {1e3 * rv:.1f} ms CPU)")
 
 
 def grad_overhead(args: argparse.Namespace) -> None:
@@ -128,23 +234,17 @@ def grad_overhead(args: argparse.Namespace) -> None:
     forwards = {name: [] for name in calls}
     cpu = {(name, k): [] for name in calls for k in range(3)}
     rust, rust_solve, rust_cpu = [], [], {"solve": [], "vjp": []}
-    rust_calls = {"solve": lambda k: s._native.time_solve_lcps(M, q, k),
-                  "vjp": lambda k: lcpbatch._native.time_lcp_vjp(M, q, z, c, k)}
     for _ in range(args.repeats):
         for name, fs in calls.items():
             for k, (f, into) in enumerate(zip(fs, (times, bases, forwards))):
-                t, p = time.perf_counter(), time.process_time()
-                f()
-                into[name].append(time.perf_counter() - t)
-                cpu[name, k].append(time.process_time() - p)
-        rust_solve.append(s._native.time_solve_lcps(M, q, 1)[0])
-        rust.append(rust_solve[-1] + lcpbatch._native.time_lcp_vjp(M, q, z, c, 1)[0])
-        for key, f in rust_calls.items():  # CPU of one call alone: two less one (the building cancels)
-            p = time.process_time()
-            f(2)
-            p2 = time.process_time()
-            f(1)
-            rust_cpu[key].append((p2 - p) - (time.process_time() - p2))
+                wall, seconds = timed(f)
+                into[name].append(wall)
+                cpu[name, k].append(seconds)
+        wall, seconds = rust_round(s, M, q, z, c)
+        rust_solve.append(wall["solve"])
+        rust.append(wall["solve"] + wall["vjp"])
+        for key in rust_cpu:
+            rust_cpu[key].append(seconds[key])
     out = {"problems": args.problems, "n": args.n, "device": s.device, "repeats": args.repeats,
            "torch_threads": args.torch_threads,
            "rust_solve_plus_vjp_s_median": statistics.median(rust), "rust_solve_plus_vjp_s_min": min(rust),
@@ -201,9 +301,12 @@ def main() -> None:
     ap.add_argument("--grad", action="store_true", help="time the adapters' solve + gradient")
     ap.add_argument("--torch-threads", type=int, default=0,
                     help="torch.set_num_threads for --grad (0: PyTorch's default)")
+    ap.add_argument("--ab", metavar="PACKAGE",
+                    help="with --grad: pair this build's adapters with another build's, importable as PACKAGE, "
+                         "called in turns in one process")
     args = ap.parse_args()
     if args.grad:
-        grad_overhead(args)
+        (ab_overhead if args.ab else grad_overhead)(args)
         return
 
     M, q = batch(args.problems, args.n)
