@@ -31,6 +31,10 @@ from . import _gradient, _inputs, _native
 
 jax = _gradient.framework("jax", "JAX", 'pip install "jax[cpu]" (or pip install "lcpbatch[jax]")')
 jnp = jax.numpy
+try:  # XLA's FFI from Python (`jax.ffi`, in newer JAX); without it, the callbacks.
+    from jax import ffi as _jax_ffi
+except ImportError:
+    _jax_ffi = None
 
 __all__ = ["solve", "solve_scenes"]
 
@@ -158,7 +162,7 @@ def _ffi_ready() -> bool:
     """Whether ``solve`` calls the FFI handlers: ``jax.ffi`` exists and
     JAX's default backend is the CPU (the handlers are registered for the
     CPU platform; on first use)."""
-    if not _USE_FFI or not hasattr(jax, "ffi") or jax.default_backend() != "cpu":
+    if not _USE_FFI or _jax_ffi is None or jax.default_backend() != "cpu":
         return False
     _register_ffi_targets()
     return True
@@ -167,7 +171,7 @@ def _ffi_ready() -> bool:
 @functools.lru_cache(maxsize=1)
 def _register_ffi_targets() -> None:
     for name, capsule in _native.ffi_targets().items():
-        jax.ffi.register_ffi_target(name, capsule, platform="cpu", api_version=1)
+        _jax_ffi.register_ffi_target(name, capsule, platform="cpu", api_version=1)
 
 
 #: The solver id (``_native.ffi_register``) of each set of settings the FFI
@@ -193,7 +197,7 @@ def _ffi_function(key: Tuple[Any, ...]) -> Callable[[Any, Any], Tuple[Any, Any]]
         batch, n = q.shape[:-1], q.shape[-1]
         _inputs.check_enumeration_size([n], solver.settings["method"], solver.settings["backend"])
         out = (jax.ShapeDtypeStruct(q.shape, q.dtype),) * 2 + (jax.ShapeDtypeStruct(batch, np.int8),)
-        return jax.ffi.ffi_call("lcpbatch_solve", out, vmap_method="broadcast_all")(
+        return _jax_ffi.ffi_call("lcpbatch_solve", out, vmap_method="broadcast_all")(
             M, q, solver=np.int64(solver_id))
 
     @jax.custom_vjp
@@ -208,7 +212,7 @@ def _ffi_function(key: Tuple[Any, ...]) -> Callable[[Any, Any], Tuple[Any, Any]]
         M, q, z = res
         tolerance = _gradient._tolerance_for(vjp_tolerance, np.zeros(0, z.dtype))
         out = (jax.ShapeDtypeStruct(M.shape, M.dtype), jax.ShapeDtypeStruct(q.shape, q.dtype))
-        return tuple(jax.ffi.ffi_call("lcpbatch_vjp", out, vmap_method="broadcast_all")(
+        return tuple(_jax_ffi.ffi_call("lcpbatch_vjp", out, vmap_method="broadcast_all")(
             M, q, z, *g, tolerance=np.float64(tolerance)))
 
     f.defvjp(f_fwd, f_bwd)

@@ -5,6 +5,8 @@
 argument a caller of ``jax.ffi.ffi_call`` can pass refused with a message
 naming it. JAX (CPU) is installed in CI."""
 
+import ctypes
+
 import jax
 import jax.numpy as jnp
 import numpy as np
@@ -77,6 +79,19 @@ def solver_of(M, q):
     return lj._FFI_SOLVERS[(("backend", "cpu"),)][1]
 
 
+def test_without_jax_ffi_the_callbacks_solve(monkeypatch):
+    """A JAX without ``jax.ffi`` (or a GPU default backend) takes the
+    ``pure_callback`` path: no custom call in the program, the same z."""
+    M, q = problems(np.float64)
+    want = lcpbatch.solve(M, q, backend="cpu").z
+    want[-2] = np.nan  # no solution: NaN from the adapters
+    monkeypatch.setattr(lj, "_jax_ffi", None)
+    assert not lj._ffi_ready()
+    f = jax.jit(lambda M, q: lj.solve(M, q, backend="cpu")[0])
+    assert "lcpbatch_solve" not in f.lower(M, q).as_text()
+    assert np.array_equal(np.asarray(f(M, q)), want, equal_nan=True)
+
+
 def raw_solve(M, q, solver_id, out=None):
     """The handler called directly, as any jax.ffi.ffi_call may call it."""
     q = jnp.asarray(q)
@@ -147,3 +162,63 @@ def test_errors_are_the_callback_paths(monkeypatch):
         for b, n in ((0, 3), (2, 0)):
             z, w = lj.solve(np.zeros((b, n, n)), np.zeros((b, n)), backend="cpu")
             assert z.shape == w.shape == (b, n)
+
+
+class _ExtensionBase(ctypes.Structure):
+    _fields_ = [("struct_size", ctypes.c_size_t), ("kind", ctypes.c_int), ("next", ctypes.c_void_p)]
+
+
+class _ApiVersion(ctypes.Structure):
+    _fields_ = [("struct_size", ctypes.c_size_t), ("extension_start", ctypes.c_void_p),
+                ("major", ctypes.c_int), ("minor", ctypes.c_int)]
+
+
+class _Metadata(ctypes.Structure):
+    _fields_ = [("struct_size", ctypes.c_size_t), ("api_version", _ApiVersion), ("traits", ctypes.c_uint32),
+                ("state_type_id", ctypes.c_int64)]
+
+
+class _MetadataExtension(ctypes.Structure):
+    _fields_ = [("base", _ExtensionBase), ("metadata", ctypes.POINTER(_Metadata))]
+
+
+class _List(ctypes.Structure):  # XLA_FFI_Args, XLA_FFI_Rets and (one more pointer) XLA_FFI_Attrs
+    _fields_ = [("struct_size", ctypes.c_size_t), ("extension_start", ctypes.c_void_p), ("size", ctypes.c_int64),
+                ("types", ctypes.c_void_p), ("items", ctypes.c_void_p)]
+
+
+class _Attrs(ctypes.Structure):
+    _fields_ = _List._fields_ + [("attrs", ctypes.c_void_p)]
+
+
+class _CallFrame(ctypes.Structure):
+    _fields_ = [("struct_size", ctypes.c_size_t), ("extension_start", ctypes.c_void_p), ("api", ctypes.c_void_p),
+                ("ctx", ctypes.c_void_p), ("stage", ctypes.c_int), ("args", _List), ("rets", _List),
+                ("attrs", _Attrs), ("future", ctypes.c_void_p)]
+
+
+def _handler(name):
+    """The handler's function pointer out of its capsule, callable from ctypes."""
+    get = ctypes.pythonapi.PyCapsule_GetPointer
+    get.restype, get.argtypes = ctypes.c_void_p, (ctypes.py_object, ctypes.c_char_p)
+    pointer = get(lcpbatch._native.ffi_targets()[name], None)
+    return ctypes.CFUNCTYPE(ctypes.c_void_p, ctypes.POINTER(_CallFrame))(pointer)
+
+
+@pytest.mark.parametrize("name", ["lcpbatch_solve", "lcpbatch_vjp"])
+def test_the_handlers_answer_xlas_metadata_query_and_skip_stages_before_execute(name):
+    """Called as XLA calls them (c_api.h's structs, by ctypes): the metadata
+    extension gets the API version 0.3, no traits, no state; a stage before
+    `execute` does nothing and reads no argument (none are given)."""
+    handler = _handler(name)
+    header_size = _CallFrame.future.offset  # XLA_FFI_CallFrame_STRUCT_SIZE: up to `attrs`
+    metadata = _Metadata(struct_size=ctypes.sizeof(_Metadata), traits=99, state_type_id=7)
+    ext = _MetadataExtension(base=_ExtensionBase(ctypes.sizeof(_MetadataExtension), 1, None),
+                             metadata=ctypes.pointer(metadata))
+    frame = _CallFrame(struct_size=header_size, extension_start=ctypes.addressof(ext), stage=3)
+    assert handler(ctypes.byref(frame)) is None  # no error
+    v = metadata.api_version
+    assert (v.struct_size, v.major, v.minor) == (ctypes.sizeof(_ApiVersion), 0, 3)
+    assert (metadata.traits, metadata.state_type_id) == (0, 0)
+    for stage in (0, 1, 2):  # instantiate, prepare, initialize
+        assert handler(ctypes.byref(_CallFrame(struct_size=header_size, stage=stage))) is None
