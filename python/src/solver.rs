@@ -18,7 +18,7 @@ use crate::{batch, friction, guard, report, scenes, settings::Args, to_py_err, w
 
 /// The library's solver behind a mutex (see the module docs).
 /// Frozen (every method takes `&self`, state sits behind mutexes): the
-/// XLA FFI handlers reach it without the GIL (`ffi.rs`).
+/// XLA FFI handlers reach it without the GIL (`ffi/`).
 #[pyclass(module = "lcpbatch._native", frozen)]
 pub(crate) struct NativeSolver {
     solver: Mutex<Solver>,
@@ -112,7 +112,7 @@ impl NativeSolver {
         s.solve_lcps(&lcps)
     }
 
-    /// For the XLA FFI handler (`ffi.rs`), without Python: the C-ordered
+    /// For the XLA FFI handler (`ffi/`), without Python: the C-ordered
     /// finite batch `ms` (B·n·n), `qs` (B·n) of size n > 0 solved as
     /// [`Self::solve_dense_zw`] solves it (the same chunks and kept
     /// problems, on the calling thread; no Ctrl-C check). The report, None
