@@ -6,6 +6,7 @@ argument a caller of ``jax.ffi.ffi_call`` can pass refused with a message
 naming it. JAX (CPU) is installed in CI."""
 
 import ctypes
+import warnings
 
 import jax
 import jax.numpy as jnp
@@ -13,7 +14,7 @@ import numpy as np
 import pytest
 
 import lcpbatch
-from conftest import random_pd_batch
+from conftest import gpu_solver_or_skip, random_pd_batch
 
 jax.config.update("jax_enable_x64", True)
 
@@ -70,6 +71,37 @@ def test_ffi_path_equals_the_callback_path_bit_for_bit(monkeypatch, dtype):
     mapped = both_paths(monkeypatch, *split, transform=lambda f: jax.jit(jax.vmap(f)))
     assert_bitwise_equal(mapped[0], mapped[1])
     assert_bitwise_equal([x.reshape(y.shape) for x, y in zip(mapped[0], callback)], callback)
+
+
+def test_on_the_gpu_backend_the_ffi_path_equals_the_callbacks(monkeypatch):
+    """The handler drives the solver's device as the callbacks do (lavapipe
+    here): the same z and gradients, bit for bit."""
+    settings = dict(backend="gpu", precision=gpu_solver_or_skip().settings["precision"])
+    M, q = random_pd_batch(np.random.default_rng(27), 64, 4)
+    out = {}
+    for ffi in (True, False):
+        monkeypatch.setattr(lj, "_USE_FFI", ffi)
+        z = lj.solve(M, q, **settings)[0]
+        g = jax.grad(lambda q: jnp.sum(lj.solve(M, q, **settings)[0]))(q)
+        out[ffi] = [np.asarray(z), np.asarray(g)]
+    assert_bitwise_equal(out[True], out[False])
+    np.testing.assert_allclose(out[True][0], lcpbatch.solve(M, q, backend="cpu").z, atol=1e-9)
+
+
+def test_device_trouble_warns_once_and_the_handler_solves_on_the_cpu():
+    """A solver whose GPU is not there warns once (when it is made) and
+    solves on the CPU; the handler's report of that fallback goes back to
+    the same once-only warning (through the GIL) and raises nothing."""
+    M, q = problems(np.float64)
+    with pytest.warns(lcpbatch.DeviceWarning, match="solving on the CPU"):
+        z = lj.solve(M, q, backend="gpu", adapter="no-such-adapter-anywhere")[0]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        z2 = jax.jit(lambda M, q: lj.solve(M, q, backend="gpu", adapter="no-such-adapter-anywhere")[0])(M, q)
+    want = lcpbatch.solve(M, q, backend="cpu").z
+    want[-2] = np.nan
+    assert np.array_equal(np.asarray(z), want, equal_nan=True) and np.array_equal(np.asarray(z2), np.asarray(z),
+                                                                                    equal_nan=True)
 
 
 def solver_of(M, q):
