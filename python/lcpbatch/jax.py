@@ -161,7 +161,10 @@ _USE_FFI = True
 def _ffi_ready() -> bool:
     """Whether ``solve`` calls the FFI handlers: ``jax.ffi`` exists and
     JAX's default backend is the CPU (the handlers are registered for the
-    CPU platform; on first use)."""
+    CPU platform; on first use). The choice follows the default backend,
+    not the platform a call is lowered for: with a CPU default and arrays
+    placed on an accelerator, the FFI call has no handler there and
+    lowering fails; ``_USE_FFI = False`` keeps the callbacks."""
     if not _USE_FFI or _jax_ffi is None or jax.default_backend() != "cpu":
         return False
     _register_ffi_targets()

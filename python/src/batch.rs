@@ -221,7 +221,14 @@ pub(crate) fn zw<'py>(
 ) -> PyResult<ZwArrays<'py>> {
     let (mut z, mut w) = (vec![0.0; dim.0 * dim.1], vec![0.0; dim.0 * dim.1]);
     let mut status = vec![0; islands.len()];
-    zw_into(islands, &mut z, &mut w, &mut status, |v| v);
+    if !zw_into(islands, &mut z, &mut w, &mut status, |v| v) {
+        return Err(PyValueError::new_err(format!(
+            "the report's {} islands do not fill a ({}, {}) batch",
+            islands.len(),
+            dim.0,
+            dim.1
+        )));
+    }
     Ok((
         array2(py, dim, z)?,
         array2(py, dim, w)?,
@@ -231,19 +238,25 @@ pub(crate) fn zw<'py>(
 
 /// Writes the islands' z and w one after the other into `z` and `w` (as
 /// `to` converts each entry) and their status codes into `status`, in one
-/// pass; an island whose z would run past the end is cut short (the
-/// callers size the slices for their islands).
+/// pass. `false`, with nothing written, where the islands do not fill the
+/// slices exactly (one island per status, their z lengths summing to
+/// `z.len()`): a report of the wrong size, which only a library bug gives.
+#[must_use]
 pub(crate) fn zw_into<T>(
     islands: &[IslandReport],
     z: &mut [T],
     w: &mut [T],
     status: &mut [i8],
     to: impl Fn(f64) -> T,
-) {
+) -> bool {
+    let total: usize = islands.iter().map(|i| i.solution.z.len()).sum();
+    if islands.len() != status.len() || total != z.len() || total != w.len() {
+        return false;
+    }
     let mut at = 0;
     for (i, code) in islands.iter().zip(status.iter_mut()) {
         let (sz, sw) = (&i.solution.z, &i.solution.w);
-        let end = (at + sz.len()).min(z.len());
+        let end = at + sz.len();
         for (o, &v) in z[at..end].iter_mut().zip(sz) {
             *o = to(v);
         }
@@ -253,6 +266,7 @@ pub(crate) fn zw_into<T>(
         *code = crate::report::status_code(i.status());
         at = end;
     }
+    true
 }
 
 /// `v` as a NumPy array of shape `dim` (`ValueError` if its length is not that).

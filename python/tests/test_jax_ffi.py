@@ -187,6 +187,11 @@ def test_errors_are_the_callback_paths(monkeypatch):
         monkeypatch.setattr(lj, "_USE_FFI", ffi)
         with pytest.raises(Exception, match=r"M\[1, 0, 1\] is NaN: every entry of M must be finite"):
             np.asarray(lj.solve(bad, q, backend="cpu")[0])
+        # Problem by problem, M[b] before q[b]: q[0] is named before M[1].
+        bad_q = q.copy()
+        bad_q[0, 1] = np.nan
+        with pytest.raises(Exception, match=r"q\[0, 1\] is NaN: every entry of q must be finite"):
+            np.asarray(lj.solve(bad, bad_q, backend="cpu")[0])
         _, pull = jax.vjp(lambda q: lj.solve(M[:40], q, backend="cpu")[0], jnp.asarray(q[:40]))
         with pytest.raises(Exception, match=r"island 3.*dz\[0\].*not a finite number"):
             np.asarray(pull(jnp.asarray(dz[:40]))[0])

@@ -145,21 +145,24 @@ fn problem(m: &Buf<'_>, q: &Buf<'_>) -> Result<(usize, usize, c_int), Fail> {
     Ok((n, b, m.dtype))
 }
 
-/// The error of the first non-finite entry of `values` (B problems of
-/// `per` entries each, indexed like `[b, i, j]` for M, `[b, i]` for q).
-fn check_finite(name: &str, values: &[f64], n: usize, matrix: bool) -> Result<(), Fail> {
-    if batch::all_finite(values) {
+/// The error of the first non-finite entry, problem by problem (M[b]
+/// before q[b]) as the callback path checks them, indexed `[b, i, j]` for
+/// M and `[b, i]` for q.
+fn check_finite(ms: &[f64], qs: &[f64], n: usize) -> Result<(), Fail> {
+    if batch::all_finite(ms) && batch::all_finite(qs) {
         return Ok(());
     }
-    let Some((k, v)) = batch::first_non_finite(values.iter()) else {
-        return Ok(());
-    };
-    let index = if matrix {
-        format!("[{}, {}, {}]", k / (n * n), k / n % n, k % n)
-    } else {
-        format!("[{}, {}]", k / n, k % n)
-    };
-    Err(invalid(batch::non_finite_message(name, &index, v)))
+    for (b, (m, q)) in ms.chunks_exact(n * n).zip(qs.chunks_exact(n)).enumerate() {
+        if let Some((k, v)) = batch::first_non_finite(m.iter()) {
+            let index = format!("[{b}, {}, {}]", k / n, k % n);
+            return Err(invalid(batch::non_finite_message("M", &index, v)));
+        }
+        if let Some((k, v)) = batch::first_non_finite(q.iter()) {
+            let index = format!("[{b}, {k}]");
+            return Err(invalid(batch::non_finite_message("q", &index, v)));
+        }
+    }
+    Ok(())
 }
 
 /// `lcpbatch_solve`: see the module docs.
@@ -186,8 +189,7 @@ fn solve(frame: &CallFrame) -> Result<(), Fail> {
         ));
     }
     let (ms, qs) = (m.reals()?, q.reals()?);
-    check_finite("M", &ms, n, true)?;
-    check_finite("q", &qs, n, false)?;
+    check_finite(&ms, &qs, n)?;
     let Some(report) = entry
         .native
         .get()
@@ -205,17 +207,30 @@ fn solve(frame: &CallFrame) -> Result<(), Fail> {
         .collect();
     if dtype == F64 {
         let (zs, ws) = unsafe { (z.view_mut::<f64>()?, w.view_mut::<f64>()?) };
-        batch::zw_into(&report.islands, zs, ws, codes, |v| v);
+        if !batch::zw_into(&report.islands, zs, ws, codes, |v| v) {
+            return Err(short(&report));
+        }
         nan_rows(zs, ws, n, &solved, f64::NAN);
     } else {
         let (zs, ws) = unsafe { (z.view_mut::<f32>()?, w.view_mut::<f32>()?) };
-        batch::zw_into(&report.islands, zs, ws, codes, |v| v as f32);
+        if !batch::zw_into(&report.islands, zs, ws, codes, |v| v as f32) {
+            return Err(short(&report));
+        }
         nan_rows(zs, ws, n, &solved, f32::NAN);
     }
     match &report.fallback {
         Some(why) => warn_fallback(entry, why),
         None => Ok(()),
     }
+}
+
+/// The failure of a report that does not fill the results (a library bug).
+fn short(report: &lcpbatch::Report) -> Fail {
+    let message = format!(
+        "the report's {} islands do not fill z",
+        report.islands.len()
+    );
+    (xla::INTERNAL, message)
 }
 
 /// NaN in the rows of z and w of the problems without a solution.
@@ -266,8 +281,7 @@ fn vjp(frame: &CallFrame) -> Result<(), Fail> {
         };
     }
     let (ms, qs, zs, dzs, dws) = (m.reals()?, q.reals()?, z.reals()?, dz.reals()?, dw.reals()?);
-    check_finite("M", &ms, n, true)?;
-    check_finite("q", &qs, n, false)?;
+    check_finite(&ms, &qs, n)?;
     // A zero ∂L/∂w (JAX passes zeros for an unused w) adds nothing.
     let dw = dws.iter().any(|&v| v != 0.0).then_some(&dws[..]);
     if dtype == F64 {
