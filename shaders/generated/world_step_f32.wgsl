@@ -866,8 +866,10 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 // functions, up to its stage's bindings) and shaders/lemke.wgsl (up to its
 // kernel's part), and before shaders/world_solve.wgsl (`world_solve`, a
 // file of its own by phase), shaders/world_friction.wgsl and the cone
-// projection of shaders/friction_common.wgsl: collide_shapes, lemke_pivots
-// and project_on_cone are called as they are.
+// projection of shaders/friction_common.wgsl: collide_shapes' pair
+// functions (box_box, box_plane, sphere_plane, sphere_sphere, sphere_box,
+// dispatched and flipped as it does), lemke_pivots and project_on_cone are
+// called as they are.
 //
 // A world the kernel cannot step is flagged (`flags` below) and its state
 // left as it was: the host steps it on the CPU from there. Flags: contact
