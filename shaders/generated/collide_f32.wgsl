@@ -405,14 +405,25 @@ fn best_axis(x: Placed, hx: vec3<Scalar>, y: Placed, hy: vec3<Scalar>, margin: S
     return face;
 }
 
-// Box x against box y, normals from y to x.
+// Box x against box y, normals from y to x. The face of either box goes
+// through one call of face_contact, its reference box chosen first
+// (llvmpipe runs both sides of every branch under a mask: two calls would
+// cost two).
 fn box_box(x: Placed, hx: vec3<Scalar>, y: Placed, hy: vec3<Scalar>, margin: Scalar) -> Manifold {
     let a = best_axis(x, hx, y, hy, margin);
-    if a.kind == AXIS_FACE && a.of_x {
-        return face_contact(x, hx, y, hy, a.i, margin, false);
-    }
     if a.kind == AXIS_FACE {
-        return face_contact(y, hy, x, hx, a.i, margin, true);
+        let ref_is_y = !a.of_x;
+        var re = x;
+        var hr = hx;
+        var inc = y;
+        var hi = hy;
+        if ref_is_y {
+            re = y;
+            hr = hy;
+            inc = x;
+            hi = hx;
+        }
+        return face_contact(re, hr, inc, hi, a.i, margin, ref_is_y);
     }
     if a.kind == AXIS_EDGE {
         return edge_contact(x, hx, y, hy, a.i, a.j, a.axis, margin);

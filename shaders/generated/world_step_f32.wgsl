@@ -405,14 +405,25 @@ fn best_axis(x: Placed, hx: vec3<Scalar>, y: Placed, hy: vec3<Scalar>, margin: S
     return face;
 }
 
-// Box x against box y, normals from y to x.
+// Box x against box y, normals from y to x. The face of either box goes
+// through one call of face_contact, its reference box chosen first
+// (llvmpipe runs both sides of every branch under a mask: two calls would
+// cost two).
 fn box_box(x: Placed, hx: vec3<Scalar>, y: Placed, hy: vec3<Scalar>, margin: Scalar) -> Manifold {
     let a = best_axis(x, hx, y, hy, margin);
-    if a.kind == AXIS_FACE && a.of_x {
-        return face_contact(x, hx, y, hy, a.i, margin, false);
-    }
     if a.kind == AXIS_FACE {
-        return face_contact(y, hy, x, hx, a.i, margin, true);
+        let ref_is_y = !a.of_x;
+        var re = x;
+        var hr = hx;
+        var inc = y;
+        var hi = hy;
+        if ref_is_y {
+            re = y;
+            hr = hy;
+            inc = x;
+            hi = hx;
+        }
+        return face_contact(re, hr, inc, hi, a.i, margin, ref_is_y);
     }
     if a.kind == AXIS_EDGE {
         return edge_contact(x, hx, y, hy, a.i, a.j, a.axis, margin);
@@ -855,8 +866,10 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 // functions, up to its stage's bindings) and shaders/lemke.wgsl (up to its
 // kernel's part), and before shaders/world_solve.wgsl (`world_solve`, a
 // file of its own by phase), shaders/world_friction.wgsl and the cone
-// projection of shaders/friction_common.wgsl: collide_shapes, lemke_pivots
-// and project_on_cone are called as they are.
+// projection of shaders/friction_common.wgsl: collide_shapes' pair
+// functions (box_box, box_plane, sphere_plane, sphere_sphere, sphere_box,
+// dispatched and flipped as it does), lemke_pivots and project_on_cone are
+// called as they are.
 //
 // A world the kernel cannot step is flagged (`flags` below) and its state
 // left as it was: the host steps it on the CPU from there. Flags: contact
@@ -874,7 +887,9 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 // - state: per body BS scalars (position 3, orientation x, y, z, w,
 //   velocity 3, angular velocity 3);
 // - scratch: per body 6 scalars (v*, then v after the impulses), then per
-//   contact slot CP scalars (point 3, normal 3, gap, z);
+//   contact slot CP scalars (point 3, normal 3, gap, z); from
+//   params.pairs_at per world params.pair_slots pair records of CP scalars
+//   (point 3, normal 3, gap, feature), SLOTS per candidate pair;
 // - words: per body 2 (asleep, quiet steps); from params.out_at per world 4
 //   (contacts, moving-body mask, flags, islands); from params.keys_at per
 //   contact slot 4 (a, b, feature, island);
@@ -928,6 +943,10 @@ struct StepParams {
     // `budget` (llvmpipe runs 8 invocations in lockstep and counts their
     // loops together: lanes in different phases add up).
     friction_budget: u32,
+    // world_collide's pair records: where they start in `scratch`, and
+    // records per world (SLOTS per candidate pair).
+    pairs_at: u32,
+    pair_slots: u32,
     dt: Scalar,
     // The door's final check: lcp_error <= tolerance.
     tolerance: Scalar,
@@ -1020,12 +1039,64 @@ fn overlaps(a: Aabb, b: Aabb) -> bool {
     return all(a.lo <= b.hi) && all(b.lo <= a.hi);
 }
 
+// A box and a plane too far apart for any corner to come within `margin`
+// (box_plane would find nothing): the centre's height over the plane less
+// the box's half diagonal, with a slack above the rounding of box_plane's
+// corners (relative to the coordinates' size), at least `margin`.
+fn box_far_from_plane(b: Placed, p: Placed, margin: Scalar) -> bool {
+    let n = p.size;
+    let height = dot3(n, b.centre - p.centre);
+    let reach = length3(b.size) * length3(n);
+    let size = dot3(abs(n), abs(b.centre) + abs(p.centre)) + reach + abs(margin);
+    return height - reach >= margin + Scalar(64.0) * SCALAR_EPSILON * size;
+}
+
+// collide.wgsl's collide_shapes for a pair with a sphere: the sphere as
+// the first shape, the same calls; the caller flips the normals where the
+// sphere was the pair's second shape (collide_shapes' flip).
+fn collide_sphere(s: Placed, o: Placed, margin: Scalar) -> Manifold {
+    if o.kind == KIND_PLANE {
+        return sphere_plane(s.centre, s.size.x, o.centre, o.size, margin);
+    }
+    if o.kind == KIND_SPHERE {
+        return sphere_sphere(s.centre, s.size.x, o.centre, o.size.x, margin);
+    }
+    return sphere_box(s.centre, s.size.x, o, o.size, margin);
+}
+
+// Keeps candidate c's manifold (normals reversed where `flipped`) in world
+// w's pair records: its first SLOTS hits (point, normal, gap, feature); returns
+// its count word (length | OVERFLOW where the manifold overflowed).
+fn keep_manifold(w: u32, c: u32, m: Manifold, flipped: bool) -> u32 {
+    for (var h = 0u; h < min(m.len, SLOTS); h++) {
+        let hit = m.hits[h];
+        let at = sp.pairs_at + (w * sp.pair_slots + SLOTS * c + h) * CP;
+        put_scratch(at, hit.point);
+        put_scratch(at + 3u, select(hit.normal, -hit.normal, flipped));
+        scratch[at + 6u] = hit.gap;
+        scratch[at + 7u] = Scalar(hit.feature);
+    }
+    return m.len | select(0u, OVERFLOW, m.overflow);
+}
+
 // Step part 1 (step.rs prepare without impacts: restitution 0): v* = v +
 // Δt g for the awake dynamic bodies, then world_contacts: candidate pairs
 // (broad.rs candidate_pairs: boxes grown by half the margin plus the reach,
 // planes with every movable body; all pairs, in the sweep's sorted order
 // i < j), the narrow phase with margin + both reaches, sleeping bodies
 // woken by an awake one's contact (their v* = Δt g), until none wakes.
+//
+// In three phases, for llvmpipe, which runs every branch of an invocation
+// under a mask and every loop as often as its busiest lane: (1) the
+// candidates in pair order, less box–plane pairs that cannot touch
+// (box_far_from_plane); (2) the narrow phase of every candidate that an
+// awake body can reach through candidates (those world_contacts may
+// collide: a pair's manifold depends on the poses and reaches only, not on
+// when it is collided), in one loop per family (box–box, box–plane, with a
+// sphere) so that each lane pays for box_box only per box–box pair, the
+// manifolds kept in the pair records; (3) world_contacts' rounds over the
+// candidates in pair order, taking the kept manifolds: the same contacts in
+// the same order as collided there.
 @compute @workgroup_size(64)
 fn world_collide(@builtin(global_invocation_id) gid: vec3<u32>) {
     let w = gid.x;
@@ -1064,78 +1135,159 @@ fn world_collide(@builtin(global_invocation_id) gid: vec3<u32>) {
         placed[k] = placed_body(b);
         boxes[k] = aabb_of(placed[k], reach[k] + Scalar(0.5) * margin);
     }
+    // (1) Candidates, packed i | j << 8.
+    var cands: array<u32, 120>;
+    var nc = 0u;
+    var spent = 0u;
+    for (var i = 0u; i < nb; i++) {
+        for (var j = i + 1u; j < nb; j++) {
+            let bi = boxes[i];
+            let bj = boxes[j];
+            let either = ((movable >> i) | (movable >> j)) & 1u;
+            var candidate = false;
+            if bi.ok && bj.ok {
+                candidate = either != 0u && overlaps(bi, bj);
+            } else if bi.ok != bj.ok {
+                // A plane with a movable bounded body.
+                let other = select(i, j, bj.ok);
+                let plane = select(j, i, bj.ok);
+                candidate = ((movable >> other) & 1u) != 0u;
+                if placed[other].kind == KIND_BOX {
+                    let pm = margin + reach[i] + reach[j];
+                    candidate = candidate && !box_far_from_plane(placed[other], placed[plane], pm);
+                }
+            }
+            spent += 1u;
+            if candidate {
+                cands[nc] = i | (j << 8u);
+                nc++;
+            }
+        }
+    }
+    // (2) Bodies an awake body can reach through candidates.
+    var live = awake_mask;
+    loop {
+        let before = live;
+        for (var c = 0u; c < nc; c++) {
+            let ij = (1u << (cands[c] & 0xffu)) | (1u << (cands[c] >> 8u));
+            if (live & ij) != 0u {
+                live |= movable & ij;
+            }
+        }
+        if live == before {
+            break;
+        }
+    }
+    // Their candidates by family: box–box, box–plane, with a sphere.
+    var family: array<array<u32, 120>, 3>;
+    var members = vec3<u32>(0u, 0u, 0u);
+    for (var c = 0u; c < nc; c++) {
+        let i = cands[c] & 0xffu;
+        let j = cands[c] >> 8u;
+        if (live & ((1u << i) | (1u << j))) == 0u {
+            continue;
+        }
+        let ki = placed[i].kind;
+        let kj = placed[j].kind;
+        var f = 2u;
+        if ki == KIND_BOX && kj == KIND_BOX {
+            f = 0u;
+        } else if ki != KIND_SPHERE && kj != KIND_SPHERE {
+            f = 1u;
+        }
+        family[f][members[f]] = c;
+        members[f] += 1u;
+    }
+    var got: array<u32, 120>;
+    for (var t = 0u; t < members.x; t++) {
+        let c = family[0][t];
+        let i = cands[c] & 0xffu;
+        let j = cands[c] >> 8u;
+        let x = placed[i];
+        let y = placed[j];
+        got[c] = keep_manifold(w, c, box_box(x, x.size, y, y.size, margin + reach[i] + reach[j]), false);
+    }
+    for (var t = 0u; t < members.y; t++) {
+        let c = family[1][t];
+        let i = cands[c] & 0xffu;
+        let j = cands[c] >> 8u;
+        // collide_shapes: box_plane with the box first, flipped where the
+        // plane was the first shape.
+        let flipped = placed[i].kind == KIND_PLANE;
+        let b = placed[select(i, j, flipped)];
+        let p = placed[select(j, i, flipped)];
+        let m = box_plane(b, b.size, p.centre, p.size, margin + reach[i] + reach[j]);
+        got[c] = keep_manifold(w, c, m, flipped);
+    }
+    for (var t = 0u; t < members.z; t++) {
+        let c = family[2][t];
+        let i = cands[c] & 0xffu;
+        let j = cands[c] >> 8u;
+        let flipped = placed[i].kind != KIND_SPHERE;
+        let s = placed[select(i, j, flipped)];
+        let o = placed[select(j, i, flipped)];
+        let m = collide_sphere(s, o, margin + reach[i] + reach[j]);
+        got[c] = keep_manifold(w, c, m, flipped);
+    }
+    spent += 400u * (members.x + members.y + members.z);
+    // (3) world_contacts' rounds.
     var done: array<u32, 4>;
     var count = 0u;
     var flags = 0u;
-    var spent = 0u;
     let slot0 = w * sp.slots;
     loop {
         var woke = false;
-        var pair = 0u;
-        for (var i = 0u; i < nb; i++) {
-            for (var j = i + 1u; j < nb; j++) {
-                let bi = boxes[i];
-                let bj = boxes[j];
-                let either = ((movable >> i) | (movable >> j)) & 1u;
-                var candidate = false;
-                if bi.ok && bj.ok {
-                    candidate = either != 0u && overlaps(bi, bj);
-                } else if bi.ok != bj.ok {
-                    // A plane with a movable bounded body.
-                    let other = select(i, j, bj.ok);
-                    candidate = ((movable >> other) & 1u) != 0u;
+        for (var c = 0u; c < nc; c++) {
+            let i = cands[c] & 0xffu;
+            let j = cands[c] >> 8u;
+            spent += 1u;
+            let bit = 1u << (c & 31u);
+            let seen = (done[c >> 5u] & bit) != 0u;
+            let on = (((awake_mask >> i) | (awake_mask >> j)) & 1u) != 0u;
+            if seen || !on {
+                continue;
+            }
+            done[c >> 5u] |= bit;
+            let len = got[c] & ~OVERFLOW;
+            if len == 0u {
+                continue;
+            }
+            for (var s = 0u; s < 2u; s++) {
+                let x = select(i, j, s == 1u);
+                if ((movable >> x) & 1u) != 0u && ((awake_mask >> x) & 1u) == 0u {
+                    awake_mask |= 1u << x;
+                    // step.rs prepare: a woken body's v* is Δt g.
+                    put_scratch(6u * (first + x), g * dt);
+                    put_scratch(6u * (first + x) + 3u, vec3<Scalar>(0.0, 0.0, 0.0));
+                    woke = true;
                 }
-                let k = pair;
-                pair++;
-                spent += 1u;
-                let bit = 1u << (k & 31u);
-                let seen = (done[k >> 5u] & bit) != 0u;
-                let on = (((awake_mask >> i) | (awake_mask >> j)) & 1u) != 0u;
-                if !candidate || seen || !on {
-                    continue;
-                }
-                done[k >> 5u] |= bit;
-                spent += 400u;
-                let m = collide_shapes(placed[i], placed[j], margin + reach[i] + reach[j]);
-                if m.len == 0u {
-                    continue;
-                }
-                for (var s = 0u; s < 2u; s++) {
-                    let x = select(i, j, s == 1u);
-                    if ((movable >> x) & 1u) != 0u && ((awake_mask >> x) & 1u) == 0u {
-                        awake_mask |= 1u << x;
-                        // step.rs prepare: a woken body's v* is Δt g.
-                        put_scratch(6u * (first + x), g * dt);
-                        put_scratch(6u * (first + x) + 3u, vec3<Scalar>(0.0, 0.0, 0.0));
-                        woke = true;
-                    }
-                }
-                if m.overflow || m.len > SLOTS {
+            }
+            if (got[c] & OVERFLOW) != 0u || len > SLOTS {
+                flags |= CONTACTS_FULL;
+            }
+            // The dynamic body is a (normal from b to a).
+            let swap = is_static(first + i);
+            for (var h = 0u; h < min(len, SLOTS); h++) {
+                if count >= sp.slots {
                     flags |= CONTACTS_FULL;
+                    break;
                 }
-                // The dynamic body is a (normal from b to a).
-                let swap = is_static(first + i);
-                for (var h = 0u; h < min(m.len, SLOTS); h++) {
-                    if count >= sp.slots {
-                        flags |= CONTACTS_FULL;
-                        break;
-                    }
-                    let hit = m.hits[h];
-                    let slot = slot0 + count;
-                    count++;
-                    let at = sp.contacts_at + slot * CP;
-                    put_scratch(at, hit.point);
-                    put_scratch(at + 3u, select(hit.normal, -hit.normal, swap));
-                    scratch[at + 6u] = hit.gap;
-                    scratch[at + 7u] = Scalar(0.0);
-                    let a = select(i, j, swap);
-                    let b = select(j, i, swap);
-                    let key = sp.keys_at + 4u * slot;
-                    words[key] = a;
-                    words[key + 1u] = b;
-                    words[key + 2u] = hit.feature;
-                    words[key + 3u] = 0u;
-                }
+                let kept = sp.pairs_at + (w * sp.pair_slots + SLOTS * c + h) * CP;
+                let normal = vec3_at_scratch(kept + 3u);
+                let slot = slot0 + count;
+                count++;
+                let at = sp.contacts_at + slot * CP;
+                put_scratch(at, vec3_at_scratch(kept));
+                put_scratch(at + 3u, select(normal, -normal, swap));
+                scratch[at + 6u] = scratch[kept + 6u];
+                scratch[at + 7u] = Scalar(0.0);
+                let a = select(i, j, swap);
+                let b = select(j, i, swap);
+                let key = sp.keys_at + 4u * slot;
+                words[key] = a;
+                words[key + 1u] = b;
+                words[key + 2u] = u32(scratch[kept + 7u]);
+                words[key + 3u] = 0u;
             }
         }
         if !woke || spent > sp.budget {

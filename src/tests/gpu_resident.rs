@@ -153,6 +153,33 @@ fn resident_spheres_and_pyramids_follow_the_cpu_path() {
     assert_eq!((device, host), (0, 100));
 }
 
+/// Sleeping bodies woken through a chain of contacts (`world_collide`'s
+/// rounds, one body further down per round, and the bodies an awake one can
+/// reach): stacks asleep but for their top box, which falls onto the next.
+#[test]
+fn stacks_woken_from_the_top_follow_the_cpu_path() {
+    let Some(gpu) = f64_gpu() else { return };
+    let mut worlds = frictionless(WorldKind::Stack, 4, 2);
+    for w in &mut worlds {
+        let top = w.bodies.len() - 1;
+        for b in w.bodies.iter_mut().filter(|b| !b.fixed) {
+            b.asleep = true;
+        }
+        w.bodies[top].asleep = false;
+        w.bodies[top].position[1] += 0.05;
+    }
+    // The CPU path wakes every box of both stacks within the steps compared.
+    let mut on_cpu = worlds.clone();
+    let mut c = solver(Backend::Cpu, GpuSettings::default());
+    let woken = (0..60).any(|_| {
+        let r = c.step_worlds(&mut on_cpu, 0.01).unwrap();
+        r.worlds.iter().all(|w| w.awake == 4)
+    });
+    assert!(woken, "the stacks stayed asleep");
+    let (device, host) = compare(worlds, 60, gpu);
+    assert_eq!((device, host), (120, 0));
+}
+
 #[test]
 fn states_come_back_bit_for_bit() {
     if f64_gpu().is_none() {

@@ -17,7 +17,9 @@
 //! ([`layout::flags`]) and keeps its state on the device. With friction,
 //! [`layout::FR`] more scalars per world (one island's rows, W, q and the
 //! sweeps' vectors) and 6 per contact slot (this step's reactions and the
-//! warm-start memory).
+//! warm-start memory). `world_collide` keeps each candidate pair's
+//! manifold in [`layout::contact_slots`] pair records of [`CP`] scalars
+//! per world before it orders the contacts.
 
 pub mod layout;
 
@@ -124,6 +126,10 @@ pub struct ResidentWorlds {
     /// First body of each world, and the total at the end.
     first: Vec<usize>,
     slots: usize,
+    /// `world_collide`'s pair records: where they start in `scratch`, and
+    /// how many per world (4 per pair that may touch, whatever `slots`).
+    pairs_at: usize,
+    pair_slots: usize,
     budget: u32,
     tolerances: [f64; 3],
     friction: Option<ResidentFriction>,
@@ -200,6 +206,9 @@ impl ResidentWorlds {
             at.memory = words_len;
             words_len += n * (slots + 1);
         }
+        let pairs_at = scratch_len;
+        let pair_slots = contact_slots(worlds);
+        scratch_len += n * pair_slots * CP;
         let largest = [scratch_len * sb, words_len * 4, consts.len() * sb];
         let limit = ctx.limits().max_storage_buffer_binding_size;
         let groups = n.div_ceil(super::pipelines::WORKGROUP as usize);
@@ -255,6 +264,8 @@ impl ResidentWorlds {
                 bytes_back: (((state.len() + n * REC) * sb) + keys_at * 4) as u64,
                 first,
                 slots,
+                pairs_at,
+                pair_slots,
                 budget,
                 tolerances: [tolerance, lemke.pivot_tol, lemke.max_pivots as f64],
                 friction,
@@ -290,7 +301,7 @@ impl ResidentWorlds {
             warm_start: false,
         });
         let at = self.at;
-        let ints: [u32; 16] = [
+        let ints: [u32; 18] = [
             n as u32,
             self.slots as u32,
             (n * WC) as u32,
@@ -307,6 +318,8 @@ impl ResidentWorlds {
             at.memory as u32,
             at.memory_r as u32,
             friction_budget(self.budget),
+            self.pairs_at as u32,
+            self.pair_slots as u32,
         ];
         let [tol, pivot, pivots] = self.tolerances;
         let mut bytes = bytemuck::cast_slice(&ints).to_vec();
