@@ -422,8 +422,9 @@ fn newton_checked(
     })
 }
 
-/// `solver` (Newton or PROX: (steps, error)) whose converged iterate is
-/// projected on the cones and checked again with u recomputed.
+/// `solver` (Newton or PROX: (steps, error), `ws.u` exact for its final
+/// r) whose converged iterate is projected on the cones and, where that
+/// moved it, checked again with u recomputed.
 fn checked(
     p: &FrictionProblem,
     ws: &mut Workspace,
@@ -432,8 +433,9 @@ fn checked(
     solver: impl FnOnce(&FrictionProblem, &mut Workspace, &mut [f64]) -> (u64, f64),
 ) -> (u64, f64) {
     let (k, mut error) = solver(p, ws, r);
-    if error <= tolerance {
-        project_on_cones(p, r);
+    // `ws.u` is exact for the solver's r: computed again only where the
+    // projection moved r.
+    if error <= tolerance && project_on_cones(p, r) {
         ws.refresh(p, r);
         error = ws.error(p, r);
     }

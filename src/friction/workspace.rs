@@ -149,8 +149,8 @@ impl Workspace {
     }
 
     /// Sizes the Newton step's 3k × 3k buffers for the problem of the last
-    /// [`Workspace::prepare`], once after it: ∂Φ cleared (it is written
-    /// only within W's pattern: zero elsewhere), the others written in
+    /// [`Workspace::prepare`], once after it: ∂Φ cleared on large islands
+    /// (it is written only within W's pattern: zero elsewhere), the others written in
     /// full before they are read (sized, not cleared).
     pub(crate) fn newton_buffers(&mut self) {
         if self.newton_ready {
@@ -160,7 +160,11 @@ impl Workspace {
         for v in [&mut self.matrix, &mut self.normal] {
             v.resize(n * n, 0.0);
         }
-        self.jac.clear();
+        if !self.env_first.is_empty() {
+            self.jac.clear();
+        }
+        // Below `SPARSE_FROM` contacts the pattern lists every block and
+        // ∂Φ is written in full: it needs no clearing.
         self.jac.resize(n * n, 0.0);
         self.newton_ready = true;
     }
