@@ -94,6 +94,12 @@ impl Workspace {
     /// Sizes every buffer for `p`, computes its blocks, scalings and ‖q‖,
     /// and u = W r + q for the start `r`.
     pub fn prepare(&mut self, p: &FrictionProblem, r: &[f64]) {
+        self.prepare_with(p, r, false);
+    }
+
+    /// [`Workspace::prepare`], where `patterned` says that `self.pattern`
+    /// is W's pattern already (not built again).
+    pub(crate) fn prepare_with(&mut self, p: &FrictionProblem, r: &[f64], patterned: bool) {
         let n = p.dim();
         for v in [
             &mut self.u,
@@ -114,7 +120,9 @@ impl Workspace {
         // ([`Workspace::newton_buffers`]): NSGS alone never reads them
         // (on 570 contacts, 70 MB).
         self.newton_ready = false;
-        self.pattern.build(p);
+        if !patterned {
+            self.pattern.build(p);
+        }
         if p.contacts() >= SPARSE_FROM {
             envelope(&self.pattern, &mut self.env_first, &mut self.env_last);
         } else {
