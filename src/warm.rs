@@ -236,7 +236,7 @@ impl WarmMemory<[f64; 3]> {
     /// not remembered; None when none of them is remembered.
     pub(crate) fn reactions(&self, ids: impl Iterator<Item = Option<u64>>) -> Option<Vec<f64>> {
         let mut any = false;
-        let mut r = Vec::new();
+        let mut r = Vec::with_capacity(3 * ids.size_hint().0);
         for id in ids {
             let found = id.and_then(|id| self.get(id));
             any |= found.is_some();

@@ -490,6 +490,10 @@ pub(crate) fn newton_in(
             // Converged with the updated u: check with the exact one.
             ws.refresh(p, r);
             error = ws.error(p, r);
+            if error <= tolerance {
+                // Done: no Φ or ∂Φ at r is read again.
+                break;
+            }
         }
         alart_curnier(
             p,

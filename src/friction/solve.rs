@@ -8,7 +8,7 @@ use super::problem::FrictionProblem;
 use super::projected::{solve_checked, ProjectedMethod, ProjectedSettings, ProjectedSolution};
 use super::prox::prox_in;
 use super::residual::FrictionResiduals;
-use super::sparse::{bandwidth_order, gather, permuted, scatter, Pattern, SPARSE_FROM};
+use super::sparse::{bandwidth_order, gather, permuted, scatter, SPARSE_FROM};
 use super::workspace::{velocity_into, with_workspace, Workspace};
 use crate::lcp::Status;
 
@@ -174,19 +174,21 @@ pub fn solve_friction_problem(
         return from_projected(sol, s.method);
     }
     project_on_cones(p, &mut r);
-    let order = (p.contacts() >= SPARSE_FROM).then(|| {
-        let mut pattern = Pattern::default();
-        pattern.build(p);
-        bandwidth_order(&pattern)
-    });
-    if let Some(order) = &order {
-        let reordered = permuted(p, order);
-        let mut r = gather(&r, order);
-        let iterations = with_workspace(|ws| solve_in(&reordered, ws, &mut r, s).0);
-        return finish(p, scatter(&r, order), iterations, None, s);
+    if p.contacts() >= SPARSE_FROM {
+        // W's pattern once: the order from it, then the reordered
+        // problem's by permuting it.
+        let (order, iterations) = with_workspace(|ws| {
+            ws.pattern.build(p);
+            let order = bandwidth_order(&ws.pattern);
+            let reordered = permuted(p, &order, &ws.pattern);
+            ws.pattern.permute(&order);
+            r = gather(&r, &order);
+            (order, solve_in(&reordered, ws, &mut r, s, true).0)
+        });
+        return finish(p, scatter(&r, &order), iterations, None, s);
     }
     let (iterations, u) = with_workspace(|ws| {
-        let (iterations, exact) = solve_in(p, ws, &mut r, s);
+        let (iterations, exact) = solve_in(p, ws, &mut r, s, false);
         // No iteration: r is the start and `ws.u` its exact W r + q (the
         // warm start of a time step, accepted as it is); `exact`: a checked
         // Newton iterate, whose u was recomputed for it (the same bits
@@ -196,17 +198,18 @@ pub fn solve_friction_problem(
     finish(p, r, iterations, u, s)
 }
 
-/// Prepares `ws` for `p` and r and runs `s.method` (an exact one) from r:
-/// (iterations, whether `ws.u` is W r + q of the final r as
-/// [`velocity_into`] computes it).
+/// Prepares `ws` for `p` and r (`patterned`: `ws.pattern` is W's already)
+/// and runs `s.method` (an exact one) from r: (iterations, whether `ws.u`
+/// is W r + q of the final r as [`velocity_into`] computes it).
 fn solve_in(
     p: &FrictionProblem,
     ws: &mut Workspace,
     r: &mut [f64],
     s: &FrictionSettings,
+    patterned: bool,
 ) -> (u64, bool) {
     let (cap, tolerance) = (s.max_iterations, s.tolerance);
-    ws.prepare(p, r);
+    ws.prepare_with(p, r, patterned);
     match s.method {
         FrictionMethod::Nsgs => (nsgs_in(p, ws, r, cap, tolerance, None).0, false),
         FrictionMethod::Newton => (newton_in(p, ws, r, cap, tolerance).0, false),
@@ -422,8 +425,9 @@ fn newton_checked(
     })
 }
 
-/// `solver` (Newton or PROX: (steps, error)) whose converged iterate is
-/// projected on the cones and checked again with u recomputed.
+/// `solver` (Newton or PROX: (steps, error), `ws.u` exact for its final
+/// r) whose converged iterate is projected on the cones and, where that
+/// moved it, checked again with u recomputed.
 fn checked(
     p: &FrictionProblem,
     ws: &mut Workspace,
@@ -432,8 +436,9 @@ fn checked(
     solver: impl FnOnce(&FrictionProblem, &mut Workspace, &mut [f64]) -> (u64, f64),
 ) -> (u64, f64) {
     let (k, mut error) = solver(p, ws, r);
-    if error <= tolerance {
-        project_on_cones(p, r);
+    // `ws.u` is exact for the solver's r: computed again only where the
+    // projection moved r.
+    if error <= tolerance && project_on_cones(p, r) {
         ws.refresh(p, r);
         error = ws.error(p, r);
     }

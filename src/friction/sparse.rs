@@ -72,6 +72,28 @@ impl Pattern {
     pub fn row(&self, i: usize) -> &[usize] {
         &self.cols[self.start[i]..self.start[i + 1]]
     }
+
+    /// This pattern with its contacts in `order` (as [`permuted`] reorders
+    /// the problem), in place: what [`Pattern::build`] gives for the
+    /// reordered problem, without reading its W again.
+    pub fn permute(&mut self, order: &[usize]) {
+        let mut position = vec![0; order.len()];
+        for (a, &i) in order.iter().enumerate() {
+            position[i] = a;
+        }
+        let (start, cols) = (
+            std::mem::take(&mut self.start),
+            std::mem::take(&mut self.cols),
+        );
+        self.start.push(0);
+        for &i in order {
+            let from = self.cols.len();
+            self.cols
+                .extend(cols[start[i]..start[i + 1]].iter().map(|&j| position[j]));
+            self.cols[from..].sort_unstable();
+            self.start.push(self.cols.len());
+        }
+    }
 }
 
 /// W's row `row` (of p) times x over the row's nonzero blocks: the same
@@ -90,6 +112,11 @@ pub fn row_dot(p: &FrictionProblem, pattern: &Pattern, row: usize, x: &[f64]) ->
 #[inline]
 pub fn blocks_dot(w: &[f64], blocks: &[usize], x: &[f64]) -> f64 {
     let n = w.len();
+    if 3 * blocks.len() == n {
+        // Every block (islands below `SPARSE_FROM`): the whole row, by the
+        // vectorised `dot` (the same sums in the same order).
+        return dot(w, x);
+    }
     let body = n - n % 4;
     let mut s = [0.0f64; 4];
     for &j in blocks {
@@ -153,14 +180,20 @@ pub fn bandwidth_order(pattern: &Pattern) -> Vec<usize> {
 }
 
 /// The problem with its contacts in `order` (`order[a]`: the original
-/// contact at position a): W' = P W Pᵀ, q' = P q, μ' = P μ.
-pub fn permuted(p: &FrictionProblem, order: &[usize]) -> FrictionProblem {
+/// contact at position a): W' = P W Pᵀ, q' = P q, μ' = P μ. W's blocks
+/// outside its `pattern` (zeros) are left at zero.
+pub fn permuted(p: &FrictionProblem, order: &[usize], pattern: &Pattern) -> FrictionProblem {
     let n = p.dim();
     let mut w = vec![0.0; n * n];
+    let mut position = vec![0; order.len()];
+    for (a, &i) in order.iter().enumerate() {
+        position[i] = a;
+    }
     for (a, &i) in order.iter().enumerate() {
         for d in 0..3 {
             let (from, to) = ((3 * i + d) * n, (3 * a + d) * n);
-            for (b, &j) in order.iter().enumerate() {
+            for &j in pattern.row(i) {
+                let b = position[j];
                 w[to + 3 * b..to + 3 * b + 3].copy_from_slice(&p.w[from + 3 * j..from + 3 * j + 3]);
             }
         }
@@ -442,13 +475,25 @@ mod tests {
         let mut sorted = order.clone();
         sorted.sort_unstable();
         assert_eq!(sorted, (0..40).collect::<Vec<_>>(), "a permutation");
-        let pp = permuted(&p, &order);
-        let mut pattern = Pattern::default();
-        pattern.build(&pp);
+        let pp = permuted(&p, &order, &pattern);
+        // The permuted pattern is the reordered problem's, and the
+        // reordered W has every entry of W (zeros outside the pattern).
+        pattern.permute(&order);
+        let mut built = Pattern::default();
+        built.build(&pp);
+        assert_eq!((&pattern.start, &pattern.cols), (&built.start, &built.cols));
+        let n = pp.dim();
+        for (a, &i) in order.iter().enumerate() {
+            for (b, &j) in order.iter().enumerate() {
+                for (d, e) in (0..3).flat_map(|d| (0..3).map(move |e| (d, e))) {
+                    let want = p.w[(3 * i + d) * n + 3 * j + e];
+                    assert_eq!(pp.w[(3 * a + d) * n + 3 * b + e].to_bits(), want.to_bits());
+                }
+            }
+        }
         let (mut first, mut last) = (Vec::new(), Vec::new());
         envelope(&pattern, &mut first, &mut last);
         // W + I (nonsymmetric by a random lower part within the pattern).
-        let n = pp.dim();
         let mut a = pp.w.clone();
         for i in 0..n {
             a[i * n + i] += 1.0;

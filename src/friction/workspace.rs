@@ -94,6 +94,12 @@ impl Workspace {
     /// Sizes every buffer for `p`, computes its blocks, scalings and ‖q‖,
     /// and u = W r + q for the start `r`.
     pub fn prepare(&mut self, p: &FrictionProblem, r: &[f64]) {
+        self.prepare_with(p, r, false);
+    }
+
+    /// [`Workspace::prepare`], where `patterned` says that `self.pattern`
+    /// is W's pattern already (not built again).
+    pub(crate) fn prepare_with(&mut self, p: &FrictionProblem, r: &[f64], patterned: bool) {
         let n = p.dim();
         for v in [
             &mut self.u,
@@ -114,7 +120,9 @@ impl Workspace {
         // ([`Workspace::newton_buffers`]): NSGS alone never reads them
         // (on 570 contacts, 70 MB).
         self.newton_ready = false;
-        self.pattern.build(p);
+        if !patterned {
+            self.pattern.build(p);
+        }
         if p.contacts() >= SPARSE_FROM {
             envelope(&self.pattern, &mut self.env_first, &mut self.env_last);
         } else {
@@ -149,8 +157,8 @@ impl Workspace {
     }
 
     /// Sizes the Newton step's 3k × 3k buffers for the problem of the last
-    /// [`Workspace::prepare`], once after it: ∂Φ cleared (it is written
-    /// only within W's pattern: zero elsewhere), the others written in
+    /// [`Workspace::prepare`], once after it: ∂Φ cleared on large islands
+    /// (it is written only within W's pattern: zero elsewhere), the others written in
     /// full before they are read (sized, not cleared).
     pub(crate) fn newton_buffers(&mut self) {
         if self.newton_ready {
@@ -160,7 +168,11 @@ impl Workspace {
         for v in [&mut self.matrix, &mut self.normal] {
             v.resize(n * n, 0.0);
         }
-        self.jac.clear();
+        if !self.env_first.is_empty() {
+            self.jac.clear();
+        }
+        // Below `SPARSE_FROM` contacts the pattern lists every block and
+        // ∂Φ is written in full: it needs no clearing.
         self.jac.resize(n * n, 0.0);
         self.newton_ready = true;
     }
