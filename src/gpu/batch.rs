@@ -11,8 +11,11 @@
 //!
 //! The host's share runs on every core, in blocks of consecutive islands
 //! ([`BLOCK`]) written where the report keeps them: one pass checks each
-//! problem, looks up its warm basis and settles what needs no GPU
-//! (prediction, Lemke above n = 16), then the rest is written by every
+//! problem and settles what needs no linear solve (separating, single
+//! contact; Lemke above n = 16); an island's warm and predicted bases go
+//! with it to the device, into its table entry, where the settle kernel
+//! tries them before the enumeration or Lemke kernels
+//! (`shaders/enumeration_settle.wgsl`). The rest is written by every
 //! thread, in the shader's precision, straight into mapped buffers the
 //! context keeps between calls (on hardware a kept staging buffer, copied
 //! on the device), and after the kernels a second pass checks each answer
@@ -39,9 +42,10 @@ use std::time::Instant;
 use super::buffers::{limits_for, pack_chunks, Role};
 use super::enumeration::{EnumerationJob, InFlight};
 pub use super::kernel::{EnumerationKernel, KernelPlan, TreeRoute};
-use super::layout::{hint as hint_word, BasisResult, FOUND, SETTLED_PREDICTED, SETTLED_WARM};
+use super::layout::{hint as hint_word, BasisResult};
 use super::pipelines::Tolerances;
-use super::validation::{check_answer, check_lemke_answer, check_settled, GpuVerdict, Verdict};
+pub(crate) use super::validation::settle_from_gpu;
+use super::validation::Verdict;
 use super::{GpuContext, Precision, MAX_GPU_N};
 use crate::cpu::batch::{parallel_fill_by, parallel_map};
 use crate::cpu::enumeration::EnumerationSettings;
@@ -87,10 +91,12 @@ pub struct GpuSolveSettings {
     /// Loop work per invocation and enumeration round; None: by adapter
     /// ([`SOFTWARE_ROUND_BUDGET`] or [`HARDWARE_ROUND_BUDGET`]).
     pub round_budget: Option<u32>,
-    /// Settle islands that need no enumeration on the CPU first
+    /// Settle islands that need no enumeration first
     /// ([`crate::prediction::predict`]: separating, single contact, warm
-    /// start, predicted basis), so that only the others are uploaded and
-    /// dispatched. Default true.
+    /// start, predicted basis). LCP batches: the first two on the host
+    /// (those islands are never uploaded), the warm and predicted bases by
+    /// the settle kernel before the others run; scenes: all four on the
+    /// host. Default true.
     pub predict: bool,
     /// Which enumeration shader runs (default [`EnumerationKernel::Auto`]).
     pub kernel: EnumerationKernel,
@@ -113,6 +119,14 @@ pub struct GpuSolveSettings {
     /// host's own cores: nothing to overlap, and every part runs its
     /// rounds and waits again). For tests of the overlap.
     pub part_islands: Option<usize>,
+    /// LCP batches: whether the warm and predicted bases are tried on the
+    /// device (the settle kernel, `shaders/enumeration_settle.wgsl`) rather
+    /// than on the host before upload; None: by adapter, on the device on
+    /// hardware, on the host on a software adapter (its "device" is the
+    /// host's own cores, where the kernel's solve costs more than the
+    /// host's: the warm family at 47–83 k islands/s against 262–294 k on
+    /// lavapipe, BENCHMARKS.md "kernelwarm"). For tests of the kernel.
+    pub settle_on_device: Option<bool>,
 }
 
 impl Default for GpuSolveSettings {
@@ -133,6 +147,7 @@ impl Default for GpuSolveSettings {
             tolerance: crate::Settings::default().tolerance,
             threads: std::thread::available_parallelism().map_or(1, |n| n.get()),
             part_islands: None,
+            settle_on_device: None,
         }
     }
 }
@@ -451,62 +466,6 @@ fn settle_or_hint(
     Ok(())
 }
 
-/// The GPU's answer for `lcp` (its record, z, and the island's [`hint`]
-/// word) checked in f64 into `out` ([`check_answer`]; the Lemke kernel's,
-/// with `settings.method` Auto or Lemke, by [`check_lemke_answer`]; the
-/// settle kernel's by [`check_settled`]), path and method set, the final check
-/// applied; the seconds of a repair added to `repair`. `exact_twin`: the
-/// shaders are the f64 twin; `accept`: and the GPU solved `lcp` itself (M
-/// and q uploaded as given, not assembled on the device), so that its z,
-/// where it passes the check, is kept as it is.
-/// Returns the verdict and the error of the GPU's own z.
-pub(crate) fn settle_from_gpu(
-    lcp: &Lcp,
-    (result, z, hint): (&BasisResult, &[f64], u32),
-    settings: &GpuSolveSettings,
-    (exact_twin, accept): (bool, bool),
-    out: &mut IslandReport,
-    repair: &mut f64,
-) -> Result<(Verdict, f64), Error> {
-    let accept = exact_twin && accept;
-    if result.status == FOUND && matches!(result._pad1, SETTLED_WARM | SETTLED_PREDICTED) {
-        let how = (settings, accept);
-        let checked = check_settled(lcp, (result, z), hint, how, &mut out.solution, repair)?;
-        let (method, path, verdict, gpu_error) = checked;
-        (out.method, out.path) = (method, path);
-        check_solution(&mut out.solution, settings.tolerance);
-        return Ok((verdict, gpu_error));
-    }
-    if settings.method != Method::Enumeration {
-        let (method, path, verdict, gpu_error) = check_lemke_answer(
-            lcp,
-            (result, z),
-            (settings, accept),
-            &mut out.solution,
-            repair,
-        );
-        (out.method, out.path) = (method, path);
-        check_solution(&mut out.solution, settings.tolerance);
-        return Ok((verdict, gpu_error));
-    }
-    let verdict = GpuVerdict::of(result, z);
-    let checked = check_answer(
-        lcp,
-        &verdict,
-        &settings.enumeration,
-        (exact_twin, accept, settings.tolerance),
-        &mut out.solution,
-        repair,
-    )?;
-    out.method = Method::Enumeration;
-    out.path = match checked.0 {
-        Verdict::Repaired => SolvePath::Repaired,
-        _ => SolvePath::EnumeratedGpu,
-    };
-    check_solution(&mut out.solution, settings.tolerance);
-    Ok(checked)
-}
-
 /// [`solve_lcp_batch_warm`] without warm bases.
 pub fn solve_lcp_batch(
     ctx: &GpuContext,
@@ -546,6 +505,9 @@ pub fn solve_lcp_batch_warm(
     let reports = t.elapsed().as_secs_f64();
     let mut blocks = blocks(&mut islands);
     let t = Instant::now();
+    let on_device = settings
+        .settle_on_device
+        .unwrap_or(!ctx.adapter_info().software);
     parallel_fill_by(&mut blocks, threads, 1, |_, b| {
         for (j, island) in b.islands.iter_mut().enumerate() {
             let i = b.first + j;
@@ -553,7 +515,7 @@ pub fn solve_lcp_batch_warm(
             if lcps[i].validate("problem").is_err() {
                 island.solution = LcpSolution::invalid(lcps[i].q.len());
             } else if let Err((definite, hint)) =
-                settle_or_hint(&lcps[i], warm(i), settings, true, island)
+                settle_or_hint(&lcps[i], warm(i), settings, on_device, island)
             {
                 b.pending.push((i, definite, hint));
             }

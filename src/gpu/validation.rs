@@ -31,6 +31,10 @@
 //! where that fails, or the kernel gave up, solves the island by the CPU
 //! path's code for the rest.
 //!
+//! The settle kernel's answers (an island's warm or predicted basis,
+//! tried on the device before the others run) are checked the same way
+//! ([`check_settled`]) and keep prediction's paths and counters.
+//!
 //! With the same visit order and rule (fewest basic z, then the smallest
 //! mask) as the CPU, an island's chosen basis is the CPU's whenever the GPU
 //! accepted every basis f64 accepts before it; the f64 shaders use the CPU's
@@ -43,12 +47,14 @@ use crate::cpu::enumeration::{
 };
 use crate::cpu::lemke::lemke;
 use crate::gpu::batch::GpuSolveSettings;
-use crate::gpu::layout::{hinted, BasisResult, FOUND, RELAXED, SETTLED_WARM};
+use crate::gpu::layout::{hinted, BasisResult, FOUND, RELAXED, SETTLED_PREDICTED, SETTLED_WARM};
 use crate::lcp::{Counters, Lcp, LcpSolution, Residuals, Status};
 use crate::linalg::solve_in_place;
 use crate::prediction::hinted_into;
+use crate::report::IslandReport;
 use crate::report::SolvePath;
 use crate::settings::Method;
+use crate::solver::check_solution;
 use crate::solver::{lemke_else_enumerate, textbook_checked};
 use crate::Error;
 
@@ -372,7 +378,7 @@ fn lemke_instead(
 }
 
 /// The settle kernel's answer for `lcp` (its record FOUND with `_pad1`
-/// [`SETTLED_WARM`] or [`crate::gpu::layout::SETTLED_PREDICTED`], and z; `hint`: the island's
+/// [`SETTLED_WARM`] or [`SETTLED_PREDICTED`], and z; `hint`: the island's
 /// [`crate::gpu::layout::hint`]) checked in f64 into `out`: its z kept as
 /// the GPU gave it where it passes [`accept_gpu_z`] (with `accept`: an f64
 /// shader with the CPU's tolerances, which then judged each basis as the
@@ -415,4 +421,61 @@ pub(crate) fn check_settled(
     }
     let verdict = enumerate_instead(lcp, e, false, out, repair)?;
     Ok((Method::Enumeration, SolvePath::Repaired, verdict, gpu_error))
+}
+
+/// The GPU's answer for `lcp` (its record, z, and the island's
+/// [`crate::gpu::layout::hint`]
+/// word) checked in f64 into `out` ([`check_answer`]; the Lemke kernel's,
+/// with `settings.method` Auto or Lemke, by [`check_lemke_answer`]; the
+/// settle kernel's by [`check_settled`]), path and method set, the final check
+/// applied; the seconds of a repair added to `repair`. `exact_twin`: the
+/// shaders are the f64 twin; `accept`: and the GPU solved `lcp` itself (M
+/// and q uploaded as given, not assembled on the device), so that its z,
+/// where it passes the check, is kept as it is.
+/// Returns the verdict and the error of the GPU's own z.
+pub(crate) fn settle_from_gpu(
+    lcp: &Lcp,
+    (result, z, hint): (&BasisResult, &[f64], u32),
+    settings: &GpuSolveSettings,
+    (exact_twin, accept): (bool, bool),
+    out: &mut IslandReport,
+    repair: &mut f64,
+) -> Result<(Verdict, f64), Error> {
+    let accept = exact_twin && accept;
+    if result.status == FOUND && matches!(result._pad1, SETTLED_WARM | SETTLED_PREDICTED) {
+        let how = (settings, accept);
+        let checked = check_settled(lcp, (result, z), hint, how, &mut out.solution, repair)?;
+        let (method, path, verdict, gpu_error) = checked;
+        (out.method, out.path) = (method, path);
+        check_solution(&mut out.solution, settings.tolerance);
+        return Ok((verdict, gpu_error));
+    }
+    if settings.method != Method::Enumeration {
+        let (method, path, verdict, gpu_error) = check_lemke_answer(
+            lcp,
+            (result, z),
+            (settings, accept),
+            &mut out.solution,
+            repair,
+        );
+        (out.method, out.path) = (method, path);
+        check_solution(&mut out.solution, settings.tolerance);
+        return Ok((verdict, gpu_error));
+    }
+    let verdict = GpuVerdict::of(result, z);
+    let checked = check_answer(
+        lcp,
+        &verdict,
+        &settings.enumeration,
+        (exact_twin, accept, settings.tolerance),
+        &mut out.solution,
+        repair,
+    )?;
+    out.method = Method::Enumeration;
+    out.path = match checked.0 {
+        Verdict::Repaired => SolvePath::Repaired,
+        _ => SolvePath::EnumeratedGpu,
+    };
+    check_solution(&mut out.solution, settings.tolerance);
+    Ok(checked)
 }

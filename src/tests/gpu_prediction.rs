@@ -253,6 +253,7 @@ fn warm_islands(precision: Precision, method: Method) {
     lcps.push(Lcp::new(vec![1.0, 1.0, 1.0, 1.0], vec![-1.0, 2.0]).unwrap());
     let settings = GpuSolveSettings {
         method,
+        settle_on_device: Some(true),
         ..Default::default()
     };
     let cold = solve_lcp_batch(&ctx, &lcps, &settings).unwrap();
@@ -314,6 +315,28 @@ fn warm_islands(precision: Precision, method: Method) {
     assert_ne!(hot.islands[last].path, SolvePath::WarmStart);
     if precision == Precision::F64 {
         assert_eq!((c.warm_start, c.predicted_basis), (warm_hits, predicted));
+    }
+    // The warm hits alone: on the device they are uploaded and settled by
+    // the kernel; on the host nothing is uploaded.
+    let hits: Vec<usize> = (0..lcps.len())
+        .filter(|&i| hot.islands[i].path == SolvePath::WarmStart)
+        .collect();
+    let again: Vec<Lcp> = hits.iter().map(|&i| lcps[i].clone()).collect();
+    let bases: Vec<Option<u32>> = hits
+        .iter()
+        .map(|&i| hot.islands[i].solution.basis)
+        .collect();
+    for device in [true, false] {
+        let s = GpuSolveSettings {
+            settle_on_device: Some(device),
+            ..settings
+        };
+        let r = solve_lcp_batch_warm(&ctx, &again, &|i| bases[i], &s).unwrap();
+        assert_eq!(r.counts.warm_start, again.len(), "{r}");
+        assert_eq!(r.gpu.map_or(0, |g| g.chunks) > 0, device, "{r}");
+        for (k, &i) in hits.iter().enumerate() {
+            assert_eq!(r.islands[k].solution.basis, bases[k], "island {i}");
+        }
     }
 }
 
