@@ -268,6 +268,11 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
         return;
     }
     let island_index = params.first + gid.x;
+    // Settled before the round by its warm or predicted basis
+    // (shaders/enumeration_settle.wgsl; the record is cleared otherwise).
+    if results[island_index].status != 0u {
+        return;
+    }
     let island = islands[island_index];
     let n = min(island.n, MAX_N);
     var state = BasisResult(0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);

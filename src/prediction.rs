@@ -238,38 +238,21 @@ fn steps(
     learn: Option<&mut Option<bool>>,
     out: &mut LcpSolution,
 ) -> bool {
-    let n = lcp.n();
-    if n > MAX_ENUMERATION_N {
+    if lcp.n() > MAX_ENUMERATION_N {
         return false;
     }
-    let counters = |bases: u64| Counters {
-        bases_visited: bases,
-        ..Counters::default()
-    };
-    // 1. Separating: the empty basis, feasible iff q ≥ 0.
-    if lcp.q.iter().all(|&v| v >= 0.0) {
-        *path = SolvePath::Separating;
-        return feasible_basis_into(lcp, 0, settings, counters(1), || true, out);
-    }
-    // 2. One approaching contact: z = −q/M when M > 0, else no solution.
-    if n == 1 {
-        *path = SolvePath::SingleContact;
-        if !feasible_basis_into(lcp, 1, settings, counters(2), || true, out) {
-            *out = LcpSolution::from_z(lcp, Status::NoSolution, [0.0], counters(2));
-        }
+    if closed_form_into(lcp, settings, path, out) {
         return true;
     }
     // 3. Last frame's basis.
-    if let Some(mask) = warm_basis.filter(|&m| m >> n == 0) {
+    if let Some(mask) = warm_basis.filter(|&m| m >> lcp.n() == 0) {
         if feasible_basis_into(lcp, mask, settings, counters(1), || true, out) {
             *path = SolvePath::WarmStart;
             return true;
         }
     }
     // 4. The approaching contacts, when the solution is unique.
-    let approaching = (0..n)
-        .filter(|&i| lcp.q[i] < 0.0)
-        .fold(0u32, |m, i| m | 1 << i);
+    let approaching = approaching(lcp);
     *path = SolvePath::PredictedBasis;
     let Some(definite) = learn else {
         return feasible_basis_into(
@@ -284,6 +267,112 @@ fn steps(
     *definite = Some(is_positive_definite(lcp));
     *definite == Some(true)
         && feasible_basis_into(lcp, approaching, settings, counters(1), || true, out)
+}
+
+/// Counters of an island prediction settles after visiting `bases` bases.
+fn counters(bases: u64) -> Counters {
+    Counters {
+        bases_visited: bases,
+        ..Counters::default()
+    }
+}
+
+/// The predicted basis: the approaching contacts {i : q_i < 0}.
+fn approaching(lcp: &Lcp) -> u32 {
+    (0..lcp.n())
+        .filter(|&i| lcp.q[i] < 0.0)
+        .fold(0u32, |m, i| m | 1 << i)
+}
+
+/// Steps 1 and 2 of [`prediction_into`] (no linear solve: the empty basis,
+/// one contact in closed form): whether one settled the island, as
+/// [`steps`] says it.
+fn closed_form_into(
+    lcp: &Lcp,
+    settings: &EnumerationSettings,
+    path: &mut SolvePath,
+    out: &mut LcpSolution,
+) -> bool {
+    // 1. Separating: the empty basis, feasible iff q ≥ 0.
+    if lcp.q.iter().all(|&v| v >= 0.0) {
+        *path = SolvePath::Separating;
+        return feasible_basis_into(lcp, 0, settings, counters(1), || true, out);
+    }
+    // 2. One approaching contact: z = −q/M when M > 0, else no solution.
+    if lcp.n() == 1 {
+        *path = SolvePath::SingleContact;
+        if !feasible_basis_into(lcp, 1, settings, counters(2), || true, out) {
+            *out = LcpSolution::from_z(lcp, Status::NoSolution, [0.0], counters(2));
+        }
+        return true;
+    }
+    false
+}
+
+/// What [`prediction_hint_into`] leaves to the device: the bases its steps
+/// 3 and 4 would solve, for the GPU to try in that order.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) struct Hint {
+    /// Whether M is positive definite (tested on every island left of
+    /// n ≤ 20; None above).
+    pub definite: Option<bool>,
+    /// The warm basis (0: none; an empty basis settles no island that is
+    /// not separating).
+    pub warm: u32,
+    /// The predicted basis where M is positive definite, else 0.
+    pub predicted: u32,
+}
+
+/// [`prediction_into`] with steps 3 and 4 (a linear solve each) left to
+/// the device: steps 1 and 2 settle the island on the host (`Ok`, as
+/// there), else `Err` with the bases the GPU tries in order (the CPU
+/// path's answer whenever one is valid there: [`hinted_into`] is the host's
+/// twin). M's definiteness is tested on every island left, as
+/// [`prediction_into`] tests it on every island reaching step 4.
+pub(crate) fn prediction_hint_into(
+    lcp: &Lcp,
+    warm_basis: Option<u32>,
+    settings: &EnumerationSettings,
+    path: &mut SolvePath,
+    out: &mut LcpSolution,
+) -> Result<(), Hint> {
+    let n = lcp.n();
+    if n > MAX_ENUMERATION_N {
+        return Err(Hint::default());
+    }
+    if closed_form_into(lcp, settings, path, out) {
+        return Ok(());
+    }
+    let definite = is_positive_definite(lcp);
+    Err(Hint {
+        definite: Some(definite),
+        warm: warm_basis.filter(|&m| m >> n == 0).unwrap_or(0),
+        predicted: if definite { approaching(lcp) } else { 0 },
+    })
+}
+
+/// Steps 3 and 4 on the host, from the bases a [`Hint`] names (`warm`,
+/// then `predicted`; 0: none): the step that settled the island, its
+/// solution in `out`, or None (`out` untouched). The CPU path's answer for
+/// an island whose hint [`prediction_hint_into`] gave.
+pub(crate) fn hinted_into(
+    lcp: &Lcp,
+    (warm, predicted): (u32, u32),
+    settings: &EnumerationSettings,
+    out: &mut LcpSolution,
+) -> Option<SolvePath> {
+    let n = lcp.n();
+    [
+        (warm, SolvePath::WarmStart),
+        (predicted, SolvePath::PredictedBasis),
+    ]
+    .into_iter()
+    .find(|&(mask, _)| {
+        mask != 0
+            && mask >> n == 0
+            && feasible_basis_into(lcp, mask, settings, counters(1), || true, out)
+    })
+    .map(|(_, path)| path)
 }
 
 #[cfg(test)]

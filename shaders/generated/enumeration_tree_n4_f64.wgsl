@@ -1,8 +1,9 @@
 // GENERATED from shaders/enumeration_basis.wgsl + shaders/enumeration_tree.wgsl by src/gpu/shaders/compose.rs: do not edit.
 // Regenerate: LCPBATCH_BLESS_SHADERS=1 cargo test --release generated_shaders_are_committed
 
-// Shared part of the three enumeration kernels (shaders/enumeration.wgsl,
-// shaders/enumeration_workgroup.wgsl, shaders/enumeration_tree.wgsl): the
+// Shared part of the enumeration kernels (shaders/enumeration.wgsl,
+// shaders/enumeration_workgroup.wgsl, shaders/enumeration_tree.wgsl, and
+// shaders/enumeration_settle.wgsl, shaders/lemke.wgsl): the
 // scalar type, the tolerances uniform, the island table, Params and
 // BasisResult, bindings 0-7, the elimination scratch, and the elimination
 // itself (solve_basis, write_z, basis_cost). WGSL has no include, so the
@@ -22,12 +23,13 @@ alias Scalar = f64; // HOST scalar
 const MAX_N: u32 = 16u;
 
 // One island: n contacts; M (n*n, row-major) then q (n) start at `data` in
-// `values`; z is written at `z` in `z_out`.
+// `values`; z is written at `z` in `z_out`. `hint`: the bases the settle
+// kernel tries first (shaders/enumeration_settle.wgsl); the others ignore it.
 struct Island {
     n: u32,
     data: u32,
     z: u32,
-    _pad: u32,
+    hint: u32,
 }
 
 // One dispatch covers islands first .. first + count of the island table

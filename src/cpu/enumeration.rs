@@ -319,13 +319,21 @@ fn feasible_solution(
     }
     out.w.reset(0.0, n);
     lcp.w_into(&out.z, &mut out.w);
-    out.status = Status::Solved;
     out.residuals = Residuals::of(&out.z, &out.w, &lcp.q);
+    solved_on_basis(mask, counters, out);
+    true
+}
+
+/// `out`, whose z, w and residuals are written, marked as the answer of
+/// basis `mask`: status `Solved`, the basis, `counters`, no solution set.
+/// [`feasible_basis_into`]'s tail, and the GPU check's where it keeps the
+/// GPU's z (`crate::gpu::validation::accept_gpu_z`).
+pub(crate) fn solved_on_basis(mask: u32, counters: Counters, out: &mut LcpSolution) {
+    out.status = Status::Solved;
     out.counters = counters;
     out.basis = Some(mask);
     out.all_bases.clear();
     out.solution_set = None;
-    true
 }
 
 /// The scratch's z of the last solve, negative entries clamped to 0.

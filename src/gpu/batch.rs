@@ -11,8 +11,11 @@
 //!
 //! The host's share runs on every core, in blocks of consecutive islands
 //! ([`BLOCK`]) written where the report keeps them: one pass checks each
-//! problem, looks up its warm basis and settles what needs no GPU
-//! (prediction, Lemke above n = 16), then the rest is written by every
+//! problem and settles what needs no linear solve (separating, single
+//! contact; Lemke above n = 16); an island's warm and predicted bases go
+//! with it to the device, into its table entry, where the settle kernel
+//! tries them before the enumeration or Lemke kernels
+//! (`shaders/enumeration_settle.wgsl`). The rest is written by every
 //! thread, in the shader's precision, straight into mapped buffers the
 //! context keeps between calls (on hardware a kept staging buffer, copied
 //! on the device), and after the kernels a second pass checks each answer
@@ -39,16 +42,17 @@ use std::time::Instant;
 use super::buffers::{limits_for, pack_chunks, Role};
 use super::enumeration::{EnumerationJob, InFlight};
 pub use super::kernel::{EnumerationKernel, KernelPlan, TreeRoute};
-use super::layout::BasisResult;
+use super::layout::{hint as hint_word, BasisResult};
 use super::pipelines::Tolerances;
-use super::validation::{check_answer, check_lemke_answer, GpuVerdict, Verdict};
+pub(crate) use super::validation::settle_from_gpu;
+use super::validation::Verdict;
 use super::{GpuContext, Precision, MAX_GPU_N};
 use crate::cpu::batch::{parallel_fill_by, parallel_map};
 use crate::cpu::enumeration::EnumerationSettings;
 use crate::cpu::enumeration_tree::TREE_MAX_N;
 use crate::cpu::lemke::{lemke, LemkeSettings};
 use crate::lcp::{Lcp, LcpSolution};
-use crate::prediction::{predict_into, prediction_into};
+use crate::prediction::{predict_into, prediction_hint_into, prediction_into};
 use crate::report::{Device, GpuFigures, IslandReport, Report, SolvePath};
 use crate::settings::Method;
 use crate::short_vec::ShortVec;
@@ -87,10 +91,12 @@ pub struct GpuSolveSettings {
     /// Loop work per invocation and enumeration round; None: by adapter
     /// ([`SOFTWARE_ROUND_BUDGET`] or [`HARDWARE_ROUND_BUDGET`]).
     pub round_budget: Option<u32>,
-    /// Settle islands that need no enumeration on the CPU first
+    /// Settle islands that need no enumeration first
     /// ([`crate::prediction::predict`]: separating, single contact, warm
-    /// start, predicted basis), so that only the others are uploaded and
-    /// dispatched. Default true.
+    /// start, predicted basis). LCP batches: the first two on the host
+    /// (those islands are never uploaded), the warm and predicted bases by
+    /// the settle kernel before the others run; scenes: all four on the
+    /// host. Default true.
     pub predict: bool,
     /// Which enumeration shader runs (default [`EnumerationKernel::Auto`]).
     pub kernel: EnumerationKernel,
@@ -113,6 +119,14 @@ pub struct GpuSolveSettings {
     /// host's own cores: nothing to overlap, and every part runs its
     /// rounds and waits again). For tests of the overlap.
     pub part_islands: Option<usize>,
+    /// LCP batches: whether the warm and predicted bases are tried on the
+    /// device (the settle kernel, `shaders/enumeration_settle.wgsl`) rather
+    /// than on the host before upload; None: by adapter, on the device on
+    /// hardware, on the host on a software adapter (its "device" is the
+    /// host's own cores, where the kernel's solve costs more than the
+    /// host's: the warm family at 47–83 k islands/s against 262–294 k on
+    /// lavapipe, BENCHMARKS.md "kernelwarm"). For tests of the kernel.
+    pub settle_on_device: Option<bool>,
 }
 
 impl Default for GpuSolveSettings {
@@ -133,6 +147,7 @@ impl Default for GpuSolveSettings {
             tolerance: crate::Settings::default().tolerance,
             threads: std::thread::available_parallelism().map_or(1, |n| n.get()),
             part_islands: None,
+            settle_on_device: None,
         }
     }
 }
@@ -215,7 +230,9 @@ pub fn enumerate_on_gpu(
     settings: &GpuSolveSettings,
 ) -> Result<(Vec<EnumerationOutput>, GpuFigures), Error> {
     let whole = [0..lcps.len()];
-    let (answers, figures) = enumerate_known(ctx, lcps, &[], settings, &whole, &mut |_, _| Ok(()))?;
+    let known = (&[][..], &[][..]);
+    let (answers, figures) =
+        enumerate_known(ctx, lcps, known, settings, &whole, &mut |_, _| Ok(()))?;
     let out = (0..lcps.len())
         .map(|i| {
             let (result, z) = answers.of(i, lcps[i].n());
@@ -230,7 +247,8 @@ pub fn enumerate_on_gpu(
 
 /// [`enumerate_on_gpu`] with `definite[i]`: whether island i's M is
 /// positive definite, where prediction found out (empty: nothing known),
-/// pipelined over `parts` (consecutive ranges of `lcps` covering it, each
+/// and `hints[i]`: its [`super::layout::hint`] word for the settle kernel
+/// (empty: none), pipelined over `parts` (consecutive ranges of `lcps` covering it, each
 /// planned into chunks under the device's limits): while the device runs
 /// chunk k, the host writes chunk k + 1 into the other kept buffers and
 /// runs `check(j, answers)` on every part j whose answers are all in.
@@ -239,7 +257,7 @@ pub fn enumerate_on_gpu(
 fn enumerate_known(
     ctx: &GpuContext,
     lcps: &[&Lcp],
-    definite: &[Option<bool>],
+    (definite, hints): (&[Option<bool>], &[u32]),
     settings: &GpuSolveSettings,
     parts: &[std::ops::Range<usize>],
     check: &mut dyn FnMut(usize, &Answers) -> Result<(), Error>,
@@ -261,9 +279,10 @@ fn enumerate_known(
     // (part, chunk) in order; a chunk's `order` indexes `lcps`.
     let mut chunks = Vec::new();
     for (j, r) in parts.iter().enumerate() {
+        let hints = hints.get(r.clone()).unwrap_or(&[]);
         for mut c in pack_chunks(
             &lcps[r.clone()],
-            &tree[r.clone()],
+            (&tree[r.clone()], hints),
             max_bytes,
             precision.bytes(),
         ) {
@@ -294,6 +313,7 @@ fn enumerate_known(
                     tolerances: &tolerances,
                     table: &chunk.table,
                     tree: &chunk.tree,
+                    settle: chunk.table.iter().any(|t| t.contacts != 0),
                     max_groups,
                     plan: &plan,
                 })
@@ -362,8 +382,9 @@ struct Block<'a> {
     first: usize,
     islands: &'a mut [IslandReport],
     /// (island, whether its M is positive definite where prediction found
-    /// out) for each island left to the GPU, in order.
-    pending: Vec<(usize, Option<bool>)>,
+    /// out, its [`super::layout::hint`] word) for each island left to the
+    /// GPU, in order.
+    pending: Vec<(usize, Option<bool>, u32)>,
     /// Position of the first of them in the GPU's list.
     gpu_first: usize,
     /// The answers kept as the GPU gave them (accepted), those re-solved on
@@ -407,78 +428,42 @@ pub(crate) fn settle_on_cpu(
     settings: &GpuSolveSettings,
     out: &mut IslandReport,
 ) -> Result<(), Option<bool>> {
+    settle_or_hint(lcp, warm, settings, false, out).map_err(|(definite, _)| definite)
+}
+
+/// [`settle_on_cpu`]; with `hint`, prediction's steps 3 and 4 (warm
+/// basis, predicted basis: a linear solve each) are left to the settle
+/// kernel: `Err` then carries the island's [`super::layout::hint`] word too (0: none).
+fn settle_or_hint(
+    lcp: &Lcp,
+    warm: Option<u32>,
+    settings: &GpuSolveSettings,
+    hint: bool,
+    out: &mut IslandReport,
+) -> Result<(), (Option<bool>, u32)> {
     out.method = Method::Enumeration;
+    let e = &settings.enumeration;
     if lcp.n() > MAX_GPU_N {
         (out.method, out.path) = (Method::Lemke, SolvePath::Lemke);
         out.solution = lemke(lcp, &settings.lemke);
     } else if !settings.predict {
-        return Err(None);
+        return Err((None, 0));
+    } else if hint {
+        prediction_hint_into(lcp, warm, e, &mut out.path, &mut out.solution)
+            .map_err(|h| (h.definite, hint_word(h.warm, h.predicted)))?;
     } else if settings.method != Method::Enumeration {
         // The Lemke kernel takes no tree route: M's definiteness, which
         // `prediction_into` tests on every island for it, is not needed
         // (the CPU path's prediction, step for step).
-        let e = &settings.enumeration;
         if !predict_into(lcp, warm, e, &mut out.path, &mut out.solution) {
-            return Err(None);
+            return Err((None, 0));
         }
     } else {
-        prediction_into(
-            lcp,
-            warm,
-            &settings.enumeration,
-            &mut out.path,
-            &mut out.solution,
-        )?;
+        prediction_into(lcp, warm, e, &mut out.path, &mut out.solution)
+            .map_err(|definite| (definite, 0))?;
     }
     check_solution(&mut out.solution, settings.tolerance);
     Ok(())
-}
-
-/// The GPU's answer for `lcp` (its record and z) checked in f64 into `out`
-/// ([`check_answer`]; the Lemke kernel's, with `settings.method` Auto or
-/// Lemke, by [`check_lemke_answer`]), path and method set, the final check
-/// applied; the seconds of a repair added to `repair`. `exact_twin`: the
-/// shaders are the f64 twin; `accept`: and the GPU solved `lcp` itself (M
-/// and q uploaded as given, not assembled on the device), so that its z,
-/// where it passes the check, is kept as it is.
-/// Returns the verdict and the error of the GPU's own z.
-pub(crate) fn settle_from_gpu(
-    lcp: &Lcp,
-    (result, z): (&BasisResult, &[f64]),
-    settings: &GpuSolveSettings,
-    (exact_twin, accept): (bool, bool),
-    out: &mut IslandReport,
-    repair: &mut f64,
-) -> Result<(Verdict, f64), Error> {
-    let accept = exact_twin && accept;
-    if settings.method != Method::Enumeration {
-        let (method, path, verdict, gpu_error) = check_lemke_answer(
-            lcp,
-            (result, z),
-            (settings, accept),
-            &mut out.solution,
-            repair,
-        );
-        (out.method, out.path) = (method, path);
-        check_solution(&mut out.solution, settings.tolerance);
-        return Ok((verdict, gpu_error));
-    }
-    let verdict = GpuVerdict::of(result, z);
-    let checked = check_answer(
-        lcp,
-        &verdict,
-        &settings.enumeration,
-        (exact_twin, accept, settings.tolerance),
-        &mut out.solution,
-        repair,
-    )?;
-    out.method = Method::Enumeration;
-    out.path = match checked.0 {
-        Verdict::Repaired => SolvePath::Repaired,
-        _ => SolvePath::EnumeratedGpu,
-    };
-    check_solution(&mut out.solution, settings.tolerance);
-    Ok(checked)
 }
 
 /// [`solve_lcp_batch_warm`] without warm bases.
@@ -520,25 +505,31 @@ pub fn solve_lcp_batch_warm(
     let reports = t.elapsed().as_secs_f64();
     let mut blocks = blocks(&mut islands);
     let t = Instant::now();
+    let on_device = settings
+        .settle_on_device
+        .unwrap_or(!ctx.adapter_info().software);
     parallel_fill_by(&mut blocks, threads, 1, |_, b| {
         for (j, island) in b.islands.iter_mut().enumerate() {
             let i = b.first + j;
             // The problem's name is formatted only by the caller's error.
             if lcps[i].validate("problem").is_err() {
                 island.solution = LcpSolution::invalid(lcps[i].q.len());
-            } else if let Err(definite) = settle_on_cpu(&lcps[i], warm(i), settings, island) {
-                b.pending.push((i, definite));
+            } else if let Err((definite, hint)) =
+                settle_or_hint(&lcps[i], warm(i), settings, on_device, island)
+            {
+                b.pending.push((i, definite, hint));
             }
         }
     });
     let prediction = t.elapsed().as_secs_f64();
     let mut on_gpu: Vec<&Lcp> = Vec::new();
-    let mut definite = Vec::new();
+    let (mut definite, mut hints) = (Vec::new(), Vec::new());
     for b in &mut blocks {
         b.gpu_first = on_gpu.len();
-        for &(i, d) in &b.pending {
+        for &(i, d, h) in &b.pending {
             on_gpu.push(&lcps[i]);
             definite.push(d);
+            hints.push(h);
         }
     }
     if on_gpu.is_empty() {
@@ -572,8 +563,9 @@ pub fn solve_lcp_batch_warm(
         let t = Instant::now();
         parallel_fill_by(&mut blocks[parts[j].clone()], threads, 1, |_, b| {
             for k in 0..b.pending.len() {
-                let i = b.pending[k].0;
-                let answer = answers.of(b.gpu_first + k, lcps[i].n());
+                let (i, _, hint) = b.pending[k];
+                let (result, z) = answers.of(b.gpu_first + k, lcps[i].n());
+                let answer = (result, z, hint);
                 let island = &mut b.islands[i - b.first];
                 let twin = (exact, true);
                 match settle_from_gpu(&lcps[i], answer, settings, twin, island, &mut b.repair) {
@@ -592,8 +584,14 @@ pub fn solve_lcp_batch_warm(
         Ok(())
     };
     let t = Instant::now();
-    let (_, mut figures) =
-        enumerate_known(ctx, &on_gpu, &definite, settings, &gpu_parts, &mut check)?;
+    let (_, mut figures) = enumerate_known(
+        ctx,
+        &on_gpu,
+        (&definite, &hints),
+        settings,
+        &gpu_parts,
+        &mut check,
+    )?;
     drop(check);
     let gpu = t.elapsed().as_secs_f64() - validation;
     let mut kept = [0, 0];

@@ -505,10 +505,12 @@ impl PackedChunk {
 
 /// Sorts the islands by n (one dispatch per size: no island waits on a
 /// larger one), then by `tree` (the tree kernel's islands together), and
-/// plans chunks whose buffers stay under `max_bytes`.
+/// plans chunks whose buffers stay under `max_bytes`; each island's
+/// `hints` word (empty: none) goes into its table entry, for the settle
+/// kernel.
 pub(crate) fn pack_chunks(
     lcps: &[&Lcp],
-    tree: &[TreeRoute],
+    (tree, hints): (&[TreeRoute], &[u32]),
     max_bytes: u64,
     sb: u64,
 ) -> Vec<PackedChunk> {
@@ -543,7 +545,7 @@ pub(crate) fn pack_chunks(
                 n,
                 data,
                 z: zoff,
-                contacts: 0,
+                contacts: hints.get(i).copied().unwrap_or(0),
             });
             data += n * n + n;
             zoff += n;

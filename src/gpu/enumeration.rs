@@ -41,6 +41,10 @@ pub(crate) struct EnumerationJob<'a> {
     pub tolerances: &'a wgpu::Buffer,
     pub table: &'a [PackedIsland],
     pub tree: &'a [TreeRoute],
+    /// Run the settle kernel over the table before the first round
+    /// (`shaders/enumeration_settle.wgsl`): LCP batches whose table
+    /// carries warm or predicted bases ([`PackedIsland::contacts`]).
+    pub settle: bool,
     pub max_groups: u32,
     pub plan: &'a KernelPlan,
 }
@@ -186,9 +190,21 @@ impl<'a> EnumerationJob<'a> {
             // the encoder holds (assembly).
             flight.submitted = Some(flight.job.ctx.submit_reads(encoder, &[]));
         } else {
-            let (plans, params) = flight.job.plans()?;
-            let out = flight.job.outputs(&params, &mut encoder);
-            let buckets = flight.job.buckets(plans, &out)?;
+            let job = &flight.job;
+            let (plans, mut params) = job.plans()?;
+            let everything = Span::items(0, job.table.len() as u32);
+            let settle = job
+                .settle
+                .then(|| split(everything, job.max_groups, &mut params));
+            let out = job.outputs(&params, &mut encoder);
+            let buckets = job.buckets(plans, &out)?;
+            if let Some(dispatches) = settle {
+                // After `outputs` cleared the records, before the first round.
+                let stage = job.pipelines.settle(job.ctx)?;
+                let ranges = job.bind(stage, dispatches, &out);
+                job.ctx.record(&mut encoder, stage, &ranges);
+                flight.run.figures.dispatches += ranges.len();
+            }
             flight.active = (0..buckets.len()).collect();
             flight.state = Some((out, buckets));
             flight.submit(encoder)?;
@@ -274,29 +290,7 @@ impl<'a> EnumerationJob<'a> {
 
     /// The bind groups of every plan's dispatches.
     fn buckets(&self, plans: Vec<Plan<'a>>, out: &Outputs) -> Result<Vec<Bucket>, Error> {
-        let stride = Outputs::params_stride(self.ctx);
-        let params_size = wgpu::BufferSize::new(std::mem::size_of::<Params>() as u64);
-        let bind = |(stage, dispatches): (&Stage, Vec<(usize, u32)>)| -> Ranges {
-            let bind_one = |(at, groups): (usize, u32)| {
-                let params = wgpu::BufferBinding {
-                    buffer: &out.params.buffer,
-                    offset: at as u64 * stride,
-                    size: params_size,
-                };
-                let parts = [
-                    params,
-                    self.islands.as_entire_buffer_binding(),
-                    self.values.as_entire_buffer_binding(),
-                    out.results.binding(),
-                    out.z.binding(),
-                    out.unfinished.binding(),
-                    out.least.binding(),
-                    self.tolerances.as_entire_buffer_binding(),
-                ];
-                (stage.bind_parts(self.ctx, &parts), groups)
-            };
-            dispatches.into_iter().map(bind_one).collect()
-        };
+        let bind = |(stage, dispatches)| self.bind(stage, dispatches, out);
         Ok(plans
             .into_iter()
             .map(|p| Bucket {
@@ -305,6 +299,32 @@ impl<'a> EnumerationJob<'a> {
                 ranges: bind(p.ranges),
             })
             .collect())
+    }
+
+    /// The bind groups of `stage`'s `dispatches` (the index of each one's
+    /// Params, its workgroups) over the job's buffers and `out`.
+    fn bind(&self, stage: &Stage, dispatches: Vec<(usize, u32)>, out: &Outputs) -> Ranges {
+        let stride = Outputs::params_stride(self.ctx);
+        let params_size = wgpu::BufferSize::new(std::mem::size_of::<Params>() as u64);
+        let bind_one = |(at, groups): (usize, u32)| {
+            let params = wgpu::BufferBinding {
+                buffer: &out.params.buffer,
+                offset: at as u64 * stride,
+                size: params_size,
+            };
+            let parts = [
+                params,
+                self.islands.as_entire_buffer_binding(),
+                self.values.as_entire_buffer_binding(),
+                out.results.binding(),
+                out.z.binding(),
+                out.unfinished.binding(),
+                out.least.binding(),
+                self.tolerances.as_entire_buffer_binding(),
+            ];
+            (stage.bind_parts(self.ctx, &parts), groups)
+        };
+        dispatches.into_iter().map(bind_one).collect()
     }
 
     /// Counts the tree kernel's decisions in `run.results`.

@@ -78,6 +78,8 @@ pub struct PackedIsland {
     pub data: u32,
     pub z: u32,
     /// Assembly: where the island's contact list starts in the slot table.
+    /// LCP batches: the settle kernel's hint (WGSL `Island.hint`, see
+    /// [`hint`]), 0 for none.
     pub contacts: u32,
 }
 
@@ -109,6 +111,27 @@ pub const TREE_DECIDED: u32 = 1;
 /// [`BasisResult::_pad1`] after the tree kernel: it left the island to the
 /// elimination kernel.
 pub const TREE_UNDECIDED: u32 = 2;
+
+/// [`BasisResult::_pad1`] after the settle kernel
+/// (`shaders/enumeration_settle.wgsl`): the island's warm basis is its
+/// answer (status [`FOUND`], visited 1).
+pub const SETTLED_WARM: u32 = 3;
+/// [`BasisResult::_pad1`] after the settle kernel: the island's predicted
+/// basis is its answer.
+pub const SETTLED_PREDICTED: u32 = 4;
+
+/// The settle kernel's word per island ([`PackedIsland::contacts`] of an
+/// LCP batch): the warm basis in bits 0–15, the predicted basis in bits
+/// 16–31 (masks of n ≤ 16 contacts), 0 for none (an empty basis never
+/// settles an island that is not separating).
+pub fn hint(warm: u32, predicted: u32) -> u32 {
+    (warm & 0xffff) | predicted << 16
+}
+
+/// The (warm, predicted) bases of a [`hint`].
+pub fn hinted(hint: u32) -> (u32, u32) {
+    (hint & 0xffff, hint >> 16)
+}
 
 /// [`BasisResult::status`]: a valid basis was found.
 pub const FOUND: u32 = 1;

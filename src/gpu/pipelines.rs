@@ -226,6 +226,9 @@ pub(crate) struct Pipelines {
     tree: Vec<OnceLock<Stage>>,
     /// [`Shader::AllBases`] (`all_solutions` only), built on first use.
     all_bases: OnceLock<Stage>,
+    /// [`Shader::Settle`] (LCP batches with warm or predicted bases),
+    /// built on first use.
+    settle: OnceLock<Stage>,
     /// [`Shader::Lemke`], built on first use.
     lemke: OnceLock<Stage>,
     pub(crate) assemble_contacts: Stage,
@@ -255,10 +258,20 @@ fn lazy<'a>(
         .checked_sub(1)
         .and_then(|i| cache.get(i))
         .ok_or_else(|| Error::Gpu(format!("no {shader:?} kernel for n = {n}")))?;
+    once(slot, ctx, shader, ENUMERATION_BINDINGS)
+}
+
+/// The stage in `slot` (entry point `main` of `shader`), built on first use.
+fn once<'a>(
+    slot: &'a OnceLock<Stage>,
+    ctx: &GpuContext,
+    shader: Shader,
+    bindings: Bindings,
+) -> Result<&'a Stage, Error> {
     if let Some(s) = slot.get() {
         return Ok(s);
     }
-    let stage = Stage::new(ctx, shader, "main", ENUMERATION_BINDINGS)?;
+    let stage = Stage::new(ctx, shader, "main", bindings)?;
     Ok(slot.get_or_init(|| stage))
 }
 
@@ -272,6 +285,7 @@ impl Pipelines {
                 unrolled: (0..FIXED_MAX_N).map(|_| OnceLock::new()).collect(),
                 tree: (0..TREE_MAX_N).map(|_| OnceLock::new()).collect(),
                 all_bases: OnceLock::new(),
+                settle: OnceLock::new(),
                 lemke: OnceLock::new(),
                 assemble_contacts: Stage::new(
                     ctx,
@@ -302,22 +316,20 @@ impl Pipelines {
 
     /// The stage that screens every basis of every island, built on first use.
     pub(crate) fn all_bases(&self, ctx: &GpuContext) -> Result<&Stage, Error> {
-        if let Some(s) = self.all_bases.get() {
-            return Ok(s);
-        }
-        let stage = Stage::new(ctx, Shader::AllBases, "main", ALL_BASES_BINDINGS)?;
-        Ok(self.all_bases.get_or_init(|| stage))
+        once(&self.all_bases, ctx, Shader::AllBases, ALL_BASES_BINDINGS)
+    }
+
+    /// The settle stage (each island's warm, then predicted basis; the
+    /// enumeration kernels' bindings), built on first use.
+    pub(crate) fn settle(&self, ctx: &GpuContext) -> Result<&Stage, Error> {
+        once(&self.settle, ctx, Shader::Settle, ENUMERATION_BINDINGS)
     }
 
     /// The Lemke stage (islands of any size up to
     /// [`super::MAX_GPU_N`]; the enumeration kernels' bindings), built on
     /// first use.
     pub(crate) fn lemke(&self, ctx: &GpuContext) -> Result<&Stage, Error> {
-        if let Some(s) = self.lemke.get() {
-            return Ok(s);
-        }
-        let stage = Stage::new(ctx, Shader::Lemke, "main", ENUMERATION_BINDINGS)?;
-        Ok(self.lemke.get_or_init(|| stage))
+        once(&self.lemke, ctx, Shader::Lemke, ENUMERATION_BINDINGS)
     }
 
     /// The narrow phase's stage (`collide_pairs`), built on first use.

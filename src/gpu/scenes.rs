@@ -127,6 +127,9 @@ fn assemble_and_enumerate(
                     tolerances,
                     table: &c.enum_table,
                     tree: &c.enum_tree,
+                    // Prediction ran on the CPU's assembly; the table's
+                    // fourth word is the assembly's.
+                    settle: false,
                     max_groups,
                     plan,
                 };
@@ -389,7 +392,7 @@ pub fn solve_scenes_warm(
         let checked = parallel_map(c.enum_keys.len(), threads, |j| {
             let ((s, k), rec) = (c.enum_keys[j], &c.enum_table[j]);
             let (z0, n) = (rec.z as usize, rec.n as usize);
-            let answer = (&out.results[j], out.z.get(z0..z0 + n).unwrap_or(&[]));
+            let answer = (&out.results[j], out.z.get(z0..z0 + n).unwrap_or(&[]), 0);
             // Only method, path and solution are written (and taken below).
             let mut island = IslandReport {
                 scene: None,

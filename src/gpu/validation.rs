@@ -31,6 +31,10 @@
 //! where that fails, or the kernel gave up, solves the island by the CPU
 //! path's code for the rest.
 //!
+//! The settle kernel's answers (an island's warm or predicted basis,
+//! tried on the device before the others run) are checked the same way
+//! ([`check_settled`]) and keep prediction's paths and counters.
+//!
 //! With the same visit order and rule (fewest basic z, then the smallest
 //! mask) as the CPU, an island's chosen basis is the CPU's whenever the GPU
 //! accepted every basis f64 accepts before it; the f64 shaders use the CPU's
@@ -38,14 +42,19 @@
 //! re-solve of the same basis by rounding only (the error bound keeps it
 //! within about 1e-12 of it, relative).
 
-use crate::cpu::enumeration::{enumerate, feasible_basis_into, EnumerationSettings};
+use crate::cpu::enumeration::{
+    enumerate, feasible_basis_into, solved_on_basis, EnumerationSettings,
+};
 use crate::cpu::lemke::lemke;
 use crate::gpu::batch::GpuSolveSettings;
-use crate::gpu::layout::{BasisResult, FOUND, RELAXED};
+use crate::gpu::layout::{hinted, BasisResult, FOUND, RELAXED, SETTLED_PREDICTED, SETTLED_WARM};
 use crate::lcp::{Counters, Lcp, LcpSolution, Residuals, Status};
 use crate::linalg::solve_in_place;
+use crate::prediction::hinted_into;
+use crate::report::IslandReport;
 use crate::report::SolvePath;
 use crate::settings::Method;
+use crate::solver::check_solution;
 use crate::solver::{lemke_else_enumerate, textbook_checked};
 use crate::Error;
 
@@ -191,11 +200,7 @@ pub(crate) fn accept_gpu_z(
     let (error, feasible) = gpu_answer_into(lcp, mask, z, feasibility_tol, out);
     let accepted = exact_twin && feasible && error <= ACCEPT_ERROR.min(tolerance);
     if accepted {
-        out.status = Status::Solved;
-        out.counters = counters;
-        out.basis = Some(mask);
-        out.all_bases.clear();
-        out.solution_set = None;
+        solved_on_basis(mask, counters, out);
     }
     (accepted, error)
 }
@@ -213,6 +218,10 @@ pub enum Verdict {
     ConfirmedNoSolution,
     /// The GPU's answer was wrong in f64; the CPU enumeration's is used.
     Repaired,
+    /// The settle kernel's warm or predicted basis, checked in f64
+    /// ([`check_settled`]): counted with prediction's islands (path
+    /// WarmStart or PredictedBasis), not as a GPU answer.
+    Predicted,
 }
 
 /// Checks the GPU's answer for `lcp` in f64 and writes the island's answer
@@ -339,17 +348,134 @@ pub fn check_lemke_answer(
             gpu_error,
         );
     }
+    let (method, path) = lemke_instead(lcp, settings, out, repair);
+    (method, path, Verdict::Repaired, gpu_error)
+}
+
+/// The CPU path's answer for `lcp` after prediction with `settings.method`
+/// Lemke ([`lemke`]) or Auto (the checked Lemke, else the CPU enumeration:
+/// then path Repaired), into `out`, as (method, path), its seconds added
+/// to `repair`.
+fn lemke_instead(
+    lcp: &Lcp,
+    settings: &GpuSolveSettings,
+    out: &mut LcpSolution,
+    repair: &mut f64,
+) -> (Method, SolvePath) {
     let t = Instant::now();
     let (mut method, mut path) = (Method::Lemke, SolvePath::Lemke);
     if settings.method == Method::Lemke {
         *out = lemke(lcp, &settings.lemke);
     } else {
-        let (l, t) = (&settings.lemke, settings.tolerance);
-        lemke_else_enumerate(lcp, l, e, t, &mut method, &mut path, out);
+        let (l, e, tol) = (&settings.lemke, &settings.enumeration, settings.tolerance);
+        lemke_else_enumerate(lcp, l, e, tol, &mut method, &mut path, out);
         if path == SolvePath::EnumeratedCpu {
             path = SolvePath::Repaired;
         }
     }
     *repair += t.elapsed().as_secs_f64();
-    (method, path, Verdict::Repaired, gpu_error)
+    (method, path)
+}
+
+/// The settle kernel's answer for `lcp` (its record FOUND with `_pad1`
+/// [`SETTLED_WARM`] or [`SETTLED_PREDICTED`], and z; `hint`: the island's
+/// [`crate::gpu::layout::hint`]) checked in f64 into `out`: its z kept as
+/// the GPU gave it where it passes [`accept_gpu_z`] (with `accept`: an f64
+/// shader with the CPU's tolerances, which then judged each basis as the
+/// CPU does); else the hint's bases solved on the host in the CPU path's
+/// order ([`hinted_into`]: the CPU's bytes; f32 shaders always come here);
+/// else, where neither is valid in f64, the CPU path's solve after
+/// prediction (verdict Repaired; the enumeration's path Repaired). Returns
+/// (method, path, verdict) and the error of the GPU's own z.
+///
+/// # Errors
+/// Those of the CPU enumeration (none for a checked problem of n ≤ 20).
+pub(crate) fn check_settled(
+    lcp: &Lcp,
+    (result, z): (&BasisResult, &[f64]),
+    hint: u32,
+    (settings, accept): (&GpuSolveSettings, bool),
+    out: &mut LcpSolution,
+    repair: &mut f64,
+) -> Result<(Method, SolvePath, Verdict, f64), Error> {
+    let e = &settings.enumeration;
+    let path = match result._pad1 {
+        SETTLED_WARM => SolvePath::WarmStart,
+        _ => SolvePath::PredictedBasis,
+    };
+    let counters = Counters {
+        bases_visited: 1,
+        ..Counters::default()
+    };
+    let check = (accept, e.feasibility_tol, settings.tolerance);
+    let (accepted, gpu_error) = accept_gpu_z(lcp, (result.mask, z), check, counters, out);
+    if accepted {
+        return Ok((Method::Enumeration, path, Verdict::Predicted, gpu_error));
+    }
+    if let Some(path) = hinted_into(lcp, hinted(hint), e, out) {
+        return Ok((Method::Enumeration, path, Verdict::Predicted, gpu_error));
+    }
+    if settings.method != Method::Enumeration {
+        let (method, path) = lemke_instead(lcp, settings, out, repair);
+        return Ok((method, path, Verdict::Repaired, gpu_error));
+    }
+    let verdict = enumerate_instead(lcp, e, false, out, repair)?;
+    Ok((Method::Enumeration, SolvePath::Repaired, verdict, gpu_error))
+}
+
+/// The GPU's answer for `lcp` (its record, z, and the island's
+/// [`crate::gpu::layout::hint`]
+/// word) checked in f64 into `out` ([`check_answer`]; the Lemke kernel's,
+/// with `settings.method` Auto or Lemke, by [`check_lemke_answer`]; the
+/// settle kernel's by [`check_settled`]), path and method set, the final check
+/// applied; the seconds of a repair added to `repair`. `exact_twin`: the
+/// shaders are the f64 twin; `accept`: and the GPU solved `lcp` itself (M
+/// and q uploaded as given, not assembled on the device), so that its z,
+/// where it passes the check, is kept as it is.
+/// Returns the verdict and the error of the GPU's own z.
+pub(crate) fn settle_from_gpu(
+    lcp: &Lcp,
+    (result, z, hint): (&BasisResult, &[f64], u32),
+    settings: &GpuSolveSettings,
+    (exact_twin, accept): (bool, bool),
+    out: &mut IslandReport,
+    repair: &mut f64,
+) -> Result<(Verdict, f64), Error> {
+    let accept = exact_twin && accept;
+    if result.status == FOUND && matches!(result._pad1, SETTLED_WARM | SETTLED_PREDICTED) {
+        let how = (settings, accept);
+        let checked = check_settled(lcp, (result, z), hint, how, &mut out.solution, repair)?;
+        let (method, path, verdict, gpu_error) = checked;
+        (out.method, out.path) = (method, path);
+        check_solution(&mut out.solution, settings.tolerance);
+        return Ok((verdict, gpu_error));
+    }
+    if settings.method != Method::Enumeration {
+        let (method, path, verdict, gpu_error) = check_lemke_answer(
+            lcp,
+            (result, z),
+            (settings, accept),
+            &mut out.solution,
+            repair,
+        );
+        (out.method, out.path) = (method, path);
+        check_solution(&mut out.solution, settings.tolerance);
+        return Ok((verdict, gpu_error));
+    }
+    let verdict = GpuVerdict::of(result, z);
+    let checked = check_answer(
+        lcp,
+        &verdict,
+        &settings.enumeration,
+        (exact_twin, accept, settings.tolerance),
+        &mut out.solution,
+        repair,
+    )?;
+    out.method = Method::Enumeration;
+    out.path = match checked.0 {
+        Verdict::Repaired => SolvePath::Repaired,
+        _ => SolvePath::EnumeratedGpu,
+    };
+    check_solution(&mut out.solution, settings.tolerance);
+    Ok(checked)
 }

@@ -67,7 +67,7 @@ fn check_refuses_wrong_answers(method: Method) {
         let mut island = blank();
         let (verdict, _) = settle_from_gpu(
             lcp,
-            (&r, &o.z),
+            (&r, &o.z, 0),
             &gs,
             (exact, true),
             &mut island,
@@ -91,7 +91,7 @@ fn check_refuses_wrong_answers(method: Method) {
         let mut island = blank();
         let (verdict, gpu_error) = settle_from_gpu(
             lcp,
-            (&r, &wrong),
+            (&r, &wrong, 0),
             &gs,
             (exact, true),
             &mut island,
@@ -119,7 +119,7 @@ fn check_refuses_wrong_answers(method: Method) {
         let mut island = blank();
         let (verdict, _) = settle_from_gpu(
             lcp,
-            (&bad, &wrong),
+            (&bad, &wrong, 0),
             &gs,
             (exact, true),
             &mut island,

@@ -5,11 +5,12 @@
 //! where M ≻ 0 makes z the same), path counts add up to the islands, and a
 //! warm start from the cold bases settles every island that has a basis.
 
+use crate::cpu::enumeration::{enumerate, EnumerationSettings};
 use crate::generate::{box_on_ground, demo_world, random_island, seed_chain, Rng};
 use crate::gpu::batch::solve_lcp_batch_warm;
 use crate::gpu::scenes::{check_and_build, solve_scenes_warm};
 use crate::gpu::{solve_lcp_batch, solve_scenes, GpuSolveSettings, Precision};
-use crate::{Lcp, Report, Scene, SolvePath};
+use crate::{Lcp, Method, Report, Scene, SolvePath};
 
 use super::common::gpu_context as context;
 
@@ -56,19 +57,21 @@ fn paths_add_up(r: &Report) {
     };
     let sum: usize = SolvePath::ALL.iter().map(|p| count(p.name())).sum();
     assert_eq!(sum, r.islands.len(), "{r}");
-    assert!(c.polished <= c.enumerated_gpu, "{r}");
+    assert!(c.polished <= c.enumerated_gpu + c.lemke_gpu, "{r}");
     for p in SolvePath::ALL {
         let n = r.islands.iter().filter(|o| o.path == p).count();
         assert_eq!(n, count(p.name()), "{}", p.name());
     }
     // The GPU backend settles islands by prediction, on the GPU, by repair,
-    // by Lemke (n > 16), or finds them invalid; nothing else.
+    // by Lemke (n > 16, or where its Lemke kernel gave up), or finds them
+    // invalid; nothing else.
     for o in &r.islands {
         assert!(
             o.path.is_prediction()
                 || matches!(
                     o.path,
                     SolvePath::EnumeratedGpu
+                        | SolvePath::LemkeGpu
                         | SolvePath::Repaired
                         | SolvePath::Lemke
                         | SolvePath::Invalid
@@ -222,4 +225,129 @@ fn scene_prediction_on_and_off_agree() {
             }
         }
     }
+}
+
+/// The CPU path's answer for a valid island of n ≤ 16 with warm basis
+/// `warm` (prediction, else enumeration), as (path, solution).
+fn cpu_twin(lcp: &Lcp, warm: Option<u32>) -> (SolvePath, crate::LcpSolution) {
+    let e = EnumerationSettings::default();
+    crate::prediction::predict(lcp, warm, &e)
+        .unwrap_or_else(|| (SolvePath::EnumeratedGpu, enumerate(lcp, &e).unwrap()))
+}
+
+/// Warm bases tried on the device (the settle kernel): right (the cold
+/// call's basis), wrong (one contact flipped), out of range, and on a rank
+/// one island a valid basis that is not enumeration's choice, beside
+/// prediction's own. Every island's status, path, basis and z are the CPU
+/// path's (z bit for bit where the host re-solved the basis, within
+/// 1e-12 where the GPU's f64 z was kept); warm hits are counted as warm
+/// hits, not as GPU answers.
+fn warm_islands(precision: Precision, method: Method) {
+    let Some(ctx) = context(precision) else {
+        return;
+    };
+    let mut lcps = lcps(300);
+    // Rank one: z1 + z2 = 1; enumeration picks {0}, the warm {1} is valid.
+    lcps.push(Lcp::new(vec![1.0, 1.0, 1.0, 1.0], vec![-1.0, -1.0]).unwrap());
+    // The warm {1} infeasible.
+    lcps.push(Lcp::new(vec![1.0, 1.0, 1.0, 1.0], vec![-1.0, 2.0]).unwrap());
+    let settings = GpuSolveSettings {
+        method,
+        settle_on_device: Some(true),
+        ..Default::default()
+    };
+    let cold = solve_lcp_batch(&ctx, &lcps, &settings).unwrap();
+    let last = lcps.len() - 1;
+    let warm: Vec<Option<u32>> = (0..lcps.len())
+        .map(|i| match (i, cold.islands[i].solution.basis) {
+            (i, _) if i + 1 >= last => Some(0b10),
+            (_, None) => None,
+            (i, Some(b)) if i % 4 == 1 => Some(b ^ 1),
+            (i, Some(_)) if i % 4 == 2 => Some(1 << 17),
+            (_, Some(b)) => Some(b),
+        })
+        .collect();
+    let hot = solve_lcp_batch_warm(&ctx, &lcps, &|i| warm[i], &settings).unwrap();
+    println!("{precision:?} {}:\n{hot}", method.name());
+    paths_add_up(&hot);
+    let c = &hot.counts;
+    assert!(
+        c.accepted + c.polished <= c.enumerated_gpu + c.lemke_gpu,
+        "{hot}"
+    );
+    let (mut warm_hits, mut predicted) = (0, 0);
+    for (i, (lcp, h)) in lcps.iter().zip(&hot.islands).enumerate() {
+        if lcp.validate("problem").is_err() {
+            continue;
+        }
+        let (path, cpu) = cpu_twin(lcp, warm[i]);
+        warm_hits += (path == SolvePath::WarmStart) as usize;
+        predicted += (path == SolvePath::PredictedBasis) as usize;
+        let s = &h.solution;
+        if !path.is_prediction() {
+            assert!(!h.path.is_prediction(), "island {i}: {}", h.path);
+            if method == Method::Enumeration {
+                assert_eq!(s.status, cpu.status, "island {i}");
+            }
+            continue;
+        }
+        if precision == Precision::F32 && h.path != path {
+            // f32: a basis the device judged infeasible where f64 finds
+            // it valid is enumerated instead (the f64 check polishes it).
+            assert_eq!(s.status, cpu.status, "island {i}");
+            continue;
+        }
+        assert_eq!(h.path, path, "island {i}");
+        assert_eq!(h.method, Method::Enumeration, "island {i}");
+        assert_eq!((s.status, s.basis), (cpu.status, cpu.basis), "island {i}");
+        assert_eq!(s.counters, cpu.counters, "island {i}");
+        let scale = cpu.z.iter().fold(1e-300f64, |m, v| m.max(v.abs()));
+        for (p, q) in s.z.iter().zip(&cpu.z) {
+            assert!((p - q).abs() <= 1e-12 * scale, "island {i}: {p} vs {q}");
+        }
+        if precision == Precision::F32 {
+            assert_eq!(s.z, cpu.z, "island {i}: re-solved on the host");
+        }
+    }
+    assert!(warm_hits > 50 && predicted > 0, "{warm_hits} {predicted}");
+    assert_eq!(hot.islands[last - 1].path, SolvePath::WarmStart);
+    assert_eq!(hot.islands[last - 1].solution.z, vec![0.0, 1.0]);
+    assert_ne!(hot.islands[last].path, SolvePath::WarmStart);
+    if precision == Precision::F64 {
+        assert_eq!((c.warm_start, c.predicted_basis), (warm_hits, predicted));
+    }
+    // The warm hits alone: on the device they are uploaded and settled by
+    // the kernel; on the host nothing is uploaded.
+    let hits: Vec<usize> = (0..lcps.len())
+        .filter(|&i| hot.islands[i].path == SolvePath::WarmStart)
+        .collect();
+    let again: Vec<Lcp> = hits.iter().map(|&i| lcps[i].clone()).collect();
+    let bases: Vec<Option<u32>> = hits
+        .iter()
+        .map(|&i| hot.islands[i].solution.basis)
+        .collect();
+    for device in [true, false] {
+        let s = GpuSolveSettings {
+            settle_on_device: Some(device),
+            ..settings
+        };
+        let r = solve_lcp_batch_warm(&ctx, &again, &|i| bases[i], &s).unwrap();
+        assert_eq!(r.counts.warm_start, again.len(), "{r}");
+        assert_eq!(r.gpu.map_or(0, |g| g.chunks) > 0, device, "{r}");
+        for (k, &i) in hits.iter().enumerate() {
+            assert_eq!(r.islands[k].solution.basis, bases[k], "island {i}");
+        }
+    }
+}
+
+#[test]
+fn warm_bases_settled_on_the_device_f64() {
+    warm_islands(Precision::F64, Method::Enumeration);
+    warm_islands(Precision::F64, Method::Lemke);
+}
+
+#[test]
+fn warm_bases_settled_on_the_device_f32() {
+    warm_islands(Precision::F32, Method::Enumeration);
+    warm_islands(Precision::F32, Method::Auto);
 }

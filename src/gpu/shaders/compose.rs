@@ -23,6 +23,7 @@ const ENUMERATION_WORKGROUP_WGSL: &str =
     include_str!("../../../shaders/enumeration_workgroup.wgsl");
 const ENUMERATION_TREE_WGSL: &str = include_str!("../../../shaders/enumeration_tree.wgsl");
 const ENUMERATION_ALL_WGSL: &str = include_str!("../../../shaders/enumeration_all.wgsl");
+const ENUMERATION_SETTLE_WGSL: &str = include_str!("../../../shaders/enumeration_settle.wgsl");
 const LEMKE_WGSL: &str = include_str!("../../../shaders/lemke.wgsl");
 const ASSEMBLY_WGSL: &str = include_str!("../../../shaders/assembly.wgsl");
 const IMPULSES_WGSL: &str = include_str!("../../../shaders/impulses.wgsl");
@@ -65,6 +66,7 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         Shader::Workgroup => ("enumeration_workgroup", ENUMERATION_WORKGROUP_WGSL),
         Shader::Tree(_) => ("enumeration_tree", ENUMERATION_TREE_WGSL),
         Shader::AllBases => ("enumeration_all", ENUMERATION_ALL_WGSL),
+        Shader::Settle => ("enumeration_settle", ENUMERATION_SETTLE_WGSL),
         Shader::Lemke => ("lemke", LEMKE_WGSL),
         Shader::Assembly => ("assembly", ASSEMBLY_WGSL),
         Shader::Impulses => ("impulses", IMPULSES_WGSL),

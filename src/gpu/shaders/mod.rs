@@ -47,6 +47,9 @@ pub(crate) enum Shader {
     /// `shaders/enumeration_tree.wgsl` for islands of exactly n contacts
     /// (1 ≤ n ≤ [`crate::cpu::enumeration_tree::TREE_MAX_N`]).
     Tree(usize),
+    /// `shaders/enumeration_settle.wgsl`: each island's warm, then
+    /// predicted basis, tried before the enumeration or Lemke kernels.
+    Settle,
     /// `shaders/lemke.wgsl`: Lemke's textbook path, one invocation per
     /// island of any size up to [`super::MAX_GPU_N`].
     Lemke,
@@ -78,6 +81,7 @@ impl Shader {
             Shader::Enumeration,
             Shader::Workgroup,
             Shader::AllBases,
+            Shader::Settle,
             Shader::Lemke,
         ];
         v.extend((1..=FIXED_MAX_N).map(Shader::Unrolled));
@@ -96,6 +100,7 @@ impl Shader {
             Shader::Workgroup => "enumeration_workgroup".into(),
             Shader::Tree(n) => format!("enumeration_tree_n{n}"),
             Shader::AllBases => "enumeration_all".into(),
+            Shader::Settle => "enumeration_settle".into(),
             Shader::Lemke => "lemke".into(),
             Shader::Assembly => "assembly".into(),
             Shader::Impulses => "impulses".into(),
@@ -148,6 +153,7 @@ pub(crate) static GENERATED: &[(&str, &str, &str)] = generated!(
     "enumeration",
     "enumeration_workgroup",
     "enumeration_all",
+    "enumeration_settle",
     "lemke",
     "enumeration_n1",
     "enumeration_n2",
