@@ -33,6 +33,23 @@ fn inv_inertia_mul(b: u32, v: vec3<Scalar>) -> vec3<Scalar> {
     return rotate(p, inv * unrotate(p, v));
 }
 
+// The dynamic body of each side of contact `slot` (global) in the step's
+// scene, NONE where that side is static or not moving: the `sides` of its
+// rows (friction rows of world_friction.wgsl included).
+fn contact_sides(slot: u32, moving: u32) -> vec2<u32> {
+    let key = sp.keys_at + 4u * slot;
+    let a = words[key];
+    let b = words[key + 1u];
+    var s = vec2<u32>(NONE, NONE);
+    if ((moving >> a) & 1u) != 0u {
+        s.x = a;
+    }
+    if ((moving >> b) & 1u) != 0u {
+        s.y = b;
+    }
+    return s;
+}
+
 // assemble_contact: row i of the island from contact `slot` of world with
 // first body `first` and moving-body mask `moving`; bias φ/Δt, ε = 0.
 fn assemble_contact(slot: u32, i: u32, first: u32, moving: u32) {
@@ -54,14 +71,12 @@ fn assemble_contact(slot: u32, i: u32, first: u32, moving: u32) {
     put_row(&jac, r + 3u, ra_n);
     put_row(&jac, r + 6u, -n);
     put_row(&jac, r + 9u, -rb_n);
-    var s = vec2<u32>(NONE, NONE);
-    if ((moving >> a) & 1u) != 0u {
-        s.x = a;
+    let s = contact_sides(slot, moving);
+    if s.x != NONE {
         put_row(&resp, r, n * body_const(ga, 5u));
         put_row(&resp, r + 3u, inv_inertia_mul(ga, ra_n));
     }
-    if ((moving >> b) & 1u) != 0u {
-        s.y = b;
+    if s.y != NONE {
         put_row(&resp, r + 6u, -n * body_const(gb, 5u));
         put_row(&resp, r + 9u, -inv_inertia_mul(gb, rb_n));
     }
@@ -206,6 +221,24 @@ fn resolve_basis(n: u32) {
     }
 }
 
+// False where llvmpipe's loop limit was reached in this invocation: past
+// about 65,535 loop iterations of its group of invocations in one dispatch
+// every loop ends after its current iteration, so whatever the
+// invocation computed since may be cut short; this loop of two
+// iterations then ends after one. (Its bound is not a constant, so the
+// compiler keeps the loop.) Elsewhere always true.
+fn loops_left() -> bool {
+    let r = 2u + (sp.count >> 31u);
+    var k = 0u;
+    loop {
+        if k >= r {
+            break;
+        }
+        k++;
+    }
+    return k == r;
+}
+
 fn find(parent: ptr<function, array<u32, 16>>, x0: u32) -> u32 {
     var x = x0;
     while (*parent)[x] != x {
@@ -258,6 +291,7 @@ fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
     let moving = words[out + 1u];
     var flags = words[out + 2u];
     let slot0 = w * sp.slots;
+    records[w * REC + 5u] = Scalar(0.0);
     load_velocities(w);
     // Islands.
     var parent: array<u32, 16>;
@@ -291,7 +325,8 @@ fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
         max_penetration = max(max_penetration, -scratch[sp.contacts_at + (slot0 + c) * CP + 6u]);
     }
     // A world with friction (a contact with μ > 0: Scene::has_friction)
-    // goes to world_friction, flagged BUDGET until that finishes it.
+    // goes to world_friction, flagged HANDED until that finishes it; its
+    // rounds there are counted from 0 (the record's sixth scalar).
     var frictional = false;
     for (var c = 0u; c < count; c++) {
         let key = sp.keys_at + 4u * (slot0 + c);
@@ -307,7 +342,7 @@ fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
             words[fs] = F_ASSEMBLE;
             words[fs + 1u] = 0u;
             words[fs + 2u] = 0u;
-            words[out + 2u] = BUDGET;
+            words[out + 2u] = HANDED;
             records[w * REC + 2u] = max_penetration;
             records[w * REC + 3u] = Scalar(0.0);
             return;
@@ -477,6 +512,11 @@ fn finish_world(w: u32, flags0: u32, max_penetration: Scalar, max_error: Scalar)
                 awake++;
             }
         }
+    }
+    // The loop limit reached: flagged (the host steps the world from its
+    // state before the step and writes it back).
+    if flags == 0u && !loops_left() {
+        flags = BUDGET;
     }
     words[out + 2u] = flags;
     let r = w * REC;

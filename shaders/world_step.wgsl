@@ -59,6 +59,7 @@ const ISLAND_TOO_LARGE: u32 = 2u;
 const NOT_SOLVED: u32 = 4u;
 const NON_FINITE: u32 = 8u;
 const BUDGET: u32 = 16u;
+const HANDED: u32 = 32u; // with world_friction until it finishes the world (world_solve.wgsl)
 
 struct StepParams {
     // Worlds.

@@ -911,6 +911,7 @@ const ISLAND_TOO_LARGE: u32 = 2u;
 const NOT_SOLVED: u32 = 4u;
 const NON_FINITE: u32 = 8u;
 const BUDGET: u32 = 16u;
+const HANDED: u32 = 32u; // with world_friction until it finishes the world (world_solve.wgsl)
 
 struct StepParams {
     // Worlds.
@@ -1339,6 +1340,23 @@ fn inv_inertia_mul(b: u32, v: vec3<Scalar>) -> vec3<Scalar> {
     return rotate(p, inv * unrotate(p, v));
 }
 
+// The dynamic body of each side of contact `slot` (global) in the step's
+// scene, NONE where that side is static or not moving: the `sides` of its
+// rows (friction rows of world_friction.wgsl included).
+fn contact_sides(slot: u32, moving: u32) -> vec2<u32> {
+    let key = sp.keys_at + 4u * slot;
+    let a = words[key];
+    let b = words[key + 1u];
+    var s = vec2<u32>(NONE, NONE);
+    if ((moving >> a) & 1u) != 0u {
+        s.x = a;
+    }
+    if ((moving >> b) & 1u) != 0u {
+        s.y = b;
+    }
+    return s;
+}
+
 // assemble_contact: row i of the island from contact `slot` of world with
 // first body `first` and moving-body mask `moving`; bias φ/Δt, ε = 0.
 fn assemble_contact(slot: u32, i: u32, first: u32, moving: u32) {
@@ -1360,14 +1378,12 @@ fn assemble_contact(slot: u32, i: u32, first: u32, moving: u32) {
     put_row(&jac, r + 3u, ra_n);
     put_row(&jac, r + 6u, -n);
     put_row(&jac, r + 9u, -rb_n);
-    var s = vec2<u32>(NONE, NONE);
-    if ((moving >> a) & 1u) != 0u {
-        s.x = a;
+    let s = contact_sides(slot, moving);
+    if s.x != NONE {
         put_row(&resp, r, n * body_const(ga, 5u));
         put_row(&resp, r + 3u, inv_inertia_mul(ga, ra_n));
     }
-    if ((moving >> b) & 1u) != 0u {
-        s.y = b;
+    if s.y != NONE {
         put_row(&resp, r + 6u, -n * body_const(gb, 5u));
         put_row(&resp, r + 9u, -inv_inertia_mul(gb, rb_n));
     }
@@ -1512,6 +1528,24 @@ fn resolve_basis(n: u32) {
     }
 }
 
+// False where llvmpipe's loop limit was reached in this invocation: past
+// about 65,535 loop iterations of its group of invocations in one dispatch
+// every loop ends after its current iteration, so whatever the
+// invocation computed since may be cut short; this loop of two
+// iterations then ends after one. (Its bound is not a constant, so the
+// compiler keeps the loop.) Elsewhere always true.
+fn loops_left() -> bool {
+    let r = 2u + (sp.count >> 31u);
+    var k = 0u;
+    loop {
+        if k >= r {
+            break;
+        }
+        k++;
+    }
+    return k == r;
+}
+
 fn find(parent: ptr<function, array<u32, 16>>, x0: u32) -> u32 {
     var x = x0;
     while (*parent)[x] != x {
@@ -1564,6 +1598,7 @@ fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
     let moving = words[out + 1u];
     var flags = words[out + 2u];
     let slot0 = w * sp.slots;
+    records[w * REC + 5u] = Scalar(0.0);
     load_velocities(w);
     // Islands.
     var parent: array<u32, 16>;
@@ -1597,7 +1632,8 @@ fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
         max_penetration = max(max_penetration, -scratch[sp.contacts_at + (slot0 + c) * CP + 6u]);
     }
     // A world with friction (a contact with μ > 0: Scene::has_friction)
-    // goes to world_friction, flagged BUDGET until that finishes it.
+    // goes to world_friction, flagged HANDED until that finishes it; its
+    // rounds there are counted from 0 (the record's sixth scalar).
     var frictional = false;
     for (var c = 0u; c < count; c++) {
         let key = sp.keys_at + 4u * (slot0 + c);
@@ -1613,7 +1649,7 @@ fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
             words[fs] = F_ASSEMBLE;
             words[fs + 1u] = 0u;
             words[fs + 2u] = 0u;
-            words[out + 2u] = BUDGET;
+            words[out + 2u] = HANDED;
             records[w * REC + 2u] = max_penetration;
             records[w * REC + 3u] = Scalar(0.0);
             return;
@@ -1784,6 +1820,11 @@ fn finish_world(w: u32, flags0: u32, max_penetration: Scalar, max_error: Scalar)
             }
         }
     }
+    // The loop limit reached: flagged (the host steps the world from its
+    // state before the step and writes it back).
+    if flags == 0u && !loops_left() {
+        flags = BUDGET;
+    }
     words[out + 2u] = flags;
     let r = w * REC;
     records[r] = kinetic;
@@ -1796,15 +1837,16 @@ fn finish_world(w: u32, flags0: u32, max_penetration: Scalar, max_error: Scalar)
 // The frictional phase of shaders/world_step.wgsl (composed after
 // world_solve.wgsl, before the cone projection of friction_common.wgsl):
 // the islands of the worlds with friction (a contact with μ > 0 this step;
-// world_solve hands them over with the phase F_ASSEMBLE and the flag BUDGET,
+// world_solve hands them over with the phase F_ASSEMBLE and the flag HANDED,
 // which stays until the world is finished), one invocation per world.
 // `world_friction` is dispatched several times per step (rounds, after
 // world_solve, in the same submission); each invocation goes on where the
 // last round stopped and does at most `sp.friction_budget` of loop work
 // (llvmpipe ends an invocation's loops after about 65,535 iterations in
 // all, counted over 8 invocations in lockstep). A world
-// not finished after the step's last round keeps BUDGET: the host steps it
-// on the CPU.
+// not finished after the step's last round keeps HANDED: the host steps it
+// on the CPU. The rounds a world was active in this step are its record's
+// sixth scalar (the host sizes the next step's rounds by them).
 //
 // Per island, the CPU twin's arithmetic in its order
 // (src/solver/world_friction.rs with a projected method):
@@ -1884,10 +1926,10 @@ fn inv_inertia_mat_mul(b: u32, v: vec3<Scalar>) -> vec3<Scalar> {
     return m0 * v.x + m1 * v.y + m2 * v.z;
 }
 
-// Row `row` of the island at `base`: direction d at contact `slot`
-// (tangent_row: assemble_contact's row with d for n). Returns v_rel = (ṗ_a −
-// ṗ_b)·d.
-fn assemble_direction(base: u32, row: u32, slot: u32, d: vec3<Scalar>, first: u32, moving: u32) -> Scalar {
+// Row `row` of the island at `base`: direction d at contact `slot` with
+// sides `s` (tangent_row: assemble_contact's row with d for n). Returns
+// v_rel = (ṗ_a − ṗ_b)·d.
+fn assemble_direction(base: u32, row: u32, slot: u32, d: vec3<Scalar>, first: u32, s: vec2<u32>) -> Scalar {
     let key = sp.keys_at + 4u * slot;
     let a = words[key];
     let b = words[key + 1u];
@@ -1908,11 +1950,11 @@ fn assemble_direction(base: u32, row: u32, slot: u32, d: vec3<Scalar>, first: u3
     put_scratch(o + 15u, zero);
     put_scratch(o + 18u, zero);
     put_scratch(o + 21u, zero);
-    if ((moving >> a) & 1u) != 0u {
+    if s.x != NONE {
         put_scratch(o + 12u, d * body_const(ga, 5u));
         put_scratch(o + 15u, inv_inertia_mat_mul(ga, ra_d));
     }
-    if ((moving >> b) & 1u) != 0u {
+    if s.y != NONE {
         put_scratch(o + 18u, -d * body_const(gb, 5u));
         put_scratch(o + 21u, -inv_inertia_mat_mul(gb, rb_d));
     }
@@ -1961,26 +2003,20 @@ fn assemble_friction(base: u32, n: u32, first: u32, moving: u32) {
         let t = tangent_basis(nrm);
         let gap = scratch[at + 6u];
         let key = sp.keys_at + 4u * slot;
-        let a = words[key];
-        let b = words[key + 1u];
-        var s = vec2<u32>(NONE, NONE);
-        if ((moving >> a) & 1u) != 0u {
-            s.x = a;
-        }
-        if ((moving >> b) & 1u) != 0u {
-            s.y = b;
-        }
+        let s = contact_sides(slot, moving);
         sides[i] = s;
         let q = base + F_Q + 3u * i;
-        scratch[q] = assemble_direction(base, 3u * i, slot, nrm, first, moving) + gap / sp.dt;
-        scratch[q + 1u] = assemble_direction(base, 3u * i + 1u, slot, t[0], first, moving);
-        scratch[q + 2u] = assemble_direction(base, 3u * i + 2u, slot, t[1], first, moving);
-        let m = pair_friction(first + a, first + b);
+        scratch[q] = assemble_direction(base, 3u * i, slot, nrm, first, s) + gap / sp.dt;
+        scratch[q + 1u] = assemble_direction(base, 3u * i + 1u, slot, t[0], first, s);
+        scratch[q + 2u] = assemble_direction(base, 3u * i + 2u, slot, t[1], first, s);
+        let m = pair_friction(first + words[key], first + words[key + 1u]);
         scratch[base + F_MU + i] = m;
         let r = warm_start(slot);
         put_scratch(base + F_X + 3u * i, project_on_cone(r, m));
     }
     let dim = 3u * n;
+    // One entry per loop iteration: three (as contact_velocity takes them)
+    // made llvmpipe's compilation of the kernel ten times as long.
     for (var x = 0u; x < dim; x++) {
         for (var y = 0u; y < dim; y++) {
             scratch[base + F_W + x * dim + y] = friction_entry(base, x, y);
@@ -1997,8 +2033,11 @@ fn assemble_friction(base: u32, n: u32, first: u32, moving: u32) {
         var big = Scalar(0.0);
         for (var x = 3u * i; x < 3u * i + 3u; x++) {
             var s = Scalar(0.0);
-            for (var y = lo; y < hi; y++) {
-                s += abs(scratch[base + F_W + x * dim + y]);
+            for (var y = lo; y < hi; y += 3u) {
+                let at = base + F_W + x * dim + y;
+                s += abs(scratch[at]);
+                s += abs(scratch[at + 1u]);
+                s += abs(scratch[at + 2u]);
             }
             big = max(big, s);
         }
@@ -2006,22 +2045,56 @@ fn assemble_friction(base: u32, n: u32, first: u32, moving: u32) {
     }
 }
 
-// u_x = q_x + Σ_j W_xj x_j for rows lo..hi (projected.rs velocity_into).
-fn friction_velocity(base: u32, dim: u32, lo: u32, hi: u32) {
-    for (var x = lo; x < hi; x++) {
-        var s = Scalar(0.0);
-        for (var j = 0u; j < dim; j++) {
-            s += scratch[base + F_W + x * dim + j] * scratch[base + F_X + j];
-        }
-        scratch[base + F_U + x] = scratch[base + F_Q + x] + s;
+// The loops below take three entries (a contact's rows or columns) per
+// iteration, summed in the CPU's order: llvmpipe counts loop iterations
+// against its limit and pays each one's mask bookkeeping. `len` and `dim`
+// are multiples of 3.
+
+// u of contact i's rows 3i..3i+3: u_x = q_x + Σ_j W_xj x_j, each row's sum
+// in the order of j (projected.rs velocity_into): n loop iterations.
+fn contact_velocity(base: u32, dim: u32, i: u32) {
+    let r0 = base + F_W + 3u * i * dim;
+    let r1 = r0 + dim;
+    let r2 = r1 + dim;
+    let xs = base + F_X;
+    var s0 = Scalar(0.0);
+    var s1 = Scalar(0.0);
+    var s2 = Scalar(0.0);
+    for (var j = 0u; j < dim; j += 3u) {
+        let x0 = scratch[xs + j];
+        let x1 = scratch[xs + j + 1u];
+        let x2 = scratch[xs + j + 2u];
+        s0 += scratch[r0 + j] * x0;
+        s0 += scratch[r0 + j + 1u] * x1;
+        s0 += scratch[r0 + j + 2u] * x2;
+        s1 += scratch[r1 + j] * x0;
+        s1 += scratch[r1 + j + 1u] * x1;
+        s1 += scratch[r1 + j + 2u] * x2;
+        s2 += scratch[r2 + j] * x0;
+        s2 += scratch[r2 + j + 1u] * x1;
+        s2 += scratch[r2 + j + 2u] * x2;
+    }
+    let u = base + F_U + 3u * i;
+    let q = base + F_Q + 3u * i;
+    scratch[u] = scratch[q] + s0;
+    scratch[u + 1u] = scratch[q + 1u] + s1;
+    scratch[u + 2u] = scratch[q + 2u] + s2;
+}
+
+// u = W x + q for the island's n contacts.
+fn friction_velocity(base: u32, n: u32) {
+    for (var i = 0u; i < n; i++) {
+        contact_velocity(base, 3u * n, i);
     }
 }
 
 // Σ v², from the start (projected.rs sum_squares) of `len` entries at `at`.
 fn sum_squares_at(at: u32, len: u32) -> Scalar {
     var s = Scalar(0.0);
-    for (var i = 0u; i < len; i++) {
+    for (var i = 0u; i < len; i += 3u) {
         s += scratch[at + i] * scratch[at + i];
+        s += scratch[at + i + 1u] * scratch[at + i + 1u];
+        s += scratch[at + i + 2u] * scratch[at + i + 2u];
     }
     return s;
 }
@@ -2029,16 +2102,22 @@ fn sum_squares_at(at: u32, len: u32) -> Scalar {
 // lcp.rs norm2 of `len` entries at `at` (scaled by the largest).
 fn norm2_at(at: u32, len: u32) -> Scalar {
     var big = Scalar(0.0);
-    for (var i = 0u; i < len; i++) {
+    for (var i = 0u; i < len; i += 3u) {
         big = max(big, abs(scratch[at + i]));
+        big = max(big, abs(scratch[at + i + 1u]));
+        big = max(big, abs(scratch[at + i + 2u]));
     }
     if big == Scalar(0.0) || !finite(big) {
         return big;
     }
     var s = Scalar(0.0);
-    for (var i = 0u; i < len; i++) {
-        let v = scratch[at + i] / big;
-        s += v * v;
+    for (var i = 0u; i < len; i += 3u) {
+        let v0 = scratch[at + i] / big;
+        let v1 = scratch[at + i + 1u] / big;
+        let v2 = scratch[at + i + 2u] / big;
+        s += v0 * v0;
+        s += v1 * v1;
+        s += v2 * v2;
     }
     return big * sqrt(s);
 }
@@ -2088,7 +2167,7 @@ fn sweep(base: u32, n: u32) {
     for (var i = 0u; i < n; i++) {
         let c = 3u * i;
         if sp.gauss_seidel != 0u {
-            friction_velocity(base, dim, c, c + 3u);
+            contact_velocity(base, dim, i);
         }
         let h = scratch[base + F_ETA + i];
         let x = vec3_x(base, i);
@@ -2101,13 +2180,14 @@ fn sweep(base: u32, n: u32) {
     }
 }
 
-// ProjectedSolution::judge of x: u = W x + q, the cone error (the status)
-// and the Coulomb error (FrictionResiduals::of_velocity). The Coulomb
-// error, or -1 where x is not solved (not finite, or the cone error above
-// the tolerance, or `failed`).
+// ProjectedSolution::judge of x with u = W x + q (the sweeps' last
+// iteration computed it from this x, which it left as it was), the cone
+// error (the status) and the Coulomb error
+// (FrictionResiduals::of_velocity). The Coulomb error, or -1 where x is
+// not solved (not finite, or the cone error above the tolerance, or
+// `failed`).
 fn judge(base: u32, n: u32, failed: bool) -> Scalar {
     let dim = 3u * n;
-    friction_velocity(base, dim, 0u, dim);
     var ok = !failed;
     for (var i = 0u; i < n; i++) {
         let x = vec3_x(base, i);
@@ -2136,9 +2216,9 @@ fn judge(base: u32, n: u32, failed: bool) -> Scalar {
 // apply_friction_impulses for the island: v += Σ_α r_α M⁻¹J_αᵀ per side,
 // contact after contact, n, t₁, t₂ (zero reactions skipped); each
 // contact's reaction kept for the next step's warm start.
-fn apply_friction(base: u32, n: u32) {
+fn apply_friction(base: u32, n: u32, moving: u32) {
     for (var i = 0u; i < n; i++) {
-        let s = sides[i];
+        let s = contact_sides(fmembers[i], moving);
         for (var d = 0u; d < 3u; d++) {
             let z = scratch[base + F_X + 3u * i + d];
             if z == Scalar(0.0) {
@@ -2170,6 +2250,7 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
     if phase == F_IDLE {
         return;
     }
+    records[w * REC + 5u] += Scalar(1.0);
     let first = worlds[w].x;
     let nb = min(worlds[w].y, MAX_BODIES);
     let out = sp.out_at + 4u * w;
@@ -2203,8 +2284,9 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
             break;
         }
         let dim = 3u * n;
+        // Costs: the loop iterations of each part (see contact_velocity).
         if phase == F_ASSEMBLE {
-            let cost = dim * dim * 3u + 64u * n;
+            let cost = 12u * n * n + n * (sp.slots + 1u) + 64u;
             if spent > count && spent + cost > sp.friction_budget {
                 break;
             }
@@ -2213,21 +2295,9 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
             words[fs + 2u] = 0u;
             phase = F_SWEEP;
             words[fs] = phase;
-        } else {
-            for (var i = 0u; i < n; i++) {
-                let key = sp.keys_at + 4u * fmembers[i];
-                var s = vec2<u32>(NONE, NONE);
-                if ((moving >> words[key]) & 1u) != 0u {
-                    s.x = words[key];
-                }
-                if ((moving >> words[key + 1u]) & 1u) != 0u {
-                    s.y = words[key + 1u];
-                }
-                sides[i] = s;
-            }
         }
         // Iterations of `sweeps`: u, the stop measure, a sweep.
-        let cost = 2u * dim * dim + 16u * dim + 64u;
+        let cost = 2u * n * n + 8u * n + 16u;
         let q2 = sum_squares_at(base + F_Q, dim);
         var done = false;
         var failed = false;
@@ -2237,7 +2307,7 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
             }
             spent += cost;
             let it = words[fs + 2u];
-            friction_velocity(base, dim, 0u, dim);
+            friction_velocity(base, n);
             let err = stop_measure(base, n, q2);
             if !finite(err) {
                 failed = true;
@@ -2251,18 +2321,20 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
             sweep(base, n);
             words[fs + 2u] = it + 1u;
         }
-        if !done || spent + cost > sp.friction_budget {
+        // The judgement's loops (no product: u is the last iteration's).
+        let judged = 16u * n + 64u;
+        if !done || spent + judged > sp.friction_budget {
             // The next round goes on from x (and judges it there).
             break;
         }
-        spent += cost;
+        spent += judged;
         let error = judge(base, n, failed);
         if error < Scalar(0.0) {
             flags |= NOT_SOLVED;
             break;
         }
         records[w * REC + 3u] = max(records[w * REC + 3u], error);
-        apply_friction(base, n);
+        apply_friction(base, n, moving);
         words[fs + 1u] = isl + 1u;
         phase = F_ASSEMBLE;
         words[fs] = phase;
@@ -2275,6 +2347,13 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
     for (var k = 0u; k < nb; k++) {
         put_scratch(6u * (first + k), lin[k]);
         put_scratch(6u * (first + k) + 3u, ang[k]);
+    }
+    if !loops_left() {
+        // The loop limit reached (world_solve.wgsl loops_left): this
+        // round's work may be cut short; flagged, the CPU steps the world.
+        words[fs] = F_IDLE;
+        words[out + 2u] = BUDGET;
+        return;
     }
     if finished {
         words[fs] = F_IDLE;

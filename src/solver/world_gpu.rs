@@ -17,7 +17,8 @@
 //!
 //! **Worlds the kernel could not step** (a flag: contact slots full, an
 //! island above 16 contacts, Lemke gave up or its answer failed the f64
-//! check, a non-finite state, the loop budget) keep their state on the
+//! check, a non-finite state, the loop budget, a frictional world the
+//! step's rounds of `world_friction` left unfinished) keep their state on the
 //! device; the host steps them from there by the CPU path's own code
 //! (`prepare`, `step_world_on_cpu`, with the world's warm memory) and
 //! writes them back; [`StepReport::resident`] counts them. Device trouble
@@ -46,7 +47,9 @@ use super::world_repair::{repair_settings, Repairs};
 use super::Solver;
 use crate::friction::FrictionMethod;
 use crate::gpu::resident::layout::{cpu_id, device_key, flags, may_have_friction, out_of_scope};
-use crate::gpu::resident::{MemoryEntry, ResidentFriction, ResidentWorlds, WorldRecord};
+use crate::gpu::resident::{
+    MemoryEntry, ResidentFriction, ResidentWorlds, WorldRecord, MAX_ROUNDS,
+};
 use crate::gpu::{GpuContext, Precision};
 use crate::report::{Device, FrictionIslandReport};
 use crate::scene::Scene;
@@ -74,6 +77,26 @@ fn test_slots() -> Option<usize> {
     return TEST_SLOTS.with(|s| s.get());
     #[cfg(not(test))]
     None
+}
+
+/// The flag of a world `world_solve` handed to `world_friction`, kept
+/// until that finishes it (`HANDED` in `shaders/world_step.wgsl`): set
+/// after the step's last round, the rounds ran out for it.
+pub(crate) const HANDED: u32 = 32;
+
+/// The rounds of `world_friction` for the step after one of `rounds`
+/// rounds that gave `records`: twice as many where a world was left
+/// unfinished (flagged [`HANDED`]), else twice the most any world needed,
+/// if that is fewer (the rounds come back down after a hard step); as they
+/// were where no world had friction. Within 1 to [`MAX_ROUNDS`].
+pub(crate) fn next_rounds(rounds: u32, records: &[WorldRecord]) -> u32 {
+    let needed = records.iter().map(|r| r.rounds).max().unwrap_or(0);
+    let next = match records.iter().any(|r| r.flags & HANDED != 0) {
+        true => rounds.saturating_mul(2),
+        false if needed > 0 => rounds.min(needed.saturating_mul(2)),
+        false => rounds,
+    };
+    next.clamp(1, MAX_ROUNDS)
 }
 
 /// The batch the device holds and the worlds as it gave them back.
@@ -153,6 +176,8 @@ impl Solver {
         let start = Instant::now();
         let warm = self.settings.warm_start && self.resident_friction().is_some();
         let resident = self.resident.as_mut()?;
+        let rounds = next_rounds(resident.worlds.rounds(), &records);
+        resident.worlds.set_rounds(rounds);
         let mut flagged = Vec::new();
         for (k, (w, r)) in worlds.iter_mut().zip(&records).enumerate() {
             match r.flags {
@@ -291,8 +316,13 @@ fn world_report(r: &WorldRecord) -> WorldStepReport {
 }
 
 impl ResidentStep {
-    /// Counts a world's flags.
+    /// Counts a world's flags (a world the rounds left unfinished, still
+    /// [`HANDED`], as the loop budget).
     fn count(&mut self, f: u32) {
+        let f = match f & HANDED {
+            0 => f,
+            _ => (f & !HANDED) | flags::BUDGET,
+        };
         let bits = [
             flags::CONTACTS_FULL,
             flags::ISLAND_TOO_LARGE,

@@ -49,12 +49,8 @@ pub struct ResidentFriction {
     pub warm_start: bool,
 }
 
-/// Sweeps of a 16-contact island the first step's rounds of the frictional
-/// phase are sized for; a step that leaves worlds unfinished doubles the
-/// rounds of the next (up to [`MAX_ROUNDS`]).
-const FIRST_SWEEPS: u32 = 32;
 /// Most rounds of the frictional phase in one step.
-const MAX_ROUNDS: u32 = 1024;
+pub const MAX_ROUNDS: u32 = 1024;
 
 /// What one step gave for one world.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -73,6 +69,9 @@ pub struct WorldRecord {
     pub max_error: f64,
     /// Dynamic bodies awake after the step.
     pub awake: usize,
+    /// Rounds of `world_friction` the world was active in this step (0:
+    /// not handed over).
+    pub rounds: u32,
 }
 
 /// The states after a step, as read back: per body [`BS`] scalars and 2
@@ -219,9 +218,11 @@ impl ResidentWorlds {
         }
         let budget = round_budget(ctx, gpu);
         // The first step's rounds: an island of min(16, slots) contacts
-        // assembled and FIRST_SWEEPS sweeps (the shader's costs).
-        let dim = 3 * slots.min(16) as u64;
-        let work = 3 * dim * dim + 1024 + u64::from(FIRST_SWEEPS) * (2 * dim * dim + 16 * dim + 64);
+        // assembled, swept up to the cap and judged (the shader's costs);
+        // the caller sizes the later steps' ([`Self::set_rounds`]).
+        let k = slots.min(16) as u64;
+        let sweeps = u64::from(friction.map_or(0, |f| f.max_iterations)) + 1;
+        let work = 12 * k * k + k * (slots as u64 + 1) + 64 + sweeps * (2 * k * k + 8 * k + 16);
         let rounds = match friction {
             Some(_) => {
                 let per_round = u64::from(friction_budget(budget));
@@ -381,6 +382,7 @@ impl ResidentWorlds {
                             max_penetration: r[2],
                             max_error: r[3],
                             awake: r[4] as usize,
+                            rounds: r[5] as u32,
                         }
                     })
                     .collect();
@@ -389,15 +391,20 @@ impl ResidentWorlds {
                 (records, States { state, sleep })
             })
         })??;
-        // Worlds the rounds left unfinished: more rounds from the next step.
-        let unfinished = stepped
-            .0
-            .iter()
-            .any(|r| r.flags & layout::flags::BUDGET != 0);
-        if rounds > 0 && unfinished {
-            self.rounds.set((2 * rounds).min(MAX_ROUNDS));
-        }
         Ok(stepped)
+    }
+
+    /// Rounds of `world_friction` per step (0: no world may have friction).
+    pub fn rounds(&self) -> u32 {
+        self.rounds.get()
+    }
+
+    /// Sets the rounds of the next steps (1 to [`MAX_ROUNDS`]; nothing where
+    /// no world may have friction).
+    pub fn set_rounds(&self, rounds: u32) {
+        if self.rounds.get() > 0 {
+            self.rounds.set(rounds.clamp(1, MAX_ROUNDS));
+        }
     }
 
     /// One step as [`Self::step`] does it, but each of its two dispatches
