@@ -42,7 +42,7 @@
 //   (contacts, moving-body mask, flags, islands); from params.keys_at per
 //   contact slot 4 (a, b, feature, island);
 // - records: per world REC scalars (kinetic, potential, max penetration,
-//   max error, awake, 0, 0, 0).
+//   max error, awake, friction rounds, 0, 0).
 
 const SCALAR_EPSILON: Scalar = 1.1920929e-7; // HOST scalar_epsilon
 
