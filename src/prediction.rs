@@ -328,7 +328,8 @@ pub(crate) struct Hint {
 /// there), else `Err` with the bases the GPU tries in order (the CPU
 /// path's answer whenever one is valid there: [`hinted_into`] is the host's
 /// twin). M's definiteness is tested on every island left, as
-/// [`prediction_into`] tests it on every island reaching step 4.
+/// [`prediction_into`] tests it on every island reaching step 4, except
+/// where the warm basis is the predicted one (step 4 would repeat step 3).
 pub(crate) fn prediction_hint_into(
     lcp: &Lcp,
     warm_basis: Option<u32>,
@@ -337,17 +338,26 @@ pub(crate) fn prediction_hint_into(
     out: &mut LcpSolution,
 ) -> Result<(), Hint> {
     let n = lcp.n();
-    if n > MAX_ENUMERATION_N {
-        return Err(Hint::default());
-    }
     if closed_form_into(lcp, settings, path, out) {
         return Ok(());
+    }
+    let warm = warm_basis.filter(|&m| m >> n == 0).unwrap_or(0);
+    let predicted = approaching(lcp);
+    if warm == predicted {
+        // Step 4 would try the basis step 3 tried, in the same precision:
+        // it cannot succeed where that failed, so M's definiteness (a
+        // Cholesky) is left to the routes that need it.
+        return Err(Hint {
+            definite: None,
+            warm,
+            predicted: 0,
+        });
     }
     let definite = is_positive_definite(lcp);
     Err(Hint {
         definite: Some(definite),
-        warm: warm_basis.filter(|&m| m >> n == 0).unwrap_or(0),
-        predicted: if definite { approaching(lcp) } else { 0 },
+        warm,
+        predicted: if definite { predicted } else { 0 },
     })
 }
 

@@ -1295,7 +1295,7 @@ fn world_collide(@builtin(global_invocation_id) gid: vec3<u32>) {
             break;
         }
     }
-    if spent > sp.budget {
+    if spent > sp.budget || !loops_left() {
         flags |= BUDGET;
     }
     let out = sp.out_at + 4u * w;

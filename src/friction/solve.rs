@@ -180,8 +180,8 @@ pub fn solve_friction_problem(
         let (order, iterations) = with_workspace(|ws| {
             ws.pattern.build(p);
             let order = bandwidth_order(&ws.pattern);
-            let reordered = permuted(p, &order, &ws.pattern);
             ws.pattern.permute(&order);
+            let reordered = permuted(p, &order, &ws.pattern);
             r = gather(&r, &order);
             (order, solve_in(&reordered, ws, &mut r, s, true).0)
         });

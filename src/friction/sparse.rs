@@ -180,20 +180,17 @@ pub fn bandwidth_order(pattern: &Pattern) -> Vec<usize> {
 }
 
 /// The problem with its contacts in `order` (`order[a]`: the original
-/// contact at position a): W' = P W Pᵀ, q' = P q, μ' = P μ. W's blocks
-/// outside its `pattern` (zeros) are left at zero.
+/// contact at position a): W' = P W Pᵀ, q' = P q, μ' = P μ. `pattern` is
+/// the reordered problem's ([`Pattern::permute`]d already); W's blocks
+/// outside it (zeros) are left at zero.
 pub fn permuted(p: &FrictionProblem, order: &[usize], pattern: &Pattern) -> FrictionProblem {
     let n = p.dim();
     let mut w = vec![0.0; n * n];
-    let mut position = vec![0; order.len()];
-    for (a, &i) in order.iter().enumerate() {
-        position[i] = a;
-    }
     for (a, &i) in order.iter().enumerate() {
         for d in 0..3 {
             let (from, to) = ((3 * i + d) * n, (3 * a + d) * n);
-            for &j in pattern.row(i) {
-                let b = position[j];
+            for &b in pattern.row(a) {
+                let j = order[b];
                 w[to + 3 * b..to + 3 * b + 3].copy_from_slice(&p.w[from + 3 * j..from + 3 * j + 3]);
             }
         }
@@ -475,10 +472,10 @@ mod tests {
         let mut sorted = order.clone();
         sorted.sort_unstable();
         assert_eq!(sorted, (0..40).collect::<Vec<_>>(), "a permutation");
-        let pp = permuted(&p, &order, &pattern);
         // The permuted pattern is the reordered problem's, and the
         // reordered W has every entry of W (zeros outside the pattern).
         pattern.permute(&order);
+        let pp = permuted(&p, &order, &pattern);
         let mut built = Pattern::default();
         built.build(&pp);
         assert_eq!((&pattern.start, &pattern.cols), (&built.start, &built.cols));

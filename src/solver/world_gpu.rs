@@ -79,19 +79,14 @@ fn test_slots() -> Option<usize> {
     None
 }
 
-/// The flag of a world `world_solve` handed to `world_friction`, kept
-/// until that finishes it (`HANDED` in `shaders/world_step.wgsl`): set
-/// after the step's last round, the rounds ran out for it.
-pub(crate) const HANDED: u32 = 32;
-
 /// The rounds of `world_friction` for the step after one of `rounds`
 /// rounds that gave `records`: twice as many where a world was left
-/// unfinished (flagged [`HANDED`]), else twice the most any world needed,
+/// unfinished (flagged [`flags::HANDED`]), else twice the most any world needed,
 /// if that is fewer (the rounds come back down after a hard step); as they
 /// were where no world had friction. Within 1 to [`MAX_ROUNDS`].
 pub(crate) fn next_rounds(rounds: u32, records: &[WorldRecord]) -> u32 {
     let needed = records.iter().map(|r| r.rounds).max().unwrap_or(0);
-    let next = match records.iter().any(|r| r.flags & HANDED != 0) {
+    let next = match records.iter().any(|r| r.flags & flags::HANDED != 0) {
         true => rounds.saturating_mul(2),
         false if needed > 0 => rounds.min(needed.saturating_mul(2)),
         false => rounds,
@@ -317,11 +312,11 @@ fn world_report(r: &WorldRecord) -> WorldStepReport {
 
 impl ResidentStep {
     /// Counts a world's flags (a world the rounds left unfinished, still
-    /// [`HANDED`], as the loop budget).
+    /// [`flags::HANDED`], as the loop budget).
     fn count(&mut self, f: u32) {
-        let f = match f & HANDED {
+        let f = match f & flags::HANDED {
             0 => f,
-            _ => (f & !HANDED) | flags::BUDGET,
+            _ => (f & !flags::HANDED) | flags::BUDGET,
         };
         let bits = [
             flags::CONTACTS_FULL,

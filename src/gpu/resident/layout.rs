@@ -40,9 +40,13 @@ pub mod flags {
     pub const NOT_SOLVED: u32 = 4;
     /// A velocity or pose after the step is not finite.
     pub const NON_FINITE: u32 = 8;
-    /// The loop budget of an invocation was spent (or the step's rounds of
-    /// the frictional phase ended before the world was finished).
+    /// The loop budget of an invocation was spent, or llvmpipe's loop
+    /// limit was met (`loops_left`).
     pub const BUDGET: u32 = 16;
+    /// Handed by `world_solve` to `world_friction` and kept until that
+    /// finishes it: set after the step's last round, the rounds ran out
+    /// for the world (counted as [`BUDGET`]).
+    pub const HANDED: u32 = 32;
 }
 
 /// Why a world cannot be stepped by the resident kernel at all (None: it
@@ -186,6 +190,7 @@ mod tests {
             ("NOT_SOLVED", flags::NOT_SOLVED),
             ("NON_FINITE", flags::NON_FINITE),
             ("BUDGET", flags::BUDGET),
+            ("HANDED", flags::HANDED),
         ] {
             assert!(
                 src.contains(&format!("const {name}: u32 = {v}u;")),
