@@ -7,6 +7,7 @@
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
+use super::dense::Problems;
 use super::SolverView;
 use crate::build::Built;
 use crate::cpu::batch::{parallel_fill, parallel_map};
@@ -38,6 +39,16 @@ pub(super) fn lcps_on_cpu(
     lcps: &[Lcp],
     keys: Option<&[&[u64]]>,
 ) -> Result<Report, Error> {
+    problems_on_cpu(solver, Problems::Built(lcps), keys)
+}
+
+/// [`lcps_on_cpu`] of a batch built or dense ([`Problems`]): each problem
+/// is checked on its slices and solved through [`Problems::with`].
+pub(super) fn problems_on_cpu(
+    solver: &SolverView,
+    lcps: Problems,
+    keys: Option<&[&[u64]]>,
+) -> Result<Report, Error> {
     let settings = solver.settings;
     let big_to_lemke = settings.backend != Backend::Cpu;
     let enumerates = settings.method == Method::Enumeration || settings.all_solutions;
@@ -56,10 +67,9 @@ pub(super) fn lcps_on_cpu(
         solution: LcpSolution::invalid(0),
     });
     parallel_fill(&mut islands, solver.threads, |i, island| {
-        let lcp = &lcps[i];
-        let n = lcp.n();
+        let n = lcps.n(i);
         // The item's name is formatted only for the error, below.
-        if lcp.validate("problem").is_err()
+        if lcps.validate(i, "problem").is_err()
             || (!big_to_lemke && enumerates && n > MAX_ENUMERATION_N)
         {
             invalid.store(true, Ordering::Relaxed);
@@ -68,26 +78,27 @@ pub(super) fn lcps_on_cpu(
         let warm = keys.and_then(|k| solver.warm_basis(k[i]));
         let (mut method, mut path) = (Method::Lemke, SolvePath::Lemke);
         island.contacts = ShortVec::indices(n);
-        solve_island(
-            lcp,
-            warm,
-            settings,
-            &mut method,
-            &mut path,
-            &mut island.solution,
-        );
+        lcps.with(i, |lcp| {
+            solve_island(
+                lcp,
+                warm,
+                settings,
+                &mut method,
+                &mut path,
+                &mut island.solution,
+            )
+        });
         (island.method, island.path) = (method, path);
         check_solution(&mut island.solution, settings.tolerance);
     });
     if invalid.load(Ordering::Relaxed) {
-        for (i, l) in lcps.iter().enumerate() {
-            l.validate(&format!("problem {i}"))?;
+        for i in 0..lcps.len() {
+            lcps.validate(i, format_args!("problem {i}"))?;
         }
-        for (i, l) in lcps.iter().enumerate() {
-            if !big_to_lemke && enumerates && l.n() > MAX_ENUMERATION_N {
+        for (i, n) in lcps.sizes().enumerate() {
+            if !big_to_lemke && enumerates && n > MAX_ENUMERATION_N {
                 return Err(Error::Unsupported(format!(
-                    "problem {i}: enumeration visits 2^n bases and is limited to n ≤ {MAX_ENUMERATION_N} (this problem has n = {}); use Lemke",
-                    l.n()
+                    "problem {i}: enumeration visits 2^n bases and is limited to n ≤ {MAX_ENUMERATION_N} (this problem has n = {n}); use Lemke"
                 )));
             }
         }

@@ -31,6 +31,7 @@ use std::time::Instant;
 
 mod cost;
 mod cpu_path;
+mod dense;
 mod device;
 pub(crate) use cpu_path::{check_solution, lemke_else_enumerate, textbook_checked};
 mod friction_path;
@@ -308,7 +309,7 @@ impl Solver {
     /// [`Error::Unsupported`] for enumeration of n > 20 on the CPU backend.
     /// Device trouble is not an error (the CPU takes the batch).
     pub fn solve_lcps(&mut self, lcps: &[Lcp]) -> Result<Report, Error> {
-        self.solve_lcps_warm(lcps, None)
+        self.solve_lcps_warm(dense::Problems::Built(lcps), None)
     }
 
     /// [`Solver::solve_lcps`] with the caller's contact ids, one per row of
@@ -322,7 +323,7 @@ impl Solver {
     pub fn solve_lcps_keyed(&mut self, lcps: &[Lcp], ids: &[Vec<u64>]) -> Result<Report, Error> {
         check_ids(ids, lcps.iter().map(Lcp::n), |n| format!("n = {n}"))?;
         let keys: Vec<&[u64]> = ids.iter().map(Vec::as_slice).collect();
-        self.solve_lcps_warm(lcps, Some(&keys))
+        self.solve_lcps_warm(dense::Problems::Built(lcps), Some(&keys))
     }
 
     /// Solves a batch of frictional problems, in the caller's order, on the
@@ -358,27 +359,32 @@ impl Solver {
         self.solve_friction_warm(problems, Some(&keys))
     }
 
-    fn solve_lcps_warm(&mut self, lcps: &[Lcp], keys: Option<&[&[u64]]>) -> Result<Report, Error> {
+    fn solve_lcps_warm(
+        &mut self,
+        lcps: dense::Problems,
+        keys: Option<&[&[u64]]>,
+    ) -> Result<Report, Error> {
         let start = Instant::now();
         let (use_gpu, why) = device::gpu_for(
             self.gpu.is_some(),
             self.cost.as_ref(),
             &self.choice,
-            lcps.iter().map(Lcp::n),
+            lcps.sizes(),
         );
         let on_gpu = self.gpu.clone().filter(|_| use_gpu).map(|ctx| {
+            let built = lcps.built();
             if self.settings.all_solutions {
-                gpu_path::all_solutions_lcps_on_gpu(&self.view(), &ctx, lcps)
+                gpu_path::all_solutions_lcps_on_gpu(&self.view(), &ctx, &built)
             } else {
                 let keys = keys.filter(|_| self.settings.warm_start);
-                gpu_path::lcps_on_gpu(&self.view(), &ctx, lcps, keys)
+                gpu_path::lcps_on_gpu(&self.view(), &ctx, &built, keys)
             }
         });
         // Both paths check each problem and look up its warm basis on the
         // threads that solve it.
         let mut report = match self.gpu_outcome(on_gpu)? {
             Some(r) => r,
-            None => cpu_path::lcps_on_cpu(&self.view(), lcps, keys)?,
+            None => cpu_path::problems_on_cpu(&self.view(), lcps, keys)?,
         };
         if self.cost.is_some() {
             report.choice = why;
