@@ -7,7 +7,11 @@ pipelines, threads):
   arrays into the library's problems, the chunks, the result arrays);
 - rust: the library's ``Solver::solve_lcps`` on the whole batch, timed in
   Rust around the call with the problems already built
-  (``NativeSolver.time_solve_lcps``, there for this script).
+  (``NativeSolver.time_solve_lcps``, there for this script), and its
+  ``Solver::solve_dense`` on the same arrays read in place
+  (``time_solve_lcps(..., dense=True)``). The figures over "the Rust call"
+  take whichever of the two has the lower median in the run (the fastest
+  call a Rust user has for the data); both are printed.
 
 Runs alternate (python, rust, python, …) so that a noisy machine hits both
 alike. Three figures, target ≤ 10%: the ratio of the medians, the ratio of
@@ -25,7 +29,10 @@ plus gradient of L = c·z with respect to M and q on the same batch:
 - torch (where installed): ``lcpbatch.torch.solve`` and ``torch.autograd.grad``;
 - rust: the library's ``Solver::solve_lcps`` plus its ``lcp_vjp_batch`` on
   the same batch, each timed in Rust with its problems already built
-  (``time_solve_lcps``, ``time_lcp_vjp``).
+  (``time_solve_lcps``, ``time_lcp_vjp``), and their dense twins reading
+  the arrays in place (``Solver::solve_dense``, ``lcp_vjp_dense_into``:
+  ``dense=True``); the solve and the VJP each the faster by median in
+  the run.
 
 And each adapter's forward alone (the solve, with what a backward needs
 kept) against the Rust solve alone. ``--threads 1``: the solver on one
@@ -129,12 +136,20 @@ def timed(f) -> Tuple[float, float]:
     return time.perf_counter() - t, time.process_time() - p
 
 
+RUST_CALLS = {"solve": ("solve_lcps", "solve_dense"), "vjp": ("vjp_batch", "vjp_dense")}
+
+
 def rust_round(s, M, q, z, c) -> Tuple[Dict[str, float], Dict[str, float]]:
     """One round of the Rust calls: the wall seconds of the library's solve
-    and VJP, each timed in Rust with its problems built, and the process CPU
-    seconds of each (a call of two less a call of one: the building cancels)."""
-    calls = {"solve": lambda k: s._native.time_solve_lcps(M, q, k),
-             "vjp": lambda k: lcpbatch._native.time_lcp_vjp(M, q, z, c, k)}
+    and VJP, each timed in Rust with its problems built (``solve_lcps``,
+    ``vjp_batch``) or on the arrays in place (``solve_dense``,
+    ``vjp_dense``), and the process CPU seconds of each (a call of two less
+    a call of one: the building cancels)."""
+    native = lcpbatch._native
+    calls = {"solve_lcps": lambda k: s._native.time_solve_lcps(M, q, k),
+             "solve_dense": lambda k: s._native.time_solve_lcps(M, q, k, dense=True),
+             "vjp_batch": lambda k: native.time_lcp_vjp(M, q, z, c, k),
+             "vjp_dense": lambda k: native.time_lcp_vjp(M, q, z, c, k, dense=True)}
     wall = {key: f(1)[0] for key, f in calls.items()}
     cpu = {}
     for key, f in calls.items():
@@ -144,6 +159,20 @@ def rust_round(s, M, q, z, c) -> Tuple[Dict[str, float], Dict[str, float]]:
         f(1)
         cpu[key] = (p2 - p) - (time.process_time() - p2)
     return wall, cpu
+
+
+def fastest(wall: Dict, cpu: Dict, out: Dict) -> None:
+    """Per part (solve, VJP) the Rust call with the lower median wall time
+    in the run, filed under ``wall["rust", part]`` and ``cpu["rust", part]``
+    (the baseline); every call's medians into ``out``."""
+    med = statistics.median
+    for part, keys in RUST_CALLS.items():
+        for key in keys:
+            out[f"rust_{key}_s_median"] = med(wall["rust", key])
+            out[f"rust_cpu_{key}_s_median"] = med(cpu["rust", key])
+        best = min(keys, key=lambda k: med(wall["rust", k]))
+        out[f"rust_{part}_baseline"] = best
+        wall["rust", part], cpu["rust", part] = wall["rust", best], cpu["rust", best]
 
 
 def ab_overhead(args: argparse.Namespace) -> None:
@@ -183,14 +212,13 @@ def ab_overhead(args: argparse.Namespace) -> None:
             wall["base", name].append(w)
             cpu["base", name].append(p)
         w, p = rust_round(s, M, q, z, c)
-        for key in ("solve", "vjp"):
+        for key in w:
             wall["rust", key].append(w[key])
             cpu["rust", key].append(p[key])
     med = statistics.median
+    out = {"problems": args.problems, "n": args.n, "device": s.device, "repeats": args.repeats, "old": args.ab}
+    fastest(wall, cpu, out)
     rs, rv = med(cpu["rust", "solve"]), med(cpu["rust", "vjp"])
-    out = {"problems": args.problems, "n": args.n, "device": s.device, "repeats": args.repeats, "old": args.ab,
-           "rust_solve_s_median": med(wall["rust", "solve"]), "rust_vjp_s_median": med(wall["rust", "vjp"]),
-           "rust_cpu_solve_s_median": rs, "rust_cpu_vjp_s_median": rv}
     for name in names:
         for side in ("new", "old"):
             net = [(t - b) / (a + v) - 1 for t, b, a, v in zip(wall[side, name, "step"], wall["base", name],
@@ -217,6 +245,14 @@ def ab_overhead(args: argparse.Namespace) -> None:
               f"{out[f'{name}_step_saved_ms_wall']:.2f} ms wall, {out[f'{name}_step_saved_ms_cpu']:.2f} ms CPU; "
               f"forward {out[f'{name}_forward_saved_ms_wall']:.2f} ms wall, "
               f"{out[f'{name}_forward_saved_ms_cpu']:.2f} ms CPU (Rust {1e3 * rs:.1f} + {1e3 * rv:.1f} ms CPU)")
+    print(rust_line(out))
+
+
+def rust_line(out: Dict) -> str:
+    """The Rust calls' medians, and which is each part's baseline."""
+    calls = ", ".join(f"{key} {1e3 * out[f'rust_{key}_s_median']:.1f} ms ({1e3 * out[f'rust_cpu_{key}_s_median']:.1f} "
+                      f"CPU)" for keys in RUST_CALLS.values() for key in keys)
+    return f"Rust medians: {calls}; baselines {out['rust_solve_baseline']}, {out['rust_vjp_baseline']}"
 
 
 def grad_overhead(args: argparse.Namespace) -> None:
@@ -233,7 +269,8 @@ def grad_overhead(args: argparse.Namespace) -> None:
     bases = {name: [] for name in calls}
     forwards = {name: [] for name in calls}
     cpu = {(name, k): [] for name in calls for k in range(3)}
-    rust, rust_solve, rust_cpu = [], [], {"solve": [], "vjp": []}
+    rust_wall: Dict = collections.defaultdict(list)
+    rust_cpu: Dict = collections.defaultdict(list)
     for _ in range(args.repeats):
         for name, fs in calls.items():
             for k, (f, into) in enumerate(zip(fs, (times, bases, forwards))):
@@ -241,16 +278,18 @@ def grad_overhead(args: argparse.Namespace) -> None:
                 into[name].append(wall)
                 cpu[name, k].append(seconds)
         wall, seconds = rust_round(s, M, q, z, c)
-        rust_solve.append(wall["solve"])
-        rust.append(wall["solve"] + wall["vjp"])
-        for key in rust_cpu:
-            rust_cpu[key].append(seconds[key])
+        for key in wall:
+            rust_wall["rust", key].append(wall[key])
+            rust_cpu["rust", key].append(seconds[key])
     out = {"problems": args.problems, "n": args.n, "device": s.device, "repeats": args.repeats,
-           "torch_threads": args.torch_threads,
-           "rust_solve_plus_vjp_s_median": statistics.median(rust), "rust_solve_plus_vjp_s_min": min(rust),
-           "rust_solve_s_median": statistics.median(rust_solve), "rust_solve_s_min": min(rust_solve),
-           "rust_cpu_solve_s_median": statistics.median(rust_cpu["solve"]),
-           "rust_cpu_vjp_s_median": statistics.median(rust_cpu["vjp"])}
+           "torch_threads": args.torch_threads}
+    fastest(rust_wall, rust_cpu, out)
+    rust_solve = rust_wall["rust", "solve"]
+    rust = [a + v for a, v in zip(rust_solve, rust_wall["rust", "vjp"])]
+    out.update({"rust_solve_plus_vjp_s_median": statistics.median(rust), "rust_solve_plus_vjp_s_min": min(rust),
+                "rust_solve_s_median": statistics.median(rust_solve), "rust_solve_s_min": min(rust_solve),
+                "rust_cpu_solve_s_median": statistics.median(rust_cpu["rust", "solve"]),
+                "rust_cpu_vjp_s_median": statistics.median(rust_cpu["rust", "vjp"])})
     for name, ts in times.items():
         out[f"{name}_s_median"] = statistics.median(ts)
         out[f"{name}_s_min"] = min(ts)
@@ -268,7 +307,7 @@ def grad_overhead(args: argparse.Namespace) -> None:
         # disturbs least (equal to wall time only on one thread: --threads 1
         # and, for torch, --torch-threads 1).
         med = {k: statistics.median(cpu[name, k]) for k in range(3)}
-        rs, rv = statistics.median(rust_cpu["solve"]), statistics.median(rust_cpu["vjp"])
+        rs, rv = out["rust_cpu_solve_s_median"], out["rust_cpu_vjp_s_median"]
         out[f"{name}_cpu_net_overhead"] = (med[0] - med[1]) / (rs + rv) - 1.0
         out[f"{name}_cpu_forward_overhead"] = med[2] / rs - 1.0
     print(json.dumps(out, indent=2))
@@ -288,6 +327,7 @@ def grad_overhead(args: argparse.Namespace) -> None:
               f"{100 * out[f'{name}_cpu_net_overhead']:+.1f}% over the Rust solve + VJP, forward "
               f"{100 * out[f'{name}_cpu_forward_overhead']:+.1f}% over the Rust solve "
               f"({1e3 * out['rust_cpu_solve_s_median']:.1f} + {1e3 * out['rust_cpu_vjp_s_median']:.1f} ms)")
+    print(rust_line(out))
 
 
 def main() -> None:
@@ -312,13 +352,17 @@ def main() -> None:
     M, q = batch(args.problems, args.n)
     s = lcpbatch.Solver(backend=args.backend, method=args.solver, threads=args.threads)
     s.solve(M, q)  # warm-up: pipelines, thread pool, page faults
-    python, rust, inside = [], [], []
+    python, inside = [], []
+    rusts: Dict[str, List[float]] = {"solve_lcps": [], "solve_dense": []}
     for _ in range(args.repeats):
         t = time.perf_counter()
         r = s.solve(M, q)
         python.append(time.perf_counter() - t)
         inside.append(r.report.timings["total"])
-        rust.extend(s._native.time_solve_lcps(M, q, 1))
+        rusts["solve_lcps"].extend(s._native.time_solve_lcps(M, q, 1))
+        rusts["solve_dense"].extend(s._native.time_solve_lcps(M, q, 1, dense=True))
+    baseline = min(rusts, key=lambda k: statistics.median(rusts[k]))
+    rust = rusts[baseline]
     py_med, rs_med = statistics.median(python), statistics.median(rust)
     outside = statistics.median(p - i for p, i in zip(python, inside))
     out = {
@@ -329,6 +373,9 @@ def main() -> None:
         "repeats": args.repeats,
         "python_call_s_median": py_med,
         "rust_call_s_median": rs_med,
+        "rust_call": baseline,
+        "rust_solve_lcps_s_median": statistics.median(rusts["solve_lcps"]),
+        "rust_solve_dense_s_median": statistics.median(rusts["solve_dense"]),
         "python_call_s_min": min(python),
         "rust_call_s_min": min(rust),
         "outside_library_s_median": outside,
@@ -342,7 +389,8 @@ def main() -> None:
           f"{s.device}): medians {100 * out['overhead_of_medians']:+.1f}%, minimums "
           f"{100 * out['overhead_of_minimums']:+.1f}%, time outside the library "
           f"{1e3 * outside:.2f} ms = {100 * out['overhead_outside_library']:.1f}% of the Rust call "
-          f"({1e3 * rs_med:.1f} ms median of {args.repeats})")
+          f"({1e3 * rs_med:.1f} ms median of {args.repeats}, {baseline}; solve_lcps "
+          f"{1e3 * out['rust_solve_lcps_s_median']:.1f} ms, solve_dense {1e3 * out['rust_solve_dense_s_median']:.1f} ms)")
 
 
 if __name__ == "__main__":

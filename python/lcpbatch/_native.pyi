@@ -40,6 +40,7 @@ def time_lcp_vjp(
     z: npt.NDArray[np.float64],
     dz: npt.NDArray[np.float64],
     repeats: int,
+    dense: bool = False,
 ) -> List[float]: ...
 
 class NativeSolver:
@@ -100,7 +101,7 @@ class NativeSolver:
     ) -> Dict[str, Any]: ...
     def step_worlds(self, worlds: List["NativeWorld"], dt: float, steps: int) -> Dict[str, Any]: ...
     def time_solve_lcps(
-        self, m: npt.NDArray[np.float64], q: npt.NDArray[np.float64], repeats: int
+        self, m: npt.NDArray[np.float64], q: npt.NDArray[np.float64], repeats: int, dense: bool = False
     ) -> List[float]: ...
 
 _F64 = npt.NDArray[np.float64]

@@ -11,6 +11,7 @@
 //! with `offsets` (B + 1 entries) marking where each starts, so that Python
 //! reshapes a dense batch to (B, n) or splits a ragged one without copying.
 
+use std::borrow::Cow;
 use std::ops::Range;
 
 use lcpbatch::lcp::SolutionSet;
@@ -121,57 +122,47 @@ pub(crate) fn c_slice<'a, D: Dimension>(a: &'a PyReadonlyArray<'_, f64, D>) -> O
 }
 
 /// A dense batch M (B, n, n), q (B, n) (shapes checked in Python) as n and
-/// its two flat slices, where both arrays are C-ordered, n > 0 and every
-/// entry is finite: the batches [`refill`] copies slice by slice; None for
-/// any other (read element by element by [`dense`], which names a bad entry).
+/// its two flat slices, where both arrays are C-ordered and n > 0: the
+/// batches the library reads in place ([`lcpbatch::Solver::solve_dense`]);
+/// None for any other (read element by element by [`dense`]).
 pub(crate) fn dense_slices<'a>(
     m: &'a PyReadonlyArray3<f64>,
     q: &'a PyReadonlyArray2<f64>,
 ) -> Option<(usize, &'a [f64], &'a [f64])> {
     let n = q.as_array().shape()[1];
-    let (ms, qs) = (c_slice(m)?, c_slice(q)?);
-    (n > 0 && all_finite(ms) && all_finite(qs)).then_some((n, ms, qs))
+    (n > 0).then_some((n, c_slice(m)?, c_slice(q)?))
 }
 
-/// A dense batch: M (B, n, n), q (B, n) (shapes checked in Python). C-ordered
-/// arrays with finite entries are copied slice by slice; any other layout,
-/// or an array with an entry to name in an error, goes element by element.
-pub(crate) fn dense(m: &PyReadonlyArray3<f64>, q: &PyReadonlyArray2<f64>) -> PyResult<Vec<Lcp>> {
-    if let Some((n, ms, qs)) = dense_slices(m, q) {
-        let mut lcps = Vec::new();
-        refill(&mut lcps, n, ms, qs);
-        return Ok(lcps);
+/// The message of the first non-finite entry of the C-ordered batch `ms`
+/// (B·n·n), `qs` (B·n), problem by problem (M[b] before q[b]), as [`dense`]
+/// names it: `[b, i, j]` for M, `[b, i]` for q. Ok where every entry is
+/// finite.
+pub(crate) fn check_finite(ms: &[f64], qs: &[f64], n: usize) -> Result<(), String> {
+    if all_finite(ms) && all_finite(qs) {
+        return Ok(());
     }
+    for (b, (m, q)) in ms.chunks_exact(n * n).zip(qs.chunks_exact(n)).enumerate() {
+        if let Some((k, v)) = first_non_finite(m.iter()) {
+            let index = format!("[{b}, {}, {}]", k / n, k % n);
+            return Err(non_finite_message("M", &index, v));
+        }
+        if let Some((k, v)) = first_non_finite(q.iter()) {
+            return Err(non_finite_message("q", &format!("[{b}, {k}]"), v));
+        }
+    }
+    Ok(())
+}
+
+/// A dense batch: M (B, n, n), q (B, n) (shapes checked in Python), read
+/// element by element into one [`Lcp`] per problem (any memory order), a
+/// non-finite entry named by its index.
+pub(crate) fn dense(m: &PyReadonlyArray3<f64>, q: &PyReadonlyArray2<f64>) -> PyResult<Vec<Lcp>> {
     let (m, q): (ArrayView3<f64>, ArrayView2<f64>) = (m.as_array(), q.as_array());
     m.outer_iter()
         .zip(q.outer_iter())
         .enumerate()
         .map(|(b, (mb, qb))| lcp_of(mb, qb, &|ix| format!("[{b}, {}]", join(&ix))))
         .collect()
-}
-
-/// Overwrites `lcps` with the C-ordered batch `ms` (B·n·n) and `qs` (B·n)
-/// of size `n` > 0, in the allocations it already holds: a caller that keeps
-/// `lcps` between calls of the same shapes allocates nothing (and touches no
-/// fresh page) after the first. Entries are copied as they are (finiteness
-/// is the caller's check).
-pub(crate) fn refill(lcps: &mut Vec<Lcp>, n: usize, ms: &[f64], qs: &[f64]) {
-    let b = qs.len() / n;
-    lcps.truncate(b);
-    lcps.resize_with(b, || Lcp {
-        m: Vec::with_capacity(n * n),
-        q: Vec::with_capacity(n),
-    });
-    for ((lcp, mb), qb) in lcps
-        .iter_mut()
-        .zip(ms.chunks_exact(n * n))
-        .zip(qs.chunks_exact(n))
-    {
-        lcp.m.clear();
-        lcp.m.extend_from_slice(mb);
-        lcp.q.clear();
-        lcp.q.extend_from_slice(qb);
-    }
 }
 
 /// A ragged batch: lists of (nᵢ, nᵢ) and (nᵢ,) arrays (shapes checked in Python).
@@ -196,6 +187,14 @@ pub(crate) fn dense_ids(ids: &PyReadonlyArray2<u64>) -> Vec<Vec<u64>> {
         .axis_iter(Axis(0))
         .map(|r| r.to_vec())
         .collect()
+}
+
+/// Contact ids of a dense batch, row after row: in place where C-ordered.
+pub(crate) fn flat_ids<'a>(ids: &'a PyReadonlyArray2<u64>) -> Cow<'a, [u64]> {
+    match ids.as_array().to_slice() {
+        Some(s) => Cow::Borrowed(s),
+        None => Cow::Owned(ids.as_array().iter().copied().collect()),
+    }
 }
 
 /// Contact ids of a ragged batch.

@@ -214,8 +214,11 @@ fn dense_into<'py>(
 
 /// For `bench_overhead.py`: the seconds of `repeats` calls of the library's
 /// `lcp_vjp_batch` on the whole batch, timed in Rust (the problems are
-/// built before the clock starts).
+/// built before the clock starts); with `dense`, of `lcp_vjp_dense_into`
+/// on the arrays in place (C-ordered; the gradients' buffers allocated
+/// before the clock starts).
 #[pyfunction]
+#[pyo3(signature = (m, q, z, dz, repeats, dense=false))]
 pub(crate) fn time_lcp_vjp(
     py: Python<'_>,
     m: PyReadonlyArray3<'_, f64>,
@@ -223,15 +226,37 @@ pub(crate) fn time_lcp_vjp(
     z: PyReadonlyArray2<'_, f64>,
     dz: PyReadonlyArray2<'_, f64>,
     repeats: usize,
+    dense: bool,
 ) -> PyResult<Vec<f64>> {
-    let inputs = Inputs::new(&m, &q, &z, &dz, None)?;
-    (0..repeats)
-        .map(|_| {
-            let t = Instant::now();
-            inputs.vjp(py, default_tolerance())?;
-            Ok(t.elapsed().as_secs_f64())
+    if !dense {
+        let inputs = Inputs::new(&m, &q, &z, &dz, None)?;
+        return (0..repeats)
+            .map(|_| {
+                let t = Instant::now();
+                inputs.vjp(py, default_tolerance())?;
+                Ok(t.elapsed().as_secs_f64())
+            })
+            .collect();
+    }
+    use batch::c_slice as c;
+    let n = q.as_array().shape()[1];
+    let (Some(ms), Some(qs), Some(zs), Some(dzs)) = (c(&m), c(&q), c(&z), c(&dz)) else {
+        return Err(PyValueError::new_err("M, q, z, dz: C-ordered arrays"));
+    };
+    let (mut om, mut oq) = (vec![0.0; ms.len()], vec![0.0; qs.len()]);
+    let tolerance = default_tolerance();
+    py.detach(|| {
+        guard(|| {
+            (0..repeats)
+                .map(|_| {
+                    let t = Instant::now();
+                    lcp_vjp_dense_into(n, ms, qs, zs, dzs, None, tolerance, &mut om, &mut oq)
+                        .map_err(to_py_err)?;
+                    Ok(t.elapsed().as_secs_f64())
+                })
+                .collect()
         })
-        .collect()
+    })
 }
 
 /// The library's error for scene `s` of the batch ([`scene_vjp`] names

@@ -11,6 +11,7 @@ use std::time::Instant;
 
 use lcpbatch::{FrictionProblem, Lcp, Report, Scene, Settings, Solver};
 use numpy::{IntoPyArray, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3};
+use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -25,10 +26,6 @@ pub(crate) struct NativeSolver {
     /// Calls now in `run_chunks` with their chunks joined (several Python
     /// threads may share the solver): the join ends when the last ends.
     joins: Mutex<usize>,
-    /// The problems of [`NativeSolver::solve_dense_zw`]'s last chunk, kept
-    /// so that the next call of the same shapes copies into them instead of
-    /// allocating (at most one chunk: about 30 MB at the worst n).
-    scratch: Mutex<Vec<Lcp>>,
 }
 
 impl NativeSolver {
@@ -95,28 +92,11 @@ impl NativeSolver {
         chunks
     }
 
-    /// Solves rows `r` of the C-ordered finite batch `ms` (B·n·n), `qs`
-    /// (B·n) of size n > 0, copied into the problems kept from the last
-    /// call ([`batch::refill`]).
-    fn solve_dense_chunk(
-        &self,
-        s: &mut Solver,
-        n: usize,
-        ms: &[f64],
-        qs: &[f64],
-        r: Range<usize>,
-    ) -> Result<Report, lcpbatch::Error> {
-        let mut lcps = self.scratch.lock().unwrap_or_else(|p| p.into_inner());
-        let (mr, qr) = (r.start * n * n..r.end * n * n, r.start * n..r.end * n);
-        batch::refill(&mut lcps, n, &ms[mr], &qs[qr]);
-        s.solve_lcps(&lcps)
-    }
-
     /// For the XLA FFI handler (`ffi/`), without Python: the C-ordered
-    /// finite batch `ms` (B·n·n), `qs` (B·n) of size n > 0 solved as
-    /// [`Self::solve_dense_zw`] solves it (the same chunks and kept
-    /// problems, on the calling thread; no Ctrl-C check). The report, None
-    /// for an empty batch.
+    /// batch `ms` (B·n·n), `qs` (B·n) of size n > 0 solved as
+    /// [`Self::solve_dense_zw`] solves it (the same chunks, read in place,
+    /// on the calling thread; no Ctrl-C check). The report, None for an
+    /// empty batch.
     pub(crate) fn solve_dense_report(
         &self,
         n: usize,
@@ -125,8 +105,29 @@ impl NativeSolver {
     ) -> Result<Option<Report>, lcpbatch::Error> {
         let ranges = batch::chunks(std::iter::repeat_n(n, qs.len() / n));
         self.solve_joined(ranges, |r| {
-            self.solve_dense_chunk(&mut self.lock(), n, ms, qs, r)
+            dense_chunk(&mut self.lock(), n, ms, qs, None, r)
         })
+    }
+
+    /// The C-ordered batch `ms` (B·n·n), `qs` (B·n) of size n > 0, contact
+    /// ids `ids` (B·n) or None, solved in chunks where it lies
+    /// ([`Solver::solve_dense`]), GIL released. The library checks every
+    /// entry as it solves; a non-finite one is then named as [`batch::dense`]
+    /// names it. With ids, a batch of several chunks is checked whole first:
+    /// no chunk's bases are remembered before an error in a later one.
+    fn dense_in_place(
+        &self,
+        py: Python<'_>,
+        (n, ms, qs): (usize, &[f64], &[f64]),
+        ids: Option<&[u64]>,
+    ) -> PyResult<(Report, usize)> {
+        let named = || batch::check_finite(ms, qs, n).map_err(PyValueError::new_err);
+        let ranges = batch::chunks(std::iter::repeat_n(n, qs.len() / n));
+        if ids.is_some() && ranges.len() > 1 {
+            named()?;
+        }
+        let solved = self.run_chunks(py, ranges, |s, r| dense_chunk(s, n, ms, qs, ids, r));
+        solved.map_err(|e| named().err().unwrap_or(e))
     }
 
     /// Starts (`true`) or ends a call whose chunks are one call of the
@@ -143,21 +144,18 @@ impl NativeSolver {
         }
     }
 
-    fn lcps<'py>(
+    /// The report of `lcps` (contact ids `ids` or None), solved in chunks.
+    fn lcps_report(
         &self,
-        py: Python<'py>,
-        lcps: Vec<Lcp>,
+        py: Python<'_>,
+        lcps: &[Lcp],
         ids: Option<Vec<Vec<u64>>>,
-    ) -> PyResult<Bound<'py, PyDict>> {
+    ) -> PyResult<(Report, usize)> {
         let ranges = batch::chunks(lcps.iter().map(Lcp::n));
-        let (r, count) = self.run_chunks(py, ranges, |s, r| match &ids {
+        self.run_chunks(py, ranges, |s, r| match &ids {
             Some(ids) => s.solve_lcps_keyed(&lcps[r.clone()], &ids[r]),
             None => s.solve_lcps(&lcps[r]),
-        })?;
-        let d = PyDict::new(py);
-        batch::islands_into(py, &d, &r.islands)?;
-        d.set_item("report", report::to_dict(py, &r, count)?)?;
-        Ok(d)
+        })
     }
 
     fn frictional<'py>(
@@ -232,7 +230,6 @@ impl NativeSolver {
         Ok(NativeSolver {
             solver: Mutex::new(solver),
             joins: Mutex::new(0),
-            scratch: Mutex::new(Vec::new()),
         })
     }
 
@@ -263,6 +260,8 @@ impl NativeSolver {
 
     /// A dense batch: M (B, n, n), q (B, n), ids (B, n) or None.
     #[pyo3(signature = (m, q, ids=None))]
+    /// C-ordered arrays are read in place by the library (GIL released);
+    /// any other layout is copied once, into one problem each.
     fn solve_dense<'py>(
         &self,
         py: Python<'py>,
@@ -270,17 +269,25 @@ impl NativeSolver {
         q: PyReadonlyArray2<'py, f64>,
         ids: Option<PyReadonlyArray2<'py, u64>>,
     ) -> PyResult<Bound<'py, PyDict>> {
-        let lcps = batch::dense(&m, &q)?;
-        self.lcps(py, lcps, ids.as_ref().map(batch::dense_ids))
+        let solved = match batch::dense_slices(&m, &q) {
+            Some(slices) => {
+                let flat = ids.as_ref().map(batch::flat_ids);
+                self.dense_in_place(py, slices, flat.as_deref())?
+            }
+            None => {
+                let lcps = batch::dense(&m, &q)?;
+                self.lcps_report(py, &lcps, ids.as_ref().map(batch::dense_ids))?
+            }
+        };
+        lcps_dict(py, solved)
     }
 
     /// For the differentiable adapters (`lcpbatch.jax`, `lcpbatch.torch`):
     /// a dense batch M (B, n, n), q (B, n) solved as [`Self::solve_dense`]
     /// solves it, returning only z and w (B, n), the status codes (B,) and
-    /// the report's fallback. A C-ordered finite batch is copied chunk by
-    /// chunk into the problems kept from the last call (GIL released), not
-    /// into fresh ones; any other is read (and its errors named) as
-    /// `solve_dense` reads it.
+    /// the report's fallback. A C-ordered batch is read in place by the
+    /// library (GIL released); any other is copied once, as `solve_dense`
+    /// copies it.
     fn solve_dense_zw<'py>(
         &self,
         py: Python<'py>,
@@ -289,15 +296,8 @@ impl NativeSolver {
     ) -> PyResult<(batch::ZwArrays<'py>, Option<String>)> {
         let (b, n) = q.as_array().dim();
         let (r, _) = match batch::dense_slices(&m, &q) {
-            Some((n, ms, qs)) => {
-                let ranges = batch::chunks(std::iter::repeat_n(n, b));
-                self.run_chunks(py, ranges, |s, r| self.solve_dense_chunk(s, n, ms, qs, r))?
-            }
-            None => {
-                let lcps = batch::dense(&m, &q)?;
-                let ranges = batch::chunks(lcps.iter().map(Lcp::n));
-                self.run_chunks(py, ranges, |s, r| s.solve_lcps(&lcps[r]))?
-            }
+            Some(slices) => self.dense_in_place(py, slices, None)?,
+            None => self.lcps_report(py, &batch::dense(&m, &q)?, None)?,
         };
         Ok((batch::zw(py, &r.islands, (b, n))?, r.fallback))
     }
@@ -312,7 +312,8 @@ impl NativeSolver {
         ids: Option<Vec<PyReadonlyArray1<'py, u64>>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let lcps = batch::ragged(&m, &q)?;
-        self.lcps(py, lcps, ids.as_deref().map(batch::ragged_ids))
+        let solved = self.lcps_report(py, &lcps, ids.as_deref().map(batch::ragged_ids))?;
+        lcps_dict(py, solved)
     }
 
     /// Scenes, one dict of arrays each (see `scenes.rs` for the layout).
@@ -422,26 +423,71 @@ impl NativeSolver {
 
     /// For `bench_overhead.py`: the seconds of `repeats` calls of the
     /// library's `Solver::solve_lcps` on the whole batch, timed in Rust
-    /// (the problems are built before the clock starts).
+    /// (the problems are built before the clock starts); with `dense`,
+    /// of `Solver::solve_dense` on the arrays in place (C-ordered).
+    #[pyo3(signature = (m, q, repeats, dense=false))]
     fn time_solve_lcps(
         &self,
         py: Python<'_>,
         m: PyReadonlyArray3<'_, f64>,
         q: PyReadonlyArray2<'_, f64>,
         repeats: usize,
+        dense: bool,
     ) -> PyResult<Vec<f64>> {
-        let lcps = batch::dense(&m, &q)?;
+        let lcps = if dense {
+            Vec::new()
+        } else {
+            batch::dense(&m, &q)?
+        };
+        let (n, ms, qs) = match (dense, batch::dense_slices(&m, &q)) {
+            (true, Some(slices)) => slices,
+            (true, None) => return Err(PyValueError::new_err("M, q: C-ordered, n > 0")),
+            (false, _) => (0, &[][..], &[][..]),
+        };
         py.detach(|| {
             guard(|| {
                 let mut solver = self.lock();
                 (0..repeats)
                     .map(|_| {
                         let t = Instant::now();
-                        solver.solve_lcps(&lcps).map_err(to_py_err)?;
+                        match dense {
+                            true => solver.solve_dense(n, ms, qs),
+                            false => solver.solve_lcps(&lcps),
+                        }
+                        .map_err(to_py_err)?;
                         Ok(t.elapsed().as_secs_f64())
                     })
                     .collect()
             })
         })
+    }
+}
+
+/// A report's islands and the report (of `count` chunks) as the dict
+/// `LcpResult` reads.
+fn lcps_dict<'py>(py: Python<'py>, (r, count): (Report, usize)) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    batch::islands_into(py, &d, &r.islands)?;
+    d.set_item("report", report::to_dict(py, &r, count)?)?;
+    Ok(d)
+}
+
+/// Chunk `r` of the C-ordered batch `ms` (B·n·n), `qs` (B·n) of size n > 0
+/// solved where it lies, keyed by `ids` (B·n) where given.
+fn dense_chunk(
+    s: &mut Solver,
+    n: usize,
+    ms: &[f64],
+    qs: &[f64],
+    ids: Option<&[u64]>,
+    r: Range<usize>,
+) -> Result<Report, lcpbatch::Error> {
+    let (m, q) = (
+        &ms[r.start * n * n..r.end * n * n],
+        &qs[r.start * n..r.end * n],
+    );
+    match ids {
+        Some(ids) => s.solve_dense_keyed(n, m, q, &ids[r.start * n..r.end * n]),
+        None => s.solve_dense(n, m, q),
     }
 }

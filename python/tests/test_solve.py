@@ -121,6 +121,39 @@ def test_fortran_order_and_strided_views_give_the_same_answers():
         np.testing.assert_allclose(r.z, [[4 / 3, 7 / 3]])
 
 
+def test_a_batch_read_in_place_gives_the_copied_batchs_full_result():
+    # C order is read in place by the library; Fortran order is copied into
+    # one problem each: every field of the result is the same bits.
+    rng = np.random.default_rng(12)
+    M, q = random_pd_batch(rng, 300, 6)
+    M[::7] -= 3 * np.eye(6)  # some without a (unique) solution
+    ids = np.arange(300 * 6, dtype=np.uint64).reshape(300, 6)
+    a = lcpbatch.Solver(backend="cpu", warm_start=True)
+    b = lcpbatch.Solver(backend="cpu", warm_start=True)
+    for _ in range(2):
+        c_order = a.solve(M, q, ids=ids)
+        copied = b.solve(np.asfortranarray(M), np.asfortranarray(q), ids=np.asfortranarray(ids))
+        for field in ("z", "w", "basis", "status", "path", "error", "pivots", "bases_visited"):
+            np.testing.assert_array_equal(getattr(c_order, field), getattr(copied, field), err_msg=field)
+        assert c_order.report.statuses == copied.report.statuses
+    assert c_order.report.counts["warm_start"] > 0
+
+
+def test_a_keyed_batch_of_several_chunks_is_checked_before_any_is_remembered():
+    # n = 16: 128 problems a chunk (CHUNK_WORK), so 300 problems are 3 chunks.
+    rng = np.random.default_rng(13)
+    M, q = random_pd_batch(rng, 300, 16)
+    ids = np.arange(300 * 16).reshape(300, 16)
+    s = lcpbatch.Solver(backend="cpu", warm_start=True)
+    bad = q.copy()
+    bad[290, 3] = np.nan
+    with pytest.raises(ValueError, match=r"q\[290, 3\] is NaN: every entry of q must be finite"):
+        s.solve(M, bad, ids=ids)
+    # Nothing of the first two chunks was remembered.
+    assert s.solve(M, q, ids=ids).report.counts["warm_start"] == 0
+    assert s.solve(M, q, ids=ids).report.counts["warm_start"] > 0
+
+
 def test_ragged_batches_give_lists_in_order():
     rng = np.random.default_rng(5)
     ms, qs = [], []

@@ -145,24 +145,9 @@ fn problem(m: &Buf<'_>, q: &Buf<'_>) -> Result<(usize, usize, c_int), Fail> {
     Ok((n, b, m.dtype))
 }
 
-/// The error of the first non-finite entry, problem by problem (M[b]
-/// before q[b]) as the callback path checks them, indexed `[b, i, j]` for
-/// M and `[b, i]` for q.
+/// [`batch::check_finite`] as an XLA error.
 fn check_finite(ms: &[f64], qs: &[f64], n: usize) -> Result<(), Fail> {
-    if batch::all_finite(ms) && batch::all_finite(qs) {
-        return Ok(());
-    }
-    for (b, (m, q)) in ms.chunks_exact(n * n).zip(qs.chunks_exact(n)).enumerate() {
-        if let Some((k, v)) = batch::first_non_finite(m.iter()) {
-            let index = format!("[{b}, {}, {}]", k / n, k % n);
-            return Err(invalid(batch::non_finite_message("M", &index, v)));
-        }
-        if let Some((k, v)) = batch::first_non_finite(q.iter()) {
-            let index = format!("[{b}, {k}]");
-            return Err(invalid(batch::non_finite_message("q", &index, v)));
-        }
-    }
-    Ok(())
+    batch::check_finite(ms, qs, n).map_err(invalid)
 }
 
 /// `lcpbatch_solve`: see the module docs.
@@ -189,12 +174,14 @@ fn solve(frame: &CallFrame) -> Result<(), Fail> {
         ));
     }
     let (ms, qs) = (m.reals()?, q.reals()?);
-    check_finite(&ms, &qs, n)?;
-    let Some(report) = entry
-        .native
-        .get()
-        .solve_dense_report(n, &ms, &qs)
-        .map_err(library)?
+    // The library checks every entry as it solves; a non-finite one is
+    // then named as the callback path names it.
+    let solved = entry.native.get().solve_dense_report(n, &ms, &qs);
+    let Some(report) = solved.map_err(|e| {
+        check_finite(&ms, &qs, n)
+            .err()
+            .unwrap_or_else(|| library(e))
+    })?
     else {
         return Ok(());
     };
