@@ -139,7 +139,7 @@ def timed(f) -> Tuple[float, float]:
 RUST_CALLS = {"solve": ("solve_lcps", "solve_dense"), "vjp": ("vjp_batch", "vjp_dense")}
 
 
-def rust_round(s, M, q, z, c) -> Tuple[Dict[str, float], Dict[str, float]]:
+def rust_round(s, M, q, z, c, parts=("solve", "vjp")) -> Tuple[Dict[str, float], Dict[str, float]]:
     """One round of the Rust calls: the wall seconds of the library's solve
     and VJP, each timed in Rust with its problems built (``solve_lcps``,
     ``vjp_batch``) or on the arrays in place (``solve_dense``,
@@ -150,6 +150,7 @@ def rust_round(s, M, q, z, c) -> Tuple[Dict[str, float], Dict[str, float]]:
              "solve_dense": lambda k: s._native.time_solve_lcps(M, q, k, dense=True),
              "vjp_batch": lambda k: native.time_lcp_vjp(M, q, z, c, k),
              "vjp_dense": lambda k: native.time_lcp_vjp(M, q, z, c, k, dense=True)}
+    calls = {key: f for key, f in calls.items() if any(key in RUST_CALLS[p] for p in parts)}
     wall = {key: f(1)[0] for key, f in calls.items()}
     cpu = {}
     for key, f in calls.items():
@@ -161,18 +162,20 @@ def rust_round(s, M, q, z, c) -> Tuple[Dict[str, float], Dict[str, float]]:
     return wall, cpu
 
 
-def fastest(wall: Dict, cpu: Dict, out: Dict) -> None:
+def fastest(wall: Dict, cpu: Dict, out: Dict, calls: Dict = RUST_CALLS) -> None:
     """Per part (solve, VJP) the Rust call with the lower median wall time
-    in the run, filed under ``wall["rust", part]`` and ``cpu["rust", part]``
-    (the baseline); every call's medians into ``out``."""
+    in the run, filed under ``wall["rust", part]``, and the one with the
+    lower median CPU time, under ``cpu["rust", part]`` (the baselines);
+    every call's medians into ``out``."""
     med = statistics.median
-    for part, keys in RUST_CALLS.items():
+    for part, keys in calls.items():
         for key in keys:
             out[f"rust_{key}_s_median"] = med(wall["rust", key])
             out[f"rust_cpu_{key}_s_median"] = med(cpu["rust", key])
-        best = min(keys, key=lambda k: med(wall["rust", k]))
-        out[f"rust_{part}_baseline"] = best
-        wall["rust", part], cpu["rust", part] = wall["rust", best], cpu["rust", best]
+        for kind, d in (("", wall), ("cpu_", cpu)):
+            best = min(keys, key=lambda k: med(d["rust", k]))
+            out[f"rust_{kind}{part}_baseline"] = best
+            d["rust", part] = d["rust", best]
 
 
 def ab_overhead(args: argparse.Namespace) -> None:
@@ -252,7 +255,8 @@ def rust_line(out: Dict) -> str:
     """The Rust calls' medians, and which is each part's baseline."""
     calls = ", ".join(f"{key} {1e3 * out[f'rust_{key}_s_median']:.1f} ms ({1e3 * out[f'rust_cpu_{key}_s_median']:.1f} "
                       f"CPU)" for keys in RUST_CALLS.values() for key in keys)
-    return f"Rust medians: {calls}; baselines {out['rust_solve_baseline']}, {out['rust_vjp_baseline']}"
+    return (f"Rust medians: {calls}; baselines (wall) {out['rust_solve_baseline']}, {out['rust_vjp_baseline']}, "
+            f"(CPU) {out['rust_cpu_solve_baseline']}, {out['rust_cpu_vjp_baseline']}")
 
 
 def grad_overhead(args: argparse.Namespace) -> None:
@@ -352,18 +356,24 @@ def main() -> None:
     M, q = batch(args.problems, args.n)
     s = lcpbatch.Solver(backend=args.backend, method=args.solver, threads=args.threads)
     s.solve(M, q)  # warm-up: pipelines, thread pool, page faults
-    python, inside = [], []
-    rusts: Dict[str, List[float]] = {"solve_lcps": [], "solve_dense": []}
+    python, python_cpu, inside = [], [], []
+    wall: Dict = collections.defaultdict(list)
+    cpu: Dict = collections.defaultdict(list)
     for _ in range(args.repeats):
-        t = time.perf_counter()
+        t, p = time.perf_counter(), time.process_time()
         r = s.solve(M, q)
         python.append(time.perf_counter() - t)
+        python_cpu.append(time.process_time() - p)
         inside.append(r.report.timings["total"])
-        rusts["solve_lcps"].extend(s._native.time_solve_lcps(M, q, 1))
-        rusts["solve_dense"].extend(s._native.time_solve_lcps(M, q, 1, dense=True))
-    baseline = min(rusts, key=lambda k: statistics.median(rusts[k]))
-    rust = rusts[baseline]
+        w, p = rust_round(s, M, q, None, None, parts=("solve",))
+        for key in w:
+            wall["rust", key].append(w[key])
+            cpu["rust", key].append(p[key])
+    rusts: Dict = {}
+    fastest(wall, cpu, rusts, {"solve": RUST_CALLS["solve"]})
+    baseline, rust = rusts["rust_solve_baseline"], wall["rust", "solve"]
     py_med, rs_med = statistics.median(python), statistics.median(rust)
+    cpu_overhead = statistics.median(python_cpu) / statistics.median(cpu["rust", "solve"]) - 1.0
     outside = statistics.median(p - i for p, i in zip(python, inside))
     out = {
         "problems": args.problems,
@@ -374,8 +384,9 @@ def main() -> None:
         "python_call_s_median": py_med,
         "rust_call_s_median": rs_med,
         "rust_call": baseline,
-        "rust_solve_lcps_s_median": statistics.median(rusts["solve_lcps"]),
-        "rust_solve_dense_s_median": statistics.median(rusts["solve_dense"]),
+        **rusts,
+        "python_cpu_s_median": statistics.median(python_cpu),
+        "cpu_overhead_of_medians": cpu_overhead,
         "python_call_s_min": min(python),
         "rust_call_s_min": min(rust),
         "outside_library_s_median": outside,
@@ -391,6 +402,9 @@ def main() -> None:
           f"{1e3 * outside:.2f} ms = {100 * out['overhead_outside_library']:.1f}% of the Rust call "
           f"({1e3 * rs_med:.1f} ms median of {args.repeats}, {baseline}; solve_lcps "
           f"{1e3 * out['rust_solve_lcps_s_median']:.1f} ms, solve_dense {1e3 * out['rust_solve_dense_s_median']:.1f} ms)")
+    print(f"process CPU seconds, medians: the Python call {1e3 * out['python_cpu_s_median']:.1f} ms, "
+          f"{100 * cpu_overhead:+.1f}% over the Rust call ({rusts['rust_cpu_solve_baseline']}; solve_lcps "
+          f"{1e3 * out['rust_cpu_solve_lcps_s_median']:.1f} ms, solve_dense {1e3 * out['rust_cpu_solve_dense_s_median']:.1f} ms)")
 
 
 if __name__ == "__main__":
