@@ -296,14 +296,25 @@ pub(crate) fn islands_into(
     d: &Bound<'_, PyDict>,
     islands: &[IslandReport],
 ) -> PyResult<()> {
-    let total: usize = islands.iter().map(|i| i.solution.z.len()).sum();
+    // One pass over the islands (a few hundred bytes each): a pass per
+    // array read them all again, at the cost of the memory traffic.
+    let (total, count) = (
+        islands.iter().map(|i| i.solution.z.len()).sum(),
+        islands.len(),
+    );
     let (mut z, mut w, mut basis) = (
         Vec::with_capacity(total),
         Vec::with_capacity(total),
         Vec::with_capacity(total),
     );
-    let mut offsets = Vec::with_capacity(islands.len() + 1);
+    let mut offsets = Vec::with_capacity(count + 1);
     offsets.push(0i64);
+    let [mut status, mut path] = [(); 2].map(|_| Vec::<i8>::with_capacity(count));
+    let (mut error, mut has_basis) = (Vec::with_capacity(count), Vec::with_capacity(count));
+    let [mut pivots, mut iterations, mut visited] =
+        [(); 3].map(|_| Vec::<u64>::with_capacity(count));
+    let (mut solutions, mut sets) = (Vec::with_capacity(count), Vec::with_capacity(count));
+    let mut all_found = false;
     for isl in islands {
         let s = &isl.solution;
         z.extend_from_slice(&s.z);
@@ -311,49 +322,31 @@ pub(crate) fn islands_into(
         let mask = s.basis.unwrap_or(0);
         basis.extend((0..s.z.len()).map(|i| i < 32 && mask >> i & 1 == 1));
         offsets.push(z.len() as i64);
+        status.push(crate::report::status_code(isl.status()));
+        path.push(crate::report::path_code(isl.path));
+        error.push(isl.error());
+        has_basis.push(s.basis.is_some());
+        pivots.push(s.counters.pivots);
+        iterations.push(s.counters.iterations);
+        visited.push(s.counters.bases_visited);
+        solutions.push(s.solution_count().map_or(-1, |c| c as i64));
+        sets.push(solution_set_name(&s.solution_set));
+        all_found |= !s.all_bases.is_empty();
     }
-    let per = |f: &dyn Fn(&IslandReport) -> u64| islands.iter().map(f).collect::<Vec<u64>>();
     d.set_item("offsets", offsets.into_pyarray(py))?;
     d.set_item("z", z.into_pyarray(py))?;
     d.set_item("w", w.into_pyarray(py))?;
     d.set_item("basis", basis.into_pyarray(py))?;
-    let status: Vec<i8> = islands
-        .iter()
-        .map(|i| crate::report::status_code(i.status()))
-        .collect();
     d.set_item("status", status.into_pyarray(py))?;
-    let path: Vec<i8> = islands
-        .iter()
-        .map(|i| crate::report::path_code(i.path))
-        .collect();
     d.set_item("path", path.into_pyarray(py))?;
-    let error: Vec<f64> = islands.iter().map(|i| i.error()).collect();
     d.set_item("error", error.into_pyarray(py))?;
-    let has_basis: Vec<bool> = islands.iter().map(|i| i.solution.basis.is_some()).collect();
     d.set_item("has_basis", has_basis.into_pyarray(py))?;
-    d.set_item(
-        "pivots",
-        per(&|i| i.solution.counters.pivots).into_pyarray(py),
-    )?;
-    d.set_item(
-        "iterations",
-        per(&|i| i.solution.counters.iterations).into_pyarray(py),
-    )?;
-    d.set_item(
-        "bases_visited",
-        per(&|i| i.solution.counters.bases_visited).into_pyarray(py),
-    )?;
-    let count: Vec<i64> = islands
-        .iter()
-        .map(|i| i.solution.solution_count().map_or(-1, |c| c as i64))
-        .collect();
-    d.set_item("solution_count", count.into_pyarray(py))?;
-    let sets: Vec<Option<&str>> = islands
-        .iter()
-        .map(|i| solution_set_name(&i.solution.solution_set))
-        .collect();
+    d.set_item("pivots", pivots.into_pyarray(py))?;
+    d.set_item("iterations", iterations.into_pyarray(py))?;
+    d.set_item("bases_visited", visited.into_pyarray(py))?;
+    d.set_item("solution_count", solutions.into_pyarray(py))?;
     d.set_item("solution_set", sets)?;
-    if islands.iter().any(|i| !i.solution.all_bases.is_empty()) {
+    if all_found {
         d.set_item("all_bases", all_bases(py, islands)?)?;
     }
     Ok(())
