@@ -166,11 +166,12 @@ type VjpArrays<'py> = (
 );
 
 /// [`lcp_vjp`]'s common case without building the problems: every array
-/// C-ordered, of the shapes of one batch, n > 0, M and q finite. The
+/// C-ordered, of the shapes of one batch, n > 0. The
 /// library's [`lcp_vjp_dense_into`] then reads the NumPy arrays in place
 /// and writes the gradients straight into the result arrays (GIL
-/// released); None for any other case, which the general path reads (and
-/// reports errors of) as before.
+/// released); None for any other case, and where M or q holds a
+/// non-finite entry (which the library refuses), for the general path to
+/// read (and report errors of) as before.
 fn dense_into<'py>(
     py: Python<'py>,
     m: &PyReadonlyArray3<'py, f64>,
@@ -194,9 +195,6 @@ fn dense_into<'py>(
         Some(Some(s)) => Some(s),
         Some(None) => return Ok(None),
     };
-    if !batch::all_finite(ms) || !batch::all_finite(qs) {
-        return Ok(None);
-    }
     let gm = PyArray3::<f64>::zeros(py, [b, n, n], false);
     let gq = PyArray2::<f64>::zeros(py, [b, n], false);
     let codes = {
@@ -206,7 +204,13 @@ fn dense_into<'py>(
             guard(|| {
                 lcp_vjp_dense_into(n, ms, qs, zs, dzs, dws, tolerance, om, oq).map_err(to_py_err)
             })
-        })?
+        })
+    };
+    // The library checks M and q as it goes; a non-finite entry is then
+    // named by the general path, as before.
+    let codes = match codes {
+        Err(_) if !(batch::all_finite(ms) && batch::all_finite(qs)) => return Ok(None),
+        codes => codes?,
     };
     let codes: Vec<i8> = codes.into_iter().map(derivative_code).collect();
     Ok(Some((gm, gq, codes.into_pyarray(py))))

@@ -268,16 +268,18 @@ fn vjp(frame: &CallFrame) -> Result<(), Fail> {
         };
     }
     let (ms, qs, zs, dzs, dws) = (m.reals()?, q.reals()?, z.reals()?, dz.reals()?, dw.reals()?);
-    check_finite(&ms, &qs, n)?;
+    // The library checks M and q as it goes; a non-finite entry is then
+    // named as the callback path names it.
+    let named = |e: Fail| check_finite(&ms, &qs, n).err().unwrap_or(e);
     // A zero ∂L/∂w (JAX passes zeros for an unused w) adds nothing.
     let dw = dws.iter().any(|&v| v != 0.0).then_some(&dws[..]);
     if dtype == F64 {
         // SAFETY: `expect` checked the dtypes.
         let (om, oq) = unsafe { (gm.view_mut::<f64>()?, gq.view_mut::<f64>()?) };
-        vjp_rows(n, [&ms, &qs, &zs, &dzs], dw, tolerance, om, oq)
+        vjp_rows(n, [&ms, &qs, &zs, &dzs], dw, tolerance, om, oq).map_err(named)
     } else {
         let (mut om, mut oq) = (vec![0.0; ms.len()], vec![0.0; qs.len()]);
-        vjp_rows(n, [&ms, &qs, &zs, &dzs], dw, tolerance, &mut om, &mut oq)?;
+        vjp_rows(n, [&ms, &qs, &zs, &dzs], dw, tolerance, &mut om, &mut oq).map_err(named)?;
         gm.put(&om)?;
         gq.put(&oq)
     }
