@@ -1,6 +1,7 @@
 """Checks and conversions of the arguments of ``solve``: shapes and dtypes
 here (a ``TypeError`` or ``ValueError`` naming the argument and the index),
-finite entries in the extension while it copies them.
+finite entries in the extension (in the library, for a C-ordered batch
+it reads in place).
 
 Arrays of float64 reach the extension as they are (C order, Fortran order
 or strided views, no copy); float32 and integer arrays are converted to

@@ -294,7 +294,7 @@ class Solver:
         """For the differentiable adapters: z and w (B, n) and ``ok`` (B,) of
         a dense batch, solved (checked, warned about) as :meth:`solve` solves
         it, without the rest of its result (the extension builds only these
-        arrays and reuses its copy of the last batch's problems)."""
+        arrays; a C-ordered float64 batch is read in place)."""
         m, qa, _ = _inputs.dense(M, q, None)
         if len(m):
             _inputs.check_enumeration_size([m.shape[1]], self.settings["method"], self.settings["backend"])

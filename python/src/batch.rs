@@ -1,11 +1,13 @@
-//! LCP batches: NumPy arrays in, [`Lcp`]s for the library, and per-problem
-//! results out as flat arrays.
+//! LCP batches: NumPy arrays in, for the library (read in place, or as
+//! [`Lcp`]s), and per-problem results out as flat arrays.
 //!
-//! Input comes dense (M of shape (B, n, n), q of shape (B, n), any strides:
-//! C order, Fortran order or a slice are read through the same view, without
-//! a copy on the Python side) or ragged (a list of (nᵢ, nᵢ) and a list of
-//! (nᵢ,) arrays). Every entry is checked to be finite while it is copied;
-//! the error names the argument and the index in NumPy's notation.
+//! Input comes dense (M of shape (B, n, n), q of shape (B, n), any strides)
+//! or ragged (a list of (nᵢ, nᵢ) and a list of (nᵢ,) arrays). A C-ordered
+//! dense batch is read in place by the library
+//! ([`lcpbatch::Solver::solve_dense`]), which checks every entry; any
+//! other is copied once into [`Lcp`]s, each entry checked as it is copied.
+//! A non-finite entry's error names the argument and the index in NumPy's
+//! notation.
 //!
 //! Output is flat: z, w and the basis of every problem one after the other,
 //! with `offsets` (B + 1 entries) marking where each starts, so that Python
