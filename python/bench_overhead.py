@@ -55,6 +55,10 @@ With ``--grad --ab PACKAGE``: old and new in one process, paired, the
 steadier comparison on a loaded machine (see ``ab_overhead``):
 
     PYTHONPATH=/tmp/old python -P python/bench_overhead.py --grad --ab lcpbatch_old --threads 1
+
+Where both builds have the XLA FFI handlers, JAX refuses a second
+registration of the same names: in the old copy's ``jax.py``, register
+them and call them as ``"old_" + name``.
 """
 
 from __future__ import annotations
