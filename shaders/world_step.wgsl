@@ -42,7 +42,8 @@
 //   (contacts, moving-body mask, flags, islands); from params.keys_at per
 //   contact slot 4 (a, b, feature, island);
 // - records: per world REC scalars (kinetic, potential, max penetration,
-//   max error, awake, friction rounds, 0, 0).
+//   max error, awake, friction rounds, and world_solve's warm-start
+//   memory: a hash of last step's contact ids, their bases).
 
 const SCALAR_EPSILON: Scalar = 1.1920929e-7; // HOST scalar_epsilon
 

@@ -894,7 +894,8 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 //   (contacts, moving-body mask, flags, islands); from params.keys_at per
 //   contact slot 4 (a, b, feature, island);
 // - records: per world REC scalars (kinetic, potential, max penetration,
-//   max error, awake, friction rounds, 0, 0).
+//   max error, awake, friction rounds, and world_solve's warm-start
+//   memory: a hash of last step's contact ids, their bases).
 
 const SCALAR_EPSILON: Scalar = 1.1920929e-7; // HOST scalar_epsilon
 
@@ -1318,6 +1319,12 @@ var<private> resp: array<Scalar, 192>;
 var<private> qv: array<Scalar, 16>;
 var<private> sides: array<vec2<u32>, 16>;
 var<private> zv: array<Scalar, 16>;
+// The island's M (row i at ISLAND_MAX i), assembled once for the tableau,
+// the basis solves and the check; w = M z + q of the last check; the basis
+// solve's x over cand.
+var<private> mm: array<Scalar, 256>;
+var<private> wv: array<Scalar, 16>;
+var<private> xs: array<Scalar, 16>;
 // Per body of the world: v* and then the velocities after the impulses.
 var<private> lin: array<vec3<Scalar>, 16>;
 var<private> ang: array<vec3<Scalar>, 16>;
@@ -1400,28 +1407,38 @@ fn dot6(x: u32, y: u32) -> Scalar {
     return m;
 }
 
-// assembly.rs matrix_entry: M_ij over the dynamic bodies rows i and j share.
-fn matrix_entry(i: u32, j: u32) -> Scalar {
-    var m = Scalar(0.0);
-    for (var si = 0u; si < 2u; si++) {
-        for (var sj = 0u; sj < 2u; sj++) {
-            let bi = sides[i][si];
-            if bi != NONE && bi == sides[j][sj] {
-                m += dot6(12u * i + 6u * si, 12u * j + 6u * sj);
+// assembly.rs matrix_entry: M_ij over the dynamic bodies rows i and j
+// share, the sides in its order (a–a, a–b, b–a, b–b), into `mm` for the
+// island's n rows.
+fn fill_matrix(n: u32) {
+    for (var i = 0u; i < n; i++) {
+        let si = sides[i];
+        for (var j = 0u; j < n; j++) {
+            let sj = sides[j];
+            // A side of row i meets at most one side of row j (a row's
+            // two bodies differ): one dot6 per side of row i, in order.
+            let ja = select(6u, 0u, si.x == sj.x);
+            let jb = select(6u, 0u, si.y == sj.x);
+            var m = Scalar(0.0);
+            if si.x != NONE && (si.x == sj.x || si.x == sj.y) {
+                m += dot6(12u * i, 12u * j + ja);
             }
+            if si.y != NONE && (si.y == sj.x || si.y == sj.y) {
+                m += dot6(12u * i + 6u, 12u * j + jb);
+            }
+            mm[ISLAND_MAX * i + j] = m;
         }
     }
-    return m;
 }
 
 // lcp.rs norm2 of the first n entries of the rows given by `which`: 0: z −
 // max(0, z − w) (w in `wv`), 1: q.
-fn scaled_norm(n: u32, wv: ptr<function, array<Scalar, 16>>, which: u32) -> Scalar {
+fn scaled_norm(n: u32, which: u32) -> Scalar {
     var big = Scalar(0.0);
     for (var i = 0u; i < n; i++) {
         var x = qv[i];
         if which == 0u {
-            x = zv[i] - max(Scalar(0.0), zv[i] - (*wv)[i]);
+            x = zv[i] - max(Scalar(0.0), zv[i] - wv[i]);
         }
         big = max(big, abs(x));
     }
@@ -1432,29 +1449,28 @@ fn scaled_norm(n: u32, wv: ptr<function, array<Scalar, 16>>, which: u32) -> Scal
     for (var i = 0u; i < n; i++) {
         var x = qv[i];
         if which == 0u {
-            x = zv[i] - max(Scalar(0.0), zv[i] - (*wv)[i]);
+            x = zv[i] - max(Scalar(0.0), zv[i] - wv[i]);
         }
         sum += (x / big) * (x / big);
     }
     return big * sqrt(sum);
 }
 
-// The door's final check of the island's z (check_solution): w = M z + q,
-// z and w finite, lcp_error(z, w, q) finite and <= tolerance. The error,
-// or -1 where the check fails.
+// The door's final check of the island's z (check_solution): w = M z + q
+// (into `wv`), z and w finite, lcp_error(z, w, q) finite and <= tolerance.
+// The error, or -1 where the check fails.
 fn check(n: u32) -> Scalar {
-    var wv: array<Scalar, 16>;
     var ok = true;
     for (var i = 0u; i < n; i++) {
         var s = Scalar(0.0);
         for (var j = 0u; j < n; j++) {
-            s += matrix_entry(i, j) * zv[j];
+            s += mm[ISLAND_MAX * i + j] * zv[j];
         }
         wv[i] = qv[i] + s;
         ok = ok && finite(wv[i]) && finite(zv[i]);
     }
-    let num = scaled_norm(n, &wv, 0u);
-    let qn = scaled_norm(n, &wv, 1u);
+    let num = scaled_norm(n, 0u);
+    let qn = scaled_norm(n, 1u);
     var error = num;
     if qn > SCALAR_EPSILON {
         error = num / qn;
@@ -1465,23 +1481,14 @@ fn check(n: u32) -> Scalar {
     return error;
 }
 
-// The basis Lemke ended on, re-solved in f64 as the CPU path re-solves it
-// (textbook_checked): M_SS z_S = −q_S over the basic z's S by Gaussian
-// elimination with partial pivoting, z = max(z_S, 0); Lemke's own z where
-// M_SS is singular or the answer not finite. The tableau `t` is reused.
-fn resolve_basis(n: u32) {
-    var k = 0u;
-    for (var i = 0u; i < n; i++) {
-        let v = basic[i];
-        if v >= n && v < 2u * n {
-            cand[k] = v - n;
-            k++;
-        }
-    }
+// M_SS x = −q_S over the contacts S = cand[0..k] by Gaussian elimination
+// with partial pivoting (textbook_checked), in the tableau `t`, x into
+// `xs`. False where M_SS is singular or x not finite.
+fn solve_on(k: u32) -> bool {
     let cols = k + 1u;
     for (var r = 0u; r < k; r++) {
         for (var c = 0u; c < k; c++) {
-            t[r * cols + c] = matrix_entry(cand[r], cand[c]);
+            t[r * cols + c] = mm[ISLAND_MAX * cand[r] + cand[c]];
         }
         t[r * cols + k] = -qv[cand[r]];
     }
@@ -1496,7 +1503,7 @@ fn resolve_basis(n: u32) {
             }
         }
         if !(big > Scalar(0.0)) || !finite(big) {
-            return;
+            return false;
         }
         for (var c = p; c <= k; c++) {
             let v = t[p * cols + c];
@@ -1510,22 +1517,90 @@ fn resolve_basis(n: u32) {
             }
         }
     }
-    var x: array<Scalar, 16>;
     var ok = true;
     for (var r = k; r > 0u; r--) {
         let i = r - 1u;
         var s = t[i * cols + k];
         for (var c = i + 1u; c < k; c++) {
-            s -= t[i * cols + c] * x[c];
+            s -= t[i * cols + c] * xs[c];
         }
-        x[i] = s / t[i * cols + i];
-        ok = ok && finite(x[i]);
+        xs[i] = s / t[i * cols + i];
+        ok = ok && finite(xs[i]);
     }
-    if ok {
+    return ok;
+}
+
+// The basis Lemke ended on, re-solved in f64 as the CPU path re-solves it
+// (textbook_checked, `solve_on`): z = max(x, 0) over the basic z's; Lemke's
+// own z where M_SS is singular or the answer not finite. The basis (bit i:
+// z_i basic).
+fn resolve_basis(n: u32) -> u32 {
+    var k = 0u;
+    var mask = 0u;
+    for (var i = 0u; i < n; i++) {
+        let v = basic[i];
+        if v >= n && v < 2u * n {
+            cand[k] = v - n;
+            mask |= 1u << (v - n);
+            k++;
+        }
+    }
+    if solve_on(k) {
         for (var i = 0u; i < k; i++) {
-            zv[cand[i]] = max(x[i], Scalar(0.0));
+            zv[cand[i]] = max(xs[i], Scalar(0.0));
         }
     }
+    return mask;
+}
+
+// Block principal pivots tried from the warm basis (world_cpu.rs
+// WARM_PIVOTS).
+const WARM_PIVOTS: u32 = 3u;
+
+// The CPU path's warm start (world_cpu.rs warm_settle) for an island of n
+// contacts: last step's basis `hint` (bit i: contact i basic) solved
+// (`solve_on`), z = max(x, 0), kept where the door's check passes (its
+// error into `error`); else up to WARM_PIVOTS block principal pivots from
+// it: basic contacts at z = 0 leave, the others with w < 0 enter. The
+// basis kept, or NONE (Lemke's path then): singular, no pivot left to
+// make, or the pivots spent.
+fn warm_basis(n: u32, hint: u32, error: ptr<function, Scalar>) -> u32 {
+    var mask = hint;
+    for (var round = 0u; round <= WARM_PIVOTS; round++) {
+        var k = 0u;
+        for (var i = 0u; i < n; i++) {
+            zv[i] = Scalar(0.0);
+            if ((mask >> i) & 1u) != 0u {
+                cand[k] = i;
+                k++;
+            }
+        }
+        if !solve_on(k) {
+            return NONE;
+        }
+        for (var r = 0u; r < k; r++) {
+            zv[cand[r]] = max(xs[r], Scalar(0.0));
+        }
+        *error = check(n);
+        if *error >= Scalar(0.0) {
+            return mask;
+        }
+        var next = mask;
+        for (var i = 0u; i < n; i++) {
+            let bit = 1u << i;
+            if (mask & bit) != 0u && zv[i] <= Scalar(0.0) {
+                next &= ~bit;
+            }
+            if (mask & bit) == 0u && wv[i] < Scalar(0.0) {
+                next |= bit;
+            }
+        }
+        if next == mask {
+            return NONE;
+        }
+        mask = next;
+    }
+    return NONE;
 }
 
 // False where llvmpipe's loop limit was reached in this invocation: past
@@ -1572,11 +1647,6 @@ fn normalize4(q: vec4<Scalar>) -> vec4<Scalar> {
     return q * (Scalar(1.0) / len);
 }
 
-// Step parts 2 and 3 for one world: find_islands (union–find through the
-// moving bodies, islands in the order of their first contact), per island
-// assembly, Lemke (lemke_pivots), the check, the impulses; then finish
-// (poses, sleep counters) and the world's figures. A flagged world (here
-// or in world_collide) keeps its state.
 // lin, ang: the velocities of world w's bodies in `scratch`.
 fn load_velocities(w: u32) {
     let first = worlds[w].x;
@@ -1586,6 +1656,18 @@ fn load_velocities(w: u32) {
     }
 }
 
+// Step parts 2 and 3 for one world: find_islands (union–find through the
+// moving bodies, islands in the order of their first contact), per island
+// assembly, the warm basis (`warm_basis`) and where it fails Lemke
+// (lemke_pivots), the check, the impulses; then finish (poses, sleep
+// counters) and the world's figures. A flagged world (here or in
+// world_collide) keeps its state.
+//
+// The warm-start memory is the world's record (scalars 6 and 7): a hash of
+// last step's contact ids (a, b, feature, in order) and its bases (bit c:
+// contact c basic, c < 32). The bases are hints where this step's ids hash
+// alike, as the CPU path's memory by id: every answer passes the door's
+// check whatever basis it came from.
 @compute @workgroup_size(64)
 fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
     let w = gid.x;
@@ -1619,9 +1701,13 @@ fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
     }
     var islands = 0u;
     var max_penetration = Scalar(0.0);
+    var ids = 2166136261u ^ count;
     for (var c = 0u; c < count; c++) {
         let key = sp.keys_at + 4u * (slot0 + c);
         let a = words[key];
+        ids = (ids ^ a) * 16777619u;
+        ids = (ids ^ words[key + 1u]) * 16777619u;
+        ids = (ids ^ words[key + 2u]) * 16777619u;
         let body = select(words[key + 1u], a, ((moving >> a) & 1u) != 0u);
         let root = find(&parent, body);
         if island_of_root[root] == NONE {
@@ -1655,7 +1741,11 @@ fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
             return;
         }
     }
-    // Per island: assembly, Lemke, check, impulses.
+    // Per island: assembly, the warm basis or Lemke, check, impulses.
+    let rec = w * REC;
+    let warm = records[rec + 6u] == Scalar(ids);
+    let hints = u32(records[rec + 7u]);
+    var bases = 0u;
     var max_error = Scalar(0.0);
     var spent = 0u;
     var members: array<u32, 16>;
@@ -1676,46 +1766,64 @@ fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
         for (var i = 0u; i < n; i++) {
             assemble_contact(slot0 + members[i], i, first, moving);
         }
-        // The tableau B⁻¹ [I, −M, −e | q] with B = I (lemke.wgsl).
-        let cols = 2u * n + 2u;
-        let rhs = cols - 1u;
-        for (var i = 0u; i < n; i++) {
-            let ri = i * cols;
-            for (var j = 0u; j < n; j++) {
-                t[ri + j] = Scalar(0.0);
-                t[ri + n + j] = -matrix_entry(i, j);
-            }
-            t[ri + i] = Scalar(1.0);
-            t[ri + 2u * n] = Scalar(-1.0);
-            t[ri + rhs] = qv[i];
-            basic[i] = i;
-        }
-        spent += n * cols + count;
-        var visited = 0u;
-        let max_pivots = u32(max(sp.max_pivots, Scalar(1.0)));
-        let status = lemke_pivots(n, spent, sp.pivot_tol, max_pivots, sp.budget, &visited);
-        spent += n + (visited + 1u) * ((n + 1u) * cols + 2u * n * n + 6u * n);
-        if status != 1u {
-            flags |= NOT_SOLVED;
-            break;
-        }
-        for (var i = 0u; i < n; i++) {
-            zv[i] = Scalar(0.0);
-        }
-        if visited > 0u {
+        fill_matrix(n);
+        spent += n * n + count;
+        var error = Scalar(-1.0);
+        var basis = NONE;
+        if warm {
+            var hint = 0u;
             for (var i = 0u; i < n; i++) {
-                let v = basic[i];
-                if v >= n && v < 2u * n {
-                    zv[v - n] = max(t[i * cols + rhs], Scalar(0.0));
-                }
+                hint |= select(0u, ((hints >> members[i]) & 1u) << i, members[i] < 32u);
             }
-            resolve_basis(n);
-            spent += n * n * n;
+            basis = warm_basis(n, hint, &error);
+            spent += (WARM_PIVOTS + 1u) * (n * n * n + 3u * n * n);
         }
-        let error = check(n);
-        if error < Scalar(0.0) {
-            flags |= NOT_SOLVED;
-            break;
+        if basis == NONE {
+            // The tableau B⁻¹ [I, −M, −e | q] with B = I (lemke.wgsl).
+            let cols = 2u * n + 2u;
+            let rhs = cols - 1u;
+            for (var i = 0u; i < n; i++) {
+                let ri = i * cols;
+                for (var j = 0u; j < n; j++) {
+                    t[ri + j] = Scalar(0.0);
+                    t[ri + n + j] = -mm[ISLAND_MAX * i + j];
+                }
+                t[ri + i] = Scalar(1.0);
+                t[ri + 2u * n] = Scalar(-1.0);
+                t[ri + rhs] = qv[i];
+                basic[i] = i;
+            }
+            spent += n * cols;
+            var visited = 0u;
+            let max_pivots = u32(max(sp.max_pivots, Scalar(1.0)));
+            let status = lemke_pivots(n, spent, sp.pivot_tol, max_pivots, sp.budget, &visited);
+            spent += n + (visited + 1u) * ((n + 1u) * cols + 2u * n * n + 6u * n);
+            if status != 1u {
+                flags |= NOT_SOLVED;
+                break;
+            }
+            for (var i = 0u; i < n; i++) {
+                zv[i] = Scalar(0.0);
+            }
+            basis = 0u;
+            if visited > 0u {
+                for (var i = 0u; i < n; i++) {
+                    let v = basic[i];
+                    if v >= n && v < 2u * n {
+                        zv[v - n] = max(t[i * cols + rhs], Scalar(0.0));
+                    }
+                }
+                basis = resolve_basis(n);
+                spent += n * n * n;
+            }
+            error = check(n);
+            if error < Scalar(0.0) {
+                flags |= NOT_SOLVED;
+                break;
+            }
+        }
+        for (var i = 0u; i < n; i++) {
+            bases |= select(0u, ((basis >> i) & 1u) << members[i], members[i] < 32u);
         }
         max_error = max(max_error, error);
         // cpu/impulses.rs velocities_after: v += M⁻¹Jᵀ z per side.
@@ -1737,6 +1845,9 @@ fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
             }
         }
     }
+    // Last step's ids and bases: kept where the world was stepped here.
+    records[rec + 6u] = select(Scalar(-1.0), Scalar(ids), flags == 0u);
+    records[rec + 7u] = Scalar(bases);
     finish_world(w, flags, max_penetration, max_error);
 }
 

@@ -21,7 +21,9 @@ pub const BS: usize = 13;
 /// Scalars per contact slot in `scratch`: point (3), normal (3), gap, z.
 pub const CP: usize = 8;
 /// Scalars per world in `records`: kinetic, potential, max penetration,
-/// max error, awake, 3 pads.
+/// max error, awake, friction rounds, and `world_solve`'s warm-start
+/// memory (a hash of last step's contact ids, the bases of its islands by
+/// contact; read back with the rest, unused by the host).
 pub const REC: usize = 8;
 /// Scalars per world of the frictional phase's region in `scratch`
 /// (`shaders/world_friction.wgsl`): an island's rows (48 × 24), W (48 × 48),
