@@ -402,10 +402,12 @@ fn normal_system(n: usize, ws: &mut Workspace) {
         let cols = pattern.row(c);
         let (r0, rest) = rows.split_at(n);
         let (r1, r2) = rest.split_at(n);
+        ws.runs.clear();
+        ws.runs.extend(block_runs(cols));
         for j in cols.iter().flat_map(|&b| 3 * b..3 * b + 3) {
             let y = [r0[j], r1[j], r2[j]];
             let out = &mut ws.normal[j * n..=j * n + j];
-            for (from, to) in block_runs(cols) {
+            for &(from, to) in &ws.runs {
                 let (lo, hi) = (3 * from, (3 * to).min(j + 1));
                 if lo >= hi {
                     break;

@@ -44,6 +44,9 @@ pub struct Workspace {
     pub(crate) stuck: Vec<usize>,
     /// The rows of ∂Φ that are ρ_i W's rows (`newton::classify`).
     pub(crate) w_rows: Vec<usize>,
+    /// A contact's runs of consecutive neighbour blocks (first, last + 1)
+    /// (`newton::normal_system`).
+    pub(crate) runs: Vec<(usize, usize)>,
     /// A Cholesky factor's envelope (`sparse::cholesky_in`).
     pub(crate) first: Vec<usize>,
     /// The best r seen (hybrid rounds), 3k.
