@@ -245,6 +245,35 @@ pub fn dot(a: &[f64], b: &[f64]) -> f64 {
     (s[0] + s[1]) + (s[2] + s[3]) + tail
 }
 
+/// [`dot`] of each of the R `rows` with `x` (each as long as `x`), in one
+/// pass that loads x once for all R: each row's bits are [`dot`]'s (the
+/// same four running sums and tail), R independent chains of additions
+/// instead of one.
+#[inline]
+pub fn dots<const R: usize>(rows: [&[f64]; R], x: &[f64]) -> [f64; R] {
+    let len = x.len();
+    let body = len - len % 4;
+    let mut s = [[0.0f64; 4]; R];
+    for c in (0..body).step_by(4) {
+        let xc = &x[c..c + 4];
+        for (sr, row) in s.iter_mut().zip(&rows) {
+            let rc = &row[c..c + 4];
+            for k in 0..4 {
+                sr[k] += rc[k] * xc[k];
+            }
+        }
+    }
+    std::array::from_fn(|r| {
+        let tail: f64 = rows[r][body..len]
+            .iter()
+            .zip(&x[body..])
+            .map(|(a, b)| a * b)
+            .sum();
+        let sr = s[r];
+        (sr[0] + sr[1]) + (sr[2] + sr[3]) + tail
+    })
+}
+
 /// W x into `out` (the change of u = W r + q when r moves by x).
 #[cfg(test)]
 pub fn velocity_into_linear(p: &FrictionProblem, x: &[f64], out: &mut [f64]) {
