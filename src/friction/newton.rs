@@ -23,6 +23,8 @@
 //! ½‖Φ‖² decides the step length (Armijo, halving).
 
 use super::problem::FrictionProblem;
+#[cfg(test)]
+use super::sparse::SPARSE_FROM;
 use super::sparse::{
     blocks_dot, cholesky_in, lower_envelope, lu_envelope, product_sparse, Pattern,
 };
@@ -549,6 +551,10 @@ pub fn newton(p: &FrictionProblem, r: &mut [f64], max_steps: u64, tolerance: f64
     ws.prepare(p, r);
     newton_in(p, &mut ws, r, max_steps, tolerance)
 }
+
+#[cfg(test)]
+#[path = "newton_tests.rs"]
+mod newton_tests;
 
 #[cfg(test)]
 mod tests {
