@@ -23,6 +23,8 @@
 //! ½‖Φ‖² decides the step length (Armijo, halving).
 
 use super::problem::FrictionProblem;
+#[cfg(test)]
+use super::sparse::SPARSE_FROM;
 use super::sparse::{
     blocks_dot, cholesky_in, lower_envelope, lu_envelope, product_sparse, Pattern,
 };
@@ -375,8 +377,12 @@ fn stick_step(p: &FrictionProblem, ws: &mut Workspace) -> bool {
 /// neighbours), so that (∂Φᵀ∂Φ)_ji is zero unless contacts j/3 and i/3
 /// share a neighbour: on large islands (`ws.env_first` set) the envelope
 /// starts at the first neighbour of a neighbour and nothing before it is
-/// touched. The products skipped are zeros (±0, which leave a sum that
-/// starts at +0 as it is): the dense sums' bits.
+/// touched. A contact's three rows share their blocks: each entry takes
+/// their three products in one pass, in row order (the sums of one row
+/// at a time, bit for bit), along the runs of consecutive blocks (so that
+/// the inner loop runs over contiguous columns of a row of the lower
+/// triangle). The products of zeros it adds (±0) leave a sum as it is
+/// (a sum from +0 is never −0): the dense sums' bits.
 fn normal_system(n: usize, ws: &mut Workspace) {
     let (pattern, large) = (&ws.pattern, !ws.env_first.is_empty());
     let reach = |i: usize| match large {
@@ -394,29 +400,52 @@ fn normal_system(n: usize, ws: &mut Workspace) {
         ws.normal[j * n + reach(j)..=j * n + j].fill(0.0);
     }
     ws.trial.fill(0.0);
-    for (k, row) in ws.jac.chunks_exact(n).enumerate() {
-        let cols = pattern.row(k / 3);
-        for (at, &bi) in cols.iter().enumerate() {
-            for i in 3 * bi..3 * bi + 3 {
-                let a = row[i];
-                if a == 0.0 {
-                    continue;
+    for (c, rows) in ws.jac.chunks_exact(3 * n).enumerate() {
+        let cols = pattern.row(c);
+        let (r0, rest) = rows.split_at(n);
+        let (r1, r2) = rest.split_at(n);
+        ws.runs.clear();
+        ws.runs.extend(block_runs(cols));
+        for j in cols.iter().flat_map(|&b| 3 * b..3 * b + 3) {
+            let y = [r0[j], r1[j], r2[j]];
+            let out = &mut ws.normal[j * n..=j * n + j];
+            for &(from, to) in &ws.runs {
+                let (lo, hi) = (3 * from, (3 * to).min(j + 1));
+                if lo >= hi {
+                    break;
                 }
-                for &bj in &cols[at..] {
-                    for j in (3 * bj).max(i)..3 * bj + 3 {
-                        ws.normal[j * n + i] += a * row[j];
-                    }
+                let lanes = out[lo..hi].iter_mut().zip(&r0[lo..hi]);
+                for ((o, &x0), (&x1, &x2)) in lanes.zip(r1[lo..hi].iter().zip(&r2[lo..hi])) {
+                    *o = ((*o + x0 * y[0]) + x1 * y[1]) + x2 * y[2];
                 }
             }
         }
-        let f = ws.phi[k];
-        if f != 0.0 {
-            for c in cols.iter().flat_map(|&b| 3 * b..3 * b + 3) {
-                ws.trial[c] -= row[c] * f;
+        for (d, row) in [r0, r1, r2].into_iter().enumerate() {
+            let f = ws.phi[3 * c + d];
+            if f != 0.0 {
+                for col in cols.iter().flat_map(|&b| 3 * b..3 * b + 3) {
+                    ws.trial[col] -= row[col] * f;
+                }
             }
         }
     }
     lower_envelope(&ws.normal, n, reach, &mut ws.first);
+}
+
+/// The runs of consecutive blocks in the ascending `blocks`: (first,
+/// last + 1) of each.
+fn block_runs(blocks: &[usize]) -> impl Iterator<Item = (usize, usize)> + '_ {
+    let mut at = 0;
+    std::iter::from_fn(move || {
+        let from = *blocks.get(at)?;
+        let mut to = from + 1;
+        at += 1;
+        while blocks.get(at) == Some(&to) {
+            to += 1;
+            at += 1;
+        }
+        Some((from, to))
+    })
 }
 
 /// The merit's slope along Δ: (∂ΦᵀΦ)·Δ = Φ·(∂Φ Δ).
@@ -522,6 +551,10 @@ pub fn newton(p: &FrictionProblem, r: &mut [f64], max_steps: u64, tolerance: f64
     ws.prepare(p, r);
     newton_in(p, &mut ws, r, max_steps, tolerance)
 }
+
+#[cfg(test)]
+#[path = "newton_tests.rs"]
+mod newton_tests;
 
 #[cfg(test)]
 mod tests {

@@ -15,7 +15,7 @@
 //! Newton step on 570 contacts touches no O((3k)²) array.
 
 use super::problem::FrictionProblem;
-use super::workspace::dot;
+use super::workspace::{dot, dots};
 
 /// Islands of at least this many contacts are solved in the contact order
 /// of [`bandwidth_order`], their Newton steps factored within W's envelope
@@ -355,15 +355,41 @@ pub(crate) fn cholesky_in(
         let d = d.sqrt();
         a[j * n + j] = d;
         let inv = 1.0 / d;
-        for i in j + 1..=last[j] {
-            if first[i] > j {
+        // Rows below with the same envelope start (a contact's three, as
+        // a rule) up to four at a time: one pass over L's row j for all
+        // (`dots`: each row's sum the bits of `dot`).
+        let mut i = j + 1;
+        while i <= last[j] {
+            let f = first[i];
+            if f > j {
+                i += 1;
                 continue; // L_ij = A_ij = 0
             }
-            let s = first[i].max(fj);
+            let mut g = 1;
+            while g < 4 && i + g <= last[j] && first[i + g] == f {
+                g += 1;
+            }
+            let s = f.max(fj);
             let (upper, lower) = a.split_at_mut(i * n);
             let lj = &upper[j * n + s..j * n + j];
-            let li = &mut lower[..n];
-            li[j] = (li[j] - dot(&li[s..j], lj)) * inv;
+            let row = |r: usize| &lower[r * n + s..r * n + j];
+            let sums: [f64; 4] = match g {
+                1 => [dot(row(0), lj), 0.0, 0.0, 0.0],
+                2 => {
+                    let [a, b] = dots([row(0), row(1)], lj);
+                    [a, b, 0.0, 0.0]
+                }
+                3 => {
+                    let [a, b, c] = dots([row(0), row(1), row(2)], lj);
+                    [a, b, c, 0.0]
+                }
+                _ => dots([row(0), row(1), row(2), row(3)], lj),
+            };
+            for (r, sum) in sums.iter().enumerate().take(g) {
+                let at = r * n + j;
+                lower[at] = (lower[at] - sum) * inv;
+            }
+            i += g;
         }
     }
     // L y = b, then Lᵀ x = y (a dropped unknown is 0).

@@ -44,6 +44,9 @@ pub struct Workspace {
     pub(crate) stuck: Vec<usize>,
     /// The rows of ∂Φ that are ρ_i W's rows (`newton::classify`).
     pub(crate) w_rows: Vec<usize>,
+    /// A contact's runs of consecutive neighbour blocks (first, last + 1)
+    /// (`newton::normal_system`).
+    pub(crate) runs: Vec<(usize, usize)>,
     /// A Cholesky factor's envelope (`sparse::cholesky_in`).
     pub(crate) first: Vec<usize>,
     /// The best r seen (hybrid rounds), 3k.
@@ -240,6 +243,35 @@ pub fn dot(a: &[f64], b: &[f64]) -> f64 {
     }
     let tail: f64 = ta.iter().zip(tb).map(|(x, y)| x * y).sum();
     (s[0] + s[1]) + (s[2] + s[3]) + tail
+}
+
+/// [`dot`] of each of the R `rows` with `x` (each as long as `x`), in one
+/// pass that loads x once for all R: each row's bits are [`dot`]'s (the
+/// same four running sums and tail), R independent chains of additions
+/// instead of one.
+#[inline]
+pub fn dots<const R: usize>(rows: [&[f64]; R], x: &[f64]) -> [f64; R] {
+    let len = x.len();
+    let body = len - len % 4;
+    let mut s = [[0.0f64; 4]; R];
+    for c in (0..body).step_by(4) {
+        let xc = &x[c..c + 4];
+        for (sr, row) in s.iter_mut().zip(&rows) {
+            let rc = &row[c..c + 4];
+            for k in 0..4 {
+                sr[k] += rc[k] * xc[k];
+            }
+        }
+    }
+    std::array::from_fn(|r| {
+        let tail: f64 = rows[r][body..len]
+            .iter()
+            .zip(&x[body..])
+            .map(|(a, b)| a * b)
+            .sum();
+        let sr = s[r];
+        (sr[0] + sr[1]) + (sr[2] + sr[3]) + tail
+    })
 }
 
 /// W x into `out` (the change of u = W r + q when r moves by x).
