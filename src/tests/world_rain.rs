@@ -2,12 +2,15 @@
 //! densities falling on the ground, μ = 0.4) through `Solver::step_worlds`
 //! on the CPU at the CLI's friction tolerance 1e-12. A few islands end
 //! unsolved at the iteration cap of 1,000 (single boxes on four corners
-//! and small piles whose W is singular and whose solution is degenerate:
-//! NSGS stalls at 1e-11–1e-9, Newton stalls, PROX converges linearly and
-//! needs 1,200–75,000 inner steps); each is repaired exactly, and
-//! penetration stays bounded. Over 4 worlds × 1,000 steps: 107 unsolved
-//! before PROX's nonmonotone inner line search and `auto`'s PROX from the
-//! start, 24 after (of 97,907 islands).
+//! and small piles whose W is singular and whose q lies outside W's range
+//! by 1e-10–1e-9 of ‖q‖, so that they rest on their contacts only to
+//! rounding and the exact solution unloads or slides a contact: NSGS
+//! stalls at 1e-11–1e-9, Newton stalls, PROX converges linearly and needs
+//! 1,200–75,000 inner steps); each is repaired exactly, and penetration
+//! stays bounded. Over 4 worlds × 1,000 steps: 107 unsolved before PROX's
+//! nonmonotone inner line search and `auto`'s PROX from the start, 24
+//! after (of 97,907 islands), 19 with PROX's inner solves capped at 5
+//! Newton steps (of 97,839).
 
 use crate::settings::{Backend, Method, Settings};
 use crate::world::generate::{standard_world, WorldKind};
@@ -15,9 +18,10 @@ use crate::Solver;
 
 /// 4 worlds × 1,000 steps of 10 ms (the fall, the impacts, the settling,
 /// the rest): every unsolved island repaired exactly (normal impulses,
-/// checked), at most one island in 2,000 unsolved (24 of 97,907 measured;
-/// 107 before), the deepest penetration below 5 cm (3.6 cm at the
-/// landing) and below 1 mm after the first 200 steps (0.1 mm measured).
+/// checked), at most one island in 4,000 unsolved (19 of 97,839 measured;
+/// 24 and 107 before), the deepest penetration below 4 cm (3.56 cm at the
+/// landing, step 62) and below 0.2 mm after the first 200 steps (0.099 mm
+/// measured).
 #[test]
 fn a_frictional_rain_repairs_exactly_and_stays_bounded() {
     let mut worlds: Vec<_> = (0..4)
@@ -46,9 +50,9 @@ fn a_frictional_rain_repairs_exactly_and_stays_bounded() {
         }
     }
     assert!(
-        2000 * unsolved <= islands,
+        4000 * unsolved <= islands,
         "{unsolved} of {islands} islands unsolved"
     );
-    assert!(deepest < 0.05, "deepest penetration {deepest} m");
-    assert!(late < 1e-3, "deepest penetration after step 200: {late} m");
+    assert!(deepest < 0.04, "deepest penetration {deepest} m");
+    assert!(late < 2e-4, "deepest penetration after step 200: {late} m");
 }
