@@ -211,32 +211,7 @@ impl Solver {
             return (0, 0);
         };
         let mut done = 0;
-        let ran = guarded(|| {
-            self.hold(&ctx, worlds)?;
-            // The call's last report waits for the states' bytes.
-            let mut last: Option<StepReport> = None;
-            while done + usize::from(last.is_some()) < steps {
-                let left = steps - done - usize::from(last.is_some());
-                for report in self.resident_steps(&ctx, worlds, dt, left)? {
-                    if let Some(r) = last.replace(report) {
-                        observe(done, r);
-                        done += 1;
-                    }
-                }
-            }
-            let r = self.resident.as_mut().expect("held");
-            r.worlds.read_states(&ctx, worlds)?;
-            r.held.clear();
-            r.held.extend_from_slice(worlds);
-            let mut last = last.expect("at least one step");
-            if let Some(f) = &mut last.resident {
-                f.bytes_back += r.take_bytes();
-            }
-            observe(done, last);
-            done += 1;
-            Ok(())
-        });
-        match ran {
+        match self.resident_run(&ctx, worlds, dt, steps, observe, &mut done) {
             Ok(()) => (steps, steps),
             Err(e) => {
                 self.resident = None;
@@ -246,6 +221,43 @@ impl Solver {
                 (done, 0)
             }
         }
+    }
+
+    /// [`Self::step_worlds_resident`]'s steps, `done` counting those
+    /// reported: the device's parts guarded (a panic inside wgpu is device
+    /// trouble), `observe` called outside them (its panics are its own).
+    fn resident_run(
+        &mut self,
+        ctx: &GpuContext,
+        worlds: &mut [World],
+        dt: f64,
+        steps: usize,
+        observe: &mut dyn FnMut(usize, StepReport),
+        done: &mut usize,
+    ) -> Result<(), Error> {
+        guarded(|| self.hold(ctx, worlds))?;
+        // The call's last report waits for the states' bytes.
+        let mut last: Option<StepReport> = None;
+        while *done + usize::from(last.is_some()) < steps {
+            let left = steps - *done - usize::from(last.is_some());
+            for report in guarded(|| self.resident_steps(ctx, worlds, dt, left))? {
+                if let Some(r) = last.replace(report) {
+                    observe(*done, r);
+                    *done += 1;
+                }
+            }
+        }
+        let r = self.resident.as_mut().expect("held");
+        guarded(|| r.worlds.read_states(ctx, worlds))?;
+        r.held.clear();
+        r.held.extend_from_slice(worlds);
+        let mut last = last.expect("at least one step");
+        if let Some(f) = &mut last.resident {
+            f.bytes_back += r.take_bytes();
+        }
+        observe(*done, last);
+        *done += 1;
+        Ok(())
     }
 
     /// The batch on the device: kept where the worlds are those it gave
