@@ -314,7 +314,7 @@ impl Solver {
 impl Solver {
     /// Advances every world by `steps` steps of `dt` seconds, as `steps`
     /// calls of [`Self::step_worlds`] do (the same trajectory, bit for bit,
-    /// and the same reports), giving each step's report to `observe` with
+    /// and the same per-world figures), giving each step's report to `observe` with
     /// its number (from 0) as the step ends; the worlds hold the states
     /// after the last step when it returns.
     ///
@@ -335,8 +335,8 @@ impl Solver {
     ///
     /// # Errors
     /// As [`Self::step_worlds`]: [`Error::Invalid`] naming the first bad
-    /// world, its body and the field, or `dt`, and no world moves; after
-    /// `steps` = 0, nothing happens.
+    /// world, its body and the field, or `dt`, and no world moves. With
+    /// `steps` 0 nothing happens (the worlds are not checked).
     ///
     /// # Example
     /// ```
