@@ -366,10 +366,12 @@ class Solver:
 
     def step_worlds(self, worlds: Union[World, Sequence[World]], dt: float, steps: int = 1) -> StepResult:
         """Advances every world by ``steps`` steps of ``dt`` seconds, in
-        place: per step one library call (collision, one batch of islands
-        for all worlds, integration) with the GIL released, and a Ctrl-C
-        check between steps (after ``KeyboardInterrupt`` the worlds hold the
-        last finished step). A world gives the same trajectory alone or in a
+        place, through the library's ``step_worlds_for`` in calls of 1, 2,
+        4, ... steps (doubled after a call under half a second) with the GIL
+        released and a Ctrl-C check between calls (after
+        ``KeyboardInterrupt`` the worlds hold the last call's last step); on
+        the resident GPU path the states stay on the device within a call,
+        per step only a small record per world comes back. A world gives the same trajectory alone or in a
         batch, and ``steps=2`` equals two calls of ``steps=1``.
 
         >>> import lcpbatch
@@ -521,7 +523,9 @@ def solve_friction(W: Union[ArrayLike, Sequence[ArrayLike]], q: Union[ArrayLike,
 
 def simulate(worlds: Union[World, Sequence[World]], dt: float, steps: int = 1, **settings: Any) -> StepResult:
     """Steps a batch of worlds ``steps`` times by ``dt`` seconds, in place
-    (see :meth:`Solver.step_worlds`). ``friction_tolerance`` defaults to
+    (see :meth:`Solver.step_worlds`; with ``backend="gpu"`` the batch stays
+    on the device and the states come back into the worlds' arrays at the
+    end). ``friction_tolerance`` defaults to
     1e-12 here, as in ``lcpbatch simulate``: the Coulomb error is relative to
     an island's largest impulse, and the solver's 1e-8 leaves heavy resting
     boxes with velocities near 1e-6 m/s. The keyword arguments are the

@@ -364,11 +364,14 @@ impl NativeSolver {
         self.frictional(py, problems, ids.as_deref().map(batch::ragged_ids))
     }
 
-    /// Advances `worlds` by `steps` steps of `dt` seconds, one library call
-    /// per step with the GIL released and a Ctrl-C check between steps. The
-    /// worlds are updated in place (after an interruption: to the last
-    /// step finished). Returns the per-step summaries of
-    /// [`worlds::summaries_into`], per step `unsolved` and the seconds of
+    /// Advances `worlds` by `steps` steps of `dt` seconds through the
+    /// library's `Solver::step_worlds_for` (on the resident GPU path the
+    /// states stay on the device within a call and come back at its end),
+    /// in calls with the GIL released and a Ctrl-C check between them: 1
+    /// step, then twice as many after a call shorter than half a second.
+    /// The worlds are updated in place (after an interruption: to the last
+    /// call finished, every step reported). Returns the per-step summaries
+    /// of [`worlds::summaries_into`], per step `unsolved` and the seconds of
     /// `collision`, `solve`, `integrate`, and the last step's `report`.
     fn step_worlds<'py>(
         &self,
@@ -383,26 +386,33 @@ impl NativeSolver {
         let mut timings: [Vec<f64>; 3] = Default::default();
         let mut last = None;
         let mut outcome = Ok(());
-        for _ in 0..steps {
-            let step =
-                py.detach(|| guard(|| self.lock().step_worlds(&mut ws, dt).map_err(to_py_err)));
-            match step {
-                Ok(rep) => {
-                    summaries.push(rep.worlds);
-                    unsolved.push(rep.unsolved as i64);
-                    timings[0].push(rep.timings.collision);
-                    timings[1].push(rep.timings.solve);
-                    timings[2].push(rep.timings.integrate);
-                    last = Some(rep.solve);
-                }
-                Err(e) => {
-                    outcome = Err(e);
-                    break;
-                }
-            }
-            if let Err(e) = py.check_signals() {
+        let (mut done, mut chunk) = (0, 1);
+        while done < steps {
+            let n = chunk.min(steps - done);
+            let start = Instant::now();
+            let call = py.detach(|| {
+                guard(|| {
+                    let mut solver = self.lock();
+                    let keep = |_, rep: lcpbatch::StepReport| {
+                        summaries.push(rep.worlds);
+                        unsolved.push(rep.unsolved as i64);
+                        timings[0].push(rep.timings.collision);
+                        timings[1].push(rep.timings.solve);
+                        timings[2].push(rep.timings.integrate);
+                        last = Some(rep.solve);
+                    };
+                    solver
+                        .step_worlds_for(&mut ws, dt, n, keep)
+                        .map_err(to_py_err)
+                })
+            });
+            if let Err(e) = call.and_then(|()| py.check_signals()) {
                 outcome = Err(e);
                 break;
+            }
+            done += n;
+            if start.elapsed().as_secs_f64() < 0.5 {
+                chunk *= 2;
             }
         }
         for (w, state) in worlds.iter().zip(ws) {

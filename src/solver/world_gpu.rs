@@ -1,6 +1,7 @@
-//! The resident GPU path of [`Solver::step_worlds`] (issue 23): worlds
-//! kept on the device between calls and stepped there, one submission per
-//! step ([`crate::gpu::resident`], `shaders/world_step.wgsl`).
+//! The resident GPU path of [`Solver::step_worlds`] and
+//! [`Solver::step_worlds_for`] (issue 23): worlds kept on the device
+//! between calls and stepped there, up to 16 steps per submission
+//! ([`crate::gpu::resident`], `shaders/world_step.wgsl`).
 //!
 //! **Scope.** `Backend::Gpu` on an adapter with SHADER_F64 (precision f64),
 //! method Auto or Lemke without `all_solutions`, every world with
@@ -8,12 +9,19 @@
 //! with μ > 0) or with a friction method the kernel twins (below). Any other batch takes the path of `world_path.rs` as a whole
 //! (the resident state is dropped).
 //!
-//! **State between calls.** `step_worlds` takes the worlds by `&mut` and
-//! gives them back stepped, so each call reads the states back (the
-//! device's own bytes, unpacked in place). The device keeps the batch
-//! between calls while the worlds passed in are exactly those it gave back
-//! (compared field by field with a copy kept on the host); worlds that
-//! differ in any way are uploaded afresh.
+//! **State between calls, and what comes back.** The batch is uploaded
+//! once and kept on the device while the worlds passed in are exactly
+//! those it gave back last (compared field by field with a copy kept on the
+//! host); worlds that differ in any way are uploaded afresh.
+//! [`Solver::step_worlds_for`] takes many steps in one call: per step only
+//! each world's record comes back (energies, penetration, counts, error,
+//! flags: 80 bytes in f64), the states once, after the call's last step
+//! ([`Solver::step_worlds`] is a call of one step). Steps go several to a
+//! submission (1, then twice as many after each submission without a
+//! flagged world, up to 16): a submission in which any world was flagged
+//! is undone on the device (the state, the words and the warm-start memory
+//! were copied aside before it) and taken again one step per submission, so
+//! the trajectory is bit for bit that of one step per call.
 //!
 //! **Worlds the kernel could not step** (a flag: contact slots full, an
 //! island above 16 contacts, Lemke gave up or its answer failed the f64
@@ -23,8 +31,12 @@
 //! (`prepare`, `step_world_on_cpu`, with the world's warm memory) and
 //! writes them back; [`StepReport::resident`] counts them. Device trouble
 //! (an error or a panic inside wgpu, as `gpu_path::guarded` catches it)
-//! before the states came back leaves every world as it was: the device is
-//! dropped (a warning) and the CPU path steps the batch from there.
+//! drops the device (a warning) and the CPU path steps on from the last
+//! good state: the states last read back, i.e. the worlds as passed to the
+//! call, which are left untouched until the call's end; the steps the call
+//! had reported are taken again on the CPU and not reported twice (the
+//! CPU's warm-start memory of a world flagged in them is then a later
+//! step's: a start, not the answer).
 //!
 //! **Friction** (issue 23): with `friction_method` `pgs` or `jacobi` a
 //! batch with friction stays resident; `world_friction` is the twin of
@@ -94,10 +106,44 @@ pub(crate) fn next_rounds(rounds: u32, records: &[WorldRecord]) -> u32 {
     next.clamp(1, MAX_ROUNDS)
 }
 
-/// The batch the device holds and the worlds as it gave them back.
+/// The rounds after `history`'s steps, each run with `rounds` rounds, where
+/// they are the steps that one step per submission gives (None
+/// otherwise): no world flagged in any, and none active in more rounds than
+/// [`next_rounds`] would have given that step (the rounds come down after
+/// easy steps; a world that needs more is left [`flags::HANDED`] then).
+pub(crate) fn accepted(rounds: u32, history: &[Vec<WorldRecord>]) -> Option<u32> {
+    let mut r = rounds;
+    for records in history {
+        if records.iter().any(|x| x.flags != 0 || x.rounds > r) {
+            return None;
+        }
+        if r > 0 {
+            r = next_rounds(r, records);
+        }
+    }
+    Some(r)
+}
+
+/// The batch the device holds, the worlds as last read back, and how many
+/// steps the next submission takes.
 pub(super) struct Resident {
     worlds: ResidentWorlds,
     held: Vec<World>,
+    /// Steps of the next submission: 1 after a step with a flagged world,
+    /// twice the last submission's after one without (up to
+    /// [`ResidentWorlds::most_steps`]).
+    next: usize,
+    /// Bytes read back that reports have counted.
+    counted: u64,
+}
+
+impl Resident {
+    /// Bytes read back since the last call.
+    fn take_bytes(&mut self) -> u64 {
+        let b = self.worlds.bytes_read() - self.counted;
+        self.counted += b;
+        b
+    }
 }
 
 impl std::fmt::Debug for Resident {
@@ -141,70 +187,193 @@ impl Solver {
         })
     }
 
-    /// One step of `worlds` on the resident path, or None where the batch
-    /// is out of its scope or the device failed before any world moved
-    /// (the caller steps them on the CPU path then). The worlds were
-    /// checked by the caller.
+    /// `steps` steps of `worlds` on the resident path, each step's report
+    /// given to `observe` (steps counted from 0), the states read back
+    /// after the last. The worlds were checked by the caller. Returns
+    /// (steps reported, steps the worlds are at): (`steps`, `steps`) when
+    /// the device took them all; (0, 0) where the batch is out of the
+    /// path's scope or the device failed before a step; (j, 0) after device
+    /// trouble in step j: the device is dropped (a warning), the worlds are
+    /// as passed in (the last states read back) and the caller steps them
+    /// on the CPU path from there, giving `observe` the steps from j on.
     pub(super) fn step_worlds_resident(
         &mut self,
         worlds: &mut [World],
         dt: f64,
-    ) -> Option<StepReport> {
+        steps: usize,
+        observe: &mut dyn FnMut(usize, StepReport),
+    ) -> (usize, usize) {
         if !self.resident_scope(worlds) {
             self.resident = None;
-            return None;
+            return (0, 0);
         }
-        let ctx = self.gpu.clone()?;
-        let start = Instant::now();
-        let stepped = guarded(|| self.device_step(&ctx, worlds, dt));
-        let device_seconds = start.elapsed().as_secs_f64();
-        let (records, states) = match stepped {
-            Ok(r) => r,
+        let Some(ctx) = self.gpu.clone() else {
+            return (0, 0);
+        };
+        let mut done = 0;
+        match self.resident_run(&ctx, worlds, dt, steps, observe, &mut done) {
+            Ok(()) => (steps, steps),
             Err(e) => {
                 self.resident = None;
                 if let Error::Gpu(why) = e {
                     self.fall_back(why);
                 }
-                return None;
-            }
-        };
-        let start = Instant::now();
-        let warm = self.settings.warm_start && self.resident_friction().is_some();
-        let resident = self.resident.as_mut()?;
-        let rounds = next_rounds(resident.worlds.rounds(), &records);
-        resident.worlds.set_rounds(rounds);
-        let mut flagged = Vec::new();
-        for (k, (w, r)) in worlds.iter_mut().zip(&records).enumerate() {
-            match r.flags {
-                0 => states.unpack(resident.worlds.first_body(k), w),
-                _ => flagged.push(k),
+                (done, 0)
             }
         }
-        // The flagged worlds from their state before the step, by the CPU
-        // path's code.
+    }
+
+    /// [`Self::step_worlds_resident`]'s steps, `done` counting those
+    /// reported: the device's parts guarded (a panic inside wgpu is device
+    /// trouble), `observe` called outside them (its panics are its own).
+    fn resident_run(
+        &mut self,
+        ctx: &GpuContext,
+        worlds: &mut [World],
+        dt: f64,
+        steps: usize,
+        observe: &mut dyn FnMut(usize, StepReport),
+        done: &mut usize,
+    ) -> Result<(), Error> {
+        guarded(|| self.hold(ctx, worlds))?;
+        // The call's last report waits for the states' bytes.
+        let mut last: Option<StepReport> = None;
+        while *done + usize::from(last.is_some()) < steps {
+            let left = steps - *done - usize::from(last.is_some());
+            for report in guarded(|| self.resident_steps(ctx, worlds, dt, left))? {
+                if let Some(r) = last.replace(report) {
+                    observe(*done, r);
+                    *done += 1;
+                }
+            }
+        }
+        let r = self.resident.as_mut().expect("held");
+        guarded(|| r.worlds.read_states(ctx, worlds))?;
+        r.held.clear();
+        r.held.extend_from_slice(worlds);
+        let mut last = last.expect("at least one step");
+        if let Some(f) = &mut last.resident {
+            f.bytes_back += r.take_bytes();
+        }
+        observe(*done, last);
+        *done += 1;
+        Ok(())
+    }
+
+    /// The batch on the device: kept where the worlds are those it gave
+    /// back last, else uploaded.
+    fn hold(&mut self, ctx: &GpuContext, worlds: &[World]) -> Result<(), Error> {
+        if matches!(&self.resident, Some(r) if r.held == worlds) {
+            return Ok(());
+        }
+        self.resident = None;
+        let gpu = self.settings.gpu_solve();
+        let tolerance = self.settings.tolerance;
+        let friction = self.resident_friction();
+        let slots = test_slots();
+        self.resident = Some(Resident {
+            worlds: ResidentWorlds::new(ctx, worlds, tolerance, &gpu, friction, slots)?,
+            held: worlds.to_vec(),
+            next: 1,
+            counted: 0,
+        });
+        Ok(())
+    }
+
+    /// Up to `left` steps, the next submission's: several in one where the
+    /// last had no flagged world and these have none either (and the rounds
+    /// a step at a time would give, [`accepted`]); else (the submission
+    /// undone) one step per submission as [`Self::resident_step`] takes it.
+    fn resident_steps(
+        &mut self,
+        ctx: &GpuContext,
+        worlds: &[World],
+        dt: f64,
+        left: usize,
+    ) -> Result<Vec<StepReport>, Error> {
+        let r = self.resident.as_mut().expect("held");
+        let most = r.worlds.most_steps();
+        let k = r.next.min(left).min(most);
+        if k > 1 {
+            let start = Instant::now();
+            let history = r.worlds.steps(ctx, dt, k)?;
+            let seconds = start.elapsed().as_secs_f64() / k as f64;
+            if let Some(rounds) = accepted(r.worlds.rounds(), &history) {
+                r.worlds.set_rounds(rounds);
+                r.next = (2 * k).min(most);
+                let bytes = r.take_bytes();
+                let up = r.worlds.bytes_up;
+                let reports = history.iter().enumerate().map(|(j, records)| {
+                    let figures = ResidentStep {
+                        on_device: records.len(),
+                        bytes_up: up,
+                        submission_steps: k,
+                        bytes_back: bytes * (j as u64 + 1) / k as u64 - bytes * j as u64 / k as u64,
+                        ..ResidentStep::default()
+                    };
+                    let worlds = records.iter().map(world_report).collect();
+                    self.resident_report(ctx, worlds, Repairs::default(), figures, [seconds, 0.0])
+                });
+                return Ok(reports.collect());
+            }
+            // Undone: its records' bytes go to the steps taken again.
+            r.worlds.restore(ctx)?;
+        }
+        let mut reports = Vec::with_capacity(k);
+        let mut clean = true;
+        for _ in 0..k {
+            let (report, flagged) = self.resident_step(ctx, worlds, dt)?;
+            clean = flagged == 0;
+            reports.push(report);
+        }
+        let r = self.resident.as_mut().expect("held");
+        r.next = if clean { 2.min(most) } else { 1 };
+        Ok(reports)
+    }
+
+    /// One step in a submission of its own: the worlds the kernel flagged
+    /// stepped on the CPU from their state before the step (which the
+    /// device kept; read back) by the CPU path's code and written back.
+    /// `worlds`: the batch held (for the bodies' constants). Returns the
+    /// step's report and the worlds flagged.
+    fn resident_step(
+        &mut self,
+        ctx: &GpuContext,
+        worlds: &[World],
+        dt: f64,
+    ) -> Result<(StepReport, usize), Error> {
+        let start = Instant::now();
+        let warm = self.settings.warm_start && self.resident_friction().is_some();
+        let r = self.resident.as_mut().expect("held");
+        let (records, _) = r.worlds.step(ctx, dt)?;
+        let device_seconds = start.elapsed().as_secs_f64();
+        let start = Instant::now();
+        r.worlds
+            .set_rounds(next_rounds(r.worlds.rounds(), &records));
+        let flagged: Vec<usize> = (0..records.len())
+            .filter(|&k| records[k].flags != 0)
+            .collect();
+        let mut reports: Vec<WorldStepReport> = records.iter().map(world_report).collect();
+        let mut repairs = Repairs::default();
+        let mut states: Vec<World> = flagged.iter().map(|&k| worlds[k].clone()).collect();
+        if !flagged.is_empty() {
+            r.worlds.read_worlds(ctx, &flagged, &mut states)?;
+        }
         let keep = self.settings.warm_start_calls;
         self.world_warm
             .resize_with(worlds.len(), || Warm::new(keep, 1));
         let fix = repair_settings(&self.settings);
-        let mut reports: Vec<WorldStepReport> = records.iter().map(world_report).collect();
-        let mut repairs = Repairs::default();
-        let mut trouble = None;
-        for &k in &flagged {
+        for (&k, w) in flagged.iter().zip(&mut states) {
             // The world's warm-start memory is the device's (a step there
             // recorded it last, or one here wrote it).
-            if warm && may_have_friction(&worlds[k]) {
-                match guarded(|| resident.worlds.read_memory(&ctx, k)) {
-                    Ok(m) => {
-                        let entries = m.into_iter().map(|(key, r)| (cpu_id(k, key), r));
-                        self.world_warm[k].reactions.record(entries);
-                    }
-                    Err(Error::Gpu(why)) => trouble = Some(why),
-                    Err(_) => {}
-                }
+            if warm && may_have_friction(w) {
+                let entries = r.worlds.read_memory(ctx, k)?;
+                let entries = entries.into_iter().map(|(key, x)| (cpu_id(k, key), x));
+                self.world_warm[k].reactions.record(entries);
             }
-            let prepared = prepare(&worlds[k], k, dt);
+            let prepared = prepare(w, k, dt);
             let mut item = WorldStep {
-                world: &mut worlds[k],
+                world: w,
                 prepared,
                 warm: &mut self.world_warm[k],
             };
@@ -216,43 +385,45 @@ impl Solver {
             // What the step recorded goes to the device's memory.
             if warm && frictional {
                 let entries = recorded(&item.prepared.scene, &s.friction);
-                let written = guarded(|| resident.worlds.write_memory(&ctx, k, &entries));
-                if let Err(Error::Gpu(why)) = written {
-                    trouble = Some(why);
-                }
+                r.worlds.write_memory(ctx, k, &entries)?;
             }
             reports[k] = s.world;
             repairs.merge(s.repairs);
-            let written = guarded(|| resident.worlds.write_world(&ctx, k, &worlds[k]));
-            if let Err(Error::Gpu(why)) = written {
-                trouble = Some(why);
-            }
+            r.worlds.write_world(ctx, k, w)?;
         }
-        resident.held.clear();
-        resident.held.extend_from_slice(worlds);
         let mut figures = ResidentStep {
             on_device: worlds.len() - flagged.len(),
             on_cpu: flagged.len(),
-            bytes_up: resident.worlds.bytes_up,
-            bytes_back: resident.worlds.bytes_back,
+            bytes_up: r.worlds.bytes_up,
+            bytes_back: r.take_bytes(),
+            submission_steps: 1,
             ..ResidentStep::default()
         };
-        for r in &records {
-            figures.count(r.flags);
+        for x in &records {
+            figures.count(x.flags);
         }
-        if let Some(why) = trouble {
-            // The worlds are stepped; the next step starts on the CPU.
-            self.resident = None;
-            self.fall_back(why);
-        }
-        let cpu_seconds = start.elapsed().as_secs_f64();
-        let mut solve = self.empty_report(Device::of(&ctx));
+        let seconds = [device_seconds, start.elapsed().as_secs_f64()];
+        let report = self.resident_report(ctx, reports, repairs, figures, seconds);
+        Ok((report, flagged.len()))
+    }
+
+    /// A resident step's report: the worlds' figures, `seconds` on the
+    /// device and on the host.
+    fn resident_report(
+        &self,
+        ctx: &GpuContext,
+        worlds: Vec<WorldStepReport>,
+        repairs: Repairs,
+        figures: ResidentStep,
+        [device_seconds, cpu_seconds]: [f64; 2],
+    ) -> StepReport {
+        let mut solve = self.empty_report(Device::of(ctx));
         solve.timings.gpu = device_seconds;
         solve.timings.solve = cpu_seconds;
         solve.timings.total = device_seconds + cpu_seconds;
-        Some(StepReport {
-            unsolved: reports.iter().map(|w| w.unsolved).sum(),
-            worlds: reports,
+        StepReport {
+            unsolved: worlds.iter().map(|w| w.unsolved).sum(),
+            worlds,
             timings: StepTimings {
                 collision: 0.0,
                 solve: solve.timings.total,
@@ -261,30 +432,7 @@ impl Solver {
             solve,
             repairs,
             resident: Some(figures),
-        })
-    }
-
-    /// The device's part of a step: the batch uploaded where the device
-    /// does not hold these worlds, one step, the records and states back.
-    fn device_step(
-        &mut self,
-        ctx: &GpuContext,
-        worlds: &[World],
-        dt: f64,
-    ) -> Result<(Vec<WorldRecord>, crate::gpu::resident::States), Error> {
-        let held = matches!(&self.resident, Some(r) if r.held == worlds);
-        if !held {
-            self.resident = None;
-            let gpu = self.settings.gpu_solve();
-            let tolerance = self.settings.tolerance;
-            let friction = self.resident_friction();
-            self.resident = Some(Resident {
-                worlds: ResidentWorlds::new(ctx, worlds, tolerance, &gpu, friction, test_slots())?,
-                held: Vec::new(),
-            });
         }
-        let r = self.resident.as_ref().expect("uploaded above");
-        r.worlds.step(ctx, dt)
     }
 }
 

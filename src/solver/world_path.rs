@@ -139,8 +139,16 @@ pub struct ResidentStep {
     pub budget: usize,
     /// Bytes uploaded when the batch went to the device (once per batch).
     pub bytes_up: u64,
-    /// Bytes read back per step (states, sleep words, records).
+    /// Bytes read back from the device for this step: the worlds' records
+    /// (80 bytes a world in f64), the states of the worlds it flagged
+    /// (and their warm-start memories), and after a call's last step
+    /// every state (13 scalars and 2 words a body). Several steps of one
+    /// submission share its bytes out; an undone submission's go to the
+    /// first step taken again.
     pub bytes_back: u64,
+    /// Steps in the submission that took this step (1: a submission of its
+    /// own; up to 16, see `world_gpu.rs`); over several steps, the most.
+    pub submission_steps: usize,
 }
 
 /// What pass 2 gives back for one world.
@@ -171,7 +179,8 @@ pub(super) enum SceneResults {
 }
 
 impl ResidentStep {
-    /// Adds another step's counts (the byte figures: the latest step's).
+    /// Adds another step's counts and bytes read back (`bytes_up`: the
+    /// latest step's).
     pub fn add(&mut self, o: &ResidentStep) {
         self.on_device += o.on_device;
         self.on_cpu += o.on_cpu;
@@ -181,7 +190,8 @@ impl ResidentStep {
         self.non_finite += o.non_finite;
         self.budget += o.budget;
         self.bytes_up = o.bytes_up;
-        self.bytes_back = o.bytes_back;
+        self.bytes_back += o.bytes_back;
+        self.submission_steps = self.submission_steps.max(o.submission_steps);
     }
 }
 
@@ -218,8 +228,10 @@ impl Solver {
             if let Some(i) = worlds.iter().position(|w| w.validate("world").is_err()) {
                 return Err(named_error(worlds, i));
             }
-            if let Some(report) = self.step_worlds_resident(worlds, dt) {
-                return Ok(report);
+            let mut stepped = None;
+            let mut keep = |_, r| stepped = Some(r);
+            if self.step_worlds_resident(worlds, dt, 1, &mut keep).0 == 1 {
+                return Ok(stepped.expect("the step was reported"));
             }
         }
         // Checked and collided in one pass over the cores (nothing is
@@ -296,6 +308,80 @@ impl Solver {
                 .for_each(|(z, k)| *z += k);
         }
         Ok(report)
+    }
+}
+
+impl Solver {
+    /// Advances every world by `steps` steps of `dt` seconds, as `steps`
+    /// calls of [`Self::step_worlds`] do (the same trajectory, bit for bit,
+    /// and the same per-world figures), giving each step's report to `observe` with
+    /// its number (from 0) as the step ends; the worlds hold the states
+    /// after the last step when it returns.
+    ///
+    /// On the resident GPU path (`Backend::Gpu`, see `world_gpu.rs`) the
+    /// states stay on the device for the whole call: per step only a small
+    /// fixed record per world comes back (energies, deepest penetration,
+    /// contacts, islands, largest error, awake bodies, flags; 80 bytes in
+    /// f64, [`ResidentStep::bytes_back`]) and the states once, at the end;
+    /// steps go up to 16 to a submission, with no host sync in between.
+    /// To see the states after some step, end a call there: the batch stays
+    /// on the device between calls while the worlds are those it gave back.
+    /// Elsewhere (CPU, other GPU paths) the call is a loop of `step_worlds`.
+    ///
+    /// Device trouble in the middle drops the GPU (a warning) and the CPU
+    /// path goes on from the last good state, the worlds as passed in (the
+    /// states last read back): the steps already reported are taken again
+    /// on the CPU without being reported again, then the rest.
+    ///
+    /// # Errors
+    /// As [`Self::step_worlds`]: [`Error::Invalid`] naming the first bad
+    /// world, its body and the field, or `dt`, and no world moves. With
+    /// `steps` 0 nothing happens (the worlds are not checked).
+    ///
+    /// # Example
+    /// ```
+    /// use lcpbatch::world::generate::{standard_world, WorldKind};
+    /// use lcpbatch::{Settings, Solver};
+    /// let mut worlds = vec![standard_world(WorldKind::Stack, 2, 1)];
+    /// let mut solver = Solver::new(Settings::default()).unwrap();
+    /// let mut energy = Vec::new();
+    /// solver
+    ///     .step_worlds_for(&mut worlds, 0.01, 50, |_, r| {
+    ///         energy.push(r.worlds[0].kinetic + r.worlds[0].potential)
+    ///     })
+    ///     .unwrap();
+    /// assert_eq!(energy.len(), 50);
+    /// ```
+    ///
+    /// See also [`Self::step_worlds`] (one step, the worlds handed back).
+    pub fn step_worlds_for(
+        &mut self,
+        worlds: &mut [World],
+        dt: f64,
+        steps: usize,
+        mut observe: impl FnMut(usize, StepReport),
+    ) -> Result<(), Error> {
+        if !dt.is_finite() || dt <= 0.0 {
+            return Err(Error::invalid(
+                "step",
+                "dt",
+                format!("{dt} is not a positive number"),
+            ));
+        }
+        let (mut reported, mut at) = (0, 0);
+        if self.gpu.is_some() && steps > 0 {
+            if let Some(i) = worlds.iter().position(|w| w.validate("world").is_err()) {
+                return Err(named_error(worlds, i));
+            }
+            (reported, at) = self.step_worlds_resident(worlds, dt, steps, &mut observe);
+        }
+        for step in at..steps {
+            let r = self.step_worlds(worlds, dt)?;
+            if step >= reported {
+                observe(step, r);
+            }
+        }
+        Ok(())
     }
 }
 

@@ -16,7 +16,7 @@ use crate::world::World;
 use crate::{Backend, GpuSettings, Method, Settings, Solver};
 
 /// `kind:size` worlds with μ = 0.5 on every body, restitution 0.
-fn frictional(kind: WorldKind, size: usize, count: usize) -> Vec<World> {
+pub(super) fn frictional(kind: WorldKind, size: usize, count: usize) -> Vec<World> {
     let mut worlds = frictionless(kind, size, count);
     for b in worlds.iter_mut().flat_map(|w| w.bodies.iter_mut()) {
         b.friction = 0.5;
@@ -25,7 +25,7 @@ fn frictional(kind: WorldKind, size: usize, count: usize) -> Vec<World> {
 }
 
 /// Both paths' settings: `method`, warm starts as given.
-fn settings(gpu: GpuSettings, method: FrictionMethod, warm_start: bool) -> Settings {
+pub(super) fn settings(gpu: GpuSettings, method: FrictionMethod, warm_start: bool) -> Settings {
     Settings {
         gpu,
         warm_start,

@@ -27,6 +27,7 @@ mod gpu_pipeline;
 mod gpu_prediction;
 mod gpu_resident;
 mod gpu_resident_friction;
+mod gpu_resident_steps;
 mod gpu_seeds;
 mod gpu_stages;
 mod gpu_stress;

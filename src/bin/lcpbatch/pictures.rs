@@ -98,9 +98,15 @@ impl Film {
             .collect()
     }
 
+    /// Whether the film takes a frame after step number `done` (from 1)
+    /// of `steps`.
+    pub fn wants(&self, done: usize, steps: usize) -> bool {
+        done % self.stride == 0 || done == steps
+    }
+
     /// After step number `done` (from 1) of `steps`, at `time`.
     pub fn record(&mut self, worlds: &[World], done: usize, steps: usize, time: f64) {
-        if done % self.stride == 0 || done == steps {
+        if self.wants(done, steps) {
             let poses = self.poses(worlds);
             self.frames.push((time, poses));
         }

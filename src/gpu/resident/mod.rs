@@ -1,14 +1,21 @@
 //! Worlds resident on the GPU (issue 23): a batch of worlds (restitution 0)
-//! uploaded once and stepped by `shaders/world_step.wgsl`, one submission
-//! per step (dispatches `world_collide`, `world_solve`, and where a world
-//! may have friction rounds of `world_friction`) with nothing read back but
-//! the states and a small record per world.
+//! uploaded once and stepped by `shaders/world_step.wgsl` (dispatches
+//! `world_collide`, `world_solve`, and where a world may have friction
+//! rounds of `world_friction`), up to [`MOST_STEPS`] steps per submission,
+//! with nothing read back per step but a small record per world.
 //!
 //! [`ResidentWorlds::new`] packs the worlds ([`layout`]) and uploads them;
-//! [`ResidentWorlds::step`] runs one step and reads back the per-world
-//! figures and the states; [`ResidentWorlds::read_states`] copies the
-//! states into `World`s; [`ResidentWorlds::write_world`] replaces one
-//! world's state (after the host stepped it on the CPU).
+//! [`ResidentWorlds::steps`] runs `k` steps in one submission and reads
+//! back each step's per-world records; [`ResidentWorlds::restore`] puts
+//! back the state as it was before such a submission;
+//! [`ResidentWorlds::read_states`] and [`ResidentWorlds::read_worlds`]
+//! copy the states (of all worlds, of some) into `World`s;
+//! [`ResidentWorlds::write_world`] replaces one world's state (after the
+//! host stepped it on the CPU).
+//!
+//! Bytes read back per step: [`REC`] scalars and 4 words per world (80
+//! bytes in f64); the states, 13 scalars and 2 words per body, only when
+//! asked.
 //!
 //! Buffers are sized once from the worlds: [`layout::contact_slots`]
 //! contact slots per world (4 per pair that may touch: never reached by
@@ -19,9 +26,14 @@
 //! sweeps' vectors) and 6 per contact slot (this step's reactions and the
 //! warm-start memory). `world_collide` keeps each candidate pair's
 //! manifold in [`layout::contact_slots`] pair records of [`CP`] scalars
-//! per world before it orders the contacts.
+//! per world before it orders the contacts. Several steps per submission
+//! keep a copy of the state, the words and the warm-start memory, and
+//! [`MOST_STEPS`] steps' records (at most 64 MiB).
 
 pub mod layout;
+mod transfer;
+
+pub use transfer::MemoryEntry;
 
 use super::kernel::round_budget;
 use super::layout::{scalars_from_bytes, scalars_to_bytes};
@@ -29,8 +41,8 @@ use super::{GpuContext, GpuSolveSettings, Precision};
 use crate::world::World;
 use crate::Error;
 use layout::{
-    contact_slots, may_have_friction, pack_body_consts, pack_body_state, pack_world_consts,
-    unpack_body_state, BC, BS, CP, FR, REC, WC,
+    contact_slots, may_have_friction, pack_body_consts, pack_body_state, pack_world_consts, BC, CP,
+    FR, REC, WC,
 };
 use std::cell::Cell;
 
@@ -74,27 +86,6 @@ pub struct WorldRecord {
     pub rounds: u32,
 }
 
-/// The states after a step, as read back: per body [`BS`] scalars and 2
-/// sleep words, in world order.
-pub struct States {
-    state: Vec<f64>,
-    sleep: Vec<u32>,
-}
-
-impl States {
-    /// Copies world `k`'s bodies (first body `first`) into `w`.
-    pub fn unpack(&self, first: usize, w: &mut World) {
-        for (j, b) in w.bodies.iter_mut().enumerate() {
-            let at = first + j;
-            unpack_body_state(
-                b,
-                &self.state[at * BS..(at + 1) * BS],
-                &self.sleep[2 * at..2 * at + 2],
-            );
-        }
-    }
-}
-
 /// Offsets of the frictional phase's parts (see `StepParams` in the
 /// shader), 0 where no world may have friction.
 #[derive(Clone, Copy, Debug, Default)]
@@ -105,11 +96,6 @@ struct FrictionAt {
     memory: usize,
 }
 
-/// One entry of a world's warm-start memory on the device: the contact's
-/// id as the shader packs it ([`layout::device_key`]) and its reaction
-/// (r_n, r_t₁, r_t₂).
-pub type MemoryEntry = (u32, [f64; 3]);
-
 /// Loop work per invocation and round of `world_friction`: a quarter of
 /// the loop budget. llvmpipe runs 8 invocations in lockstep and counts
 /// their loop iterations together; worlds in different phases (assembly,
@@ -118,6 +104,36 @@ pub type MemoryEntry = (u32, [f64; 3]);
 /// trajectory by 3 µm, alone it kept it to 2e-15 m).
 fn friction_budget(budget: u32) -> u32 {
     (budget / 4).max(1)
+}
+
+/// The state, the words and the warm-start memory as they were before a
+/// submission of several steps.
+struct Saved {
+    state: wgpu::Buffer,
+    words: wgpu::Buffer,
+    memory: wgpu::Buffer,
+}
+
+/// Most steps in one submission ([`ResidentWorlds::steps`]).
+pub const MOST_STEPS: usize = 16;
+
+/// The per-world records of one step from its [`REC`] scalars per world
+/// (`rec`) and its 4 words per world (`out`: contacts, moving bodies,
+/// flags, islands).
+fn records_of(rec: &[f64], out: &[u32]) -> Vec<WorldRecord> {
+    (rec.chunks(REC).zip(out.chunks(4)))
+        .map(|(r, o)| WorldRecord {
+            flags: o[2],
+            contacts: o[0] as usize,
+            islands: o[3] as usize,
+            kinetic: r[0],
+            potential: r[1],
+            max_penetration: r[2],
+            max_error: r[3],
+            awake: r[4] as usize,
+            rounds: r[5] as u32,
+        })
+        .collect()
 }
 
 /// A batch of worlds on the device (see the module docs).
@@ -142,8 +158,14 @@ pub struct ResidentWorlds {
     words: wgpu::Buffer,
     records: wgpu::Buffer,
     bind: wgpu::BindGroup,
-    /// Bytes read back per step.
-    pub bytes_back: u64,
+    /// Each step's records within a submission ([`Self::steps`]): per step
+    /// the records, then the worlds' 4 words; mapped in place.
+    history: wgpu::Buffer,
+    most_steps: usize,
+    /// The copies [`Self::restore`] puts back (None: one step per
+    /// submission).
+    saved: Option<Saved>,
+    bytes_read: Cell<u64>,
     /// Bytes uploaded by [`Self::new`].
     pub bytes_up: u64,
 }
@@ -191,8 +213,7 @@ impl ResidentWorlds {
         let n = worlds.len();
         let contacts_at = 6 * bodies;
         let mut scratch_len = contacts_at + n * slots * CP;
-        let out_at = 2 * bodies;
-        let keys_at = out_at + 4 * n;
+        let keys_at = 2 * bodies + 4 * n;
         let fstate_at = keys_at + 4 * n * slots;
         let mut words_len = fstate_at + 4 * n;
         let friction = friction.filter(|_| worlds.iter().any(may_have_friction));
@@ -260,9 +281,28 @@ impl ResidentWorlds {
                     &records,
                 ],
             );
+            // Each step's records of a submission: up to MOST_STEPS, within
+            // 64 MiB.
+            let stride = (n * (REC * sb + 16)) as u64;
+            let most_steps = ((64 << 20) / stride).clamp(1, MOST_STEPS as u64);
+            let history = ctx.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("world step records"),
+                size: most_steps * stride,
+                usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+            let copy = |label, b: &wgpu::Buffer| ctx.storage_zeroed(label, b.size());
+            let saved = (most_steps > 1).then(|| Saved {
+                state: copy("saved state", &state_buffer),
+                words: copy("saved words", &words_buffer),
+                memory: ctx.storage_zeroed("saved memory", (3 * n * slots * sb) as u64),
+            });
             let r = ResidentWorlds {
                 bytes_up: ((consts.len() + state.len()) * sb + words.len() * 4 + n * 16) as u64,
-                bytes_back: (((state.len() + n * REC) * sb) + keys_at * 4) as u64,
+                history,
+                most_steps: most_steps as usize,
+                saved,
+                bytes_read: Cell::new(0),
                 first,
                 slots,
                 pairs_at,
@@ -330,15 +370,38 @@ impl ResidentWorlds {
         ctx.queue.write_buffer(&self.params, 0, &bytes);
     }
 
-    /// One step of `dt` for every world held: one submission, then the
-    /// per-world records and the states read back.
+    /// One step of `dt` for every world held ([`Self::steps`] with `k` 1):
+    /// the per-world records and the bytes read back.
     ///
     /// # Errors
     /// [`Error::Gpu`] for device trouble.
-    pub fn step(&self, ctx: &GpuContext, dt: f64) -> Result<(Vec<WorldRecord>, States), Error> {
+    pub fn step(&self, ctx: &GpuContext, dt: f64) -> Result<(Vec<WorldRecord>, u64), Error> {
+        let before = self.bytes_read.get();
+        let mut records = self.steps(ctx, dt, 1)?;
+        let records = records.pop().expect("one step");
+        Ok((records, self.bytes_read.get() - before))
+    }
+
+    /// `k` steps of `dt` for every world held (1 to [`Self::most_steps`])
+    /// in one submission, nothing read back but each step's records, once
+    /// (per world [`REC`] scalars and 4 words a step; the states stay on
+    /// the device: [`Self::read_states`]). Each step is dispatched as
+    /// [`Self::step`] dispatches it and its records copied aside. With `k`
+    /// > 1 the state, the words and the warm-start memory are first copied
+    /// aside on the device ([`Self::restore`] puts them back): a world
+    /// flagged in a step keeps its state, and the steps after it step it on
+    /// from there, so such a submission must be redone step by step.
+    ///
+    /// # Errors
+    /// [`Error::Gpu`] for device trouble.
+    pub fn steps(
+        &self,
+        ctx: &GpuContext,
+        dt: f64,
+        k: usize,
+    ) -> Result<Vec<Vec<WorldRecord>>, Error> {
+        let k = k.clamp(1, self.most_steps);
         let n = self.count();
-        let bodies = self.first[n];
-        let sb = self.precision.bytes();
         let stages = ctx.pipelines()?;
         let [collide, solve] = stages.world_step(ctx)?;
         let rounds = self.rounds.get();
@@ -347,51 +410,107 @@ impl ResidentWorlds {
             _ => Some(stages.world_friction(ctx)?),
         };
         let groups = (n as u32).div_ceil(super::pipelines::WORKGROUP);
-        let stepped = ctx.scoped("resident world step", || {
+        let (rec_bytes, stride) = self.record_bytes();
+        let out_at = (2 * self.first[n] * 4) as u64;
+        let records = ctx.scoped("resident world steps", || {
             self.write_params(ctx, dt);
-            let mut encoder = ctx.encoder("resident world step");
-            for stage in [collide, solve] {
-                self.record(&mut encoder, stage, groups);
+            let mut encoder = ctx.encoder("resident world steps");
+            if k > 1 {
+                self.save(&mut encoder);
             }
-            for stage in friction
-                .iter()
-                .flat_map(|s| std::iter::repeat_n(*s, rounds as usize))
-            {
-                self.record(&mut encoder, stage, groups);
+            for j in 0..k as u64 {
+                for stage in [collide, solve] {
+                    self.record(&mut encoder, stage, groups);
+                }
+                for stage in friction
+                    .iter()
+                    .flat_map(|s| std::iter::repeat_n(*s, rounds as usize))
+                {
+                    self.record(&mut encoder, stage, groups);
+                }
+                let at = j * stride;
+                encoder.copy_buffer_to_buffer(&self.records, 0, &self.history, at, rec_bytes);
+                let words = 16 * n as u64;
+                let to = at + rec_bytes;
+                encoder.copy_buffer_to_buffer(&self.words, out_at, &self.history, to, words);
             }
-            let words_back = ((2 * bodies + 4 * n) * 4) as u64;
-            let reads = [
-                (&self.state, bodies as u64 * BS as u64 * sb),
-                (&self.words, words_back),
-                (&self.records, (n * REC) as u64 * sb),
-            ];
+            let reads = [(&self.history, k as u64 * stride)];
             ctx.submit_and_map(encoder, &reads, |v| {
-                let state = scalars_from_bytes(v[0], self.precision);
-                let words: Vec<u32> = bytemuck::pod_collect_to_vec(v[1]);
-                let rec = scalars_from_bytes(v[2], self.precision);
-                let out = &words[2 * bodies..];
-                let records: Vec<WorldRecord> = (0..n)
-                    .map(|k| {
-                        let r = &rec[k * REC..(k + 1) * REC];
-                        WorldRecord {
-                            flags: out[4 * k + 2],
-                            contacts: out[4 * k] as usize,
-                            islands: out[4 * k + 3] as usize,
-                            kinetic: r[0],
-                            potential: r[1],
-                            max_penetration: r[2],
-                            max_error: r[3],
-                            awake: r[4] as usize,
-                            rounds: r[5] as u32,
-                        }
+                (v[0].chunks(stride as usize))
+                    .map(|b| {
+                        let rec = scalars_from_bytes(&b[..rec_bytes as usize], self.precision);
+                        let out: Vec<u32> = bytemuck::pod_collect_to_vec(&b[rec_bytes as usize..]);
+                        records_of(&rec, &out)
                     })
-                    .collect();
-                let mut sleep = words;
-                sleep.truncate(2 * bodies);
-                (records, States { state, sleep })
+                    .collect()
             })
         })??;
-        Ok(stepped)
+        self.bytes_read
+            .set(self.bytes_read.get() + k as u64 * stride);
+        Ok(records)
+    }
+
+    /// Bytes of one step's records: the [`REC`] scalars of every world, and
+    /// with its 4 words.
+    fn record_bytes(&self) -> (u64, u64) {
+        let n = self.count() as u64;
+        let rec = n * REC as u64 * self.precision.bytes();
+        (rec, rec + 16 * n)
+    }
+
+    /// Most steps of one submission ([`Self::steps`]): 16, fewer where
+    /// their records would pass 64 MiB.
+    pub fn most_steps(&self) -> usize {
+        self.most_steps
+    }
+
+    /// Bytes read back from the device since the batch was uploaded
+    /// (records, states, warm-start memories).
+    pub fn bytes_read(&self) -> u64 {
+        self.bytes_read.get()
+    }
+
+    /// Records the copies of the state, the words and the warm-start
+    /// memory into `saved` (before a submission of several steps).
+    fn save(&self, encoder: &mut wgpu::CommandEncoder) {
+        let s = self
+            .saved
+            .as_ref()
+            .expect("kept where several steps go in one submission");
+        encoder.copy_buffer_to_buffer(&self.state, 0, &s.state, 0, self.state.size());
+        encoder.copy_buffer_to_buffer(&self.words, 0, &s.words, 0, self.words.size());
+        if let Some((at, len)) = self.memory_range() {
+            encoder.copy_buffer_to_buffer(&self.scratch, at, &s.memory, 0, len);
+        }
+    }
+
+    /// Puts back the state, the words and the warm-start memory as they were
+    /// before the last submission of several steps ([`Self::steps`]).
+    ///
+    /// # Errors
+    /// [`Error::Gpu`] for device trouble.
+    pub fn restore(&self, ctx: &GpuContext) -> Result<(), Error> {
+        let s = self
+            .saved
+            .as_ref()
+            .expect("kept where several steps go in one submission");
+        ctx.scoped("restoring resident worlds", || {
+            let mut encoder = ctx.encoder("restore");
+            encoder.copy_buffer_to_buffer(&s.state, 0, &self.state, 0, self.state.size());
+            encoder.copy_buffer_to_buffer(&s.words, 0, &self.words, 0, self.words.size());
+            if let Some((at, len)) = self.memory_range() {
+                encoder.copy_buffer_to_buffer(&s.memory, 0, &self.scratch, at, len);
+            }
+            ctx.queue.submit([encoder.finish()]);
+        })
+    }
+
+    /// Where the warm-start reactions are in `scratch` (bytes), None where
+    /// no world may have friction.
+    fn memory_range(&self) -> Option<(u64, u64)> {
+        let sb = self.precision.bytes();
+        let len = (3 * self.count() * self.slots) as u64 * sb;
+        (self.at.region != 0).then_some((self.at.memory_r as u64 * sb, len))
     }
 
     /// Rounds of `world_friction` per step (0: no world may have friction).
@@ -456,144 +575,8 @@ impl ResidentWorlds {
         pass.dispatch_workgroups(groups.max(1), 1, 1);
     }
 
-    /// The states held, copied into `worlds` (the batch uploaded, in
-    /// order): bit for bit what was uploaded when no step ran.
-    ///
-    /// # Errors
-    /// [`Error::Invalid`] where `worlds` is not the batch's shape;
-    /// [`Error::Gpu`] for device trouble.
-    #[cfg_attr(
-        not(test),
-        allow(
-            dead_code,
-            reason = "the states come back with every step; tests read them"
-        )
-    )]
-    pub fn read_states(&self, ctx: &GpuContext, worlds: &mut [World]) -> Result<(), Error> {
-        let n = self.count();
-        let shape_differs = worlds.len() != n
-            || (worlds.iter().enumerate()).any(|(k, w)| w.bodies.len() != self.bodies_of(k));
-        if shape_differs {
-            return Err(Error::invalid(
-                "read_states",
-                "worlds",
-                "not the batch the device holds".to_string(),
-            ));
-        }
-        let bodies = self.first[n];
-        let sb = self.precision.bytes();
-        let states = ctx.scoped("reading resident states", || {
-            let reads = [
-                (&self.state, bodies as u64 * BS as u64 * sb),
-                (&self.words, (2 * bodies * 4) as u64),
-            ];
-            ctx.submit_and_map(ctx.encoder("read states"), &reads, |v| States {
-                state: scalars_from_bytes(v[0], self.precision),
-                sleep: bytemuck::pod_collect_to_vec(v[1]),
-            })
-        })??;
-        for (k, w) in worlds.iter_mut().enumerate() {
-            states.unpack(self.first[k], w);
-        }
-        Ok(())
-    }
-
     /// Bodies of world `k`.
-    #[cfg_attr(not(test), allow(dead_code, reason = "read_states' check"))]
     fn bodies_of(&self, k: usize) -> usize {
         self.first[k + 1] - self.first[k]
-    }
-
-    /// First body of world `k` in the batch.
-    pub fn first_body(&self, k: usize) -> usize {
-        self.first[k]
-    }
-
-    /// World `k`'s warm-start memory on the device: per entry the id as
-    /// the shader packs it ([`layout::device_key`]) and the reaction
-    /// (empty where no world may have friction).
-    ///
-    /// # Errors
-    /// [`Error::Gpu`] for device trouble.
-    pub fn read_memory(&self, ctx: &GpuContext, k: usize) -> Result<Vec<MemoryEntry>, Error> {
-        if self.at.region == 0 {
-            return Ok(Vec::new());
-        }
-        let sb = self.precision.bytes();
-        let ids_at = ((self.at.memory + k * (self.slots + 1)) * 4) as u64;
-        let ids_len = ((self.slots + 1) * 4) as u64;
-        let r_at = (self.at.memory_r + 3 * k * self.slots) as u64 * sb;
-        let r_len = (3 * self.slots) as u64 * sb;
-        ctx.scoped("reading a warm-start memory", || {
-            // Copies of the two ranges: reads start at a buffer's first byte.
-            let ids = ctx.storage_zeroed("memory ids", ids_len);
-            let rs = ctx.storage_zeroed("memory reactions", r_len);
-            let mut encoder = ctx.encoder("read memory");
-            encoder.copy_buffer_to_buffer(&self.words, ids_at, &ids, 0, ids_len);
-            encoder.copy_buffer_to_buffer(&self.scratch, r_at, &rs, 0, r_len);
-            ctx.submit_and_map(encoder, &[(&ids, ids_len), (&rs, r_len)], |v| {
-                let words: Vec<u32> = bytemuck::pod_collect_to_vec(v[0]);
-                let r = scalars_from_bytes(v[1], self.precision);
-                let n = (words[0] as usize).min(self.slots);
-                (0..n)
-                    .map(|e| (words[1 + e], [r[3 * e], r[3 * e + 1], r[3 * e + 2]]))
-                    .collect()
-            })
-        })?
-    }
-
-    /// Replaces world `k`'s warm-start memory on the device with `entries`
-    /// (a step on the CPU recorded them; past the world's contact slots
-    /// they are cut: such a world overflows its slots and is stepped on the
-    /// CPU). Nothing where no world may have friction.
-    ///
-    /// # Errors
-    /// [`Error::Gpu`] for device trouble.
-    pub fn write_memory(
-        &self,
-        ctx: &GpuContext,
-        k: usize,
-        entries: &[MemoryEntry],
-    ) -> Result<(), Error> {
-        if self.at.region == 0 {
-            return Ok(());
-        }
-        let kept = &entries[..entries.len().min(self.slots)];
-        let mut ids = vec![kept.len() as u32];
-        ids.extend(kept.iter().map(|e| e.0));
-        let r: Vec<f64> = kept.iter().flat_map(|e| e.1).collect();
-        let ids_at = ((self.at.memory + k * (self.slots + 1)) * 4) as u64;
-        let r_at = (self.at.memory_r + 3 * k * self.slots) as u64 * self.precision.bytes();
-        ctx.scoped("writing a warm-start memory", || {
-            ctx.queue
-                .write_buffer(&self.words, ids_at, bytemuck::cast_slice(&ids));
-            if !r.is_empty() {
-                let bytes = scalars_to_bytes(&r, self.precision);
-                ctx.queue.write_buffer(&self.scratch, r_at, &bytes);
-            }
-        })
-    }
-
-    /// Replaces world `k`'s state on the device with `w`'s (the same
-    /// bodies; stepped on the CPU).
-    ///
-    /// # Errors
-    /// [`Error::Gpu`] for device trouble.
-    pub fn write_world(&self, ctx: &GpuContext, k: usize, w: &World) -> Result<(), Error> {
-        let (mut state, mut sleep) = (Vec::new(), Vec::new());
-        for b in &w.bodies {
-            pack_body_state(b, &mut state, &mut sleep);
-        }
-        let at = self.first[k] as u64;
-        let sb = self.precision.bytes();
-        ctx.scoped("writing a resident world", || {
-            let q = &ctx.queue;
-            q.write_buffer(
-                &self.state,
-                at * BS as u64 * sb,
-                &scalars_to_bytes(&state, self.precision),
-            );
-            q.write_buffer(&self.words, at * 8, bytemuck::cast_slice(&sleep));
-        })
     }
 }
