@@ -357,9 +357,9 @@ fn load_velocities(w: u32) {
 //
 // The warm-start memory is the world's record (scalars 6 and 7): a hash of
 // last step's contact ids (a, b, feature, in order) and its bases (bit c:
-// contact c basic, c < 32). The bases are hints where this step's ids hash
-// alike, as the CPU path's memory by id: every answer passes the door's
-// check whatever basis it came from.
+// contact c basic, c < 32). With `sp.warm_bases` the bases are hints where
+// this step's ids hash alike, as the CPU path's memory by id: every answer
+// passes the door's check whatever basis it came from.
 @compute @workgroup_size(64)
 fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
     let w = gid.x;
@@ -435,7 +435,7 @@ fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
     }
     // Per island: assembly, the warm basis or Lemke, check, impulses.
     let rec = w * REC;
-    let warm = records[rec + 6u] == Scalar(ids);
+    let warm = sp.warm_bases != 0u && records[rec + 6u] == Scalar(ids);
     let hints = u32(records[rec + 7u]);
     var bases = 0u;
     var max_error = Scalar(0.0);

@@ -97,6 +97,9 @@ struct StepParams {
     // records per world (SLOTS per candidate pair).
     pairs_at: u32,
     pair_slots: u32,
+    // 1: world_solve tries last step's bases first (the CPU path's
+    // warm_settle: warm starts on, a method that predicts).
+    warm_bases: u32,
     dt: Scalar,
     // The door's final check: lcp_error <= tolerance.
     tolerance: Scalar,

@@ -46,7 +46,9 @@
 //! and what that step recorded goes back. Other friction methods (the
 //! exact Coulomb default, `apgd`) take the other paths.
 //!
-//! No warm start for the frictionless islands: Lemke starts from the empty
+//! Frictionless islands start from last step's basis (`world_solve`'s
+//! `warm_basis`, the twin of `world_cpu.rs`'s `warm_settle`) where
+//! `warm_start` is on and the method predicts; else Lemke from the empty
 //! basis every step.
 
 use std::time::Instant;
@@ -269,10 +271,13 @@ impl Solver {
         self.resident = None;
         let gpu = self.settings.gpu_solve();
         let tolerance = self.settings.tolerance;
+        // The CPU path's `warm_settle` runs where warm starts are on and
+        // the method predicts (`gpu.predict`: not Lemke).
+        let warm = self.settings.warm_start && gpu.predict;
         let friction = self.resident_friction();
         let slots = test_slots();
         self.resident = Some(Resident {
-            worlds: ResidentWorlds::new(ctx, worlds, tolerance, &gpu, friction, slots)?,
+            worlds: ResidentWorlds::new(ctx, worlds, tolerance, &gpu, warm, friction, slots)?,
             held: worlds.to_vec(),
             next: 1,
             counted: 0,

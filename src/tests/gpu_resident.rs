@@ -194,7 +194,8 @@ fn a_warm_basis_that_no_longer_holds_is_set_aside() {
     let ctx = f64_context();
     let worlds = frictionless(WorldKind::Stack, 4, 2);
     let settings = Settings::default();
-    let r = ResidentWorlds::new(&ctx, &worlds, 1e-8, &settings.gpu_solve(), None, None).unwrap();
+    let r =
+        ResidentWorlds::new(&ctx, &worlds, 1e-8, &settings.gpu_solve(), true, None, None).unwrap();
     let mut on_gpu = worlds.clone();
     let mut on_cpu = worlds;
     let mut c = solver(Backend::Cpu, GpuSettings::default());
@@ -206,15 +207,13 @@ fn a_warm_basis_that_no_longer_holds_is_set_aside() {
                 r.write_world(&ctx, k, w).unwrap();
             }
         }
-        let (records, states) = r.step(&ctx, 0.01).unwrap();
+        let (records, _) = r.step(&ctx, 0.01).unwrap();
         c.step_worlds(&mut on_cpu, 0.01).unwrap();
         assert!(
             records.iter().all(|x| x.flags == 0),
             "step {step}: {records:?}"
         );
-        for (k, w) in on_gpu.iter_mut().enumerate() {
-            states.unpack(r.first_body(k), w);
-        }
+        r.read_states(&ctx, &mut on_gpu).unwrap();
         let d = max_distance(&on_gpu, &on_cpu);
         assert!(d < 1e-9, "step {step}: positions differ by {d} m");
     }
@@ -240,7 +239,8 @@ fn states_come_back_bit_for_bit() {
     worlds[0].bodies[2].quiet_steps = 9;
     worlds[2].bodies[1].orientation = [0.1, 0.2, 0.3, 0.9];
     let settings = Settings::default();
-    let r = ResidentWorlds::new(&ctx, &worlds, 1e-8, &settings.gpu_solve(), None, None).unwrap();
+    let r =
+        ResidentWorlds::new(&ctx, &worlds, 1e-8, &settings.gpu_solve(), true, None, None).unwrap();
     let mut back = worlds.clone();
     for b in back.iter_mut().flat_map(|w| w.bodies.iter_mut()) {
         b.position = [0.0; 3];
@@ -262,7 +262,16 @@ fn a_world_past_its_contact_slots_is_flagged_and_stepped_on_the_cpu() {
     // Stack of 2 at rest: 8 contacts; 6 slots cannot hold them.
     let worlds = frictionless(WorldKind::Stack, 2, 2);
     let settings = Settings::default();
-    let r = ResidentWorlds::new(&ctx, &worlds, 1e-8, &settings.gpu_solve(), None, Some(6)).unwrap();
+    let r = ResidentWorlds::new(
+        &ctx,
+        &worlds,
+        1e-8,
+        &settings.gpu_solve(),
+        true,
+        None,
+        Some(6),
+    )
+    .unwrap();
     let (records, _) = r.step(&ctx, 0.01).unwrap();
     assert!(records.iter().all(|x| x.flags & flags::CONTACTS_FULL != 0));
     // The device kept the state of a flagged world.
@@ -302,7 +311,8 @@ fn resident_phase_times() {
     let ctx = f64_context();
     let worlds = frictionless(WorldKind::Stack, 4, 1000);
     let settings = Settings::default();
-    let r = ResidentWorlds::new(&ctx, &worlds, 1e-8, &settings.gpu_solve(), None, None).unwrap();
+    let r =
+        ResidentWorlds::new(&ctx, &worlds, 1e-8, &settings.gpu_solve(), true, None, None).unwrap();
     r.time_phases(&ctx, 0.01).unwrap();
     let mut rows = Vec::new();
     for step in 0..20 {

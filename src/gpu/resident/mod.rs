@@ -106,11 +106,13 @@ fn friction_budget(budget: u32) -> u32 {
     (budget / 4).max(1)
 }
 
-/// The state, the words and the warm-start memory as they were before a
-/// submission of several steps.
+/// The state, the words, the records (whose last two scalars are
+/// `world_solve`'s warm basis) and the warm-start memory as they were
+/// before a submission of several steps.
 struct Saved {
     state: wgpu::Buffer,
     words: wgpu::Buffer,
+    records: wgpu::Buffer,
     memory: wgpu::Buffer,
 }
 
@@ -148,6 +150,9 @@ pub struct ResidentWorlds {
     budget: u32,
     tolerances: [f64; 3],
     friction: Option<ResidentFriction>,
+    /// `world_solve` tries last step's bases first (the CPU path's
+    /// `warm_settle`: `warm_start` on, a method that predicts).
+    warm_bases: bool,
     at: FrictionAt,
     /// Rounds of `world_friction` per step (0: none).
     rounds: Cell<u32>,
@@ -174,7 +179,9 @@ impl ResidentWorlds {
     /// Uploads `worlds` (each within [`layout::out_of_scope`]'s limits,
     /// checked by the caller) to `ctx`. `tolerance`: the door's final
     /// check; `gpu`: Lemke's pivot tolerance and cap, the loop budget;
-    /// `friction`: the frictional phase's settings (None: a world with
+    /// `warm_bases`: frictionless islands start from last step's basis
+    /// where their contacts are last step's (else Lemke from the empty
+    /// basis every step); `friction`: the frictional phase's settings (None: a world with
     /// friction is flagged NOT_SOLVED); `slots`: contact slots per world
     /// (None: [`contact_slots`]).
     ///
@@ -187,6 +194,7 @@ impl ResidentWorlds {
         worlds: &[World],
         tolerance: f64,
         gpu: &GpuSolveSettings,
+        warm_bases: bool,
         friction: Option<ResidentFriction>,
         slots: Option<usize>,
     ) -> Result<Self, Error> {
@@ -295,6 +303,7 @@ impl ResidentWorlds {
             let saved = (most_steps > 1).then(|| Saved {
                 state: copy("saved state", &state_buffer),
                 words: copy("saved words", &words_buffer),
+                records: copy("saved records", &records),
                 memory: ctx.storage_zeroed("saved memory", (3 * n * slots * sb) as u64),
             });
             let r = ResidentWorlds {
@@ -310,6 +319,7 @@ impl ResidentWorlds {
                 budget,
                 tolerances: [tolerance, lemke.pivot_tol, lemke.max_pivots as f64],
                 friction,
+                warm_bases,
                 at,
                 rounds: Cell::new(rounds),
                 precision,
@@ -342,7 +352,7 @@ impl ResidentWorlds {
             warm_start: false,
         });
         let at = self.at;
-        let ints: [u32; 18] = [
+        let ints: [u32; 20] = [
             n as u32,
             self.slots as u32,
             (n * WC) as u32,
@@ -361,6 +371,8 @@ impl ResidentWorlds {
             friction_budget(self.budget),
             self.pairs_at as u32,
             self.pair_slots as u32,
+            u32::from(self.warm_bases),
+            0,
         ];
         let [tol, pivot, pivots] = self.tolerances;
         let mut bytes = bytemuck::cast_slice(&ints).to_vec();
@@ -470,8 +482,8 @@ impl ResidentWorlds {
         self.bytes_read.get()
     }
 
-    /// Records the copies of the state, the words and the warm-start
-    /// memory into `saved` (before a submission of several steps).
+    /// Records the copies of the state, the words, the records and the
+    /// warm-start memory into `saved` (before a submission of several steps).
     fn save(&self, encoder: &mut wgpu::CommandEncoder) {
         let s = self
             .saved
@@ -479,13 +491,15 @@ impl ResidentWorlds {
             .expect("kept where several steps go in one submission");
         encoder.copy_buffer_to_buffer(&self.state, 0, &s.state, 0, self.state.size());
         encoder.copy_buffer_to_buffer(&self.words, 0, &s.words, 0, self.words.size());
+        encoder.copy_buffer_to_buffer(&self.records, 0, &s.records, 0, self.records.size());
         if let Some((at, len)) = self.memory_range() {
             encoder.copy_buffer_to_buffer(&self.scratch, at, &s.memory, 0, len);
         }
     }
 
-    /// Puts back the state, the words and the warm-start memory as they were
-    /// before the last submission of several steps ([`Self::steps`]).
+    /// Puts back the state, the words, the records and the warm-start
+    /// memory as they were before the last submission of several steps
+    /// ([`Self::steps`]).
     ///
     /// # Errors
     /// [`Error::Gpu`] for device trouble.
@@ -498,6 +512,7 @@ impl ResidentWorlds {
             let mut encoder = ctx.encoder("restore");
             encoder.copy_buffer_to_buffer(&s.state, 0, &self.state, 0, self.state.size());
             encoder.copy_buffer_to_buffer(&s.words, 0, &self.words, 0, self.words.size());
+            encoder.copy_buffer_to_buffer(&s.records, 0, &self.records, 0, self.records.size());
             if let Some((at, len)) = self.memory_range() {
                 encoder.copy_buffer_to_buffer(&s.memory, 0, &self.scratch, at, len);
             }
