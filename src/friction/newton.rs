@@ -23,8 +23,6 @@
 //! ½‖Φ‖² decides the step length (Armijo, halving).
 
 use super::problem::FrictionProblem;
-#[cfg(test)]
-use super::sparse::SPARSE_FROM;
 use super::sparse::{
     blocks_dot, cholesky_in, lower_envelope, lu_envelope, product_sparse, Pattern,
 };

@@ -3,6 +3,7 @@
 //! Siconos answers of the suite depend on them).
 
 use super::*;
+use crate::friction::sparse::SPARSE_FROM;
 use crate::friction::workspace::{dot, dots};
 
 /// A chain of `k` contacts between `k + 1` bodies (contact i between

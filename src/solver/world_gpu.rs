@@ -47,7 +47,8 @@
 //! exact Coulomb default, `apgd`) take the other paths.
 //!
 //! Frictionless islands start from last step's basis (`world_solve`'s
-//! `warm_basis`, the twin of `world_cpu.rs`'s `warm_settle`) where
+//! `warm_basis`, the twin of `world_cpu.rs`'s `warm_settle` without its
+//! feasibility test before the check) where
 //! `warm_start` is on and the method predicts; else Lemke from the empty
 //! basis every step.
 
@@ -350,7 +351,7 @@ impl Solver {
         let start = Instant::now();
         let warm = self.settings.warm_start && self.resident_friction().is_some();
         let r = self.resident.as_mut().expect("held");
-        let (records, _) = r.worlds.step(ctx, dt)?;
+        let records = r.worlds.step(ctx, dt)?;
         let device_seconds = start.elapsed().as_secs_f64();
         let start = Instant::now();
         r.worlds

@@ -215,19 +215,10 @@ impl Solver {
     /// [`Error::Invalid`] naming the first bad world, its body and the
     /// field, or `dt`; no world moves then.
     pub fn step_worlds(&mut self, worlds: &mut [World], dt: f64) -> Result<StepReport, Error> {
-        if !dt.is_finite() || dt <= 0.0 {
-            return Err(Error::invalid(
-                "step",
-                "dt",
-                format!("{dt} is not a positive number"),
-            ));
-        }
         // The resident GPU path where the batch is in its scope
         // (`world_gpu.rs`), the worlds checked first.
+        check_step(worlds, dt, self.gpu.is_some())?;
         if self.gpu.is_some() {
-            if let Some(i) = worlds.iter().position(|w| w.validate("world").is_err()) {
-                return Err(named_error(worlds, i));
-            }
             let mut stepped = None;
             let mut keep = |_, r| stepped = Some(r);
             if self.step_worlds_resident(worlds, dt, 1, &mut keep).0 == 1 {
@@ -361,18 +352,10 @@ impl Solver {
         steps: usize,
         mut observe: impl FnMut(usize, StepReport),
     ) -> Result<(), Error> {
-        if !dt.is_finite() || dt <= 0.0 {
-            return Err(Error::invalid(
-                "step",
-                "dt",
-                format!("{dt} is not a positive number"),
-            ));
-        }
+        let resident = self.gpu.is_some() && steps > 0;
+        check_step(worlds, dt, resident)?;
         let (mut reported, mut at) = (0, 0);
-        if self.gpu.is_some() && steps > 0 {
-            if let Some(i) = worlds.iter().position(|w| w.validate("world").is_err()) {
-                return Err(named_error(worlds, i));
-            }
+        if resident {
             (reported, at) = self.step_worlds_resident(worlds, dt, steps, &mut observe);
         }
         for step in at..steps {
@@ -382,6 +365,26 @@ impl Solver {
             }
         }
         Ok(())
+    }
+}
+
+/// The checks before any step: `dt` finite and > 0, and with `worlds_too`
+/// every world (the first bad one named; the CPU path checks them in its
+/// collision pass instead).
+fn check_step(worlds: &[World], dt: f64, worlds_too: bool) -> Result<(), Error> {
+    if !dt.is_finite() || dt <= 0.0 {
+        return Err(Error::invalid(
+            "step",
+            "dt",
+            format!("{dt} is not a positive number"),
+        ));
+    }
+    match worlds_too {
+        true => match worlds.iter().position(|w| w.validate("world").is_err()) {
+            Some(i) => Err(named_error(worlds, i)),
+            None => Ok(()),
+        },
+        false => Ok(()),
     }
 }
 

@@ -207,7 +207,7 @@ fn a_warm_basis_that_no_longer_holds_is_set_aside() {
                 r.write_world(&ctx, k, w).unwrap();
             }
         }
-        let (records, _) = r.step(&ctx, 0.01).unwrap();
+        let records = r.step(&ctx, 0.01).unwrap();
         c.step_worlds(&mut on_cpu, 0.01).unwrap();
         assert!(
             records.iter().all(|x| x.flags == 0),
@@ -272,7 +272,7 @@ fn a_world_past_its_contact_slots_is_flagged_and_stepped_on_the_cpu() {
         Some(6),
     )
     .unwrap();
-    let (records, _) = r.step(&ctx, 0.01).unwrap();
+    let records = r.step(&ctx, 0.01).unwrap();
     assert!(records.iter().all(|x| x.flags & flags::CONTACTS_FULL != 0));
     // The device kept the state of a flagged world.
     let mut back = worlds.clone();

@@ -383,15 +383,12 @@ impl ResidentWorlds {
     }
 
     /// One step of `dt` for every world held ([`Self::steps`] with `k` 1):
-    /// the per-world records and the bytes read back.
+    /// the per-world records.
     ///
     /// # Errors
     /// [`Error::Gpu`] for device trouble.
-    pub fn step(&self, ctx: &GpuContext, dt: f64) -> Result<(Vec<WorldRecord>, u64), Error> {
-        let before = self.bytes_read.get();
-        let mut records = self.steps(ctx, dt, 1)?;
-        let records = records.pop().expect("one step");
-        Ok((records, self.bytes_read.get() - before))
+    pub fn step(&self, ctx: &GpuContext, dt: f64) -> Result<Vec<WorldRecord>, Error> {
+        Ok(self.steps(ctx, dt, 1)?.pop().expect("one step"))
     }
 
     /// `k` steps of `dt` for every world held (1 to [`Self::most_steps`])
