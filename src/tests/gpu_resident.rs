@@ -37,7 +37,7 @@ fn solver(backend: Backend, gpu: GpuSettings) -> Solver {
 }
 
 /// Settings of both paths' solvers: warm starts, no warning lines.
-fn settings(backend: Backend, gpu: GpuSettings) -> Settings {
+pub(super) fn settings(backend: Backend, gpu: GpuSettings) -> Settings {
     Settings {
         gpu,
         warm_start: true,

@@ -9,7 +9,7 @@
 //! (the CPU path takes the call again from the worlds passed in). Skipped
 //! without an f64 adapter (the CPU test always runs).
 
-use super::gpu_resident::{f64_gpu, frictionless, max_distance};
+use super::gpu_resident::{f64_gpu, frictionless, max_distance, settings};
 use super::gpu_resident_friction::{frictional, settings as friction_settings};
 use crate::friction::FrictionMethod;
 use crate::gpu::resident::layout::flags;
@@ -18,17 +18,7 @@ use crate::solver::world_gpu::{accepted, set_test_slots};
 use crate::world::generate::WorldKind;
 use crate::world::World;
 use crate::world::WorldStepReport;
-use crate::{Backend, GpuSettings, Method, Settings, Solver, StepReport};
-
-/// Frictionless settings on `backend`: warm starts, no warning lines.
-fn settings(backend: Backend, gpu: GpuSettings) -> Settings {
-    Settings {
-        gpu,
-        warm_start: true,
-        warn_on_stderr: false,
-        ..Settings::new(backend, Method::Auto)
-    }
-}
+use crate::{Backend, GpuSettings, Settings, Solver, StepReport};
 
 /// `worlds` stepped `steps` times by one `step_worlds` call per step:
 /// the worlds after, each step's reports.
