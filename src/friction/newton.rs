@@ -24,7 +24,7 @@
 
 use super::problem::FrictionProblem;
 use super::sparse::{
-    blocks_dot, cholesky_in, lower_envelope, lu_envelope, product_sparse, Pattern,
+    block_runs, blocks_dot, cholesky_in, lower_envelope, lu_envelope, product_sparse, Pattern,
 };
 use super::workspace::Workspace;
 use crate::linalg::{solve_in_place, PIVOT_TOL};
@@ -428,22 +428,6 @@ fn normal_system(n: usize, ws: &mut Workspace) {
         }
     }
     lower_envelope(&ws.normal, n, reach, &mut ws.first);
-}
-
-/// The runs of consecutive blocks in the ascending `blocks`: (first,
-/// last + 1) of each.
-fn block_runs(blocks: &[usize]) -> impl Iterator<Item = (usize, usize)> + '_ {
-    let mut at = 0;
-    std::iter::from_fn(move || {
-        let from = *blocks.get(at)?;
-        let mut to = from + 1;
-        at += 1;
-        while blocks.get(at) == Some(&to) {
-            to += 1;
-            at += 1;
-        }
-        Some((from, to))
-    })
 }
 
 /// The merit's slope along Δ: (∂ΦᵀΦ)·Δ = Φ·(∂Φ Δ).
