@@ -25,6 +25,15 @@
 //! cost; each figure is the fastest of three runs. It runs when `Backend::Auto` has a GPU open and no model is cached
 //! for this device, precision and thread count; the model is written to
 //! [`cache_dir`] and read by later processes.
+//!
+//! **Worlds** ([`WorldCosts`], `Solver::step_worlds`, `step_worlds_for`):
+//! the same calibration times frictionless 4-box stacks
+//! ([`crate::world::generate`]) on the CPU's per-world path (every core)
+//! and on the resident GPU path (adapters with f64 only) at two batch sizes, one step per
+//! submission, so that its fixed cost per submission separates from its
+//! cost per world-step. A batch of worlds in the resident path's scope
+//! goes there where [`CostModel::estimate_worlds`] says it is faster,
+//! else to the CPU's per-world path.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -33,9 +42,13 @@ use serde::{Deserialize, Serialize};
 
 use super::cpu_path::lcps_on_cpu;
 use super::gpu_path::lcps_on_gpu;
-use super::SolverView;
+use super::{Solver, SolverView};
 use crate::generate::families::islands_of_size;
-use crate::gpu::GpuContext;
+use crate::gpu::resident::{ResidentWorlds, MOST_STEPS};
+use crate::gpu::{GpuContext, Precision};
+use crate::settings::{Backend, Settings};
+use crate::world::generate::{standard_world, WorldKind};
+use crate::world::World;
 use crate::Error;
 
 /// The island sizes a calibration measures.
@@ -44,6 +57,16 @@ pub const CALIBRATION_SIZES: [usize; 4] = [2, 4, 8, 12];
 const CALIBRATION_ISLANDS: usize = 1024;
 /// Islands per size in the GPU's smaller batch.
 const CALIBRATION_SMALL: usize = 128;
+/// The world the world figures are measured on: a stack of this many
+/// boxes (frictionless, restitution 0) on its ground.
+const CALIBRATION_STACK: usize = 4;
+/// Worlds of the CPU's timed batch and of the resident path's two, and the
+/// CPU's steps per timed call.
+const CALIBRATION_WORLDS: [usize; 2] = [64, 512];
+const CALIBRATION_CPU_STEPS: usize = 4;
+/// The version of the cached model's format, in its file's key: a model
+/// cached before the world figures is not read (it is measured again).
+const CACHE_FORMAT: u32 = 2;
 
 /// Seconds per island on each path, by island size, on one device.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -61,6 +84,27 @@ pub struct CostModel {
     pub gpu_per_island: Vec<f64>,
     /// Seconds of one GPU call beyond its islands.
     pub gpu_per_batch: f64,
+    /// The world figures (None: not measured, e.g. on an adapter without
+    /// f64, where no world takes the resident path; a model given in the
+    /// settings without them keeps worlds on the CPU).
+    #[serde(default)]
+    pub worlds: Option<WorldCosts>,
+}
+
+/// Seconds per world-step of `Solver::step_worlds`' two routes, measured on
+/// frictionless stacks of [`CALIBRATION_STACK`] boxes; a batch's worlds
+/// count by their bodies against the measured world's.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct WorldCosts {
+    /// Bodies of the measured world (ground included).
+    pub bodies: usize,
+    /// Seconds per world-step on the CPU's per-world path (all threads).
+    pub cpu_per_world_step: f64,
+    /// Seconds per world-step on the resident GPU path.
+    pub gpu_per_world_step: f64,
+    /// Seconds of one resident submission beyond its world-steps (the
+    /// dispatches, the wait, the records' readback).
+    pub gpu_per_submission: f64,
 }
 
 impl CostModel {
@@ -84,7 +128,36 @@ impl CostModel {
         {
             return bad("cpu_per_island", "every figure must be finite and ≥ 0");
         }
+        if let Some(w) = &self.worlds {
+            let figures = [
+                w.cpu_per_world_step,
+                w.gpu_per_world_step,
+                w.gpu_per_submission,
+            ];
+            if w.bodies == 0 || figures.iter().any(|v| !(v.is_finite() && *v >= 0.0)) {
+                return bad("worlds", "bodies ≥ 1 and every figure finite and ≥ 0");
+            }
+        }
         Ok(())
+    }
+
+    /// (CPU seconds, GPU seconds) estimated for `steps` steps of worlds of
+    /// `bodies` bodies in all, in one `step_worlds_for` call: on the CPU
+    /// per world-step, on the resident path per world-step and per
+    /// submission (1, 2, 4, ... up to [`MOST_STEPS`] steps each, as the
+    /// path takes them); None without the world figures.
+    pub fn estimate_worlds(&self, bodies: usize, steps: usize) -> Option<(f64, f64)> {
+        let w = self.worlds?;
+        let world_steps = bodies as f64 / w.bodies as f64 * steps as f64;
+        let (mut submissions, mut taken, mut k) = (0usize, 0usize, 1usize);
+        while taken < steps {
+            taken += k;
+            submissions += 1;
+            k = (2 * k).min(MOST_STEPS);
+        }
+        let cpu = world_steps * w.cpu_per_world_step;
+        let gpu = submissions as f64 * w.gpu_per_submission + world_steps * w.gpu_per_world_step;
+        Some((cpu, gpu))
     }
 
     /// Seconds per island of size n from `table` (one figure per size):
@@ -134,6 +207,16 @@ impl std::fmt::Display for CostModel {
                 self.gpu_per_island[k] * 1e6
             )?;
         }
+        if let Some(w) = &self.worlds {
+            writeln!(
+                f,
+                "worlds ({} bodies): CPU {:.3} µs/world-step; resident GPU {:.3} µs/world-step + {:.3} ms/submission",
+                w.bodies,
+                w.cpu_per_world_step * 1e6,
+                w.gpu_per_world_step * 1e6,
+                w.gpu_per_submission * 1e3
+            )?;
+        }
         Ok(())
     }
 }
@@ -152,9 +235,13 @@ pub fn cache_dir() -> Option<PathBuf> {
 }
 
 /// The cache file in `dir` of a device and thread count (FNV-1a of both,
-/// with the crate's version: a new version measures again).
+/// with the crate's version and [`CACHE_FORMAT`]: a new version or format
+/// measures again).
 fn cache_file(dir: &Path, device: &str, threads: usize) -> PathBuf {
-    let key = format!("{} {device} {threads}", env!("CARGO_PKG_VERSION"));
+    let key = format!(
+        "{} {CACHE_FORMAT} {device} {threads}",
+        env!("CARGO_PKG_VERSION")
+    );
     let hash = key.bytes().fold(0xcbf29ce484222325u64, |h, b| {
         (h ^ b as u64).wrapping_mul(0x100000001b3)
     });
@@ -162,11 +249,13 @@ fn cache_file(dir: &Path, device: &str, threads: usize) -> PathBuf {
 }
 
 /// The model of this device and thread count cached in `dir`, if one was
-/// measured (an unreadable or invalid file counts as none).
-pub(super) fn cached(dir: &Path, device: &str, threads: usize) -> Option<CostModel> {
+/// measured (an unreadable or invalid file counts as none, and so does one
+/// without the world figures where `worlds` asks for them).
+pub(super) fn cached(dir: &Path, device: &str, threads: usize, worlds: bool) -> Option<CostModel> {
     let text = std::fs::read_to_string(cache_file(dir, device, threads)).ok()?;
     let m: CostModel = serde_json::from_str(&text).ok()?;
-    (m.device == device && m.threads == threads && m.validate().is_ok()).then_some(m)
+    let whole = m.worlds.is_some() || !worlds;
+    (m.device == device && m.threads == threads && whole && m.validate().is_ok()).then_some(m)
 }
 
 /// Writes `model` to the cache in `dir` (atomically); returns the file.
@@ -225,6 +314,7 @@ pub(super) fn calibrate(solver: &SolverView, ctx: &GpuContext) -> Result<CostMod
         cpu_per_island: Vec::new(),
         gpu_per_island: Vec::new(),
         gpu_per_batch: 0.0,
+        worlds: None,
     };
     let mut per_batch = Vec::new();
     for n in CALIBRATION_SIZES {
@@ -245,7 +335,63 @@ pub(super) fn calibrate(solver: &SolverView, ctx: &GpuContext) -> Result<CostMod
     }
     per_batch.sort_by(f64::total_cmp);
     m.gpu_per_batch = per_batch[per_batch.len() / 2];
+    if ctx.precision() == Precision::F64 {
+        m.worlds = Some(calibrate_worlds(solver, ctx)?);
+    }
     Ok(m)
+}
+
+/// [`CALIBRATION_WORLDS`]`[k]` frictionless stacks of [`CALIBRATION_STACK`] boxes.
+fn calibration_stacks(count: usize) -> Vec<World> {
+    (0..count as u64)
+        .map(|seed| {
+            let mut w = standard_world(WorldKind::Stack, CALIBRATION_STACK, seed);
+            for b in &mut w.bodies {
+                b.friction = 0.0;
+                b.restitution = 0.0;
+            }
+            w
+        })
+        .collect()
+}
+
+/// The world figures (see the module docs): the CPU's per-world path on
+/// the larger batch, [`CALIBRATION_CPU_STEPS`] steps a call; the resident
+/// path one step per submission on both batches (each after an untimed
+/// step that compiles its kernels), the line through the two times
+/// separating the submission's fixed cost. Each the fastest of three.
+fn calibrate_worlds(solver: &SolverView, ctx: &GpuContext) -> Result<WorldCosts, Error> {
+    let dt = 0.01;
+    let [small, large] = CALIBRATION_WORLDS.map(calibration_stacks);
+    let mut cpu = Solver::new(Settings {
+        backend: Backend::Cpu,
+        cost_model: None,
+        threads: solver.threads,
+        ..solver.settings.clone()
+    })?;
+    let mut worlds = large.clone();
+    cpu.step_worlds_for(&mut worlds, dt, 1, |_, _| {})?;
+    let steps = CALIBRATION_CPU_STEPS;
+    let t_cpu = fastest_of(TIMINGS, || {
+        cpu.step_worlds_for(&mut worlds, dt, steps, |_, _| {})
+    })?;
+    let s = solver.settings;
+    let warm = s.warm_start && s.predict;
+    let gpu = s.gpu_solve();
+    let mut t_gpu = [0.0; 2];
+    for (t, batch) in t_gpu.iter_mut().zip([&small, &large]) {
+        let r = ResidentWorlds::new(ctx, batch, s.tolerance, &gpu, warm, None, None)?;
+        r.step(ctx, dt)?;
+        *t = fastest_of(TIMINGS, || r.step(ctx, dt))?;
+    }
+    let [a, b] = CALIBRATION_WORLDS;
+    let per_world = ((t_gpu[1] - t_gpu[0]) / (b - a) as f64).max(0.0);
+    Ok(WorldCosts {
+        bodies: large[0].bodies.len(),
+        cpu_per_world_step: t_cpu / (steps * b) as f64,
+        gpu_per_world_step: per_world,
+        gpu_per_submission: (t_gpu[0] - a as f64 * per_world).max(0.0),
+    })
 }
 
 /// Each figure is the fastest of this many runs (other work on the machine
@@ -275,6 +421,12 @@ mod tests {
             cpu_per_island: vec![1e-6, 4e-6, 16e-6],
             gpu_per_island: vec![2e-6, 2e-6, 4e-6],
             gpu_per_batch: 1e-3,
+            worlds: Some(WorldCosts {
+                bodies: 5,
+                cpu_per_world_step: 20e-6,
+                gpu_per_world_step: 2e-6,
+                gpu_per_submission: 1e-3,
+            }),
         }
     }
 
@@ -303,6 +455,26 @@ mod tests {
         let mut m = model();
         m.gpu_per_island[1] = f64::NAN;
         assert!(m.validate().is_err());
+        let mut m = model();
+        m.worlds.as_mut().unwrap().gpu_per_submission = -1.0;
+        assert!(m.validate().unwrap_err().to_string().contains("worlds"));
+    }
+
+    #[test]
+    fn few_worlds_or_steps_stay_on_the_cpu_and_many_go_resident() {
+        let m = model();
+        // 10 stacks of 5 bodies, 1 step: 0.2 ms on the CPU, 1 ms + 20 µs resident.
+        let (cpu, gpu) = m.estimate_worlds(50, 1).unwrap();
+        assert!(cpu < gpu, "{cpu} {gpu}");
+        // 1,000 stacks, 100 steps: 2 s on the CPU; 0.2 s + 10 submissions
+        // (1, 2, 4, 8, 16, then 16s) of 1 ms resident.
+        let (cpu, gpu) = m.estimate_worlds(5000, 100).unwrap();
+        assert!(
+            (cpu - 2.0).abs() < 1e-9 && (gpu - 0.21).abs() < 1e-9,
+            "{cpu} {gpu}"
+        );
+        let none = CostModel { worlds: None, ..m };
+        assert_eq!(none.estimate_worlds(5000, 100), None);
     }
 
     #[test]
@@ -310,9 +482,19 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("lcpbatch-cost-{}", std::process::id()));
         let m = model();
         store(&dir, &m).unwrap();
-        assert_eq!(cached(&dir, "test", 2), Some(m));
-        assert_eq!(cached(&dir, "test", 4), None);
-        assert_eq!(cached(&dir, "other", 2), None);
+        assert_eq!(cached(&dir, "test", 2, true), Some(m.clone()));
+        assert_eq!(cached(&dir, "test", 4, true), None);
+        assert_eq!(cached(&dir, "other", 2, true), None);
+        // A model without the world figures (as cached before them) is
+        // measured again where they are wanted, and read where not.
+        let old = CostModel { worlds: None, ..m };
+        store(&dir, &old).unwrap();
+        assert_eq!(cached(&dir, "test", 2, true), None);
+        assert_eq!(cached(&dir, "test", 2, false), Some(old.clone()));
+        // The format before the world figures had no field for them and
+        // another key: its file is not this one.
+        let text = serde_json::to_string(&old).unwrap();
+        assert!(!text.contains("\"worlds\":{"));
         std::fs::remove_dir_all(dir).ok();
     }
 }

@@ -45,7 +45,7 @@ mod world_repair;
 
 pub use world_repair::Repairs;
 
-pub use cost::{cache_dir, CostModel, CALIBRATION_SIZES};
+pub use cost::{cache_dir, CostModel, WorldCosts, CALIBRATION_SIZES};
 
 use crate::build::Built;
 use crate::cpu::batch::parallel_map;
@@ -165,9 +165,11 @@ impl Solver {
     fn load_cost_model(&mut self) {
         let device = cost::cost_key(self.gpu.as_deref());
         let dir = cost::cache_dir();
+        // The world figures are measured where the resident path can run.
+        let f64 = (self.gpu.as_deref()).is_some_and(|c| c.precision() == crate::Precision::F64);
         let model = self.settings.cost_model.clone().or_else(|| {
             dir.as_deref()
-                .and_then(|d| cost::cached(d, &device, self.threads))
+                .and_then(|d| cost::cached(d, &device, self.threads, f64))
         });
         self.cost = match model {
             Some(m) => Some(m),
