@@ -27,13 +27,17 @@
 //! [`cache_dir`] and read by later processes.
 //!
 //! **Worlds** ([`WorldCosts`], `Solver::step_worlds`, `step_worlds_for`):
-//! the same calibration times frictionless 4-box stacks
-//! ([`crate::world::generate`]) on the CPU's per-world path (every core)
-//! and on the resident GPU path (adapters with f64 only) at two batch sizes, one step per
-//! submission, so that its fixed cost per submission separates from its
-//! cost per world-step. A batch of worlds in the resident path's scope
-//! goes there where [`CostModel::estimate_worlds`] says it is faster,
-//! else to the CPU's per-world path.
+//! frictionless 4-box stacks ([`crate::world::generate`]) timed on the
+//! CPU's per-world path (every core) and on the resident GPU path (adapters
+//! with f64 only) at two batch sizes, one step per submission, so that its
+//! fixed cost per submission separates from its cost per world-step. They
+//! are measured when `Backend::Auto` first meets a batch of worlds in the
+//! resident path's scope and the model has no world figures (a model
+//! cached without them, e.g. before they existed, gains them then and is
+//! cached again; a model given in the settings is used as it is), so that
+//! solving LCPs never compiles the world kernels. A batch in scope goes
+//! resident where [`CostModel::estimate_worlds`] says it is faster, else
+//! to the CPU's per-world path.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -64,9 +68,6 @@ const CALIBRATION_STACK: usize = 4;
 /// CPU's steps per timed call.
 const CALIBRATION_WORLDS: [usize; 2] = [64, 512];
 const CALIBRATION_CPU_STEPS: usize = 4;
-/// The version of the cached model's format, in its file's key: a model
-/// cached before the world figures is not read (it is measured again).
-const CACHE_FORMAT: u32 = 2;
 
 /// Seconds per island on each path, by island size, on one device.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -207,17 +208,20 @@ impl std::fmt::Display for CostModel {
                 self.gpu_per_island[k] * 1e6
             )?;
         }
-        if let Some(w) = &self.worlds {
-            writeln!(
+        match &self.worlds {
+            Some(w) => writeln!(
                 f,
                 "worlds ({} bodies): CPU {:.3} µs/world-step; resident GPU {:.3} µs/world-step + {:.3} ms/submission",
                 w.bodies,
                 w.cpu_per_world_step * 1e6,
                 w.gpu_per_world_step * 1e6,
                 w.gpu_per_submission * 1e3
-            )?;
+            ),
+            None => writeln!(
+                f,
+                "worlds: no figures yet (measured when auto first meets worlds the resident path can take)"
+            ),
         }
-        Ok(())
     }
 }
 
@@ -235,13 +239,9 @@ pub fn cache_dir() -> Option<PathBuf> {
 }
 
 /// The cache file in `dir` of a device and thread count (FNV-1a of both,
-/// with the crate's version and [`CACHE_FORMAT`]: a new version or format
-/// measures again).
+/// with the crate's version: a new version measures again).
 fn cache_file(dir: &Path, device: &str, threads: usize) -> PathBuf {
-    let key = format!(
-        "{} {CACHE_FORMAT} {device} {threads}",
-        env!("CARGO_PKG_VERSION")
-    );
+    let key = format!("{} {device} {threads}", env!("CARGO_PKG_VERSION"));
     let hash = key.bytes().fold(0xcbf29ce484222325u64, |h, b| {
         (h ^ b as u64).wrapping_mul(0x100000001b3)
     });
@@ -249,13 +249,12 @@ fn cache_file(dir: &Path, device: &str, threads: usize) -> PathBuf {
 }
 
 /// The model of this device and thread count cached in `dir`, if one was
-/// measured (an unreadable or invalid file counts as none, and so does one
-/// without the world figures where `worlds` asks for them).
-pub(super) fn cached(dir: &Path, device: &str, threads: usize, worlds: bool) -> Option<CostModel> {
+/// measured (an unreadable or invalid file counts as none; one without the
+/// world figures reads with none: they are measured when first needed).
+pub(super) fn cached(dir: &Path, device: &str, threads: usize) -> Option<CostModel> {
     let text = std::fs::read_to_string(cache_file(dir, device, threads)).ok()?;
     let m: CostModel = serde_json::from_str(&text).ok()?;
-    let whole = m.worlds.is_some() || !worlds;
-    (m.device == device && m.threads == threads && whole && m.validate().is_ok()).then_some(m)
+    (m.device == device && m.threads == threads && m.validate().is_ok()).then_some(m)
 }
 
 /// Writes `model` to the cache in `dir` (atomically); returns the file.
@@ -301,6 +300,46 @@ pub(super) fn cost_key(gpu: Option<&GpuContext>) -> String {
     })
 }
 
+impl Solver {
+    /// [`Solver::calibrate`], with the world figures where `worlds` asks
+    /// for them (and the adapter has f64).
+    pub(super) fn calibrate_for(&mut self, worlds: bool) -> Result<CostModel, Error> {
+        let Some(ctx) = self.gpu.clone() else {
+            return Err(Error::Gpu("calibration needs a GPU".into()));
+        };
+        let mut m = calibrate(&self.view(), &ctx)?;
+        if worlds && ctx.precision() == Precision::F64 {
+            m.worlds = Some(calibrate_worlds(&self.view(), &ctx)?);
+        }
+        Ok(m)
+    }
+
+    /// `Backend::Auto` with a GPU open in f64 and a model without world
+    /// figures, not given in the settings: the figures measured now (a
+    /// batch of worlds in the resident path's scope needs them) and the
+    /// model cached again with them. Device trouble falls back to the CPU.
+    pub(super) fn world_costs(&mut self) {
+        let needed = self.settings.backend == Backend::Auto
+            && self.settings.cost_model.is_none()
+            && (self.cost.as_ref()).is_some_and(|m| m.worlds.is_none())
+            && (self.gpu.as_deref()).is_some_and(|c| c.precision() == Precision::F64);
+        let Some(ctx) = self.gpu.clone().filter(|_| needed) else {
+            return;
+        };
+        match calibrate_worlds(&self.view(), &ctx) {
+            Ok(w) => {
+                let m = self.cost.as_mut().expect("checked");
+                m.worlds = Some(w);
+                // A cache that cannot be written is skipped (as in `new`).
+                if let Some(d) = cache_dir() {
+                    let _ = store(&d, m);
+                }
+            }
+            Err(e) => self.fall_back(format!("calibrating the cost model's worlds: {e}")),
+        }
+    }
+}
+
 /// Measures the CPU path and the GPU path on `ctx` by island size (see the
 /// module docs).
 ///
@@ -335,9 +374,6 @@ pub(super) fn calibrate(solver: &SolverView, ctx: &GpuContext) -> Result<CostMod
     }
     per_batch.sort_by(f64::total_cmp);
     m.gpu_per_batch = per_batch[per_batch.len() / 2];
-    if ctx.precision() == Precision::F64 {
-        m.worlds = Some(calibrate_worlds(solver, ctx)?);
-    }
     Ok(m)
 }
 
@@ -482,19 +518,19 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("lcpbatch-cost-{}", std::process::id()));
         let m = model();
         store(&dir, &m).unwrap();
-        assert_eq!(cached(&dir, "test", 2, true), Some(m.clone()));
-        assert_eq!(cached(&dir, "test", 4, true), None);
-        assert_eq!(cached(&dir, "other", 2, true), None);
-        // A model without the world figures (as cached before them) is
-        // measured again where they are wanted, and read where not.
-        let old = CostModel { worlds: None, ..m };
-        store(&dir, &old).unwrap();
-        assert_eq!(cached(&dir, "test", 2, true), None);
-        assert_eq!(cached(&dir, "test", 2, false), Some(old.clone()));
-        // The format before the world figures had no field for them and
-        // another key: its file is not this one.
-        let text = serde_json::to_string(&old).unwrap();
-        assert!(!text.contains("\"worlds\":{"));
+        assert_eq!(cached(&dir, "test", 2), Some(m.clone()));
+        assert_eq!(cached(&dir, "test", 4), None);
+        assert_eq!(cached(&dir, "other", 2), None);
+        // A model cached before the world figures (no such field) reads
+        // with none, so that they are measured when first needed.
+        let mut old: serde_json::Value = serde_json::to_value(&m).unwrap();
+        old.as_object_mut().unwrap().remove("worlds");
+        let path = cache_file(&dir, "test", 2);
+        std::fs::write(&path, old.to_string()).unwrap();
+        assert_eq!(
+            cached(&dir, "test", 2),
+            Some(CostModel { worlds: None, ..m })
+        );
         std::fs::remove_dir_all(dir).ok();
     }
 }

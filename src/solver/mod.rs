@@ -165,15 +165,14 @@ impl Solver {
     fn load_cost_model(&mut self) {
         let device = cost::cost_key(self.gpu.as_deref());
         let dir = cost::cache_dir();
-        // The world figures are measured where the resident path can run.
-        let f64 = (self.gpu.as_deref()).is_some_and(|c| c.precision() == crate::Precision::F64);
         let model = self.settings.cost_model.clone().or_else(|| {
             dir.as_deref()
-                .and_then(|d| cost::cached(d, &device, self.threads, f64))
+                .and_then(|d| cost::cached(d, &device, self.threads))
         });
         self.cost = match model {
             Some(m) => Some(m),
-            None => match self.calibrate() {
+            // The world figures wait for the first batch of worlds.
+            None => match self.calibrate_for(false) {
                 Ok(m) => {
                     // A cache that cannot be written is skipped: the next
                     // process measures again.
@@ -196,16 +195,14 @@ impl Solver {
         self.cost.as_ref()
     }
 
-    /// Measures this solver's CPU and GPU paths by island size (see
-    /// [`CostModel`]); needs a GPU open.
+    /// Measures this solver's CPU and GPU paths by island size, and where
+    /// the adapter has f64 the world figures (see [`CostModel`]); needs a
+    /// GPU open.
     ///
     /// # Errors
     /// [`Error::Gpu`] without a GPU open or on device trouble.
     pub fn calibrate(&mut self) -> Result<CostModel, Error> {
-        let Some(ctx) = self.gpu.clone() else {
-            return Err(Error::Gpu("calibration needs a GPU".into()));
-        };
-        cost::calibrate(&self.view(), &ctx)
+        self.calibrate_for(true)
     }
 
     /// The settings it was built with.

@@ -168,10 +168,18 @@ impl Solver {
     /// scope and the cost model's world figures estimate it faster than the
     /// CPU's per-world path, which takes the batch otherwise
     /// ([`crate::CostModel::estimate_worlds`]).
-    pub(super) fn world_route(&self, worlds: &[World], steps: usize) -> (bool, Option<String>) {
+    /// The model's world figures are measured first where it has none
+    /// (see `cost.rs`).
+    pub(super) fn world_route(&mut self, worlds: &[World], steps: usize) -> (bool, Option<String>) {
         let scope = self.resident_scope(worlds);
         if self.settings.backend != Backend::Auto || self.gpu.is_none() {
             return (scope, None);
+        }
+        if scope {
+            self.world_costs();
+            if self.gpu.is_none() {
+                return (false, None);
+            }
         }
         let bodies = worlds.iter().map(|w| w.bodies.len()).sum();
         let estimate = (self.cost.as_ref()).and_then(|m| m.estimate_worlds(bodies, steps));

@@ -263,6 +263,10 @@ pub fn step_and_write(
     write_outputs(out, &lines, worlds, &run, solver.settings(), &title)?;
     film.write(out, &title)?;
     print_summary(&lines, &run, worlds.len(), wall);
+    // Where `--backend auto` stepped the worlds, with the estimates.
+    if let Some(route) = run.route.as_ref().filter(|r| r.contains("; worlds: ")) {
+        println!("  worlds stepped: {route}");
+    }
     println!("wrote {}", out.display());
     Ok(())
 }
@@ -340,6 +344,9 @@ struct Run {
     /// The resident GPU path's figures summed over its steps (None when no
     /// step took it).
     resident: Option<ResidentStep>,
+    /// The first step's choice (`--backend auto`: where the worlds went
+    /// and the cost model's estimates).
+    route: Option<String>,
 }
 
 impl Run {
@@ -350,10 +357,12 @@ impl Run {
             friction_dropped: vec![0; worlds],
             errors: [Vec::new(), Vec::new()],
             resident: None,
+            route: None,
         }
     }
 
     fn add(&mut self, step: usize, time: f64, r: &StepReport) {
+        self.route.get_or_insert_with(|| r.solve.choice.clone());
         if let Some(f) = &r.resident {
             (self.resident.get_or_insert_with(ResidentStep::default)).add(f);
         }
