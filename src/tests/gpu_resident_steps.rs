@@ -312,7 +312,7 @@ fn frames_read_only_their_worlds() {
     let s = settings(Backend::Gpu, gpu);
     let steps = 40;
     let shown = [1usize, 4];
-    let at = |s: usize| s % 15 == 0 || s == 40;
+    let at = |s: usize| s.is_multiple_of(15) || s == 40;
     let mut solver = Solver::new(s.clone()).unwrap();
     let (mut cpu_solver, mut want) = (Solver::new(s).unwrap(), worlds.clone());
     let mut want_frames = Vec::new();
