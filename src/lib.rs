@@ -82,7 +82,7 @@ pub use report::Report;
 pub use scene::{Body, Contact, Scene};
 pub use settings::{Backend, GpuSettings, Method, Settings};
 pub use short_vec::ShortVec;
-pub use solver::world_path::StepReport;
+pub use solver::world_path::{Frames, StepReport};
 pub use solver::Solver;
 pub use world::World;
 
@@ -101,7 +101,7 @@ pub(crate) use {
 /// model by which [`Backend::Auto`] chooses between the CPU and the GPU.
 pub mod device {
     pub use crate::gpu::{list_adapters, AdapterSummary, GpuContext, INSTALL_HINT};
-    pub use crate::solver::{cache_dir, CostModel, CALIBRATION_SIZES};
+    pub use crate::solver::{cache_dir, CostModel, WorldCosts, CALIBRATION_SIZES};
 }
 
 /// Side doors for the benches and the command-line tool: inner solvers and

@@ -525,7 +525,10 @@ def simulate(worlds: Union[World, Sequence[World]], dt: float, steps: int = 1, *
     """Steps a batch of worlds ``steps`` times by ``dt`` seconds, in place
     (see :meth:`Solver.step_worlds`; with ``backend="gpu"`` the batch stays
     on the device and the states come back into the worlds' arrays at the
-    end). ``friction_tolerance`` defaults to
+    end; with ``backend="auto"`` and a GPU open, a hardware adapter or one
+    named by ``adapter``, the library steps it there where its cost model
+    estimates that faster than the CPU, else on the CPU, and the report's
+    ``choice`` says which, with both estimates). ``friction_tolerance`` defaults to
     1e-12 here, as in ``lcpbatch simulate``: the Coulomb error is relative to
     an island's largest impulse, and the solver's 1e-8 leaves heavy resting
     boxes with velocities near 1e-6 m/s. The keyword arguments are the

@@ -25,6 +25,19 @@
 //! cost; each figure is the fastest of three runs. It runs when `Backend::Auto` has a GPU open and no model is cached
 //! for this device, precision and thread count; the model is written to
 //! [`cache_dir`] and read by later processes.
+//!
+//! **Worlds** ([`WorldCosts`], `Solver::step_worlds`, `step_worlds_for`):
+//! frictionless 4-box stacks ([`crate::world::generate`]) timed on the
+//! CPU's per-world path (every core) and on the resident GPU path (adapters
+//! with f64 only) at two batch sizes, one step per submission, so that its
+//! fixed cost per submission separates from its cost per world-step. They
+//! are measured when `Backend::Auto` first meets a batch of worlds in the
+//! resident path's scope and the model has no world figures (a model
+//! cached without them, e.g. before they existed, gains them then and is
+//! cached again; a model given in the settings is used as it is), so that
+//! solving LCPs never compiles the world kernels. A batch in scope goes
+//! resident where [`CostModel::estimate_worlds`] says it is faster, else
+//! to the CPU's per-world path.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -33,9 +46,13 @@ use serde::{Deserialize, Serialize};
 
 use super::cpu_path::lcps_on_cpu;
 use super::gpu_path::lcps_on_gpu;
-use super::SolverView;
+use super::{Solver, SolverView};
 use crate::generate::families::islands_of_size;
-use crate::gpu::GpuContext;
+use crate::gpu::resident::{ResidentWorlds, MOST_STEPS};
+use crate::gpu::{GpuContext, Precision};
+use crate::settings::{Backend, Settings};
+use crate::world::generate::{standard_world, WorldKind};
+use crate::world::World;
 use crate::Error;
 
 /// The island sizes a calibration measures.
@@ -44,6 +61,13 @@ pub const CALIBRATION_SIZES: [usize; 4] = [2, 4, 8, 12];
 const CALIBRATION_ISLANDS: usize = 1024;
 /// Islands per size in the GPU's smaller batch.
 const CALIBRATION_SMALL: usize = 128;
+/// The world the world figures are measured on: a stack of this many
+/// boxes (frictionless, restitution 0) on its ground.
+const CALIBRATION_STACK: usize = 4;
+/// Worlds of the CPU's timed batch and of the resident path's two, and the
+/// CPU's steps per timed call.
+const CALIBRATION_WORLDS: [usize; 2] = [64, 512];
+const CALIBRATION_CPU_STEPS: usize = 4;
 
 /// Seconds per island on each path, by island size, on one device.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -61,6 +85,27 @@ pub struct CostModel {
     pub gpu_per_island: Vec<f64>,
     /// Seconds of one GPU call beyond its islands.
     pub gpu_per_batch: f64,
+    /// The world figures (None: not measured, e.g. on an adapter without
+    /// f64, where no world takes the resident path; a model given in the
+    /// settings without them keeps worlds on the CPU).
+    #[serde(default)]
+    pub worlds: Option<WorldCosts>,
+}
+
+/// Seconds per world-step of `Solver::step_worlds`' two routes, measured on
+/// frictionless stacks of [`CALIBRATION_STACK`] boxes; a batch's worlds
+/// count by their bodies against the measured world's.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct WorldCosts {
+    /// Bodies of the measured world (ground included).
+    pub bodies: usize,
+    /// Seconds per world-step on the CPU's per-world path (all threads).
+    pub cpu_per_world_step: f64,
+    /// Seconds per world-step on the resident GPU path.
+    pub gpu_per_world_step: f64,
+    /// Seconds of one resident submission beyond its world-steps (the
+    /// dispatches, the wait, the records' readback).
+    pub gpu_per_submission: f64,
 }
 
 impl CostModel {
@@ -84,7 +129,36 @@ impl CostModel {
         {
             return bad("cpu_per_island", "every figure must be finite and ≥ 0");
         }
+        if let Some(w) = &self.worlds {
+            let figures = [
+                w.cpu_per_world_step,
+                w.gpu_per_world_step,
+                w.gpu_per_submission,
+            ];
+            if w.bodies == 0 || figures.iter().any(|v| !(v.is_finite() && *v >= 0.0)) {
+                return bad("worlds", "bodies ≥ 1 and every figure finite and ≥ 0");
+            }
+        }
         Ok(())
+    }
+
+    /// (CPU seconds, GPU seconds) estimated for `steps` steps of worlds of
+    /// `bodies` bodies in all, in one `step_worlds_for` call: on the CPU
+    /// per world-step, on the resident path per world-step and per
+    /// submission (1, 2, 4, ... up to [`MOST_STEPS`] steps each, as the
+    /// path takes them); None without the world figures.
+    pub fn estimate_worlds(&self, bodies: usize, steps: usize) -> Option<(f64, f64)> {
+        let w = self.worlds?;
+        let world_steps = bodies as f64 / w.bodies as f64 * steps as f64;
+        let (mut submissions, mut taken, mut k) = (0usize, 0usize, 1usize);
+        while taken < steps {
+            taken += k;
+            submissions += 1;
+            k = (2 * k).min(MOST_STEPS);
+        }
+        let cpu = world_steps * w.cpu_per_world_step;
+        let gpu = submissions as f64 * w.gpu_per_submission + world_steps * w.gpu_per_world_step;
+        Some((cpu, gpu))
     }
 
     /// Seconds per island of size n from `table` (one figure per size):
@@ -134,7 +208,20 @@ impl std::fmt::Display for CostModel {
                 self.gpu_per_island[k] * 1e6
             )?;
         }
-        Ok(())
+        match &self.worlds {
+            Some(w) => writeln!(
+                f,
+                "worlds ({} bodies): CPU {:.3} µs/world-step; resident GPU {:.3} µs/world-step + {:.3} ms/submission",
+                w.bodies,
+                w.cpu_per_world_step * 1e6,
+                w.gpu_per_world_step * 1e6,
+                w.gpu_per_submission * 1e3
+            ),
+            None => writeln!(
+                f,
+                "worlds: no figures yet (measured when auto first meets worlds the resident path can take)"
+            ),
+        }
     }
 }
 
@@ -162,7 +249,8 @@ fn cache_file(dir: &Path, device: &str, threads: usize) -> PathBuf {
 }
 
 /// The model of this device and thread count cached in `dir`, if one was
-/// measured (an unreadable or invalid file counts as none).
+/// measured (an unreadable or invalid file counts as none; one without the
+/// world figures reads with none: they are measured when first needed).
 pub(super) fn cached(dir: &Path, device: &str, threads: usize) -> Option<CostModel> {
     let text = std::fs::read_to_string(cache_file(dir, device, threads)).ok()?;
     let m: CostModel = serde_json::from_str(&text).ok()?;
@@ -212,6 +300,46 @@ pub(super) fn cost_key(gpu: Option<&GpuContext>) -> String {
     })
 }
 
+impl Solver {
+    /// [`Solver::calibrate`], with the world figures where `worlds` asks
+    /// for them (and the adapter has f64).
+    pub(super) fn calibrate_for(&mut self, worlds: bool) -> Result<CostModel, Error> {
+        let Some(ctx) = self.gpu.clone() else {
+            return Err(Error::Gpu("calibration needs a GPU".into()));
+        };
+        let mut m = calibrate(&self.view(), &ctx)?;
+        if worlds && ctx.precision() == Precision::F64 {
+            m.worlds = Some(calibrate_worlds(&self.view(), &ctx)?);
+        }
+        Ok(m)
+    }
+
+    /// `Backend::Auto` with a GPU open in f64 and a model without world
+    /// figures, not given in the settings: the figures measured now (a
+    /// batch of worlds in the resident path's scope needs them) and the
+    /// model cached again with them. Device trouble falls back to the CPU.
+    pub(super) fn world_costs(&mut self) {
+        let needed = self.settings.backend == Backend::Auto
+            && self.settings.cost_model.is_none()
+            && (self.cost.as_ref()).is_some_and(|m| m.worlds.is_none())
+            && (self.gpu.as_deref()).is_some_and(|c| c.precision() == Precision::F64);
+        let Some(ctx) = self.gpu.clone().filter(|_| needed) else {
+            return;
+        };
+        match calibrate_worlds(&self.view(), &ctx) {
+            Ok(w) => {
+                let m = self.cost.as_mut().expect("checked");
+                m.worlds = Some(w);
+                // A cache that cannot be written is skipped (as in `new`).
+                if let Some(d) = cache_dir() {
+                    let _ = store(&d, m);
+                }
+            }
+            Err(e) => self.fall_back(format!("calibrating the cost model's worlds: {e}")),
+        }
+    }
+}
+
 /// Measures the CPU path and the GPU path on `ctx` by island size (see the
 /// module docs).
 ///
@@ -225,6 +353,7 @@ pub(super) fn calibrate(solver: &SolverView, ctx: &GpuContext) -> Result<CostMod
         cpu_per_island: Vec::new(),
         gpu_per_island: Vec::new(),
         gpu_per_batch: 0.0,
+        worlds: None,
     };
     let mut per_batch = Vec::new();
     for n in CALIBRATION_SIZES {
@@ -246,6 +375,59 @@ pub(super) fn calibrate(solver: &SolverView, ctx: &GpuContext) -> Result<CostMod
     per_batch.sort_by(f64::total_cmp);
     m.gpu_per_batch = per_batch[per_batch.len() / 2];
     Ok(m)
+}
+
+/// [`CALIBRATION_WORLDS`]`[k]` frictionless stacks of [`CALIBRATION_STACK`] boxes.
+fn calibration_stacks(count: usize) -> Vec<World> {
+    (0..count as u64)
+        .map(|seed| {
+            let mut w = standard_world(WorldKind::Stack, CALIBRATION_STACK, seed);
+            for b in &mut w.bodies {
+                b.friction = 0.0;
+                b.restitution = 0.0;
+            }
+            w
+        })
+        .collect()
+}
+
+/// The world figures (see the module docs): the CPU's per-world path on
+/// the larger batch, [`CALIBRATION_CPU_STEPS`] steps a call; the resident
+/// path one step per submission on both batches (each after an untimed
+/// step that compiles its kernels), the line through the two times
+/// separating the submission's fixed cost. Each the fastest of three.
+fn calibrate_worlds(solver: &SolverView, ctx: &GpuContext) -> Result<WorldCosts, Error> {
+    let dt = 0.01;
+    let [small, large] = CALIBRATION_WORLDS.map(calibration_stacks);
+    let mut cpu = Solver::new(Settings {
+        backend: Backend::Cpu,
+        cost_model: None,
+        threads: solver.threads,
+        ..solver.settings.clone()
+    })?;
+    let mut worlds = large.clone();
+    cpu.step_worlds_for(&mut worlds, dt, 1, |_, _| {})?;
+    let steps = CALIBRATION_CPU_STEPS;
+    let t_cpu = fastest_of(TIMINGS, || {
+        cpu.step_worlds_for(&mut worlds, dt, steps, |_, _| {})
+    })?;
+    let s = solver.settings;
+    let warm = s.warm_start && s.predict;
+    let gpu = s.gpu_solve();
+    let mut t_gpu = [0.0; 2];
+    for (t, batch) in t_gpu.iter_mut().zip([&small, &large]) {
+        let r = ResidentWorlds::new(ctx, batch, s.tolerance, &gpu, warm, None, None)?;
+        r.step(ctx, dt)?;
+        *t = fastest_of(TIMINGS, || r.step(ctx, dt))?;
+    }
+    let [a, b] = CALIBRATION_WORLDS;
+    let per_world = ((t_gpu[1] - t_gpu[0]) / (b - a) as f64).max(0.0);
+    Ok(WorldCosts {
+        bodies: large[0].bodies.len(),
+        cpu_per_world_step: t_cpu / (steps * b) as f64,
+        gpu_per_world_step: per_world,
+        gpu_per_submission: (t_gpu[0] - a as f64 * per_world).max(0.0),
+    })
 }
 
 /// Each figure is the fastest of this many runs (other work on the machine
@@ -275,6 +457,12 @@ mod tests {
             cpu_per_island: vec![1e-6, 4e-6, 16e-6],
             gpu_per_island: vec![2e-6, 2e-6, 4e-6],
             gpu_per_batch: 1e-3,
+            worlds: Some(WorldCosts {
+                bodies: 5,
+                cpu_per_world_step: 20e-6,
+                gpu_per_world_step: 2e-6,
+                gpu_per_submission: 1e-3,
+            }),
         }
     }
 
@@ -303,6 +491,26 @@ mod tests {
         let mut m = model();
         m.gpu_per_island[1] = f64::NAN;
         assert!(m.validate().is_err());
+        let mut m = model();
+        m.worlds.as_mut().unwrap().gpu_per_submission = -1.0;
+        assert!(m.validate().unwrap_err().to_string().contains("worlds"));
+    }
+
+    #[test]
+    fn few_worlds_or_steps_stay_on_the_cpu_and_many_go_resident() {
+        let m = model();
+        // 10 stacks of 5 bodies, 1 step: 0.2 ms on the CPU, 1 ms + 20 µs resident.
+        let (cpu, gpu) = m.estimate_worlds(50, 1).unwrap();
+        assert!(cpu < gpu, "{cpu} {gpu}");
+        // 1,000 stacks, 100 steps: 2 s on the CPU; 0.2 s + 10 submissions
+        // (1, 2, 4, 8, 16, then 16s) of 1 ms resident.
+        let (cpu, gpu) = m.estimate_worlds(5000, 100).unwrap();
+        assert!(
+            (cpu - 2.0).abs() < 1e-9 && (gpu - 0.21).abs() < 1e-9,
+            "{cpu} {gpu}"
+        );
+        let none = CostModel { worlds: None, ..m };
+        assert_eq!(none.estimate_worlds(5000, 100), None);
     }
 
     #[test]
@@ -310,9 +518,19 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("lcpbatch-cost-{}", std::process::id()));
         let m = model();
         store(&dir, &m).unwrap();
-        assert_eq!(cached(&dir, "test", 2), Some(m));
+        assert_eq!(cached(&dir, "test", 2), Some(m.clone()));
         assert_eq!(cached(&dir, "test", 4), None);
         assert_eq!(cached(&dir, "other", 2), None);
+        // A model cached before the world figures (no such field) reads
+        // with none, so that they are measured when first needed.
+        let mut old: serde_json::Value = serde_json::to_value(&m).unwrap();
+        old.as_object_mut().unwrap().remove("worlds");
+        let path = cache_file(&dir, "test", 2);
+        std::fs::write(&path, old.to_string()).unwrap();
+        assert_eq!(
+            cached(&dir, "test", 2),
+            Some(CostModel { worlds: None, ..m })
+        );
         std::fs::remove_dir_all(dir).ok();
     }
 }

@@ -45,7 +45,7 @@ mod world_repair;
 
 pub use world_repair::Repairs;
 
-pub use cost::{cache_dir, CostModel, CALIBRATION_SIZES};
+pub use cost::{cache_dir, CostModel, WorldCosts, CALIBRATION_SIZES};
 
 use crate::build::Built;
 use crate::cpu::batch::parallel_map;
@@ -171,7 +171,8 @@ impl Solver {
         });
         self.cost = match model {
             Some(m) => Some(m),
-            None => match self.calibrate() {
+            // The world figures wait for the first batch of worlds.
+            None => match self.calibrate_for(false) {
                 Ok(m) => {
                     // A cache that cannot be written is skipped: the next
                     // process measures again.
@@ -194,16 +195,14 @@ impl Solver {
         self.cost.as_ref()
     }
 
-    /// Measures this solver's CPU and GPU paths by island size (see
-    /// [`CostModel`]); needs a GPU open.
+    /// Measures this solver's CPU and GPU paths by island size, and where
+    /// the adapter has f64 the world figures (see [`CostModel`]); needs a
+    /// GPU open.
     ///
     /// # Errors
     /// [`Error::Gpu`] without a GPU open or on device trouble.
     pub fn calibrate(&mut self) -> Result<CostModel, Error> {
-        let Some(ctx) = self.gpu.clone() else {
-            return Err(Error::Gpu("calibration needs a GPU".into()));
-        };
-        cost::calibrate(&self.view(), &ctx)
+        self.calibrate_for(true)
     }
 
     /// The settings it was built with.

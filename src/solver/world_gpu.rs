@@ -57,13 +57,15 @@ use std::time::Instant;
 use super::gpu_path::guarded;
 use super::world_cpu::step_world_on_cpu;
 use super::world_friction::{solved_reactions, step_frictional_world_on_cpu};
-use super::world_path::{ResidentStep, StepReport, StepTimings, WorldStep, WorldStepReport};
+use super::world_path::{
+    Framing, ResidentStep, StepReport, StepTimings, WorldStep, WorldStepReport,
+};
 use super::world_repair::{repair_settings, Repairs};
 use super::Solver;
 use crate::friction::FrictionMethod;
 use crate::gpu::resident::layout::{cpu_id, device_key, flags, may_have_friction, out_of_scope};
 use crate::gpu::resident::{
-    MemoryEntry, ResidentFriction, ResidentWorlds, WorldRecord, MAX_ROUNDS,
+    MemoryEntry, ResidentFriction, ResidentWorlds, States, WorldRecord, MAX_ROUNDS,
 };
 use crate::gpu::{GpuContext, Precision};
 use crate::report::{Device, FrictionIslandReport};
@@ -138,6 +140,9 @@ pub(super) struct Resident {
     next: usize,
     /// Bytes read back that reports have counted.
     counted: u64,
+    /// Every world's state read with the call's last step, and the worlds
+    /// that step took on the CPU (their states after it).
+    last: Option<(States, Vec<(usize, World)>)>,
 }
 
 impl Resident {
@@ -156,11 +161,52 @@ impl std::fmt::Debug for Resident {
 }
 
 impl Solver {
-    /// Whether this batch takes the resident path (see the module docs).
+    /// Whether `steps` steps of `worlds` take the resident path, and with
+    /// `Backend::Auto` why, in words for the step reports' `choice` (None:
+    /// the solver's choice stands). `Backend::Gpu`: wherever the batch is
+    /// in the path's scope; `Backend::Auto` with a GPU open: where it is in
+    /// scope and the cost model's world figures estimate it faster than the
+    /// CPU's per-world path, which takes the batch otherwise
+    /// ([`crate::CostModel::estimate_worlds`]).
+    /// The model's world figures are measured first where it has none
+    /// (see `cost.rs`).
+    pub(super) fn world_route(&mut self, worlds: &[World], steps: usize) -> (bool, Option<String>) {
+        let scope = self.resident_scope(worlds);
+        if self.settings.backend != Backend::Auto || self.gpu.is_none() {
+            return (scope, None);
+        }
+        if scope {
+            self.world_costs();
+            if self.gpu.is_none() {
+                return (false, None);
+            }
+        }
+        let bodies = worlds.iter().map(|w| w.bodies.len()).sum();
+        let estimate = (self.cost.as_ref()).and_then(|m| m.estimate_worlds(bodies, steps));
+        let (resident, why) = match (scope, estimate) {
+            (false, _) => (false, "out of the resident path's scope → CPU".into()),
+            (true, None) => (false, "the cost model has no world figures → CPU".into()),
+            (true, Some((cpu, gpu))) => (
+                gpu < cpu,
+                format!(
+                    "cost model: CPU {:.3} ms, GPU {:.3} ms estimated → {}",
+                    cpu * 1e3,
+                    gpu * 1e3,
+                    if gpu < cpu { "GPU" } else { "CPU" }
+                ),
+            ),
+        };
+        let n = worlds.len();
+        let why = format!("{}; worlds: {n} × {steps} step(s), {why}", self.choice);
+        (resident, Some(why))
+    }
+
+    /// Whether this batch is in the resident path's scope (see the module
+    /// docs): a GPU open in f64, and the batch's method, worlds and
+    /// friction.
     fn resident_scope(&self, worlds: &[World]) -> bool {
         let s = &self.settings;
-        let on_gpu = s.backend == Backend::Gpu
-            && (self.gpu.as_deref()).is_some_and(|c| c.precision() == Precision::F64);
+        let on_gpu = (self.gpu.as_deref()).is_some_and(|c| c.precision() == Precision::F64);
         on_gpu
             && matches!(s.method, Method::Auto | Method::Lemke)
             && !s.all_solutions
@@ -190,31 +236,31 @@ impl Solver {
         })
     }
 
-    /// `steps` steps of `worlds` on the resident path, each step's report
-    /// given to `observe` (steps counted from 0), the states read back
-    /// after the last. The worlds were checked by the caller. Returns
-    /// (steps reported, steps the worlds are at): (`steps`, `steps`) when
-    /// the device took them all; (0, 0) where the batch is out of the
-    /// path's scope or the device failed before a step; (j, 0) after device
-    /// trouble in step j: the device is dropped (a warning), the worlds are
-    /// as passed in (the last states read back) and the caller steps them
-    /// on the CPU path from there, giving `observe` the steps from j on.
+    /// `steps` steps of `worlds` on the resident path (the caller routed
+    /// them here, [`Self::world_route`]), each step's report given to
+    /// `observe` (steps counted from 0), the frames `framing` asks for
+    /// handed over as their steps end, every state read back with the
+    /// last step. The worlds were checked by the caller. Returns (steps
+    /// reported, steps the worlds are at): (`steps`, `steps`) when the
+    /// device took them all; (0, 0) where the device failed before a step;
+    /// (j, 0) after device trouble in step j: the device is dropped (a
+    /// warning), the worlds are as passed in (the last states read back)
+    /// and the caller steps them on the CPU path from there, giving
+    /// `observe` the steps from j on (and `framing` the frames not yet
+    /// handed over).
     pub(super) fn step_worlds_resident(
         &mut self,
         worlds: &mut [World],
         dt: f64,
         steps: usize,
         observe: &mut dyn FnMut(usize, StepReport),
+        framing: Option<&mut Framing>,
     ) -> (usize, usize) {
-        if !self.resident_scope(worlds) {
-            self.resident = None;
-            return (0, 0);
-        }
         let Some(ctx) = self.gpu.clone() else {
             return (0, 0);
         };
         let mut done = 0;
-        match self.resident_run(&ctx, worlds, dt, steps, observe, &mut done) {
+        match self.resident_run(&ctx, worlds, dt, steps, observe, framing, &mut done) {
             Ok(()) => (steps, steps),
             Err(e) => {
                 self.resident = None;
@@ -228,7 +274,11 @@ impl Solver {
 
     /// [`Self::step_worlds_resident`]'s steps, `done` counting those
     /// reported: the device's parts guarded (a panic inside wgpu is device
-    /// trouble), `observe` called outside them (its panics are its own).
+    /// trouble), `observe` and the frames' hand-over called outside them
+    /// (their panics are their own). Submissions end where a frame is
+    /// wanted (its worlds' states read, a ranged read) and at the call's
+    /// end, whose last submission reads every state with its records.
+    #[allow(clippy::too_many_arguments, reason = "the call's parts, passed on")]
     fn resident_run(
         &mut self,
         ctx: &GpuContext,
@@ -236,30 +286,39 @@ impl Solver {
         dt: f64,
         steps: usize,
         observe: &mut dyn FnMut(usize, StepReport),
+        mut framing: Option<&mut Framing>,
         done: &mut usize,
     ) -> Result<(), Error> {
         guarded(|| self.hold(ctx, worlds))?;
-        // The call's last report waits for the states' bytes.
-        let mut last: Option<StepReport> = None;
-        while *done + usize::from(last.is_some()) < steps {
-            let left = steps - *done - usize::from(last.is_some());
-            for report in guarded(|| self.resident_steps(ctx, worlds, dt, left))? {
-                if let Some(r) = last.replace(report) {
-                    observe(*done, r);
+        while *done < steps {
+            let stop = (framing.as_deref())
+                .and_then(|f| f.next(*done, steps))
+                .unwrap_or(steps);
+            while *done < stop {
+                let (left, last) = (stop - *done, stop == steps);
+                for report in guarded(|| self.resident_steps(ctx, worlds, dt, left, last))? {
+                    observe(*done, report);
                     *done += 1;
                 }
             }
+            if let (Some(f), true) = (framing.as_deref_mut(), stop < steps) {
+                let ks = f.frames.worlds;
+                let mut states: Vec<World> = ks.iter().map(|&k| worlds[k].clone()).collect();
+                let r = self.resident.as_ref().expect("held");
+                if !ks.is_empty() {
+                    guarded(|| r.worlds.read_worlds(ctx, ks, &mut states))?;
+                }
+                f.give(stop, &states);
+            }
         }
         let r = self.resident.as_mut().expect("held");
-        guarded(|| r.worlds.read_states(ctx, worlds))?;
+        let (states, on_cpu) = r.last.take().expect("read with the last step");
+        r.worlds.unpack_states(&states, worlds)?;
+        for (k, w) in on_cpu {
+            worlds[k] = w;
+        }
         r.held.clear();
         r.held.extend_from_slice(worlds);
-        let mut last = last.expect("at least one step");
-        if let Some(f) = &mut last.resident {
-            f.bytes_back += r.take_bytes();
-        }
-        observe(*done, last);
-        *done += 1;
         Ok(())
     }
 
@@ -282,6 +341,7 @@ impl Solver {
             held: worlds.to_vec(),
             next: 1,
             counted: 0,
+            last: None,
         });
         Ok(())
     }
@@ -290,21 +350,25 @@ impl Solver {
     /// last had no flagged world and these have none either (and the rounds
     /// a step at a time would give, [`accepted`]); else (the submission
     /// undone) one step per submission as [`Self::resident_step`] takes it.
+    /// `last`: the `left`-th step is the call's last, whose submission
+    /// reads every state too (kept in [`Resident::last`]).
     fn resident_steps(
         &mut self,
         ctx: &GpuContext,
         worlds: &[World],
         dt: f64,
         left: usize,
+        last: bool,
     ) -> Result<Vec<StepReport>, Error> {
         let r = self.resident.as_mut().expect("held");
         let most = r.worlds.most_steps();
         let k = r.next.min(left).min(most);
         if k > 1 {
             let start = Instant::now();
-            let history = r.worlds.steps(ctx, dt, k)?;
+            let (history, states) = r.worlds.steps_and_states(ctx, dt, k, last && k == left)?;
             let seconds = start.elapsed().as_secs_f64() / k as f64;
             if let Some(rounds) = accepted(r.worlds.rounds(), &history) {
+                r.last = states.map(|s| (s, Vec::new()));
                 r.worlds.set_rounds(rounds);
                 r.next = (2 * k).min(most);
                 let bytes = r.take_bytes();
@@ -327,8 +391,9 @@ impl Solver {
         }
         let mut reports = Vec::with_capacity(k);
         let mut clean = true;
-        for _ in 0..k {
-            let (report, flagged) = self.resident_step(ctx, worlds, dt)?;
+        for i in 0..k {
+            let states = last && i + 1 == left;
+            let (report, flagged) = self.resident_step(ctx, worlds, dt, states)?;
             clean = flagged == 0;
             reports.push(report);
         }
@@ -340,18 +405,22 @@ impl Solver {
     /// One step in a submission of its own: the worlds the kernel flagged
     /// stepped on the CPU from their state before the step (which the
     /// device kept; read back) by the CPU path's code and written back.
-    /// `worlds`: the batch held (for the bodies' constants). Returns the
-    /// step's report and the worlds flagged.
+    /// `worlds`: the batch held (for the bodies' constants). With
+    /// `all_states` every state comes back with the records, in one map (the
+    /// flagged worlds' taken from it), kept in [`Resident::last`]. Returns
+    /// the step's report and the worlds flagged.
     fn resident_step(
         &mut self,
         ctx: &GpuContext,
         worlds: &[World],
         dt: f64,
+        all_states: bool,
     ) -> Result<(StepReport, usize), Error> {
         let start = Instant::now();
         let warm = self.settings.warm_start && self.resident_friction().is_some();
         let r = self.resident.as_mut().expect("held");
-        let records = r.worlds.step(ctx, dt)?;
+        let (mut history, all) = r.worlds.steps_and_states(ctx, dt, 1, all_states)?;
+        let records = history.pop().expect("one step");
         let device_seconds = start.elapsed().as_secs_f64();
         let start = Instant::now();
         r.worlds
@@ -362,8 +431,11 @@ impl Solver {
         let mut reports: Vec<WorldStepReport> = records.iter().map(world_report).collect();
         let mut repairs = Repairs::default();
         let mut states: Vec<World> = flagged.iter().map(|&k| worlds[k].clone()).collect();
-        if !flagged.is_empty() {
-            r.worlds.read_worlds(ctx, &flagged, &mut states)?;
+        match &all {
+            Some(all) => (flagged.iter().zip(&mut states))
+                .for_each(|(&k, w)| r.worlds.unpack_world(all, k, w)),
+            None if !flagged.is_empty() => r.worlds.read_worlds(ctx, &flagged, &mut states)?,
+            None => {}
         }
         let keep = self.settings.warm_start_calls;
         self.world_warm
@@ -397,6 +469,7 @@ impl Solver {
             repairs.merge(s.repairs);
             r.worlds.write_world(ctx, k, w)?;
         }
+        r.last = all.map(|all| (all, flagged.iter().copied().zip(states).collect()));
         let mut figures = ResidentStep {
             on_device: worlds.len() - flagged.len(),
             on_cpu: flagged.len(),

@@ -42,6 +42,7 @@ use crate::cpu::batch::parallel_map;
 use crate::cpu::impulses::BodyVelocity;
 use crate::report::{FrictionIslandReport, IslandReport, Report, SceneReport, Timings};
 use crate::scene::Scene;
+use crate::settings::Backend;
 use crate::warm::Warm;
 use crate::world::step::{prepare, Prepared};
 use crate::world::World;
@@ -215,16 +216,35 @@ impl Solver {
     /// [`Error::Invalid`] naming the first bad world, its body and the
     /// field, or `dt`; no world moves then.
     pub fn step_worlds(&mut self, worlds: &mut [World], dt: f64) -> Result<StepReport, Error> {
-        // The resident GPU path where the batch is in its scope
+        // The resident GPU path where the batch is routed there
         // (`world_gpu.rs`), the worlds checked first.
         check_step(worlds, dt, self.gpu.is_some())?;
-        if self.gpu.is_some() {
-            let mut stepped = None;
+        let (resident, why) = match self.gpu.is_some() {
+            true => self.world_route(worlds, 1),
+            false => (false, None),
+        };
+        let mut stepped = None;
+        if resident {
             let mut keep = |_, r| stepped = Some(r);
-            if self.step_worlds_resident(worlds, dt, 1, &mut keep).0 == 1 {
-                return Ok(stepped.expect("the step was reported"));
+            if self.step_worlds_resident(worlds, dt, 1, &mut keep, None).0 != 1 {
+                stepped = None;
             }
+        } else {
+            self.resident = None;
         }
+        let mut report = match stepped {
+            Some(r) => r,
+            None => self.step_worlds_host(worlds, dt)?,
+        };
+        tell_route(&mut report, resident, why.as_deref());
+        Ok(report)
+    }
+
+    /// One step of `worlds` on the host: each world on the CPU's per-world
+    /// path, or with a GPU open (not `Backend::Auto`, which keeps worlds
+    /// off the resident path on the CPU's per-world path) its islands in
+    /// one batch through `solve_built_scenes`; see the module docs.
+    fn step_worlds_host(&mut self, worlds: &mut [World], dt: f64) -> Result<StepReport, Error> {
         // Checked and collided in one pass over the cores (nothing is
         // changed before every world has passed); the first bad world (in
         // order) is checked again by name for the error (the name is
@@ -243,11 +263,12 @@ impl Solver {
             .map(|p| std::mem::take(&mut p.impacts.impulses))
             .collect();
         let collision = start.elapsed().as_secs_f64();
-        // The batch: every world while a GPU is open, solved by
+        // The batch: every world while a GPU is open (not with Auto), solved by
         // `solve_built_scenes` in one call; on the CPU every world is solved in pass 2.
         let start = Instant::now();
         let mut scenes: Vec<Scene> = Vec::new();
-        if self.gpu.is_some() {
+        let in_batch = self.gpu.is_some() && self.settings.backend != Backend::Auto;
+        if in_batch {
             scenes = prepared
                 .iter_mut()
                 .map(|p| std::mem::take(&mut p.scene))
@@ -286,9 +307,8 @@ impl Solver {
         let pass = start.elapsed().as_secs_f64();
         let solve = batch.unwrap_or_else(|| self.empty_report(cpu_device(self.threads)));
         // Where pass 2's frictional islands go, in the solver's words.
-        let gpu_open = self.gpu.is_some();
         let method = self.settings.friction_method;
-        let (_, went) = friction_on_gpu(gpu_open, self.cost.is_some(), method);
+        let (_, went) = friction_on_gpu(in_batch, self.cost.is_some(), method);
         let mut report = step_report(stepped, solve, &went, collision, batch_seconds, pass);
         // The impacts' impulses join their contacts' (none in most worlds).
         for (scene, kick) in report.solve.scenes.iter_mut().zip(&kicks) {
@@ -352,19 +372,154 @@ impl Solver {
         steps: usize,
         mut observe: impl FnMut(usize, StepReport),
     ) -> Result<(), Error> {
-        let resident = self.gpu.is_some() && steps > 0;
-        check_step(worlds, dt, resident)?;
+        self.step_worlds_call(worlds, dt, steps, &mut observe, None)
+    }
+
+    /// [`Self::step_worlds_for`], handing `show` the states of the worlds
+    /// `frames.worlds` (in that order) after each step `s` (counted from 1)
+    /// where `frames.at(s)`, after that step's report. On the resident GPU
+    /// path only those worlds' states come back for a frame (a ranged
+    /// read; submissions end there), every state once, with the last step;
+    /// elsewhere they are copies of the worlds as they step. After device
+    /// trouble the frames not yet handed over come from the CPU path.
+    ///
+    /// # Errors
+    /// Those of [`Self::step_worlds_for`], and [`Error::Invalid`] where an
+    /// index of `frames.worlds` is out of the batch (nothing is stepped).
+    ///
+    /// # Example
+    /// ```
+    /// use lcpbatch::world::generate::{standard_world, WorldKind};
+    /// use lcpbatch::{Frames, Settings, Solver};
+    /// let mut worlds: Vec<_> = (0..4).map(|k| standard_world(WorldKind::Spheres, 2, k)).collect();
+    /// let mut solver = Solver::new(Settings::default()).unwrap();
+    /// let frames = Frames { worlds: &[0, 3], at: &|s| s % 10 == 0 };
+    /// let mut shown = Vec::new();
+    /// solver
+    ///     .step_worlds_framed(&mut worlds, 0.01, 30, frames, |_, _| {}, |s, w| shown.push((s, w.len())))
+    ///     .unwrap();
+    /// assert_eq!(shown, [(10, 2), (20, 2), (30, 2)]);
+    /// ```
+    pub fn step_worlds_framed(
+        &mut self,
+        worlds: &mut [World],
+        dt: f64,
+        steps: usize,
+        frames: Frames,
+        mut observe: impl FnMut(usize, StepReport),
+        mut show: impl FnMut(usize, &[World]),
+    ) -> Result<(), Error> {
+        if let Some(&k) = frames.worlds.iter().find(|&&k| k >= worlds.len()) {
+            let why = format!("world {k} of a batch of {}", worlds.len());
+            return Err(Error::invalid("frames", "worlds", why));
+        }
+        let mut framing = Framing {
+            frames,
+            show: &mut show,
+            shown: 0,
+        };
+        self.step_worlds_call(worlds, dt, steps, &mut observe, Some(&mut framing))
+    }
+
+    /// A call of `steps` steps (see [`Self::step_worlds_for`]): routed once
+    /// ([`Self::world_route`]), the resident path where it goes there, the
+    /// CPU path for the steps it did not take; the frames `framing` asks
+    /// for handed over.
+    fn step_worlds_call(
+        &mut self,
+        worlds: &mut [World],
+        dt: f64,
+        steps: usize,
+        observe: &mut dyn FnMut(usize, StepReport),
+        mut framing: Option<&mut Framing>,
+    ) -> Result<(), Error> {
+        let gpu = self.gpu.is_some() && steps > 0;
+        check_step(worlds, dt, gpu)?;
+        let (resident, why) = match gpu {
+            true => self.world_route(worlds, steps),
+            false => (false, None),
+        };
+        let mut tell = |step, mut r: StepReport| {
+            tell_route(&mut r, resident, why.as_deref());
+            observe(step, r)
+        };
         let (mut reported, mut at) = (0, 0);
         if resident {
-            (reported, at) = self.step_worlds_resident(worlds, dt, steps, &mut observe);
+            let f = framing.as_deref_mut();
+            (reported, at) = self.step_worlds_resident(worlds, dt, steps, &mut tell, f);
+        } else {
+            self.resident = None;
         }
         for step in at..steps {
-            let r = self.step_worlds(worlds, dt)?;
+            let r = self.step_worlds_host(worlds, dt)?;
             if step >= reported {
-                observe(step, r);
+                tell(step, r);
+            }
+            if let Some(f) = framing.as_deref_mut() {
+                f.take(step + 1, worlds);
             }
         }
+        if let Some(f) = framing {
+            f.take(steps, worlds);
+        }
         Ok(())
+    }
+}
+
+/// Which worlds' states [`Solver::step_worlds_framed`] hands over, and
+/// after which steps.
+#[derive(Clone, Copy)]
+pub struct Frames<'a> {
+    /// The worlds (indices into the batch) whose states are handed over.
+    pub worlds: &'a [usize],
+    /// Whether they are wanted after step `s` (counted from 1, up to the
+    /// call's steps).
+    pub at: &'a dyn Fn(usize) -> bool,
+}
+
+/// A call's frames: what it asks for, the hand-over, the last step handed
+/// over (frames are handed over once, in order, also when the CPU path
+/// takes a call again after device trouble).
+pub(super) struct Framing<'a> {
+    pub frames: Frames<'a>,
+    show: &'a mut dyn FnMut(usize, &[World]),
+    shown: usize,
+}
+
+impl Framing<'_> {
+    /// The first step after `done` and before `steps` whose frame is
+    /// wanted and not yet handed over.
+    pub fn next(&self, done: usize, steps: usize) -> Option<usize> {
+        (done.max(self.shown) + 1..steps).find(|&s| (self.frames.at)(s))
+    }
+
+    /// Hands over the frame of step `s` (`states`: the frame's worlds).
+    pub fn give(&mut self, s: usize, states: &[World]) {
+        (self.show)(s, states);
+        self.shown = s;
+    }
+
+    /// After step `s` of the whole batch `worlds`: the frame where wanted
+    /// and not yet handed over.
+    fn take(&mut self, s: usize, worlds: &[World]) {
+        if s > self.shown && (self.frames.at)(s) {
+            let states: Vec<World> = self
+                .frames
+                .worlds
+                .iter()
+                .map(|&k| worlds[k].clone())
+                .collect();
+            self.give(s, &states);
+        }
+    }
+}
+
+/// A step's report on the route chosen (`resident` or the CPU): `why`
+/// (`Backend::Auto`'s reasons and estimates) as its choice, where it took
+/// that route (after device trouble the report keeps the solver's).
+fn tell_route(report: &mut StepReport, resident: bool, why: Option<&str>) {
+    if let (Some(why), true) = (why, report.resident.is_some() == resident) {
+        report.solve.choice = why.to_string();
     }
 }
 

@@ -6,19 +6,22 @@
 //! path, with a world flagged in the middle of a submission (a forced
 //! overflow of its contact slots: the submission is undone and taken again
 //! a step at a time), and with the device lost in the middle of a call
-//! (the CPU path takes the call again from the worlds passed in). Skipped
-//! without an f64 adapter (the CPU test always runs).
+//! (the CPU path takes the call again from the worlds passed in). An
+//! undone submission restores the records (`world_solve`'s warm bases
+//! live there); a call's frames read only their worlds' states. Skipped
+//! without an f64 adapter (the CPU tests always run).
 
 use super::gpu_resident::{f64_gpu, frictionless, max_distance, settings};
 use super::gpu_resident_friction::{frictional, settings as friction_settings};
 use crate::friction::FrictionMethod;
 use crate::gpu::resident::layout::flags;
-use crate::gpu::resident::WorldRecord;
+use crate::gpu::resident::{ResidentWorlds, WorldRecord};
+use crate::gpu::{GpuContext, GpuOptions, Precision};
 use crate::solver::world_gpu::{accepted, set_test_slots};
 use crate::world::generate::WorldKind;
 use crate::world::World;
 use crate::world::WorldStepReport;
-use crate::{Backend, GpuSettings, Settings, Solver, StepReport};
+use crate::{Backend, Frames, GpuSettings, Settings, Solver, StepReport};
 
 /// `worlds` stepped `steps` times by one `step_worlds` call per step:
 /// the worlds after, each step's reports.
@@ -199,9 +202,10 @@ fn a_world_flagged_within_a_submission_is_taken_again_a_step_at_a_time() {
 }
 
 /// The device is lost after step 29 of a call of 60 is reported (the
-/// submission of steps 15 to 30 has run): the CPU path takes the call
-/// again from the worlds passed in, reporting steps 30 to 59; the worlds
-/// end as the CPU path leaves them, bit for bit.
+/// submission of steps 15 to 30 has run and its steps are reported as it
+/// ends): the CPU path takes the call again from the worlds passed in,
+/// reporting steps 31 to 59; the worlds end as the CPU path leaves them,
+/// bit for bit.
 #[test]
 fn a_device_lost_within_a_call_hands_the_call_to_the_cpu() {
     let Some(gpu) = f64_gpu() else { return };
@@ -224,7 +228,7 @@ fn a_device_lost_within_a_call_hands_the_call_to_the_cpu() {
     .unwrap();
     let numbers: Vec<usize> = steps.iter().map(|x| x.0).collect();
     assert_eq!(numbers, (0..60).collect::<Vec<_>>());
-    assert!(steps[29].1 && !steps[30].1, "steps 30 to 59 on the CPU");
+    assert!(steps[30].1 && !steps[31].1, "steps 31 to 59 on the CPU");
     assert!(g.fallback().is_some());
     assert_eq!(got, want);
 }
@@ -249,4 +253,116 @@ fn a_submission_stands_only_as_one_step_per_submission_would_go() {
     assert_eq!(accepted(16, &[vec![rec(0, 3)], vec![rec(0, 4)]]), Some(6));
     // ... where a world active in 7 would have been handed to the CPU.
     assert_eq!(accepted(16, &[vec![rec(0, 3)], vec![rec(0, 7)]]), None);
+}
+
+/// `world_solve`'s warm basis of each world (the last two of its record's
+/// scalars) in the records buffer as it is now.
+fn warm_bases(r: &ResidentWorlds, ctx: &GpuContext) -> Vec<[f64; 2]> {
+    let rec = r.records_now(ctx).unwrap();
+    let per = crate::gpu::resident::layout::REC;
+    rec.chunks(per).map(|x| [x[per - 2], x[per - 1]]).collect()
+}
+
+/// A box lands within a submission of 16 steps, its warm basis changing
+/// from none to its contacts'; the submission is undone: the records, the
+/// warm bases with them, are as before it (and not as after), so the steps
+/// taken again start from the bases one step per submission had.
+#[test]
+fn an_undone_submission_restores_the_warm_bases() {
+    if f64_gpu().is_none() {
+        return;
+    }
+    let ctx = GpuContext::new(&GpuOptions {
+        precision: Precision::F64,
+        ..GpuOptions::from_env().unwrap()
+    })
+    .unwrap();
+    let mut worlds = frictionless(WorldKind::Stack, 1, 1);
+    worlds[0].bodies[1].position[1] += 0.3;
+    worlds.extend(frictionless(WorldKind::Stack, 2, 1));
+    let gpu = Settings::default().gpu_solve();
+    let r = ResidentWorlds::new(&ctx, &worlds, 1e-8, &gpu, true, None, None).unwrap();
+    // Falls 0.3 m: lands after about 25 steps of 10 ms.
+    for _ in 0..15 {
+        assert!(r.step(&ctx, 0.01).unwrap().iter().all(|x| x.flags == 0));
+    }
+    let before_records = r.records_now(&ctx).unwrap();
+    let before = warm_bases(&r, &ctx);
+    let history = r.steps(&ctx, 0.01, 16).unwrap();
+    let landed = history.iter().position(|x| x[0].contacts > 0);
+    assert!(
+        landed.is_some_and(|j| j > 0),
+        "the box lands within: {landed:?}"
+    );
+    let after = warm_bases(&r, &ctx);
+    assert_ne!(after[0], before[0], "the landing box's warm basis changed");
+    r.restore(&ctx).unwrap();
+    assert_eq!(warm_bases(&r, &ctx), before);
+    assert!(r.records_now(&ctx).unwrap() == before_records);
+}
+
+/// A call with frames on the resident path: the frames' worlds and
+/// figures are those of one `step_worlds` call per step at those steps,
+/// bit for bit; only the frames' worlds come back for a frame (bytes).
+#[test]
+fn frames_read_only_their_worlds() {
+    let Some(gpu) = f64_gpu() else { return };
+    let mut worlds = frictionless(WorldKind::Stack, 4, 3);
+    worlds.extend(frictionless(WorldKind::Spheres, 3, 3));
+    let s = settings(Backend::Gpu, gpu);
+    let steps = 40;
+    let shown = [1usize, 4];
+    let at = |s: usize| s.is_multiple_of(15) || s == 40;
+    let mut solver = Solver::new(s.clone()).unwrap();
+    let (mut cpu_solver, mut want) = (Solver::new(s).unwrap(), worlds.clone());
+    let mut want_frames = Vec::new();
+    for step in 1..=steps {
+        cpu_solver.step_worlds(&mut want, 0.01).unwrap();
+        if at(step) {
+            want_frames.push((step, shown.map(|k| want[k].clone()).to_vec()));
+        }
+    }
+    let (mut frames, mut bytes) = (Vec::new(), 0);
+    let mut got = worlds.clone();
+    let f = Frames {
+        worlds: &shown,
+        at: &at,
+    };
+    let observe = |_, r: StepReport| bytes += r.resident.expect("resident").bytes_back;
+    let show = |s: usize, w: &[World]| frames.push((s, w.to_vec()));
+    (solver.step_worlds_framed(&mut got, 0.01, steps, f, observe, show)).unwrap();
+    assert!(frames == want_frames, "the frames");
+    assert!(got == want, "the worlds after");
+    // Frames after steps 15 and 30 read the two worlds' bodies (that of
+    // step 40 is the call's end, which reads every state).
+    let bodies: usize = shown.iter().map(|&k| worlds[k].bodies.len()).sum();
+    let frame_bytes = 2 * bodies * (13 * 8 + 8);
+    assert_eq!(bytes, clean_call_bytes(&worlds, steps) + frame_bytes as u64);
+    // A frame's world out of the batch is refused, nothing stepped.
+    let f = Frames {
+        worlds: &[9],
+        at: &at,
+    };
+    let err = solver.step_worlds_framed(&mut got, 0.01, 1, f, |_, _| {}, |_, _| {});
+    assert!(err.unwrap_err().to_string().contains("frames"));
+    assert!(got == want);
+}
+
+/// The same frames on the CPU path: copies of the worlds as they step.
+#[test]
+fn frames_on_the_cpu_are_the_worlds_as_they_step() {
+    let worlds = frictionless(WorldKind::Spheres, 3, 3);
+    let s = settings(Backend::Cpu, GpuSettings::default());
+    let (want, _) = one_call_per_step(&s, worlds.clone(), 7);
+    let mut solver = Solver::new(s).unwrap();
+    let mut got = worlds;
+    let mut frames = Vec::new();
+    let f = Frames {
+        worlds: &[2],
+        at: &|s| s == 7,
+    };
+    let show = |s: usize, w: &[World]| frames.push((s, w.to_vec()));
+    (solver.step_worlds_framed(&mut got, 0.01, 7, f, |_, _| {}, show)).unwrap();
+    assert!(got == want);
+    assert!(frames == vec![(7, vec![want[2].clone()])]);
 }

@@ -1,6 +1,6 @@
 //! `lcpbatch simulate`: many worlds stepped in time through
-//! `Solver::step_worlds_for`, the states read back only where the film
-//! takes a frame and after the last step. Writes into `--out`:
+//! `Solver::step_worlds_framed`, the states of the film's worlds read back
+//! only where it takes a frame, every state after the last step. Writes into `--out`:
 //! `steps.jsonl` (one line per step, aggregated over the worlds), `final.json`
 //! (the worlds' final states, readable by `--world`), SVG plots of energy,
 //! penetration, solver error and time per step, and pictures of a few worlds
@@ -18,7 +18,7 @@ use lcpbatch::io::write_atomically;
 use lcpbatch::world::format::{parse_worlds, worlds_to_json};
 use lcpbatch::world::generate::{standard_world, WorldKind};
 use lcpbatch::world::ResidentStep;
-use lcpbatch::{Error, Settings, Solver, StepReport, World};
+use lcpbatch::{Error, Frames, Settings, Solver, StepReport, World};
 use plotters::style::BLACK;
 
 /// `simulate`'s default friction tolerance (see `--friction-tolerance`).
@@ -224,37 +224,49 @@ pub fn step_and_write(
         indicatif::ProgressStyle::with_template("{elapsed_precise} [{bar:30}] {pos}/{len} {msg}")
             .expect("valid template"),
     );
-    let mut film = Film::new(worlds, shown_worlds(worlds, groups), steps, dt);
+    let shown = shown_worlds(worlds, groups);
+    let ks: Vec<usize> = shown.iter().map(|s| s.0).collect();
+    let mut film = Film::new(worlds, shown, steps, dt);
+    let frame_steps: Vec<bool> = (0..=steps).map(|s| film.wants(s, steps)).collect();
+    // The film's view of the batch: its shown worlds as the frames hand
+    // them over (the others are not drawn).
+    let mut view = worlds.to_vec();
     let mut lines = Vec::with_capacity(steps);
     let mut run = Run::new(worlds.len());
     let start = Instant::now();
-    let mut done = 0;
-    while done < steps {
-        // The states come back where the film takes a frame (and after the
-        // last step): on the resident GPU path only the per-world records
-        // come back in between.
-        let last = (done + 1..=steps).find(|&s| film.wants(s, steps));
-        let n = last.expect("the last step is a frame") - done;
-        solver.step_worlds_for(worlds, dt, n, |k, r| {
-            let step = done + k;
-            let line = StepLine::of(step, (step + 1) as f64 * dt, &r);
-            run.add(step, line.time, &r);
-            bar.set_message(format!(
-                "{} contacts, {} islands",
-                line.contacts, line.islands
-            ));
-            bar.inc(1);
-            lines.push(line);
-        })?;
-        done += n;
-        film.record(worlds, done, steps, done as f64 * dt);
-    }
+    // Only the film's worlds' states come back where it takes a frame (on
+    // the resident GPU path; every state once, after the last step).
+    let frames = Frames {
+        worlds: &ks,
+        at: &|s| frame_steps[s],
+    };
+    let observe = |step: usize, r: StepReport| {
+        let line = StepLine::of(step, (step + 1) as f64 * dt, &r);
+        run.add(step, line.time, &r);
+        bar.set_message(format!(
+            "{} contacts, {} islands",
+            line.contacts, line.islands
+        ));
+        bar.inc(1);
+        lines.push(line);
+    };
+    let show = |s: usize, states: &[World]| {
+        for (&k, w) in ks.iter().zip(states) {
+            view[k].clone_from(w);
+        }
+        film.record(&view, s, steps, s as f64 * dt);
+    };
+    solver.step_worlds_framed(worlds, dt, steps, frames, observe, show)?;
     let wall = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
     let title = title(solver, worlds, groups, steps, dt);
     write_outputs(out, &lines, worlds, &run, solver.settings(), &title)?;
     film.write(out, &title)?;
     print_summary(&lines, &run, worlds.len(), wall);
+    // Where `--backend auto` stepped the worlds, with the estimates.
+    if let Some(route) = run.route.as_ref().filter(|r| r.contains("; worlds: ")) {
+        println!("  worlds stepped: {route}");
+    }
     println!("wrote {}", out.display());
     Ok(())
 }
@@ -332,6 +344,9 @@ struct Run {
     /// The resident GPU path's figures summed over its steps (None when no
     /// step took it).
     resident: Option<ResidentStep>,
+    /// The first step's choice (`--backend auto`: where the worlds went
+    /// and the cost model's estimates).
+    route: Option<String>,
 }
 
 impl Run {
@@ -342,10 +357,12 @@ impl Run {
             friction_dropped: vec![0; worlds],
             errors: [Vec::new(), Vec::new()],
             resident: None,
+            route: None,
         }
     }
 
     fn add(&mut self, step: usize, time: f64, r: &StepReport) {
+        self.route.get_or_insert_with(|| r.solve.choice.clone());
         if let Some(f) = &r.resident {
             (self.resident.get_or_insert_with(ResidentStep::default)).add(f);
         }

@@ -33,7 +33,7 @@
 pub mod layout;
 mod transfer;
 
-pub use transfer::MemoryEntry;
+pub use transfer::{MemoryEntry, States};
 
 use super::kernel::round_budget;
 use super::layout::{scalars_from_bytes, scalars_to_bytes};
@@ -391,15 +391,7 @@ impl ResidentWorlds {
         Ok(self.steps(ctx, dt, 1)?.pop().expect("one step"))
     }
 
-    /// `k` steps of `dt` for every world held (1 to [`Self::most_steps`])
-    /// in one submission, nothing read back but each step's records, once
-    /// (per world [`REC`] scalars and 4 words a step; the states stay on
-    /// the device: [`Self::read_states`]). Each step is dispatched as
-    /// [`Self::step`] dispatches it and its records copied aside. With `k`
-    /// > 1 the state, the words and the warm-start memory are first copied
-    /// aside on the device ([`Self::restore`] puts them back): a world
-    /// flagged in a step keeps its state, and the steps after it step it on
-    /// from there, so such a submission must be redone step by step.
+    /// [`Self::steps_and_states`] without the states.
     ///
     /// # Errors
     /// [`Error::Gpu`] for device trouble.
@@ -409,6 +401,30 @@ impl ResidentWorlds {
         dt: f64,
         k: usize,
     ) -> Result<Vec<Vec<WorldRecord>>, Error> {
+        Ok(self.steps_and_states(ctx, dt, k, false)?.0)
+    }
+
+    /// `k` steps of `dt` for every world held (1 to [`Self::most_steps`])
+    /// in one submission, nothing read back but each step's records, once
+    /// (per world [`REC`] scalars and 4 words a step; the states stay on
+    /// the device: [`Self::read_states`]). Each step is dispatched as
+    /// [`Self::step`] dispatches it and its records copied aside. With `k`
+    /// > 1 the state, the words and the warm-start memory are first copied
+    /// aside on the device ([`Self::restore`] puts them back): a world
+    /// flagged in a step keeps its state, and the steps after it step it on
+    /// from there, so such a submission must be redone step by step.
+    /// With `states`, every world's state after the last step comes back
+    /// in the same map ([`Self::unpack_states`]).
+    ///
+    /// # Errors
+    /// [`Error::Gpu`] for device trouble.
+    pub fn steps_and_states(
+        &self,
+        ctx: &GpuContext,
+        dt: f64,
+        k: usize,
+        states: bool,
+    ) -> Result<(Vec<Vec<WorldRecord>>, Option<transfer::States>), Error> {
         let k = k.clamp(1, self.most_steps);
         let n = self.count();
         let stages = ctx.pipelines()?;
@@ -443,20 +459,27 @@ impl ResidentWorlds {
                 let to = at + rec_bytes;
                 encoder.copy_buffer_to_buffer(&self.words, out_at, &self.history, to, words);
             }
-            let reads = [(&self.history, k as u64 * stride)];
-            ctx.submit_and_map(encoder, &reads, |v| {
-                (v[0].chunks(stride as usize))
+            let mut reads = vec![(&self.history, k as u64 * stride)];
+            reads.extend(self.state_reads().into_iter().filter(|_| states));
+            let read = reads.iter().map(|r| r.1).sum::<u64>();
+            let records = ctx.submit_and_map(encoder, &reads, |v| {
+                let records = (v[0].chunks(stride as usize))
                     .map(|b| {
                         let rec = scalars_from_bytes(&b[..rec_bytes as usize], self.precision);
                         let out: Vec<u32> = bytemuck::pod_collect_to_vec(&b[rec_bytes as usize..]);
                         records_of(&rec, &out)
                     })
-                    .collect()
-            })
+                    .collect();
+                (
+                    records,
+                    states.then(|| transfer::States::of(&v[1..], self.precision)),
+                )
+            });
+            records.map(|r| (r, read))
         })??;
-        self.bytes_read
-            .set(self.bytes_read.get() + k as u64 * stride);
-        Ok(records)
+        let (out, read) = records;
+        self.bytes_read.set(self.bytes_read.get() + read);
+        Ok(out)
     }
 
     /// Bytes of one step's records: the [`REC`] scalars of every world, and

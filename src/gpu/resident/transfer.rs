@@ -1,7 +1,10 @@
 //! What moves between the host and a resident batch after its upload
 //! (besides the per-step records of [`ResidentWorlds::steps`]): the
 //! states, all or some worlds' ([`ResidentWorlds::read_states`],
-//! [`ResidentWorlds::read_worlds`]), a world stepped on the CPU written
+//! [`ResidentWorlds::read_worlds`]; all of them also in the same
+//! submission and map as the records of a call's last steps,
+//! [`ResidentWorlds::steps_and_states`], unpacked by
+//! [`ResidentWorlds::unpack_states`]), a world stepped on the CPU written
 //! back ([`ResidentWorlds::write_world`]), a world's warm-start memory
 //! ([`ResidentWorlds::read_memory`], [`ResidentWorlds::write_memory`]).
 //! Every byte read is counted in [`ResidentWorlds::bytes_read`].
@@ -20,12 +23,21 @@ pub type MemoryEntry = (u32, [f64; 3]);
 
 /// States as read back: per body [`BS`] scalars and 2 sleep words, the
 /// worlds' bodies one after another.
-struct States {
+pub struct States {
     state: Vec<f64>,
     sleep: Vec<u32>,
 }
 
 impl States {
+    /// From the mapped bytes of the state's and the sleep words' reads
+    /// ([`ResidentWorlds::state_reads`]).
+    pub(super) fn of(bytes: &[&[u8]], precision: crate::gpu::Precision) -> Self {
+        States {
+            state: scalars_from_bytes(bytes[0], precision),
+            sleep: bytemuck::pod_collect_to_vec(bytes[1]),
+        }
+    }
+
     /// Copies the bodies from `first` on into `w`'s.
     fn unpack(&self, first: usize, w: &mut World) {
         for (j, b) in w.bodies.iter_mut().enumerate() {
@@ -46,33 +58,62 @@ impl ResidentWorlds {
     /// # Errors
     /// [`Error::Invalid`] where `worlds` is not the batch's shape;
     /// [`Error::Gpu`] for device trouble.
+    #[cfg_attr(
+        not(test),
+        allow(
+            dead_code,
+            reason = "the solver reads every state with a call's last step (steps_and_states); the tests read them alone"
+        )
+    )]
     pub fn read_states(&self, ctx: &GpuContext, worlds: &mut [World]) -> Result<(), Error> {
-        let n = self.count();
-        let shape_differs = worlds.len() != n
-            || (worlds.iter().enumerate()).any(|(k, w)| w.bodies.len() != self.bodies_of(k));
-        if shape_differs {
-            return Err(Error::invalid(
-                "read_states",
-                "worlds",
-                "not the batch the device holds".to_string(),
-            ));
-        }
-        let bodies = self.first[n] as u64;
-        let sb = self.precision.bytes();
-        let reads = [
-            (&self.state, bodies * BS as u64 * sb),
-            (&self.words, 8 * bodies),
-        ];
-        let states = self.read(
-            "reading resident states",
-            ctx,
-            ctx.encoder("read states"),
-            reads,
-        )?;
+        self.check_shape(worlds)?;
+        let encoder = ctx.encoder("read states");
+        let states = self.read("reading resident states", ctx, encoder, self.state_reads())?;
+        self.unpack_states(&states, worlds)
+    }
+
+    /// `states` (every world's, read with [`Self::steps_and_states`])
+    /// copied into `worlds` (the batch uploaded, in order).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] where `worlds` is not the batch's shape.
+    pub fn unpack_states(&self, states: &States, worlds: &mut [World]) -> Result<(), Error> {
+        self.check_shape(worlds)?;
         for (k, w) in worlds.iter_mut().enumerate() {
             states.unpack(self.first[k], w);
         }
         Ok(())
+    }
+
+    /// World `k`'s state in `states` (every world's) copied into `w`
+    /// (world `k` of the batch).
+    pub fn unpack_world(&self, states: &States, k: usize, w: &mut World) {
+        states.unpack(self.first[k], w);
+    }
+
+    /// An error where `worlds` is not the batch's shape.
+    fn check_shape(&self, worlds: &[World]) -> Result<(), Error> {
+        let shape_differs = worlds.len() != self.count()
+            || (worlds.iter().enumerate()).any(|(k, w)| w.bodies.len() != self.bodies_of(k));
+        match shape_differs {
+            true => Err(Error::invalid(
+                "read_states",
+                "worlds",
+                "not the batch the device holds".to_string(),
+            )),
+            false => Ok(()),
+        }
+    }
+
+    /// The reads of every world's state: the state's bytes, the sleep
+    /// words' bytes (each from its buffer's first byte).
+    pub(super) fn state_reads(&self) -> [(&wgpu::Buffer, u64); 2] {
+        let bodies = self.first[self.count()] as u64;
+        let sb = self.precision.bytes();
+        [
+            (&self.state, bodies * BS as u64 * sb),
+            (&self.words, 8 * bodies),
+        ]
     }
 
     /// The states of worlds `ks` (in the batch) copied into `worlds` (as
@@ -129,10 +170,7 @@ impl ResidentWorlds {
         reads: [(&wgpu::Buffer, u64); 2],
     ) -> Result<States, Error> {
         let states = ctx.scoped(what, || {
-            ctx.submit_and_map(encoder, &reads, |v| States {
-                state: scalars_from_bytes(v[0], self.precision),
-                sleep: bytemuck::pod_collect_to_vec(v[1]),
-            })
+            ctx.submit_and_map(encoder, &reads, |v| States::of(v, self.precision))
         })??;
         self.bytes_read
             .set(self.bytes_read.get() + reads[0].1 + reads[1].1);
@@ -226,5 +264,20 @@ impl ResidentWorlds {
             );
             q.write_buffer(&self.words, at * 8, bytemuck::cast_slice(&sleep));
         })
+    }
+}
+
+#[cfg(test)]
+impl ResidentWorlds {
+    /// The records buffer as it is now: per world [`super::layout::REC`]
+    /// scalars (the last two `world_solve`'s warm basis), not counted.
+    pub fn records_now(&self, ctx: &GpuContext) -> Result<Vec<f64>, Error> {
+        let len = self.records.size();
+        ctx.scoped("reading the records", || {
+            let encoder = ctx.encoder("read records");
+            ctx.submit_and_map(encoder, &[(&self.records, len)], |v| {
+                scalars_from_bytes(v[0], self.precision)
+            })
+        })?
     }
 }
