@@ -2,6 +2,7 @@
 //! and what they report.
 
 use super::cone::project_on_cone;
+use super::faceted::{faceted_start, polish, FACETED_MAX};
 use super::newton::newton_in;
 use super::nsgs::{nsgs_in, Patience};
 use super::problem::FrictionProblem;
@@ -348,6 +349,13 @@ fn hybrid(
                     return (used, true);
                 }
             }
+            if used < cap && p.contacts() <= FACETED_MAX {
+                error = faceted_round(p, ws, r, (&mut used, cap), tolerance);
+                keep_best(ws, r, error, &mut best);
+                if error <= tolerance {
+                    return (used, true);
+                }
+            }
             if used < cap {
                 // PROX from the start, not from the best iterate: the
                 // sweeps' and Newton's best lies within 1e-9 of a degenerate
@@ -404,6 +412,40 @@ fn prox_rounds(
             break;
         }
         target /= 10.0;
+    }
+    error
+}
+
+/// The faceted round of [`hybrid`] (islands of at most [`FACETED_MAX`]
+/// contacts where Newton stalled twice): r set to the answer of the
+/// island's faceted LCP ([`faceted_start`]: which contacts lift, stick and
+/// slide, by pivoting), polished where it is short of `tolerance`
+/// ([`polish`]: Gauss–Newton on the equations of that active set). Lemke's
+/// pivots and the Gauss–Newton steps count as iterations. Returns the
+/// error of r (r is left as it was where Lemke found no answer: error
+/// infinite; `ws.u` is exact for r).
+fn faceted_round(
+    p: &FrictionProblem,
+    ws: &mut Workspace,
+    r: &mut [f64],
+    (used, cap): (&mut u64, u64),
+    tolerance: f64,
+) -> f64 {
+    let mut slide = vec![0.0; p.contacts()];
+    let (pivots, found) = faceted_start(p, r, &mut slide, cap - *used);
+    *used += pivots.min(cap - *used);
+    if !found {
+        return f64::INFINITY;
+    }
+    ws.refresh(p, r);
+    let mut error = ws.error(p, r);
+    if !(error <= tolerance) && *used < cap {
+        let (k, e) = polish(p, r, &slide, cap - *used, tolerance);
+        *used += k;
+        if e <= tolerance {
+            ws.refresh(p, r);
+            error = ws.error(p, r);
+        }
     }
     error
 }
