@@ -28,8 +28,12 @@ pub enum FrictionMethod {
     /// (ask for a smaller `tolerance` to polish further: Newton converges
     /// quadratically, so 1e-12 costs a step or two more than 1e-8),
     /// within the iteration cap; where Newton stalls, once Newton from the
-    /// start, then [`Self::Prox`] (the first Newton round and Newton
-    /// from the start both short of the tolerance), for the rest of the cap.
+    /// start, then (islands of at most 16 contacts) the faceted round:
+    /// Lemke on the LCP of the island with pyramids for cones, its active
+    /// set (lifted, sticking, sliding) polished by Gauss–Newton and kept
+    /// only within the tolerance; then [`Self::Prox`] (the first Newton
+    /// round and Newton from the start both short of the tolerance), for
+    /// the rest of the cap.
     #[default]
     Auto,
     /// Non-smooth block Gauss–Seidel with exact local Coulomb solves, until
@@ -113,8 +117,9 @@ pub struct FrictionSettings {
     /// projected methods judge their own residual `cone_error` by it (see
     /// [`FrictionMethod::Jacobi`]).
     pub tolerance: f64,
-    /// Cap on NSGS sweeps plus Newton steps, PROX's inner steps included
-    /// (the projected methods: on their iterations).
+    /// Cap on NSGS sweeps plus Newton steps, PROX's inner steps and the
+    /// faceted round's Lemke pivots and Gauss–Newton steps included (the
+    /// projected methods: on their iterations).
     pub max_iterations: u64,
 }
 
@@ -145,7 +150,8 @@ pub struct FrictionSolution {
     pub u: Vec<f64>,
     /// The errors of r.
     pub residuals: FrictionResiduals,
-    /// NSGS sweeps plus Newton steps (PROX: its inner Newton steps).
+    /// NSGS sweeps plus Newton steps (PROX: its inner Newton steps; the
+    /// faceted round: Lemke's pivots and the Gauss–Newton steps).
     pub iterations: u64,
     /// The method asked for.
     pub method: FrictionMethod,
@@ -282,7 +288,13 @@ const NEAR_STEPS: u64 = 3;
 /// Newton round that stalls, Newton runs once from the start itself.
 /// A Newton iterate is projected on the cones and checked again before it
 /// is accepted. Once the first Newton round and Newton from the start are
-/// both short of the tolerance, PROX ([`prox_rounds`]) runs from the start
+/// both short of the tolerance, islands of at most [`FACETED_MAX`]
+/// contacts get [`faceted_round`] (a finite pivoting step that picks which
+/// contacts lift and slide, where the residual-driven steps creep:
+/// `rain:32` over 4 worlds × 1,000 steps ends 11 islands unsolved instead
+/// of 19, and its 229 islands that take over 20 iterations, replayed
+/// warm, take 18,499 iterations in all instead of 31,774 (11 unsolved)),
+/// then PROX ([`prox_rounds`]) runs from the start
 /// for the rest of the cap instead of more sweeps (NSGS creeps and Newton
 /// stalls where W is only semidefinite: piles, heavy boxes on light ones;
 /// on 216 seeded stacks of 2–4 boxes with mass ratios to 1e4 and μ to 2,
