@@ -19,6 +19,7 @@
 pub(crate) mod apgd;
 pub(crate) mod assembly;
 pub(crate) mod cone;
+pub(crate) mod faceted;
 pub(crate) mod local;
 pub(crate) mod newton;
 pub(crate) mod nsgs;
