@@ -551,6 +551,18 @@ impl ResidentWorlds {
         (self.at.region != 0).then_some((self.at.memory_r as u64 * sb, len))
     }
 
+    /// Worlds `world_solve_warm` left to `world_solve` in the last step
+    /// (a warm basis that did not hold, or none; 0 without warm bases).
+    ///
+    /// # Errors
+    /// [`Error::Gpu`] for device trouble.
+    #[cfg(test)]
+    pub(crate) fn deferred_worlds(&self, ctx: &GpuContext) -> Result<u32, Error> {
+        let encoder = ctx.encoder("deferred worlds");
+        let v = ctx.submit_and_read(encoder, &[(&self.deferred, 16)])?;
+        Ok(bytemuck::pod_read_unaligned(&v[0][12..16]))
+    }
+
     /// Rounds of `world_friction` per step (0: no world may have friction).
     pub fn rounds(&self) -> u32 {
         self.rounds.get()
