@@ -360,12 +360,52 @@ fn load_velocities(w: u32) {
 // contact c basic, c < 32). With `sp.warm_bases` the bases are hints where
 // this step's ids hash alike, as the CPU path's memory by id: every answer
 // passes the door's check whatever basis it came from.
+//
+// In two entry points where `sp.warm_bases` (llvmpipe runs every branch
+// of an invocation under a mask, so Lemke's path, rarely taken once the
+// warm bases hold, would cost every world every step): `world_solve_warm`
+// over every world, without Lemke's path: a world with an island whose
+// warm basis fails (or without a warm basis) is left as it is and listed
+// in `deferred`; then `world_solve`, dispatched indirectly over the listed
+// worlds only, steps them from the start with Lemke's path. Both rewrite
+// what they write before the island loop alike, so a listed world ends as
+// it would in `world_solve` alone. Without `sp.warm_bases`, `world_solve`
+// alone over every world.
 @compute @workgroup_size(64)
 fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
+    var w = gid.x;
+    if sp.warm_bases != 0u {
+        if w >= atomicLoad(&deferred[3]) {
+            return;
+        }
+        w = atomicLoad(&deferred[4u + w]);
+    }
+    if w >= sp.count {
+        return;
+    }
+    solve_world(w, true);
+}
+
+@compute @workgroup_size(64)
+fn world_solve_warm(@builtin(global_invocation_id) gid: vec3<u32>) {
     let w = gid.x;
     if w >= sp.count {
         return;
     }
+    solve_world(w, false);
+}
+
+// Lists world w for `world_solve` (its indirect dispatch: workgroups of
+// WORKGROUP worlds).
+fn defer_world(w: u32) {
+    let k = atomicAdd(&deferred[3], 1u);
+    atomicMax(&deferred[0], k / 64u + 1u);
+    atomicStore(&deferred[4u + k], w);
+}
+
+// world_solve for world w; without `lemke`, a world that would take
+// Lemke's path is deferred (`defer_world`) instead.
+fn solve_world(w: u32, lemke: bool) {
     let first = worlds[w].x;
     let out = sp.out_at + 4u * w;
     let count = words[out];
@@ -469,6 +509,10 @@ fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
             }
             basis = warm_basis(n, hint, &error);
             spent += (WARM_PIVOTS + 1u) * (n * n * n + 3u * n * n);
+        }
+        if basis == NONE && !lemke {
+            defer_world(w);
+            return;
         }
         if basis == NONE {
             // The tableau B⁻¹ [I, −M, −e | q] with B = I (lemke.wgsl).

@@ -43,7 +43,10 @@
 //   contact slot 4 (a, b, feature, island);
 // - records: per world REC scalars (kinetic, potential, max penetration,
 //   max error, awake, friction rounds, and world_solve's warm-start
-//   memory: a hash of last step's contact ids, their bases).
+//   memory: a hash of last step's contact ids, their bases);
+// - deferred: the worlds `world_solve_warm` leaves to `world_solve`
+//   (world_solve.wgsl): workgroups x, y, z of the indirect dispatch, the
+//   count, then the worlds; x and the count reset by world_collide.
 
 const SCALAR_EPSILON: Scalar = 1.1920929e-7; // HOST scalar_epsilon
 
@@ -117,6 +120,7 @@ struct StepParams {
 @group(0) @binding(4) var<storage, read_write> scratch: array<Scalar>;
 @group(0) @binding(5) var<storage, read_write> words: array<u32>;
 @group(0) @binding(6) var<storage, read_write> records: array<Scalar>;
+@group(0) @binding(7) var<storage, read_write> deferred: array<atomic<u32>>;
 
 fn vec3_at_consts(at: u32) -> vec3<Scalar> {
     return vec3<Scalar>(consts[at], consts[at + 1u], consts[at + 2u]);
@@ -253,6 +257,11 @@ fn keep_manifold(w: u32, c: u32, m: Manifold, flipped: bool) -> u32 {
 @compute @workgroup_size(64)
 fn world_collide(@builtin(global_invocation_id) gid: vec3<u32>) {
     let w = gid.x;
+    if w == 0u {
+        // No world left to world_solve yet this step.
+        atomicStore(&deferred[0], 0u);
+        atomicStore(&deferred[3], 0u);
+    }
     if w >= sp.count {
         return;
     }

@@ -895,7 +895,10 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 //   contact slot 4 (a, b, feature, island);
 // - records: per world REC scalars (kinetic, potential, max penetration,
 //   max error, awake, friction rounds, and world_solve's warm-start
-//   memory: a hash of last step's contact ids, their bases).
+//   memory: a hash of last step's contact ids, their bases);
+// - deferred: the worlds `world_solve_warm` leaves to `world_solve`
+//   (world_solve.wgsl): workgroups x, y, z of the indirect dispatch, the
+//   count, then the worlds; x and the count reset by world_collide.
 
 const SCALAR_EPSILON: Scalar = 2.220446049250313e-16; // HOST scalar_epsilon
 
@@ -969,6 +972,7 @@ struct StepParams {
 @group(0) @binding(4) var<storage, read_write> scratch: array<Scalar>;
 @group(0) @binding(5) var<storage, read_write> words: array<u32>;
 @group(0) @binding(6) var<storage, read_write> records: array<Scalar>;
+@group(0) @binding(7) var<storage, read_write> deferred: array<atomic<u32>>;
 
 fn vec3_at_consts(at: u32) -> vec3<Scalar> {
     return vec3<Scalar>(consts[at], consts[at + 1u], consts[at + 2u]);
@@ -1105,6 +1109,11 @@ fn keep_manifold(w: u32, c: u32, m: Manifold, flipped: bool) -> u32 {
 @compute @workgroup_size(64)
 fn world_collide(@builtin(global_invocation_id) gid: vec3<u32>) {
     let w = gid.x;
+    if w == 0u {
+        // No world left to world_solve yet this step.
+        atomicStore(&deferred[0], 0u);
+        atomicStore(&deferred[3], 0u);
+    }
     if w >= sp.count {
         return;
     }
@@ -1671,12 +1680,52 @@ fn load_velocities(w: u32) {
 // contact c basic, c < 32). With `sp.warm_bases` the bases are hints where
 // this step's ids hash alike, as the CPU path's memory by id: every answer
 // passes the door's check whatever basis it came from.
+//
+// In two entry points where `sp.warm_bases` (llvmpipe runs every branch
+// of an invocation under a mask, so Lemke's path, rarely taken once the
+// warm bases hold, would cost every world every step): `world_solve_warm`
+// over every world, without Lemke's path: a world with an island whose
+// warm basis fails (or without a warm basis) is left as it is and listed
+// in `deferred`; then `world_solve`, dispatched indirectly over the listed
+// worlds only, steps them from the start with Lemke's path. Both rewrite
+// what they write before the island loop alike, so a listed world ends as
+// it would in `world_solve` alone. Without `sp.warm_bases`, `world_solve`
+// alone over every world.
 @compute @workgroup_size(64)
 fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
+    var w = gid.x;
+    if sp.warm_bases != 0u {
+        if w >= atomicLoad(&deferred[3]) {
+            return;
+        }
+        w = atomicLoad(&deferred[4u + w]);
+    }
+    if w >= sp.count {
+        return;
+    }
+    solve_world(w, true);
+}
+
+@compute @workgroup_size(64)
+fn world_solve_warm(@builtin(global_invocation_id) gid: vec3<u32>) {
     let w = gid.x;
     if w >= sp.count {
         return;
     }
+    solve_world(w, false);
+}
+
+// Lists world w for `world_solve` (its indirect dispatch: workgroups of
+// WORKGROUP worlds).
+fn defer_world(w: u32) {
+    let k = atomicAdd(&deferred[3], 1u);
+    atomicMax(&deferred[0], k / 64u + 1u);
+    atomicStore(&deferred[4u + k], w);
+}
+
+// world_solve for world w; without `lemke`, a world that would take
+// Lemke's path is deferred (`defer_world`) instead.
+fn solve_world(w: u32, lemke: bool) {
     let first = worlds[w].x;
     let out = sp.out_at + 4u * w;
     let count = words[out];
@@ -1780,6 +1829,10 @@ fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
             }
             basis = warm_basis(n, hint, &error);
             spent += (WARM_PIVOTS + 1u) * (n * n * n + 3u * n * n);
+        }
+        if basis == NONE && !lemke {
+            defer_world(w);
+            return;
         }
         if basis == NONE {
             // The tableau B⁻¹ [I, −M, −e | q] with B = I (lemke.wgsl).

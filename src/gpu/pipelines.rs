@@ -104,7 +104,7 @@ pub(crate) const COLLIDE_BINDINGS: Bindings = &[
 ];
 
 /// `world_collide` and `world_solve` (shaders/world_step.wgsl): params,
-/// worlds, consts, state, scratch, words, records.
+/// worlds, consts, state, scratch, words, records, deferred worlds.
 pub(crate) const WORLD_STEP_BINDINGS: Bindings = &[
     (0, Uniform),
     (1, Read),
@@ -113,6 +113,7 @@ pub(crate) const WORLD_STEP_BINDINGS: Bindings = &[
     (4, ReadWrite),
     (5, ReadWrite),
     (6, ReadWrite),
+    (7, ReadWrite),
 ];
 
 /// Workgroup size of every entry point (`@workgroup_size(64)`).
@@ -240,9 +241,9 @@ pub(crate) struct Pipelines {
     friction_projected: Vec<OnceLock<Stage>>,
     /// [`Shader::Collide`] (the narrow phase), built on first use.
     collide: OnceLock<Stage>,
-    /// [`Shader::WorldStep`]'s `world_collide` and `world_solve`, built on
+    /// [`Shader::WorldStep`]'s `world_collide`, `world_solve` and `world_solve_warm`, built on
     /// first use.
-    world_step: OnceLock<[Stage; 2]>,
+    world_step: OnceLock<[Stage; 3]>,
     /// [`Shader::WorldStep`]'s `world_friction`, built on first use.
     world_friction: OnceLock<Stage>,
 }
@@ -341,14 +342,18 @@ impl Pipelines {
         Ok(self.collide.get_or_init(|| stage))
     }
 
-    /// The resident world step's stages `world_collide` and `world_solve`
-    /// (one layout), built on first use.
-    pub(crate) fn world_step(&self, ctx: &GpuContext) -> Result<&[Stage; 2], Error> {
+    /// The resident world step's stages `world_collide`, `world_solve` and
+    /// `world_solve_warm` (one layout), built on first use.
+    pub(crate) fn world_step(&self, ctx: &GpuContext) -> Result<&[Stage; 3], Error> {
         if let Some(s) = self.world_step.get() {
             return Ok(s);
         }
         let stage = |entry| Stage::new(ctx, Shader::WorldStep, entry, WORLD_STEP_BINDINGS);
-        let stages = [stage("world_collide")?, stage("world_solve")?];
+        let stages = [
+            stage("world_collide")?,
+            stage("world_solve")?,
+            stage("world_solve_warm")?,
+        ];
         Ok(self.world_step.get_or_init(|| stages))
     }
 

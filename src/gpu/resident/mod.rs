@@ -162,6 +162,12 @@ pub struct ResidentWorlds {
     scratch: wgpu::Buffer,
     words: wgpu::Buffer,
     records: wgpu::Buffer,
+    /// The worlds `world_solve_warm` leaves to `world_solve`: the indirect
+    /// dispatch's workgroups (x, y, z), their count, the worlds; and the
+    /// workgroups copied aside for the dispatch (a buffer bound for
+    /// storage cannot be its own dispatch's arguments).
+    deferred: wgpu::Buffer,
+    deferred_groups: wgpu::Buffer,
     bind: wgpu::BindGroup,
     /// Each step's records within a submission ([`Self::steps`]): per step
     /// the records, then the worlds' 4 words; mapped in place.
@@ -276,6 +282,24 @@ impl ResidentWorlds {
                 usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
                 mapped_at_creation: false,
             });
+            // Workgroups 0 × 1 × 1 and no world deferred (world_collide
+            // resets x and the count each step).
+            use wgpu::util::DeviceExt;
+            let mut list = vec![0u32; 4 + n];
+            list[1..3].copy_from_slice(&[1, 1]);
+            let deferred = ctx
+                .device
+                .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                    label: Some("deferred worlds"),
+                    contents: bytemuck::cast_slice(&list),
+                    usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+                });
+            let deferred_groups = ctx.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("deferred workgroups"),
+                size: 12,
+                usage: wgpu::BufferUsages::INDIRECT | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
             let stage = &stages.world_step(ctx)?[0];
             let bind = stage.bind(
                 ctx,
@@ -287,6 +311,7 @@ impl ResidentWorlds {
                     &scratch,
                     &words_buffer,
                     &records,
+                    &deferred,
                 ],
             );
             // Each step's records of a submission: up to MOST_STEPS, within
@@ -328,6 +353,8 @@ impl ResidentWorlds {
                 scratch: scratch.clone(),
                 words: words_buffer,
                 records,
+                deferred,
+                deferred_groups,
                 bind,
             };
             r.write_params(ctx, 0.0);
@@ -428,7 +455,7 @@ impl ResidentWorlds {
         let k = k.clamp(1, self.most_steps);
         let n = self.count();
         let stages = ctx.pipelines()?;
-        let [collide, solve] = stages.world_step(ctx)?;
+        let step_stages = stages.world_step(ctx)?;
         let rounds = self.rounds.get();
         let friction = match rounds {
             0 => None,
@@ -444,9 +471,8 @@ impl ResidentWorlds {
                 self.save(&mut encoder);
             }
             for j in 0..k as u64 {
-                for stage in [collide, solve] {
-                    self.record(&mut encoder, stage, groups);
-                }
+                self.record(&mut encoder, &step_stages[0], groups);
+                self.record_solve(&mut encoder, step_stages, groups);
                 for stage in friction
                     .iter()
                     .flat_map(|s| std::iter::repeat_n(*s, rounds as usize))
@@ -548,6 +574,18 @@ impl ResidentWorlds {
         (self.at.region != 0).then_some((self.at.memory_r as u64 * sb, len))
     }
 
+    /// Worlds `world_solve_warm` left to `world_solve` in the last step
+    /// (a warm basis that did not hold, or none; 0 without warm bases).
+    ///
+    /// # Errors
+    /// [`Error::Gpu`] for device trouble.
+    #[cfg(test)]
+    pub(crate) fn deferred_worlds(&self, ctx: &GpuContext) -> Result<u32, Error> {
+        let encoder = ctx.encoder("deferred worlds");
+        let v = ctx.submit_and_read(encoder, &[(&self.deferred, 16)])?;
+        Ok(bytemuck::pod_read_unaligned(&v[0][12..16]))
+    }
+
     /// Rounds of `world_friction` per step (0: no world may have friction).
     pub fn rounds(&self) -> u32 {
         self.rounds.get()
@@ -561,9 +599,10 @@ impl ResidentWorlds {
         }
     }
 
-    /// One step as [`Self::step`] does it, but each of its two dispatches
-    /// in a submission of its own, waited for: the wall seconds of
-    /// `world_collide` and `world_solve` (for benches; nothing read back).
+    /// One step as [`Self::step`] does it, but `world_collide` and the
+    /// solve's dispatches ([`Self::record_solve`]) in a submission of their
+    /// own each, waited for: per phase its wall seconds and the difference of `clock` over
+    /// it (a CPU clock of the caller's; for benches; nothing read back).
     ///
     /// # Errors
     /// [`Error::Gpu`] for device trouble.
@@ -574,24 +613,58 @@ impl ResidentWorlds {
             reason = "the phase measurement of src/tests/gpu_resident.rs"
         )
     )]
-    pub fn time_phases(&self, ctx: &GpuContext, dt: f64) -> Result<[f64; 2], Error> {
+    pub fn time_phases(
+        &self,
+        ctx: &GpuContext,
+        dt: f64,
+        clock: impl Fn() -> f64,
+    ) -> Result<[[f64; 2]; 2], Error> {
         let stages = ctx.pipelines()?;
         let groups = (self.count() as u32).div_ceil(super::pipelines::WORKGROUP);
-        let mut seconds = [0.0; 2];
+        let mut seconds = [[0.0; 2]; 2];
         self.write_params(ctx, dt);
-        for (stage, s) in stages.world_step(ctx)?.iter().zip(&mut seconds) {
-            let start = std::time::Instant::now();
+        let step_stages = stages.world_step(ctx)?;
+        for (phase, s) in seconds.iter_mut().enumerate() {
+            let (start, cpu) = (std::time::Instant::now(), clock());
             ctx.scoped("resident world step", || {
                 let mut encoder = ctx.encoder("resident world step");
-                self.record(&mut encoder, stage, groups);
+                match phase {
+                    0 => self.record(&mut encoder, &step_stages[0], groups),
+                    _ => self.record_solve(&mut encoder, step_stages, groups),
+                }
                 ctx.queue.submit([encoder.finish()]);
                 ctx.device
                     .poll(wgpu::PollType::wait_indefinitely())
                     .map_err(|e| Error::Gpu(format!("waiting for the GPU: {e}")))
             })??;
-            *s = start.elapsed().as_secs_f64();
+            *s = [start.elapsed().as_secs_f64(), clock() - cpu];
         }
         Ok(seconds)
+    }
+
+    /// `world_solve`'s dispatches after `world_collide`'s (`stages`: those
+    /// of `world_step`): with warm bases `world_solve_warm` over the worlds,
+    /// then `world_solve` over the worlds it deferred (an indirect
+    /// dispatch: none in a step where every warm basis held); else
+    /// `world_solve` over the worlds.
+    fn record_solve(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        stages: &[super::pipelines::Stage; 3],
+        groups: u32,
+    ) {
+        if !self.warm_bases {
+            return self.record(encoder, &stages[1], groups);
+        }
+        self.record(encoder, &stages[2], groups);
+        encoder.copy_buffer_to_buffer(&self.deferred, 0, &self.deferred_groups, 0, 12);
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some("world step, deferred worlds"),
+            timestamp_writes: None,
+        });
+        pass.set_pipeline(&stages[1].pipeline);
+        pass.set_bind_group(0, &self.bind, &[]);
+        pass.dispatch_workgroups_indirect(&self.deferred_groups, 0);
     }
 
     /// A dispatch of `stage` over the worlds.
