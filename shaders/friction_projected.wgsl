@@ -458,9 +458,7 @@ fn apgd_try(lipschitz: Scalar) -> bool {
         d2 += d * d;
         g2 += uy[r] * uy[r];
     }
-    // Or a step that rounding decides (apgd.rs accept_step).
-    let noise = Scalar(16.0) * SCALAR_EPSILON;
-    return curvature <= lipschitz * d2 || lipschitz * lipschitz * d2 <= noise * noise * g2;
+    return accept_step(curvature, d2, g2, lipschitz);
 }
 
 // APGD's scalars of one island: theta, L, best error, last error.
@@ -488,8 +486,9 @@ fn apgd_accept(a: ptr<function, ApgdScalars>, st: ptr<function, FrictionState>) 
         }
     }
     let th = (*a).theta;
-    let th_new = Scalar(0.5) * (th * sqrt(th * th + Scalar(4.0)) - th * th);
-    let beta = th * (Scalar(1.0) - th) / (th * th + th_new);
+    let m = apgd_momentum(th);
+    let th_new = m.x;
+    let beta = m.y;
     var g_dot = Scalar(0.0);
     for (var r = 0u; r < N; r++) { // UNROLL
         g_dot += uy[r] * (xn[r] - x[r]);

@@ -326,9 +326,7 @@ fn apgd_try(is: Island, lipschitz: Scalar) -> bool {
         d2 += d * d;
         g2 += vectors[uy0 + r] * vectors[uy0 + r];
     }
-    // Or a step that rounding decides (apgd.rs accept_step).
-    let noise = Scalar(16.0) * SCALAR_EPSILON;
-    return curvature <= lipschitz * d2 || lipschitz * lipschitz * d2 <= noise * noise * g2;
+    return accept_step(curvature, d2, g2, lipschitz);
 }
 
 // After an accepted try: the best iterate, the momentum, the gradient
@@ -349,8 +347,9 @@ fn apgd_accept(is: Island, index: u32, st: ptr<function, FrictionState>) {
         }
     }
     let th = scalars[s];
-    let th_new = Scalar(0.5) * (th * sqrt(th * th + Scalar(4.0)) - th * th);
-    let beta = th * (Scalar(1.0) - th) / (th * th + th_new);
+    let m = apgd_momentum(th);
+    let th_new = m.x;
+    let beta = m.y;
     let x0 = is.v;
     let ux0 = is.v + is.n;
     let y0 = is.v + 2u * is.n;

@@ -30,12 +30,22 @@
 //   world's max_error, as the CPU reports it;
 // - the impulses (apply_friction_impulses), then `finish_world`.
 //
+// With APGD (sp.gauss_seidel == METHOD_APGD) instead of the sweeps: the
+// twin of friction/apgd.rs `apgd` (from the same start; L from
+// first_lipschitz, backtracking by accept_step, the momentum and gradient
+// restarts of apgd_iteration, the best iterate kept), judged as above on
+// the best iterate and its u (the product that gave it, as the CPU's
+// judgement computes it again). A round may end between two backtracking
+// tries: the next goes on with the L it saved, as the twin's loop does.
+//
 // Per world in `scratch` from sp.friction_at, FR scalars: the rows (48 ×
 // 24: Jacobian 12, response 12), W (3k × 3k, row-major), q, x, u, two
-// temporaries (48 each), μ and η (16 each). Per world in `words` from
-// sp.fstate_at, 4 words: phase, island, sweeps done, 0.
+// temporaries (48 each; APGD's trial x and its u), μ and η (16 each);
+// APGD's y, u(y), best, u(best) (48 each), θ, L, the best error. Per
+// world in `words` from sp.fstate_at, 4 words: phase, island, sweeps (APGD
+// iterations) done, APGD's doublings of L in this iteration.
 
-const FR: u32 = 3728u;
+const FR: u32 = 3923u;
 const F_ROWS: u32 = 0u;
 const F_W: u32 = 1152u;
 const F_Q: u32 = 3456u;
@@ -45,6 +55,14 @@ const F_T1: u32 = 3600u;
 const F_T2: u32 = 3648u;
 const F_MU: u32 = 3696u;
 const F_ETA: u32 = 3712u;
+const F_Y: u32 = 3728u;
+const F_UY: u32 = 3776u;
+const F_BEST: u32 = 3824u;
+const F_UBEST: u32 = 3872u;
+const F_APGD: u32 = 3920u;
+
+// sp.gauss_seidel: 0 Jacobi, 1 Gauss–Seidel sweeps, METHOD_APGD.
+const METHOD_APGD: u32 = 2u;
 
 // Below this scale the stop measure is not divided (projected.rs SCALE_FLOOR).
 const SCALE_FLOOR: Scalar = Scalar(2.220446049250313e-16);
@@ -215,12 +233,12 @@ fn assemble_friction(base: u32, n: u32, first: u32, moving: u32) {
 // are multiples of 3.
 
 // u of contact i's rows 3i..3i+3: u_x = q_x + Σ_j W_xj x_j, each row's sum
-// in the order of j (projected.rs velocity_into): n loop iterations.
-fn contact_velocity(base: u32, dim: u32, i: u32) {
+// in the order of j (projected.rs velocity_into), x from `xs` into u at
+// `us` (offsets in the world's region): n loop iterations.
+fn contact_velocity(base: u32, dim: u32, i: u32, xs: u32, us: u32) {
     let r0 = base + F_W + 3u * i * dim;
     let r1 = r0 + dim;
     let r2 = r1 + dim;
-    let xs = base + F_X;
     var s0 = Scalar(0.0);
     var s1 = Scalar(0.0);
     var s2 = Scalar(0.0);
@@ -238,17 +256,17 @@ fn contact_velocity(base: u32, dim: u32, i: u32) {
         s2 += scratch[r2 + j + 1u] * x1;
         s2 += scratch[r2 + j + 2u] * x2;
     }
-    let u = base + F_U + 3u * i;
+    let u = us + 3u * i;
     let q = base + F_Q + 3u * i;
     scratch[u] = scratch[q] + s0;
     scratch[u + 1u] = scratch[q + 1u] + s1;
     scratch[u + 2u] = scratch[q + 2u] + s2;
 }
 
-// u = W x + q for the island's n contacts.
-fn friction_velocity(base: u32, n: u32) {
+// u = W x + q for the island's n contacts, x at base + `xs`, u at base + `us`.
+fn friction_velocity(base: u32, n: u32, xs: u32, us: u32) {
     for (var i = 0u; i < n; i++) {
-        contact_velocity(base, 3u * n, i);
+        contact_velocity(base, 3u * n, i, base + xs, base + us);
     }
 }
 
@@ -304,19 +322,20 @@ fn vec3_u(base: u32, i: u32) -> vec3<Scalar> {
     return vec3_at_scratch(base + F_U + 3u * i);
 }
 
-// projected.rs stop_measure of x with u; q2 = ‖q‖².
-fn stop_measure(base: u32, n: u32, q2: Scalar) -> Scalar {
+// projected.rs stop_measure of x at base + `xs` with u at base + `us`;
+// q2 = ‖q‖².
+fn stop_measure(base: u32, n: u32, q2: Scalar, xs: u32, us: u32) -> Scalar {
     var e2 = Scalar(0.0);
     for (var i = 0u; i < n; i++) {
-        let x = vec3_x(base, i);
-        let p = project_on_cone(x - vec3_u(base, i), scratch[base + F_MU + i]);
+        let x = vec3_at_scratch(base + xs + 3u * i);
+        let p = project_on_cone(x - vec3_at_scratch(base + us + 3u * i), scratch[base + F_MU + i]);
         let d = x - p;
         e2 += d.x * d.x;
         e2 += d.y * d.y;
         e2 += d.z * d.z;
     }
     let dim = 3u * n;
-    let scale = sqrt(max(max(q2, sum_squares_at(base + F_X, dim)), sum_squares_at(base + F_U, dim)));
+    let scale = sqrt(max(max(q2, sum_squares_at(base + xs, dim)), sum_squares_at(base + us, dim)));
     let e = sqrt(e2);
     if scale > SCALE_FLOOR {
         return e / scale;
@@ -331,7 +350,7 @@ fn sweep(base: u32, n: u32) {
     for (var i = 0u; i < n; i++) {
         let c = 3u * i;
         if sp.gauss_seidel != 0u {
-            contact_velocity(base, dim, i);
+            contact_velocity(base, dim, i, base + F_X, base + F_U);
         }
         let h = scratch[base + F_ETA + i];
         let x = vec3_x(base, i);
@@ -449,30 +468,51 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
         }
         let dim = 3u * n;
         // Costs: the loop iterations of each part (see contact_velocity).
+        let apgd = sp.gauss_seidel == METHOD_APGD;
         if phase == F_ASSEMBLE {
-            let cost = 12u * n * n + n * (sp.slots + 1u) + 64u;
+            var cost = 12u * n * n + n * (sp.slots + 1u) + 64u;
+            if apgd {
+                cost += 4u * n * n + 16u * n + 16u;
+            }
             if spent > count && spent + cost > sp.friction_budget {
                 break;
             }
             spent += cost;
             assemble_friction(base, n, first, moving);
             words[fs + 2u] = 0u;
+            words[fs + 3u] = 0u;
             phase = F_SWEEP;
             words[fs] = phase;
+            if apgd && !apgd_start(base, n, sum_squares_at(base + F_Q, dim)) {
+                flags |= NOT_SOLVED;
+                break;
+            }
         }
         // Iterations of `sweeps`: u, the stop measure, a sweep.
         let cost = 2u * n * n + 8u * n + 16u;
         let q2 = sum_squares_at(base + F_Q, dim);
         var done = false;
         var failed = false;
+        if apgd {
+            let r = apgd_round(base, n, q2, fs, spent);
+            spent = r.x;
+            if r.y == 2u {
+                flags |= NOT_SOLVED;
+                break;
+            }
+            done = r.y == 1u;
+        }
         loop {
+            if apgd {
+                break;
+            }
             if spent + cost > sp.friction_budget {
                 break;
             }
             spent += cost;
             let it = words[fs + 2u];
-            friction_velocity(base, n);
-            let err = stop_measure(base, n, q2);
+            friction_velocity(base, n, F_X, F_U);
+            let err = stop_measure(base, n, q2, F_X, F_U);
             if !finite(err) {
                 failed = true;
                 done = true;

@@ -82,7 +82,7 @@ struct StepParams {
     // The frictional phase (shaders/world_friction.wgsl): where its
     // per-world regions start in `scratch` (0: none, no world has
     // friction), its per-world words in `words`, the sweeps' cap, 1 for
-    // Gauss–Seidel (0: Jacobi), 1 for warm starts; this step's reactions
+    // Gauss–Seidel (0: Jacobi, 2: APGD), 1 for warm starts; this step's reactions
     // and the warm-start memory (ids in `words`, reactions in `scratch`).
     friction_at: u32,
     fstate_at: u32,

@@ -5,8 +5,10 @@
 // shaders/friction_projected.wgsl for k <= 4 and to
 // shaders/friction_projected_global.wgsl for k > 4 by
 // src/gpu/shaders/compose.rs): the HOST lines, the constants, the records,
-// the bindings, the finiteness test and the cone projection. Read the two
-// sources' headers for the layout and the rounds.
+// the bindings, the finiteness test, the cone projection and APGD's
+// scalar steps. Read the two sources' headers for the layout and the
+// rounds. The world step kernel (shaders/world_friction.wgsl) takes this
+// file from the cone projection on.
 
 alias Scalar = f64; // HOST scalar
 const SCALAR_MAX: Scalar = 1.7976931348623157e308; // HOST scalar_max
@@ -19,8 +21,6 @@ const FIXED_K: u32 = 12u; // HOST fixed_k
 const MAX_DIM: u32 = 48u;
 // Below this scale the stop measure is not divided (projected.rs SCALE_FLOOR).
 const SCALE_FLOOR: Scalar = Scalar(2.220446049250313e-16);
-// Consecutive doublings of L in one APGD iteration before a numerical failure.
-const MAX_BACKTRACKS: u32 = 64u;
 
 // FrictionState.status
 const NOT_STARTED: u32 = 0u;
@@ -106,6 +106,25 @@ fn project_on_cone(v: vec3<Scalar>, m: Scalar) -> vec3<Scalar> {
     let pn = (m * t + v.x) / (m * m + Scalar(1.0));
     let scale = m * pn / t;
     return vec3<Scalar>(pn, v.y * scale, v.z * scale);
+}
+
+// Consecutive doublings of L in one APGD iteration before a numerical failure.
+const MAX_BACKTRACKS: u32 = 64u;
+
+// APGD's backtracking test (apgd.rs accept_step): dᵀW d ≤ L‖d‖²
+// (`curvature`, `d2`), or a step that rounding decides: L‖d‖ ≤ 16 ε
+// ‖∇f(y)‖ (`g2` = ‖∇f(y)‖²).
+fn accept_step(curvature: Scalar, d2: Scalar, g2: Scalar, lipschitz: Scalar) -> bool {
+    let noise = Scalar(16.0) * SCALAR_EPSILON;
+    return curvature <= lipschitz * d2 || lipschitz * lipschitz * d2 <= noise * noise * g2;
+}
+
+// APGD's momentum after an accepted step from θ (apgd.rs apgd_iteration):
+// (θ_new, β).
+fn apgd_momentum(th: Scalar) -> vec2<Scalar> {
+    let th_new = Scalar(0.5) * (th * sqrt(th * th + Scalar(4.0)) - th * th);
+    let beta = th * (Scalar(1.0) - th) / (th * th + th_new);
+    return vec2<Scalar>(th_new, beta);
 }
 
 // Cone projection iterations for the cone complementarity problem of
@@ -436,9 +455,7 @@ fn apgd_try(is: Island, lipschitz: Scalar) -> bool {
         d2 += d * d;
         g2 += vectors[uy0 + r] * vectors[uy0 + r];
     }
-    // Or a step that rounding decides (apgd.rs accept_step).
-    let noise = Scalar(16.0) * SCALAR_EPSILON;
-    return curvature <= lipschitz * d2 || lipschitz * lipschitz * d2 <= noise * noise * g2;
+    return accept_step(curvature, d2, g2, lipschitz);
 }
 
 // After an accepted try: the best iterate, the momentum, the gradient
@@ -459,8 +476,9 @@ fn apgd_accept(is: Island, index: u32, st: ptr<function, FrictionState>) {
         }
     }
     let th = scalars[s];
-    let th_new = Scalar(0.5) * (th * sqrt(th * th + Scalar(4.0)) - th * th);
-    let beta = th * (Scalar(1.0) - th) / (th * th + th_new);
+    let m = apgd_momentum(th);
+    let th_new = m.x;
+    let beta = m.y;
     let x0 = is.v;
     let ux0 = is.v + is.n;
     let y0 = is.v + 2u * is.n;

@@ -1,4 +1,4 @@
-// GENERATED from shaders/collide.wgsl (functions) + shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_solve.wgsl + shaders/world_friction.wgsl + shaders/friction_common.wgsl (project_on_cone) by src/gpu/shaders/compose.rs: do not edit.
+// GENERATED from shaders/collide.wgsl (functions) + shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_solve.wgsl + shaders/world_friction.wgsl + shaders/world_apgd.wgsl + shaders/friction_common.wgsl (project_on_cone on) by src/gpu/shaders/compose.rs: do not edit.
 // Regenerate: LCPBATCH_BLESS_SHADERS=1 cargo test --release generated_shaders_are_committed
 
 // Narrow phase: the contact points of candidate pairs of bodies (entry
@@ -934,7 +934,7 @@ struct StepParams {
     // The frictional phase (shaders/world_friction.wgsl): where its
     // per-world regions start in `scratch` (0: none, no world has
     // friction), its per-world words in `words`, the sweeps' cap, 1 for
-    // Gauss–Seidel (0: Jacobi), 1 for warm starts; this step's reactions
+    // Gauss–Seidel (0: Jacobi, 2: APGD), 1 for warm starts; this step's reactions
     // and the warm-start memory (ids in `words`, reactions in `scratch`).
     friction_at: u32,
     fstate_at: u32,
@@ -2033,12 +2033,22 @@ fn finish_world(w: u32, flags0: u32, max_penetration: Scalar, max_error: Scalar)
 //   world's max_error, as the CPU reports it;
 // - the impulses (apply_friction_impulses), then `finish_world`.
 //
+// With APGD (sp.gauss_seidel == METHOD_APGD) instead of the sweeps: the
+// twin of friction/apgd.rs `apgd` (from the same start; L from
+// first_lipschitz, backtracking by accept_step, the momentum and gradient
+// restarts of apgd_iteration, the best iterate kept), judged as above on
+// the best iterate and its u (the product that gave it, as the CPU's
+// judgement computes it again). A round may end between two backtracking
+// tries: the next goes on with the L it saved, as the twin's loop does.
+//
 // Per world in `scratch` from sp.friction_at, FR scalars: the rows (48 ×
 // 24: Jacobian 12, response 12), W (3k × 3k, row-major), q, x, u, two
-// temporaries (48 each), μ and η (16 each). Per world in `words` from
-// sp.fstate_at, 4 words: phase, island, sweeps done, 0.
+// temporaries (48 each; APGD's trial x and its u), μ and η (16 each);
+// APGD's y, u(y), best, u(best) (48 each), θ, L, the best error. Per
+// world in `words` from sp.fstate_at, 4 words: phase, island, sweeps (APGD
+// iterations) done, APGD's doublings of L in this iteration.
 
-const FR: u32 = 3728u;
+const FR: u32 = 3923u;
 const F_ROWS: u32 = 0u;
 const F_W: u32 = 1152u;
 const F_Q: u32 = 3456u;
@@ -2048,6 +2058,14 @@ const F_T1: u32 = 3600u;
 const F_T2: u32 = 3648u;
 const F_MU: u32 = 3696u;
 const F_ETA: u32 = 3712u;
+const F_Y: u32 = 3728u;
+const F_UY: u32 = 3776u;
+const F_BEST: u32 = 3824u;
+const F_UBEST: u32 = 3872u;
+const F_APGD: u32 = 3920u;
+
+// sp.gauss_seidel: 0 Jacobi, 1 Gauss–Seidel sweeps, METHOD_APGD.
+const METHOD_APGD: u32 = 2u;
 
 // Below this scale the stop measure is not divided (projected.rs SCALE_FLOOR).
 const SCALE_FLOOR: Scalar = Scalar(2.220446049250313e-16);
@@ -2218,12 +2236,12 @@ fn assemble_friction(base: u32, n: u32, first: u32, moving: u32) {
 // are multiples of 3.
 
 // u of contact i's rows 3i..3i+3: u_x = q_x + Σ_j W_xj x_j, each row's sum
-// in the order of j (projected.rs velocity_into): n loop iterations.
-fn contact_velocity(base: u32, dim: u32, i: u32) {
+// in the order of j (projected.rs velocity_into), x from `xs` into u at
+// `us` (offsets in the world's region): n loop iterations.
+fn contact_velocity(base: u32, dim: u32, i: u32, xs: u32, us: u32) {
     let r0 = base + F_W + 3u * i * dim;
     let r1 = r0 + dim;
     let r2 = r1 + dim;
-    let xs = base + F_X;
     var s0 = Scalar(0.0);
     var s1 = Scalar(0.0);
     var s2 = Scalar(0.0);
@@ -2241,17 +2259,17 @@ fn contact_velocity(base: u32, dim: u32, i: u32) {
         s2 += scratch[r2 + j + 1u] * x1;
         s2 += scratch[r2 + j + 2u] * x2;
     }
-    let u = base + F_U + 3u * i;
+    let u = us + 3u * i;
     let q = base + F_Q + 3u * i;
     scratch[u] = scratch[q] + s0;
     scratch[u + 1u] = scratch[q + 1u] + s1;
     scratch[u + 2u] = scratch[q + 2u] + s2;
 }
 
-// u = W x + q for the island's n contacts.
-fn friction_velocity(base: u32, n: u32) {
+// u = W x + q for the island's n contacts, x at base + `xs`, u at base + `us`.
+fn friction_velocity(base: u32, n: u32, xs: u32, us: u32) {
     for (var i = 0u; i < n; i++) {
-        contact_velocity(base, 3u * n, i);
+        contact_velocity(base, 3u * n, i, base + xs, base + us);
     }
 }
 
@@ -2307,19 +2325,20 @@ fn vec3_u(base: u32, i: u32) -> vec3<Scalar> {
     return vec3_at_scratch(base + F_U + 3u * i);
 }
 
-// projected.rs stop_measure of x with u; q2 = ‖q‖².
-fn stop_measure(base: u32, n: u32, q2: Scalar) -> Scalar {
+// projected.rs stop_measure of x at base + `xs` with u at base + `us`;
+// q2 = ‖q‖².
+fn stop_measure(base: u32, n: u32, q2: Scalar, xs: u32, us: u32) -> Scalar {
     var e2 = Scalar(0.0);
     for (var i = 0u; i < n; i++) {
-        let x = vec3_x(base, i);
-        let p = project_on_cone(x - vec3_u(base, i), scratch[base + F_MU + i]);
+        let x = vec3_at_scratch(base + xs + 3u * i);
+        let p = project_on_cone(x - vec3_at_scratch(base + us + 3u * i), scratch[base + F_MU + i]);
         let d = x - p;
         e2 += d.x * d.x;
         e2 += d.y * d.y;
         e2 += d.z * d.z;
     }
     let dim = 3u * n;
-    let scale = sqrt(max(max(q2, sum_squares_at(base + F_X, dim)), sum_squares_at(base + F_U, dim)));
+    let scale = sqrt(max(max(q2, sum_squares_at(base + xs, dim)), sum_squares_at(base + us, dim)));
     let e = sqrt(e2);
     if scale > SCALE_FLOOR {
         return e / scale;
@@ -2334,7 +2353,7 @@ fn sweep(base: u32, n: u32) {
     for (var i = 0u; i < n; i++) {
         let c = 3u * i;
         if sp.gauss_seidel != 0u {
-            contact_velocity(base, dim, i);
+            contact_velocity(base, dim, i, base + F_X, base + F_U);
         }
         let h = scratch[base + F_ETA + i];
         let x = vec3_x(base, i);
@@ -2452,30 +2471,51 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
         }
         let dim = 3u * n;
         // Costs: the loop iterations of each part (see contact_velocity).
+        let apgd = sp.gauss_seidel == METHOD_APGD;
         if phase == F_ASSEMBLE {
-            let cost = 12u * n * n + n * (sp.slots + 1u) + 64u;
+            var cost = 12u * n * n + n * (sp.slots + 1u) + 64u;
+            if apgd {
+                cost += 4u * n * n + 16u * n + 16u;
+            }
             if spent > count && spent + cost > sp.friction_budget {
                 break;
             }
             spent += cost;
             assemble_friction(base, n, first, moving);
             words[fs + 2u] = 0u;
+            words[fs + 3u] = 0u;
             phase = F_SWEEP;
             words[fs] = phase;
+            if apgd && !apgd_start(base, n, sum_squares_at(base + F_Q, dim)) {
+                flags |= NOT_SOLVED;
+                break;
+            }
         }
         // Iterations of `sweeps`: u, the stop measure, a sweep.
         let cost = 2u * n * n + 8u * n + 16u;
         let q2 = sum_squares_at(base + F_Q, dim);
         var done = false;
         var failed = false;
+        if apgd {
+            let r = apgd_round(base, n, q2, fs, spent);
+            spent = r.x;
+            if r.y == 2u {
+                flags |= NOT_SOLVED;
+                break;
+            }
+            done = r.y == 1u;
+        }
         loop {
+            if apgd {
+                break;
+            }
             if spent + cost > sp.friction_budget {
                 break;
             }
             spent += cost;
             let it = words[fs + 2u];
-            friction_velocity(base, n);
-            let err = stop_measure(base, n, q2);
+            friction_velocity(base, n, F_X, F_U);
+            let err = stop_measure(base, n, q2, F_X, F_U);
             if !finite(err) {
                 failed = true;
                 done = true;
@@ -2581,6 +2621,179 @@ fn remember_reactions(w: u32, count: u32) {
     }
 }
 
+// APGD in the frictional phase of shaders/world_step.wgsl (composed after
+// world_friction.wgsl, whose header gives the method, the layout of a
+// world's region and the rounds; `world_friction` calls apgd_start after
+// an island's assembly and apgd_round in each round): the twin of
+// friction/apgd.rs, its arithmetic in its order, on the island's W, q and
+// μ in `scratch`. accept_step and apgd_momentum are friction_common.wgsl's
+// (the batch APGD kernels' own).
+
+// Copies contact after contact 3n entries from base + `src` to base + `dst`.
+fn copy_entries(base: u32, n: u32, src: u32, dst: u32) {
+    for (var i = 0u; i < n; i++) {
+        put_scratch(base + dst + 3u * i, vec3_at_scratch(base + src + 3u * i));
+    }
+}
+
+// apgd.rs first_lipschitz: ‖W e‖ / ‖e‖ for e = (1, …, 1), else the largest
+// |W_rr|, else 1.
+fn first_lipschitz(base: u32, n: u32) -> Scalar {
+    let dim = 3u * n;
+    var s2 = Scalar(0.0);
+    for (var r = 0u; r < dim; r++) {
+        let row = base + F_W + r * dim;
+        var s = Scalar(0.0);
+        for (var j = 0u; j < dim; j += 3u) {
+            s += scratch[row + j];
+            s += scratch[row + j + 1u];
+            s += scratch[row + j + 2u];
+        }
+        s2 += s * s;
+    }
+    let l = sqrt(s2 / Scalar(dim));
+    if l > Scalar(0.0) && finite(l) {
+        return l;
+    }
+    var d = Scalar(0.0);
+    for (var r = 0u; r < dim; r++) {
+        d = max(d, abs(scratch[base + F_W + r * dim + r]));
+    }
+    return select(Scalar(1.0), d, d > Scalar(0.0) && finite(d));
+}
+
+// APGD's start (apgd.rs apgd) from x (projected by assemble_friction):
+// u(x), its error, y = x, u(y) = u(x), best = x, θ = 1, L; false where
+// the error is not finite (the twin fails).
+fn apgd_start(base: u32, n: u32, q2: Scalar) -> bool {
+    friction_velocity(base, n, F_X, F_U);
+    let err = stop_measure(base, n, q2, F_X, F_U);
+    copy_entries(base, n, F_X, F_Y);
+    copy_entries(base, n, F_U, F_UY);
+    copy_entries(base, n, F_X, F_BEST);
+    copy_entries(base, n, F_U, F_UBEST);
+    let a = base + F_APGD;
+    scratch[a] = Scalar(1.0);
+    scratch[a + 1u] = first_lipschitz(base, n);
+    scratch[a + 2u] = err;
+    return finite(err);
+}
+
+// One backtracking try from y with step 1/L (apgd_iteration): the trial
+// xn = P_K(y − u(y) / L) into T1, u(xn) into T2; whether accept_step takes
+// it (d = xn − y, W d = u(xn) − u(y)).
+fn apgd_try(base: u32, n: u32, lipschitz: Scalar) -> bool {
+    let t = Scalar(1.0) / lipschitz;
+    for (var i = 0u; i < n; i++) {
+        let y = vec3_at_scratch(base + F_Y + 3u * i);
+        let uy = vec3_at_scratch(base + F_UY + 3u * i);
+        put_scratch(base + F_T1 + 3u * i, project_on_cone(y - t * uy, scratch[base + F_MU + i]));
+    }
+    friction_velocity(base, n, F_T1, F_T2);
+    var curvature = Scalar(0.0);
+    var d2 = Scalar(0.0);
+    var g2 = Scalar(0.0);
+    for (var i = 0u; i < n; i++) {
+        let d = vec3_at_scratch(base + F_T1 + 3u * i) - vec3_at_scratch(base + F_Y + 3u * i);
+        let uy = vec3_at_scratch(base + F_UY + 3u * i);
+        let wd = vec3_at_scratch(base + F_T2 + 3u * i) - uy;
+        curvature += d.x * wd.x;
+        curvature += d.y * wd.y;
+        curvature += d.z * wd.z;
+        d2 += d.x * d.x;
+        d2 += d.y * d.y;
+        d2 += d.z * d.z;
+        g2 += uy.x * uy.x;
+        g2 += uy.y * uy.y;
+        g2 += uy.z * uy.z;
+    }
+    return accept_step(curvature, d2, g2, lipschitz);
+}
+
+// After an accepted try (apgd_iteration): the best iterate (with its u),
+// the momentum, the gradient restart, x = xn, L × 0.9, the iteration
+// counted in words[fs + 2]; false where the trial's error is not finite.
+fn apgd_accept(base: u32, n: u32, q2: Scalar, fs: u32) -> bool {
+    let err = stop_measure(base, n, q2, F_T1, F_T2);
+    if !finite(err) {
+        return false;
+    }
+    let a = base + F_APGD;
+    if err < scratch[a + 2u] {
+        scratch[a + 2u] = err;
+        copy_entries(base, n, F_T1, F_BEST);
+        copy_entries(base, n, F_T2, F_UBEST);
+    }
+    let m = apgd_momentum(scratch[a]);
+    var g_dot = Scalar(0.0);
+    for (var i = 0u; i < n; i++) {
+        let d = vec3_at_scratch(base + F_T1 + 3u * i) - vec3_x(base, i);
+        let uy = vec3_at_scratch(base + F_UY + 3u * i);
+        g_dot += uy.x * d.x;
+        g_dot += uy.y * d.y;
+        g_dot += uy.z * d.z;
+    }
+    let restart = g_dot > Scalar(0.0);
+    for (var i = 0u; i < n; i++) {
+        let xn = vec3_at_scratch(base + F_T1 + 3u * i);
+        let un = vec3_at_scratch(base + F_T2 + 3u * i);
+        var y = xn;
+        var uy = un;
+        if !restart {
+            y = xn + m.y * (xn - vec3_x(base, i));
+            uy = un + m.y * (un - vec3_u(base, i));
+        }
+        put_scratch(base + F_Y + 3u * i, y);
+        put_scratch(base + F_UY + 3u * i, uy);
+        put_scratch(base + F_X + 3u * i, xn);
+        put_scratch(base + F_U + 3u * i, un);
+    }
+    scratch[a] = select(m.x, Scalar(1.0), restart);
+    scratch[a + 1u] = scratch[a + 1u] * Scalar(0.9);
+    words[fs + 2u] += 1u;
+    words[fs + 3u] = 0u;
+    return true;
+}
+
+// The APGD iterations of a round within `budget` from `spent` (the twin's
+// loop: stop at the tolerance or the cap, else a try, doubling L where it
+// fails): (loop work spent, 1 done, 2 failed), the best iterate and its u
+// in x and u where done.
+fn apgd_round(base: u32, n: u32, q2: Scalar, fs: u32, spent0: u32) -> vec2<u32> {
+    let cost = n * n + 10u * n + 16u;
+    let a = base + F_APGD;
+    var spent = spent0;
+    var end = 0u;
+    loop {
+        if scratch[a + 2u] <= sp.friction_tolerance || words[fs + 2u] >= sp.max_iterations {
+            copy_entries(base, n, F_BEST, F_X);
+            copy_entries(base, n, F_UBEST, F_U);
+            spent += 2u * n;
+            end = 1u;
+            break;
+        }
+        if spent + cost > sp.friction_budget {
+            break;
+        }
+        spent += cost;
+        let l = scratch[a + 1u];
+        if apgd_try(base, n, l) {
+            if !apgd_accept(base, n, q2, fs) {
+                end = 2u;
+                break;
+            }
+        } else {
+            scratch[a + 1u] = Scalar(2.0) * l;
+            words[fs + 3u] += 1u;
+            if words[fs + 3u] >= MAX_BACKTRACKS || !finite(scratch[a + 1u]) {
+                end = 2u;
+                break;
+            }
+        }
+    }
+    return vec2<u32>(spent, end);
+}
+
 // Siconos' fc3d projection on {|x_t| <= mu x_n} (cone.rs project_on_cone).
 fn project_on_cone(v: vec3<Scalar>, m: Scalar) -> vec3<Scalar> {
     let t = sqrt(v.y * v.y + v.z * v.z);
@@ -2593,4 +2806,23 @@ fn project_on_cone(v: vec3<Scalar>, m: Scalar) -> vec3<Scalar> {
     let pn = (m * t + v.x) / (m * m + Scalar(1.0));
     let scale = m * pn / t;
     return vec3<Scalar>(pn, v.y * scale, v.z * scale);
+}
+
+// Consecutive doublings of L in one APGD iteration before a numerical failure.
+const MAX_BACKTRACKS: u32 = 64u;
+
+// APGD's backtracking test (apgd.rs accept_step): dᵀW d ≤ L‖d‖²
+// (`curvature`, `d2`), or a step that rounding decides: L‖d‖ ≤ 16 ε
+// ‖∇f(y)‖ (`g2` = ‖∇f(y)‖²).
+fn accept_step(curvature: Scalar, d2: Scalar, g2: Scalar, lipschitz: Scalar) -> bool {
+    let noise = Scalar(16.0) * SCALAR_EPSILON;
+    return curvature <= lipschitz * d2 || lipschitz * lipschitz * d2 <= noise * noise * g2;
+}
+
+// APGD's momentum after an accepted step from θ (apgd.rs apgd_iteration):
+// (θ_new, β).
+fn apgd_momentum(th: Scalar) -> vec2<Scalar> {
+    let th_new = Scalar(0.5) * (th * sqrt(th * th + Scalar(4.0)) - th * th);
+    let beta = th * (Scalar(1.0) - th) / (th * th + th_new);
+    return vec2<Scalar>(th_new, beta);
 }

@@ -38,13 +38,13 @@
 //! CPU's warm-start memory of a world flagged in them is then a later
 //! step's: a start, not the answer).
 //!
-//! **Friction** (issue 23): with `friction_method` `pgs` or `jacobi` a
-//! batch with friction stays resident; `world_friction` is the twin of
-//! the CPU path's projected sweeps. Warm starts (one call kept, the
+//! **Friction** (issue 23): with `friction_method` `pgs`, `jacobi` or
+//! `apgd` a batch with friction stays resident; `world_friction` is the
+//! twin of the CPU path's projected sweeps or APGD. Warm starts (one call kept, the
 //! default) live on the device: the last step's reactions by (a, b,
 //! feature); a flagged world's memory comes to the host before its CPU step
-//! and what that step recorded goes back. Other friction methods (the
-//! exact Coulomb default, `apgd`) take the other paths.
+//! and what that step recorded goes back. The exact Coulomb methods (the
+//! default) take the other paths.
 //!
 //! Frictionless islands start from last step's basis (`world_solve`'s
 //! `warm_basis`, the twin of `world_cpu.rs`'s `warm_settle` without its
@@ -62,7 +62,7 @@ use super::world_path::{
 };
 use super::world_repair::{repair_settings, Repairs};
 use super::Solver;
-use crate::friction::FrictionMethod;
+use crate::friction::{FrictionMethod, ProjectedMethod};
 use crate::gpu::resident::layout::{cpu_id, device_key, flags, may_have_friction, out_of_scope};
 use crate::gpu::resident::{
     MemoryEntry, ResidentFriction, ResidentWorlds, States, WorldRecord, MAX_ROUNDS,
@@ -216,22 +216,24 @@ impl Solver {
     }
 
     /// The frictional phase's settings where the friction method has a
-    /// resident twin (`pgs`, `jacobi`: the sweeps of `friction/projected.rs`,
-    /// as the CPU path runs them) and warm starts (if on) keep one call's
-    /// reactions (`warm_start_calls` 1, the default); None otherwise (a
-    /// batch with friction then takes the other paths).
+    /// resident twin (`pgs`, `jacobi`: the sweeps of `friction/projected.rs`;
+    /// `apgd`: `friction/apgd.rs`; as the CPU path runs them) and warm
+    /// starts (if on) keep one call's reactions (`warm_start_calls` 1, the
+    /// default); None otherwise (a batch with friction then takes the
+    /// other paths).
     fn resident_friction(&self) -> Option<ResidentFriction> {
         let s = &self.settings;
-        let gauss_seidel = match s.friction_method {
-            FrictionMethod::Pgs => true,
-            FrictionMethod::Jacobi => false,
+        let method = match s.friction_method {
+            FrictionMethod::Pgs => ProjectedMethod::GaussSeidel,
+            FrictionMethod::Jacobi => ProjectedMethod::Jacobi,
+            FrictionMethod::Apgd => ProjectedMethod::Apgd,
             _ => return None,
         };
         let p = s.friction().projected_settings();
         (!s.warm_start || s.warm_start_calls == 1).then_some(ResidentFriction {
             tolerance: p.f64_tolerance(),
             max_iterations: p.max_iterations,
-            gauss_seidel,
+            method,
             warm_start: s.warm_start,
         })
     }

@@ -27,8 +27,9 @@ pub const CP: usize = 8;
 pub const REC: usize = 8;
 /// Scalars per world of the frictional phase's region in `scratch`
 /// (`shaders/world_friction.wgsl`): an island's rows (48 × 24), W (48 × 48),
-/// q, x, u and two temporaries (48 each), μ and η (16 each).
-pub const FR: usize = 3728;
+/// q, x, u and two temporaries (48 each), μ and η (16 each), APGD's y,
+/// u(y), best iterate and its u (48 each), θ, L and the best error.
+pub const FR: usize = 3923;
 
 /// A world's flag bits (`words`, per world, third word).
 pub mod flags {

@@ -38,6 +38,7 @@ pub use transfer::{MemoryEntry, States};
 use super::kernel::round_budget;
 use super::layout::{scalars_from_bytes, scalars_to_bytes};
 use super::{GpuContext, GpuSolveSettings, Precision};
+use crate::friction::ProjectedMethod;
 use crate::world::World;
 use crate::Error;
 use layout::{
@@ -47,16 +48,16 @@ use layout::{
 use std::cell::Cell;
 
 /// The frictional phase's settings: those of its CPU twin, the projected
-/// sweeps of `friction/projected.rs` (relaxation 1).
+/// sweeps of `friction/projected.rs` (relaxation 1) or `friction/apgd.rs`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ResidentFriction {
     /// An island is solved when its cone error is at most this.
     pub tolerance: f64,
-    /// Sweeps before the iteration stops (not solved unless within the
-    /// tolerance).
+    /// Sweeps (APGD iterations) before the iteration stops (not solved
+    /// unless within the tolerance).
     pub max_iterations: u32,
-    /// Gauss–Seidel sweeps (`pgs`); false: Jacobi.
-    pub gauss_seidel: bool,
+    /// Gauss–Seidel sweeps (`pgs`), Jacobi sweeps or APGD.
+    pub method: ProjectedMethod,
     /// Start from the reactions of the last step (by contact id).
     pub warm_start: bool,
 }
@@ -375,9 +376,15 @@ impl ResidentWorlds {
         let f = self.friction.unwrap_or(ResidentFriction {
             tolerance: 0.0,
             max_iterations: 0,
-            gauss_seidel: false,
+            method: ProjectedMethod::Jacobi,
             warm_start: false,
         });
+        // The shader's method word (`world_friction.wgsl`'s METHOD_APGD).
+        let method = match f.method {
+            ProjectedMethod::Jacobi => 0,
+            ProjectedMethod::GaussSeidel => 1,
+            ProjectedMethod::Apgd => 2,
+        };
         let at = self.at;
         let ints: [u32; 20] = [
             n as u32,
@@ -390,7 +397,7 @@ impl ResidentWorlds {
             at.region as u32,
             (keys_at + 4 * n * self.slots) as u32,
             f.max_iterations,
-            u32::from(f.gauss_seidel),
+            method,
             u32::from(f.warm_start),
             at.reactions as u32,
             at.memory as u32,

@@ -35,6 +35,7 @@ const COLLIDE_WGSL: &str = include_str!("../../../shaders/collide.wgsl");
 const WORLD_STEP_WGSL: &str = include_str!("../../../shaders/world_step.wgsl");
 const WORLD_SOLVE_WGSL: &str = include_str!("../../../shaders/world_solve.wgsl");
 const WORLD_FRICTION_WGSL: &str = include_str!("../../../shaders/world_friction.wgsl");
+const WORLD_APGD_WGSL: &str = include_str!("../../../shaders/world_apgd.wgsl");
 
 /// Where `shaders/collide.wgsl`'s own stage starts: the world step kernel
 /// takes the functions above it.
@@ -42,8 +43,8 @@ const COLLIDE_STAGE: &str = "// Stage `collide_pairs`.";
 /// Where `shaders/lemke.wgsl`'s own kernel starts: the world step kernel
 /// takes the functions above it.
 const LEMKE_KERNEL: &str = "// LEMKE KERNEL";
-/// Where `shaders/friction_common.wgsl`'s cone projection starts (the last
-/// function of the file): the world step kernel takes it from there.
+/// Where `shaders/friction_common.wgsl`'s cone projection starts (APGD's
+/// scalar steps follow it): the world step kernel takes it from there.
 const CONE_PROJECTION: &str = "// Siconos' fc3d projection on";
 
 /// Largest island (contacts) whose friction kernels come from
@@ -86,7 +87,7 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
     let src = match shader {
         Shader::FrictionProjected(_) => format!("{FRICTION_COMMON_WGSL}\n{body}"),
         Shader::WorldStep => format!(
-            "{}\n{}\n{body}\n{WORLD_SOLVE_WGSL}\n{WORLD_FRICTION_WGSL}\n{}",
+            "{}\n{}\n{body}\n{WORLD_SOLVE_WGSL}\n{WORLD_FRICTION_WGSL}\n{WORLD_APGD_WGSL}\n{}",
             text_before(COLLIDE_WGSL, COLLIDE_STAGE)?,
             text_before(LEMKE_WGSL, LEMKE_KERNEL)?,
             text_from(FRICTION_COMMON_WGSL, CONE_PROJECTION)?
@@ -150,7 +151,7 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         _ if standalone => format!("shaders/{file}.wgsl"),
         Shader::WorldStep => "shaders/collide.wgsl (functions) + shaders/lemke.wgsl (functions) + \
              shaders/world_step.wgsl + shaders/world_solve.wgsl + shaders/world_friction.wgsl + \
-             shaders/friction_common.wgsl (project_on_cone)"
+             shaders/world_apgd.wgsl + shaders/friction_common.wgsl (project_on_cone on)"
             .to_string(),
         _ => format!("shaders/enumeration_basis.wgsl + shaders/{file}.wgsl"),
     };

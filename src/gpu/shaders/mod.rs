@@ -67,8 +67,9 @@ pub(crate) enum Shader {
     /// `shaders/collide.wgsl` (entry point collide_pairs): the narrow phase.
     Collide,
     /// `shaders/world_step.wgsl` after the functions of `collide.wgsl` and
-    /// `lemke.wgsl`, with `world_solve.wgsl`, `world_friction.wgsl` and
-    /// `friction_common.wgsl`'s cone projection (entry points world_collide,
+    /// `lemke.wgsl`, with `world_solve.wgsl`, `world_friction.wgsl`,
+    /// `world_apgd.wgsl` and `friction_common.wgsl` from its cone
+    /// projection on (entry points world_collide,
     /// world_solve, world_friction): one step of resident worlds.
     WorldStep,
 }
