@@ -145,16 +145,29 @@ impl CostModel {
     /// (CPU seconds, GPU seconds) estimated for `steps` steps of worlds of
     /// `bodies` bodies in all, in one `step_worlds_for` call: on the CPU
     /// per world-step, on the resident path per world-step and per
-    /// submission (1, 2, 4, ... up to [`MOST_STEPS`] steps each, as the
-    /// path takes them); None without the world figures.
-    pub fn estimate_worlds(&self, bodies: usize, steps: usize) -> Option<(f64, f64)> {
+    /// submission, the submissions counted as the path takes them: the
+    /// first of `first` steps, each next twice the last (up to
+    /// [`MOST_STEPS`]), each ending at a frame (`frames`: the steps after
+    /// which some worlds' states are read, ascending, each read a
+    /// submission of its own) and at the call's end; None without the
+    /// world figures.
+    pub fn estimate_worlds(
+        &self,
+        bodies: usize,
+        steps: usize,
+        first: usize,
+        frames: &[usize],
+    ) -> Option<(f64, f64)> {
         let w = self.worlds?;
         let world_steps = bodies as f64 / w.bodies as f64 * steps as f64;
-        let (mut submissions, mut taken, mut k) = (0usize, 0usize, 1usize);
-        while taken < steps {
-            taken += k;
-            submissions += 1;
-            k = (2 * k).min(MOST_STEPS);
+        let (mut submissions, mut taken, mut k) = (frames.len(), 0usize, first.max(1));
+        for stop in frames.iter().copied().chain([steps]) {
+            while taken < stop {
+                let took = k.min(stop - taken).min(MOST_STEPS);
+                taken += took;
+                submissions += 1;
+                k = (2 * took).min(MOST_STEPS);
+            }
         }
         let cpu = world_steps * w.cpu_per_world_step;
         let gpu = submissions as f64 * w.gpu_per_submission + world_steps * w.gpu_per_world_step;
@@ -500,17 +513,24 @@ mod tests {
     fn few_worlds_or_steps_stay_on_the_cpu_and_many_go_resident() {
         let m = model();
         // 10 stacks of 5 bodies, 1 step: 0.2 ms on the CPU, 1 ms + 20 µs resident.
-        let (cpu, gpu) = m.estimate_worlds(50, 1).unwrap();
+        let (cpu, gpu) = m.estimate_worlds(50, 1, 1, &[]).unwrap();
         assert!(cpu < gpu, "{cpu} {gpu}");
         // 1,000 stacks, 100 steps: 2 s on the CPU; 0.2 s + 10 submissions
         // (1, 2, 4, 8, 16, then 16s) of 1 ms resident.
-        let (cpu, gpu) = m.estimate_worlds(5000, 100).unwrap();
+        let (cpu, gpu) = m.estimate_worlds(5000, 100, 1, &[]).unwrap();
         assert!(
             (cpu - 2.0).abs() < 1e-9 && (gpu - 0.21).abs() < 1e-9,
             "{cpu} {gpu}"
         );
+        // Frames after steps 3 and 10: submissions of 1, 2 | a read | 4, 3
+        // | a read | 6, 12, 16, 16, 16, 16, 8: 13 in all.
+        let (_, framed) = m.estimate_worlds(5000, 100, 1, &[3, 10]).unwrap();
+        assert!((framed - 0.213).abs() < 1e-9, "{framed}");
+        // A batch held since a clean submission of 16 steps starts at 16.
+        let (_, held) = m.estimate_worlds(5000, 100, 16, &[]).unwrap();
+        assert!((held - 0.207).abs() < 1e-9, "{held}");
         let none = CostModel { worlds: None, ..m };
-        assert_eq!(none.estimate_worlds(5000, 100), None);
+        assert_eq!(none.estimate_worlds(5000, 100, 1, &[]), None);
     }
 
     #[test]

@@ -170,7 +170,13 @@ impl Solver {
     /// ([`crate::CostModel::estimate_worlds`]).
     /// The model's world figures are measured first where it has none
     /// (see `cost.rs`).
-    pub(super) fn world_route(&mut self, worlds: &[World], steps: usize) -> (bool, Option<String>) {
+    /// `frames`: the steps after which the call reads some worlds' states.
+    pub(super) fn world_route(
+        &mut self,
+        worlds: &[World],
+        steps: usize,
+        frames: &[usize],
+    ) -> (bool, Option<String>) {
         let scope = self.resident_scope(worlds);
         if self.settings.backend != Backend::Auto || self.gpu.is_none() {
             return (scope, None);
@@ -182,7 +188,13 @@ impl Solver {
             }
         }
         let bodies = worlds.iter().map(|w| w.bodies.len()).sum();
-        let estimate = (self.cost.as_ref()).and_then(|m| m.estimate_worlds(bodies, steps));
+        // A batch still held goes on from its last submission's size.
+        let first = match &self.resident {
+            Some(r) if r.held == worlds => r.next,
+            _ => 1,
+        };
+        let estimate =
+            (self.cost.as_ref()).and_then(|m| m.estimate_worlds(bodies, steps, first, frames));
         let (resident, why) = match (scope, estimate) {
             (false, _) => (false, "out of the resident path's scope → CPU".into()),
             (true, None) => (false, "the cost model has no world figures → CPU".into()),

@@ -218,26 +218,9 @@ impl Solver {
     pub fn step_worlds(&mut self, worlds: &mut [World], dt: f64) -> Result<StepReport, Error> {
         // The resident GPU path where the batch is routed there
         // (`world_gpu.rs`), the worlds checked first.
-        check_step(worlds, dt, self.gpu.is_some())?;
-        let (resident, why) = match self.gpu.is_some() {
-            true => self.world_route(worlds, 1),
-            false => (false, None),
-        };
         let mut stepped = None;
-        if resident {
-            let mut keep = |_, r| stepped = Some(r);
-            if self.step_worlds_resident(worlds, dt, 1, &mut keep, None).0 != 1 {
-                stepped = None;
-            }
-        } else {
-            self.resident = None;
-        }
-        let mut report = match stepped {
-            Some(r) => r,
-            None => self.step_worlds_host(worlds, dt)?,
-        };
-        tell_route(&mut report, resident, why.as_deref());
-        Ok(report)
+        self.step_worlds_call(worlds, dt, 1, &mut |_, r| stepped = Some(r), None)?;
+        Ok(stepped.expect("one step is reported"))
     }
 
     /// One step of `worlds` on the host: each world on the CPU's per-world
@@ -436,7 +419,13 @@ impl Solver {
         let gpu = self.gpu.is_some() && steps > 0;
         check_step(worlds, dt, gpu)?;
         let (resident, why) = match gpu {
-            true => self.world_route(worlds, steps),
+            true => {
+                let frames: Vec<usize> = match framing.as_deref() {
+                    Some(f) => (1..steps).filter(|&s| (f.frames.at)(s)).collect(),
+                    None => Vec::new(),
+                };
+                self.world_route(worlds, steps, &frames)
+            }
             false => (false, None),
         };
         let mut tell = |step, mut r: StepReport| {
