@@ -853,7 +853,9 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 // One step of resident worlds (restitution 0), one invocation per world,
 // in entry points dispatched in one submission:
 // `world_collide` (src/world/step.rs `prepare`: gravity, `world_contacts`),
-// `world_solve` (src/islands.rs `find_islands`, src/cpu/assembly.rs
+// `world_solve_warm` (the worlds whose warm bases all hold, stepped without
+// Lemke's code; the rest listed in `deferred`), then over those alone
+// through an indirect dispatch `world_solve` (src/islands.rs `find_islands`, src/cpu/assembly.rs
 // `assemble_contact` / `assemble_island`, Lemke's path `lemke_pivots`, the
 // door's check `lcp_error` <= tolerance, `apply_impulses`, `finish` with
 // `integrate_rotation`, the world's figures; worlds with friction are
