@@ -380,10 +380,9 @@ pub(super) fn calibrate(solver: &SolverView, ctx: &GpuContext) -> Result<CostMod
         let small = &lcps[..CALIBRATION_SMALL];
         let t_small = fastest_of(TIMINGS, || lcps_on_gpu(solver, ctx, small, None))?;
         let t_large = fastest_of(TIMINGS, || lcps_on_gpu(solver, ctx, &lcps, None))?;
-        // t(B) = per_batch + B per_island through both points.
-        let per_island = ((t_large - t_small) / (lcps.len() - small.len()) as f64).max(0.0);
+        let (fixed, per_island) = line_through((small.len(), t_small), (lcps.len(), t_large));
         m.gpu_per_island.push(per_island);
-        per_batch.push((t_small - small.len() as f64 * per_island).max(0.0));
+        per_batch.push(fixed);
     }
     per_batch.sort_by(f64::total_cmp);
     m.gpu_per_batch = per_batch[per_batch.len() / 2];
@@ -434,13 +433,20 @@ fn calibrate_worlds(solver: &SolverView, ctx: &GpuContext) -> Result<WorldCosts,
         *t = fastest_of(TIMINGS, || r.step(ctx, dt))?;
     }
     let [a, b] = CALIBRATION_WORLDS;
-    let per_world = ((t_gpu[1] - t_gpu[0]) / (b - a) as f64).max(0.0);
+    let (per_submission, per_world) = line_through((a, t_gpu[0]), (b, t_gpu[1]));
     Ok(WorldCosts {
         bodies: large[0].bodies.len(),
         cpu_per_world_step: t_cpu / (steps * b) as f64,
         gpu_per_world_step: per_world,
-        gpu_per_submission: (t_gpu[0] - a as f64 * per_world).max(0.0),
+        gpu_per_submission: per_submission,
     })
+}
+
+/// (fixed, per item) of t(n) = fixed + n per_item through two timed
+/// batches (n, t), n₁ < n₂; each ≥ 0.
+fn line_through((n1, t1): (usize, f64), (n2, t2): (usize, f64)) -> (f64, f64) {
+    let per_item = ((t2 - t1) / (n2 - n1) as f64).max(0.0);
+    ((t1 - n1 as f64 * per_item).max(0.0), per_item)
 }
 
 /// Each figure is the fastest of this many runs (other work on the machine
