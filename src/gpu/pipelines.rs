@@ -133,6 +133,19 @@ impl Stage {
         entry: &str,
         bindings: Bindings,
     ) -> Result<Self, Error> {
+        // In a scope of its own, so that a driver refusing the kernel (a
+        // lost device: wgpu-hal reads a failed vkCreateComputePipelines as
+        // one) is reported with the kernel's name.
+        let what = format!("building the kernel {}::{entry}", shader.name());
+        ctx.scoped(&what, || Self::build(ctx, shader, entry, bindings))?
+    }
+
+    fn build(
+        ctx: &GpuContext,
+        shader: Shader,
+        entry: &str,
+        bindings: Bindings,
+    ) -> Result<Self, Error> {
         let d = &ctx.device;
         let source = shader.source(ctx.precision())?;
         let module = d.create_shader_module(wgpu::ShaderModuleDescriptor {

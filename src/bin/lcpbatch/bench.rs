@@ -445,25 +445,30 @@ fn time_vs_batch(opts: &BenchOptions, gpus: &mut [Solver]) -> Result<Vec<Curve>,
 }
 
 /// Prints the table.
+/// One row of the family table.
+fn row_line(r: &BenchRow) -> String {
+    let st: Vec<String> = r.statuses.iter().map(|(k, v)| format!("{k}={v}")).collect();
+    format!(
+        "{:<17} {:<28} {:<7} {:>8} {:>12.0} {:>10.1e} {:>10.1e}  {} {}",
+        r.family,
+        r.solver,
+        r.backend,
+        r.islands,
+        r.islands_per_second,
+        r.median_error,
+        r.max_error,
+        st.join(" "),
+        r.note
+    )
+}
+
 fn print_table(rows: &[BenchRow]) {
     println!(
         "{:<17} {:<28} {:<7} {:>8} {:>12} {:>10} {:>10}  statuses / notes",
         "family", "solver", "backend", "islands", "islands/s", "median err", "max err"
     );
     for r in rows {
-        let st: Vec<String> = r.statuses.iter().map(|(k, v)| format!("{k}={v}")).collect();
-        println!(
-            "{:<17} {:<28} {:<7} {:>8} {:>12.0} {:>10.1e} {:>10.1e}  {} {}",
-            r.family,
-            r.solver,
-            r.backend,
-            r.islands,
-            r.islands_per_second,
-            r.median_error,
-            r.max_error,
-            st.join(" "),
-            r.note
-        );
+        println!("{}", row_line(r));
     }
     let gpu_rows: Vec<&BenchRow> = rows
         .iter()
@@ -580,6 +585,13 @@ pub fn run(opts: &BenchOptions) -> Result<(), Error> {
             progress("auto");
             let same_batch = rows[first..].to_vec();
             rows.push(auto_row(a, family, &lcps, &same_batch)?);
+        }
+        // Without a terminal (a log, a time limit) each family's rows as
+        // they end: a run cut short still shows the families it finished.
+        if bar.is_hidden() {
+            for r in &rows[first..] {
+                println!("{}", row_line(r));
+            }
         }
     }
     // The table before the curves: a run stopped during the large batches
