@@ -544,7 +544,7 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
         put_scratch(6u * (first + k) + 3u, ang[k]);
     }
     if !loops_left() {
-        // The loop limit reached (world_solve.wgsl loops_left): this
+        // The loop limit reached (world_step.wgsl loops_left): this
         // round's work may be cut short; flagged, the CPU steps the world.
         words[fs] = F_IDLE;
         words[out + 2u] = BUDGET;

@@ -737,7 +737,7 @@ struct StepParams {
     // `budget` (llvmpipe runs 8 invocations in lockstep and counts their
     // loops together: lanes in different phases add up).
     friction_budget: u32,
-    // world_collide's pair records: where they start in `scratch`, and
+    // The narrow phase's pair records: where they start in `scratch`, and
     // records per world (SLOTS per candidate pair).
     pairs_at: u32,
     pair_slots: u32,

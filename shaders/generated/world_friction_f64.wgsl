@@ -527,7 +527,7 @@ struct StepParams {
     // `budget` (llvmpipe runs 8 invocations in lockstep and counts their
     // loops together: lanes in different phases add up).
     friction_budget: u32,
-    // world_collide's pair records: where they start in `scratch`, and
+    // The narrow phase's pair records: where they start in `scratch`, and
     // records per world (SLOTS per candidate pair).
     pairs_at: u32,
     pair_slots: u32,
@@ -1374,7 +1374,7 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
         put_scratch(6u * (first + k) + 3u, ang[k]);
     }
     if !loops_left() {
-        // The loop limit reached (world_solve.wgsl loops_left): this
+        // The loop limit reached (world_step.wgsl loops_left): this
         // round's work may be cut short; flagged, the CPU steps the world.
         words[fs] = F_IDLE;
         words[out + 2u] = BUDGET;

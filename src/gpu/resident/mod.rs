@@ -1,6 +1,6 @@
 //! Worlds resident on the GPU (issue 23): a batch of worlds (restitution 0)
 //! uploaded once and stepped by `shaders/world_step.wgsl` (dispatches
-//! `world_collide`, `world_solve`, and where a world may have friction
+//! the collision phase, the solve, and where a world may have friction
 //! rounds of `world_friction`), up to [`MOST_STEPS`] steps per submission,
 //! with nothing read back per step but a small record per world.
 //!
@@ -24,7 +24,7 @@
 //! ([`layout::flags`]) and keeps its state on the device. With friction,
 //! [`layout::FR`] more scalars per world (one island's rows, W, q and the
 //! sweeps' vectors) and 6 per contact slot (this step's reactions and the
-//! warm-start memory). `world_collide` keeps each candidate pair's
+//! warm-start memory). The narrow phase keeps each candidate pair's
 //! manifold in [`layout::contact_slots`] pair records of [`CP`] scalars
 //! per world before it orders the contacts. Several steps per submission
 //! keep a copy of the state, the words and the warm-start memory, and
@@ -145,7 +145,7 @@ pub struct ResidentWorlds {
     /// First body of each world, and the total at the end.
     first: Vec<usize>,
     slots: usize,
-    /// `world_collide`'s pair records: where they start in `scratch`, and
+    /// The narrow phase's pair records: where they start in `scratch`, and
     /// how many per world (4 per pair that may touch, whatever `slots`).
     pairs_at: usize,
     pair_slots: usize,
@@ -432,7 +432,8 @@ impl ResidentWorlds {
         let [tol, pivot, pivots] = self.tolerances;
         let mut bytes = bytemuck::cast_slice(&ints).to_vec();
         // The scalars at their alignment (StepParams' `dt`).
-        bytes.resize(bytes.len().next_multiple_of(self.precision.bytes() as usize), 0);
+        let align = self.precision.bytes() as usize;
+        bytes.resize(bytes.len().next_multiple_of(align), 0);
         let scalars = [dt, tol, pivot, pivots, f.tolerance];
         bytes.extend(scalars_to_bytes(&scalars, self.precision));
         bytes.resize(128, 0);
