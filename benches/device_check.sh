@@ -40,7 +40,7 @@ run() { # LIMIT_S COMMAND...: the command's output less the per-file lines, its 
 }
 
 run 20 "$bin" info --gpu-backend vulkan
-run 60 "$probe" vulkan "$gen/world_step_f64.wgsl" "$gen/collide_f64.wgsl" "$gen/lemke_f64.wgsl"
+run 90 "$probe" vulkan "$gen"/world_*_f64.wgsl "$gen/collide_f64.wgsl" "$gen/lemke_f64.wgsl"
 sim="$bin simulate --world stack:4 --gpu-backend vulkan"
 for backend in gpu cpu; do
   run 60 $sim --friction 0 --worlds 10000 --steps 50 --backend $backend --out /tmp/sim
@@ -58,5 +58,5 @@ run 40 $sim --friction 0.5 --friction-solver apgd --worlds 10000 --steps 50 --ba
 run 60 $sim --friction 0 --worlds 10000 --steps 100 --backend auto --out /tmp/sim
 # Every other kernel's build time; it may also fill the driver's shader cache,
 # so that the bench below times solving, not compiling.
-run 60 "$probe" vulkan $(ls "$gen"/*.wgsl | grep -v 'world_step\|collide_f64\|lemke_f64')
+run 60 "$probe" vulkan $(ls "$gen"/*.wgsl | grep -v 'world_.*_f64\|collide_f64\|lemke_f64')
 run 150 "$bin" bench --islands 20000 --batch-sizes 100000 --per-n 20 --gpu-backend vulkan --out /tmp/bench

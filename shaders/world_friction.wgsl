@@ -1,10 +1,11 @@
-// The frictional phase of shaders/world_step.wgsl (composed after
-// world_solve.wgsl, before the cone projection of friction_common.wgsl):
+// The frictional phase of shaders/world_step.wgsl (a module of its own:
+// composed after world_step.wgsl and world_finish.wgsl, before
+// world_apgd.wgsl and the cone projection of friction_common.wgsl):
 // the islands of the worlds with friction (a contact with μ > 0 this step;
 // world_solve hands them over with the phase F_ASSEMBLE and the flag HANDED,
 // which stays until the world is finished), one invocation per world.
 // `world_friction` is dispatched several times per step (rounds, after
-// world_solve, in the same submission); each invocation goes on where the
+// world_solve and world_finish, in the same submission); each invocation goes on where the
 // last round stopped and does at most `sp.friction_budget` of loop work
 // (llvmpipe ends an invocation's loops after about 65,535 iterations in
 // all, counted over 8 invocations in lockstep). A world
@@ -21,7 +22,7 @@
 // - the sweeps of friction/projected.rs `sweeps` (Gauss–Seidel or Jacobi,
 //   η per contact by contact_steps, relaxation 1): each iteration u =
 //   W x + q, the stop measure, a sweep; from the warm start (the last
-//   step's reactions of the same (a, b, feature), world_collide) or 0,
+//   step's reactions of the same (a, b, feature)) or 0,
 //   projected on the cones;
 // - the judgement in f64 (ProjectedSolution::judge, FrictionResiduals):
 //   solved when r and u are finite and the cone error is at most the
@@ -67,18 +68,8 @@ const METHOD_APGD: u32 = 2u;
 // Below this scale the stop measure is not divided (projected.rs SCALE_FLOOR).
 const SCALE_FLOOR: Scalar = Scalar(2.220446049250313e-16);
 
-// Phases.
-const F_IDLE: u32 = 0u;
-const F_ASSEMBLE: u32 = 1u;
-const F_SWEEP: u32 = 2u;
-
 // The island's contact slots (global), in order.
 var<private> fmembers: array<u32, 16>;
-
-// μ = √(μ_a μ_b) of bodies ga, gb (global).
-fn pair_friction(ga: u32, gb: u32) -> Scalar {
-    return sqrt(body_const(ga, 11u) * body_const(gb, 11u));
-}
 
 // scene.rs tangent_basis(n).
 fn tangent_basis(n: vec3<Scalar>) -> array<vec3<Scalar>, 2> {
@@ -175,7 +166,7 @@ fn friction_entry(base: u32, x: u32, y: u32) -> Scalar {
 }
 
 // The island's problem (its n contacts in fmembers): rows, q, μ, W, η, and
-// the start x (the warm start where world_collide found one, else 0),
+// the start x (the warm start where one was kept, else 0),
 // projected on the cones.
 fn assemble_friction(base: u32, n: u32, first: u32, moving: u32) {
     for (var i = 0u; i < n; i++) {
@@ -553,7 +544,7 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
         put_scratch(6u * (first + k) + 3u, ang[k]);
     }
     if !loops_left() {
-        // The loop limit reached (world_solve.wgsl loops_left): this
+        // The loop limit reached (world_step.wgsl loops_left): this
         // round's work may be cut short; flagged, the CPU steps the world.
         words[fs] = F_IDLE;
         words[out + 2u] = BUDGET;

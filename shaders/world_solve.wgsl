@@ -1,15 +1,15 @@
-// The second phase of shaders/world_step.wgsl (composed after it): one
-// island's rows, the check, the islands, `world_solve`.
+// The solve phase of the resident step (shaders/world_step.wgsl's header;
+// composed after it and shaders/world_finish.wgsl): one island's rows, the
+// check, the islands, the entry points `world_solve_warm`, `world_solve`
+// and `world_finish`.
 
 // One island's contact rows (src/cpu/assembly.rs ContactRow), row i of the
 // island at 12 i: the Jacobian and the response M⁻¹Jᵀ of sides a (0..6)
-// and b (6..12); q; the dynamic body of each side (NONE: static in the
-// step's scene); the answer z.
-const NONE: u32 = 0xffffffffu;
+// and b (6..12); q (the dynamic body of each side: `sides`,
+// shaders/world_finish.wgsl); the answer z.
 var<private> jac: array<Scalar, 192>;
 var<private> resp: array<Scalar, 192>;
 var<private> qv: array<Scalar, 16>;
-var<private> sides: array<vec2<u32>, 16>;
 var<private> zv: array<Scalar, 16>;
 // The island's M (row i at ISLAND_MAX i), assembled once for the tableau,
 // the basis solves and the check; w = M z + q of the last check; the basis
@@ -17,9 +17,6 @@ var<private> zv: array<Scalar, 16>;
 var<private> mm: array<Scalar, 256>;
 var<private> wv: array<Scalar, 16>;
 var<private> xs: array<Scalar, 16>;
-// Per body of the world: v* and then the velocities after the impulses.
-var<private> lin: array<vec3<Scalar>, 16>;
-var<private> ang: array<vec3<Scalar>, 16>;
 
 fn put_row(dst: ptr<private, array<Scalar, 192>>, at: u32, v: vec3<Scalar>) {
     (*dst)[at] = v.x;
@@ -37,23 +34,6 @@ fn inv_inertia_mul(b: u32, v: vec3<Scalar>) -> vec3<Scalar> {
     let p = placed_body(b);
     let inv = vec3_at_consts(sp.bodies_at + b * BC + 6u);
     return rotate(p, inv * unrotate(p, v));
-}
-
-// The dynamic body of each side of contact `slot` (global) in the step's
-// scene, NONE where that side is static or not moving: the `sides` of its
-// rows (friction rows of world_friction.wgsl included).
-fn contact_sides(slot: u32, moving: u32) -> vec2<u32> {
-    let key = sp.keys_at + 4u * slot;
-    let a = words[key];
-    let b = words[key + 1u];
-    var s = vec2<u32>(NONE, NONE);
-    if ((moving >> a) & 1u) != 0u {
-        s.x = a;
-    }
-    if ((moving >> b) & 1u) != 0u {
-        s.y = b;
-    }
-    return s;
 }
 
 // assemble_contact: row i of the island from contact `slot` of world with
@@ -295,24 +275,6 @@ fn warm_basis(n: u32, hint: u32, error: ptr<function, Scalar>) -> u32 {
     return NONE;
 }
 
-// False where llvmpipe's loop limit was reached in this invocation: past
-// about 65,535 loop iterations of its group of invocations in one dispatch
-// every loop ends after its current iteration, so whatever the
-// invocation computed since may be cut short; this loop of two
-// iterations then ends after one. (Its bound is not a constant, so the
-// compiler keeps the loop.) Elsewhere always true.
-fn loops_left() -> bool {
-    let r = 2u + (sp.count >> 31u);
-    var k = 0u;
-    loop {
-        if k >= r {
-            break;
-        }
-        k++;
-    }
-    return k == r;
-}
-
 fn find(parent: ptr<function, array<u32, 16>>, x0: u32) -> u32 {
     var x = x0;
     while (*parent)[x] != x {
@@ -322,38 +284,14 @@ fn find(parent: ptr<function, array<u32, 16>>, x0: u32) -> u32 {
     return x;
 }
 
-// step.rs integrate_rotation: normalise(q + ½Δt (ω, 0) ⊗ q).
-fn integrate_rotation(q: vec4<Scalar>, w: vec3<Scalar>, dt: Scalar) -> vec4<Scalar> {
-    // glam's DQuat product (w.x, w.y, w.z, 0) ⊗ q.
-    let spin = vec4<Scalar>(
-        w.x * q.w + w.y * q.z - w.z * q.y,
-        -w.x * q.z + w.y * q.w + w.z * q.x,
-        w.x * q.y - w.y * q.x + w.z * q.w,
-        -w.x * q.x - w.y * q.y - w.z * q.z,
-    );
-    return normalize4(q + Scalar(0.5) * dt * spin);
-}
-
-fn normalize4(q: vec4<Scalar>) -> vec4<Scalar> {
-    let len = sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
-    return q * (Scalar(1.0) / len);
-}
-
-// lin, ang: the velocities of world w's bodies in `scratch`.
-fn load_velocities(w: u32) {
-    let first = worlds[w].x;
-    for (var k = 0u; k < min(worlds[w].y, MAX_BODIES); k++) {
-        lin[k] = vec3_at_scratch(6u * (first + k));
-        ang[k] = vec3_at_scratch(6u * (first + k) + 3u);
-    }
-}
 
 // Step parts 2 and 3 for one world: find_islands (union–find through the
 // moving bodies, islands in the order of their first contact), per island
 // assembly, the warm basis (`warm_basis`) and where it fails Lemke
-// (lemke_pivots), the check, the impulses; then finish (poses, sleep
-// counters) and the world's figures. A flagged world (here or in
-// world_collide) keeps its state.
+// (lemke_pivots), the check, the impulses (`world_solve_warm`,
+// `world_solve`); then finish (poses, sleep counters) and the world's
+// figures (`world_finish`). A flagged world (here or in world_contacts)
+// keeps its state.
 //
 // The warm-start memory is the world's record (scalars 6 and 7): a hash of
 // last step's contact ids (a, b, feature, in order) and its bases (bit c:
@@ -361,51 +299,39 @@ fn load_velocities(w: u32) {
 // this step's ids hash alike, as the CPU path's memory by id: every answer
 // passes the door's check whatever basis it came from.
 //
-// In two entry points where `sp.warm_bases` (llvmpipe runs every branch
-// of an invocation under a mask, so Lemke's path, rarely taken once the
-// warm bases hold, would cost every world every step): `world_solve_warm`
-// over every world, without Lemke's path: a world with an island whose
-// warm basis fails (or without a warm basis) is left as it is and listed
-// in `deferred`; then `world_solve`, dispatched indirectly over the listed
-// worlds only, steps them from the start with Lemke's path. Both rewrite
-// what they write before the island loop alike, so a listed world ends as
-// it would in `world_solve` alone. Without `sp.warm_bases`, `world_solve`
-// alone over every world.
-@compute @workgroup_size(64)
-fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
-    var w = gid.x;
-    if sp.warm_bases != 0u {
-        if w >= atomicLoad(&deferred[3]) {
-            return;
-        }
-        w = atomicLoad(&deferred[4u + w]);
-    }
-    if w >= sp.count {
-        return;
-    }
-    solve_world(w, true);
+// In separate entry points, each a dispatch: where `sp.warm_bases`
+// (llvmpipe runs every branch of an invocation under a mask, so Lemke's
+// path, rarely taken once the warm bases hold, would cost every world
+// every step) `world_solve_warm` over every world, without Lemke's code:
+// a world with an island whose warm basis fails (or without a warm basis)
+// is left as it is and listed (LIST_SOLVE); then `world_solve`,
+// dispatched indirectly over the listed worlds only, steps them from the
+// start with Lemke's path. Both rewrite what they write before the island
+// loop alike, so a listed world ends as it would in `world_solve` alone.
+// Without `sp.warm_bases`, `world_solve` alone over every world. Then
+// `world_finish` over every world not handed to world_friction, from the
+// velocities the solve left in `scratch`.
+
+// A world's contacts as the solve starts (`begin_world`): contacts, the
+// moving-body mask, the flags of world_contacts, islands, the hash of the
+// contact ids, the deepest penetration; `handed`: the world has friction
+// and went to world_friction (or was flagged NOT_SOLVED without it).
+struct Begun {
+    count: u32,
+    moving: u32,
+    flags: u32,
+    islands: u32,
+    ids: u32,
+    max_penetration: Scalar,
+    handed: bool,
 }
 
-@compute @workgroup_size(64)
-fn world_solve_warm(@builtin(global_invocation_id) gid: vec3<u32>) {
-    let w = gid.x;
-    if w >= sp.count {
-        return;
-    }
-    solve_world(w, false);
-}
-
-// Lists world w for `world_solve` (its indirect dispatch: workgroups of
-// WORKGROUP worlds).
-fn defer_world(w: u32) {
-    let k = atomicAdd(&deferred[3], 1u);
-    atomicMax(&deferred[0], k / 64u + 1u);
-    atomicStore(&deferred[4u + k], w);
-}
-
-// world_solve for world w; without `lemke`, a world that would take
-// Lemke's path is deferred (`defer_world`) instead.
-fn solve_world(w: u32, lemke: bool) {
+// World w's islands (each contact's in its key's fourth word), the hash of
+// its contact ids and its deepest penetration; its velocities v* into lin,
+// ang. A world with friction (a contact with μ > 0: Scene::has_friction)
+// goes to world_friction, flagged HANDED until that finishes it; its
+// rounds there are counted from 0 (the record's sixth scalar).
+fn begin_world(w: u32) -> Begun {
     let first = worlds[w].x;
     let out = sp.out_at + 4u * w;
     let count = words[out];
@@ -414,7 +340,6 @@ fn solve_world(w: u32, lemke: bool) {
     let slot0 = w * sp.slots;
     records[w * REC + 5u] = Scalar(0.0);
     load_velocities(w);
-    // Islands.
     var parent: array<u32, 16>;
     var island_of_root: array<u32, 16>;
     for (var k = 0u; k < MAX_BODIES; k++) {
@@ -449,9 +374,6 @@ fn solve_world(w: u32, lemke: bool) {
         words[key + 3u] = island_of_root[root];
         max_penetration = max(max_penetration, -scratch[sp.contacts_at + (slot0 + c) * CP + 6u]);
     }
-    // A world with friction (a contact with μ > 0: Scene::has_friction)
-    // goes to world_friction, flagged HANDED until that finishes it; its
-    // rounds there are counted from 0 (the record's sixth scalar).
     var frictional = false;
     for (var c = 0u; c < count; c++) {
         let key = sp.keys_at + 4u * (slot0 + c);
@@ -460,6 +382,7 @@ fn solve_world(w: u32, lemke: bool) {
     let fs = sp.fstate_at + 4u * w;
     words[fs] = F_IDLE;
     words[out + 3u] = islands;
+    var handed = false;
     if frictional && flags == 0u {
         if sp.friction_at == 0u {
             flags |= NOT_SOLVED;
@@ -470,213 +393,246 @@ fn solve_world(w: u32, lemke: bool) {
             words[out + 2u] = HANDED;
             records[w * REC + 2u] = max_penetration;
             records[w * REC + 3u] = Scalar(0.0);
-            return;
+            handed = true;
         }
     }
-    // Per island: assembly, the warm basis or Lemke, check, impulses.
+    return Begun(count, moving, flags, islands, ids, max_penetration, handed);
+}
+
+// Island `isl` of world w (begun as `b`): its contacts (indices in the
+// world) into `members`, assembled (assemble_contact, fill_matrix); its
+// size, above ISLAND_MAX where it is too large (nothing assembled then).
+fn island_rows(w: u32, b: Begun, isl: u32, members: ptr<function, array<u32, 16>>) -> u32 {
+    let slot0 = w * sp.slots;
+    var n = 0u;
+    for (var c = 0u; c < b.count; c++) {
+        if words[sp.keys_at + 4u * (slot0 + c) + 3u] == isl {
+            if n < ISLAND_MAX {
+                (*members)[n] = c;
+            }
+            n++;
+        }
+    }
+    if n > ISLAND_MAX {
+        return n;
+    }
+    for (var i = 0u; i < n; i++) {
+        assemble_contact(slot0 + (*members)[i], i, worlds[w].x, b.moving);
+    }
+    fill_matrix(n);
+    return n;
+}
+
+// The island's warm basis (warm_basis) from the world's bases `hints` (bit
+// c: contact c basic), its error into `error`; NONE where none holds.
+fn warm_island(n: u32, members: ptr<function, array<u32, 16>>, hints: u32, error: ptr<function, Scalar>) -> u32 {
+    var hint = 0u;
+    for (var i = 0u; i < n; i++) {
+        hint |= select(0u, (((hints >> (*members)[i]) & 1u) << i), (*members)[i] < 32u);
+    }
+    return warm_basis(n, hint, error);
+}
+
+// The island's answer zv applied (cpu/impulses.rs velocities_after: v +=
+// M⁻¹Jᵀ z per side) and kept in its contact slots; its basis (bit i: row
+// i basic) as the world's bases (bit c: contact c basic, c < 32).
+fn apply_island(w: u32, n: u32, members: ptr<function, array<u32, 16>>, basis: u32) -> u32 {
+    let slot0 = w * sp.slots;
+    var bases = 0u;
+    for (var i = 0u; i < n; i++) {
+        let m = (*members)[i];
+        bases |= select(0u, ((basis >> i) & 1u) << m, m < 32u);
+        let zi = zv[i];
+        scratch[sp.contacts_at + (slot0 + m) * CP + 7u] = zi;
+        if zi == Scalar(0.0) {
+            continue;
+        }
+        let s = sides[i];
+        let r = 12u * i;
+        if s.x != NONE {
+            lin[s.x] += row_vec3(&resp, r) * zi;
+            ang[s.x] += row_vec3(&resp, r + 3u) * zi;
+        }
+        if s.y != NONE {
+            lin[s.y] += row_vec3(&resp, r + 6u) * zi;
+            ang[s.y] += row_vec3(&resp, r + 9u) * zi;
+        }
+    }
+    return bases;
+}
+
+// The end of world w's solve: last step's ids and bases kept where the
+// world was stepped here, the velocities after the impulses, the flags
+// (BUDGET where llvmpipe's loop limit was reached in this dispatch) and
+// the figures world_finish reads.
+fn end_world(w: u32, b: Begun, flags0: u32, bases: u32, max_error: Scalar) {
+    var flags = flags0;
+    if flags == 0u && !loops_left() {
+        flags = BUDGET;
+    }
     let rec = w * REC;
-    let warm = sp.warm_bases != 0u && records[rec + 6u] == Scalar(ids);
-    let hints = u32(records[rec + 7u]);
+    records[rec + 6u] = select(Scalar(-1.0), Scalar(b.ids), flags == 0u);
+    records[rec + 7u] = Scalar(bases);
+    records[rec + 2u] = b.max_penetration;
+    records[rec + 3u] = max_error;
+    store_velocities(w);
+    words[sp.out_at + 4u * w + 2u] = flags;
+}
+
+// The world's bases of last step where its contact ids are last step's
+// (`sp.warm_bases`), else None: the hints of warm_island.
+fn warm_hints(w: u32, b: Begun) -> vec2<u32> {
+    let rec = w * REC;
+    let warm = sp.warm_bases != 0u && records[rec + 6u] == Scalar(b.ids);
+    return vec2<u32>(u32(warm), u32(records[rec + 7u]));
+}
+
+@compute @workgroup_size(64)
+fn world_solve_warm(@builtin(global_invocation_id) gid: vec3<u32>) {
+    let w = gid.x;
+    if w >= sp.count {
+        return;
+    }
+    let b = begin_world(w);
+    if b.handed {
+        return;
+    }
+    let hints = warm_hints(w, b);
+    var flags = b.flags;
     var bases = 0u;
     var max_error = Scalar(0.0);
-    var spent = 0u;
     var members: array<u32, 16>;
-    for (var isl = 0u; isl < islands && flags == 0u; isl++) {
-        var n = 0u;
-        for (var c = 0u; c < count; c++) {
-            if words[sp.keys_at + 4u * (slot0 + c) + 3u] == isl {
-                if n < ISLAND_MAX {
-                    members[n] = c;
-                }
-                n++;
-            }
-        }
+    for (var isl = 0u; isl < b.islands && flags == 0u; isl++) {
+        let n = island_rows(w, b, isl, &members);
         if n > ISLAND_MAX {
             flags |= ISLAND_TOO_LARGE;
             break;
         }
-        for (var i = 0u; i < n; i++) {
-            assemble_contact(slot0 + members[i], i, first, moving);
-        }
-        fill_matrix(n);
-        spent += n * n + count;
         var error = Scalar(-1.0);
         var basis = NONE;
-        if warm {
-            var hint = 0u;
-            for (var i = 0u; i < n; i++) {
-                hint |= select(0u, ((hints >> members[i]) & 1u) << i, members[i] < 32u);
-            }
-            basis = warm_basis(n, hint, &error);
-            spent += (WARM_PIVOTS + 1u) * (n * n * n + 3u * n * n);
+        if hints.x != 0u {
+            basis = warm_island(n, &members, hints.y, &error);
         }
-        if basis == NONE && !lemke {
+        if basis == NONE {
             defer_world(w);
             return;
         }
-        if basis == NONE {
-            // The tableau B⁻¹ [I, −M, −e | q] with B = I (lemke.wgsl).
-            let cols = 2u * n + 2u;
-            let rhs = cols - 1u;
-            for (var i = 0u; i < n; i++) {
-                let ri = i * cols;
-                for (var j = 0u; j < n; j++) {
-                    t[ri + j] = Scalar(0.0);
-                    t[ri + n + j] = -mm[ISLAND_MAX * i + j];
-                }
-                t[ri + i] = Scalar(1.0);
-                t[ri + 2u * n] = Scalar(-1.0);
-                t[ri + rhs] = qv[i];
-                basic[i] = i;
-            }
-            spent += n * cols;
-            var visited = 0u;
-            let max_pivots = u32(max(sp.max_pivots, Scalar(1.0)));
-            let status = lemke_pivots(n, spent, sp.pivot_tol, max_pivots, sp.budget, &visited);
-            spent += n + (visited + 1u) * ((n + 1u) * cols + 2u * n * n + 6u * n);
-            if status != 1u {
-                flags |= NOT_SOLVED;
-                break;
-            }
-            for (var i = 0u; i < n; i++) {
-                zv[i] = Scalar(0.0);
-            }
-            basis = 0u;
-            if visited > 0u {
-                for (var i = 0u; i < n; i++) {
-                    let v = basic[i];
-                    if v >= n && v < 2u * n {
-                        zv[v - n] = max(t[i * cols + rhs], Scalar(0.0));
-                    }
-                }
-                basis = resolve_basis(n);
-                spent += n * n * n;
-            }
-            error = check(n);
-            if error < Scalar(0.0) {
-                flags |= NOT_SOLVED;
-                break;
-            }
-        }
-        for (var i = 0u; i < n; i++) {
-            bases |= select(0u, ((basis >> i) & 1u) << members[i], members[i] < 32u);
-        }
+        bases |= apply_island(w, n, &members, basis);
         max_error = max(max_error, error);
-        // cpu/impulses.rs velocities_after: v += M⁻¹Jᵀ z per side.
-        for (var i = 0u; i < n; i++) {
-            let zi = zv[i];
-            scratch[sp.contacts_at + (slot0 + members[i]) * CP + 7u] = zi;
-            if zi == Scalar(0.0) {
-                continue;
-            }
-            let s = sides[i];
-            let r = 12u * i;
-            if s.x != NONE {
-                lin[s.x] += row_vec3(&resp, r) * zi;
-                ang[s.x] += row_vec3(&resp, r + 3u) * zi;
-            }
-            if s.y != NONE {
-                lin[s.y] += row_vec3(&resp, r + 6u) * zi;
-                ang[s.y] += row_vec3(&resp, r + 9u) * zi;
-            }
-        }
     }
-    // Last step's ids and bases: kept where the world was stepped here.
-    records[rec + 6u] = select(Scalar(-1.0), Scalar(ids), flags == 0u);
-    records[rec + 7u] = Scalar(bases);
-    finish_world(w, flags, max_penetration, max_error);
+    end_world(w, b, flags, bases, max_error);
 }
 
-// step.rs finish for world w after its impulses (velocities in lin, ang):
-// woken bodies awake, moving bodies integrated, sleep counters; then the
-// world's flags and figures. A flagged world keeps its state.
-fn finish_world(w: u32, flags0: u32, max_penetration: Scalar, max_error: Scalar) {
-    let info = worlds[w];
-    let first = info.x;
-    let nb = min(info.y, MAX_BODIES);
-    let out = sp.out_at + 4u * w;
-    let moving = words[out + 1u];
-    var flags = flags0;
-    let dt = sp.dt;
-    let g = vec3_at_consts(w * WC);
-    let sleep_linear = consts[w * WC + 4u];
-    let sleep_angular = consts[w * WC + 5u];
-    var xs: array<vec3<Scalar>, 16>;
-    var qs: array<vec4<Scalar>, 16>;
-    for (var k = 0u; k < nb && flags == 0u; k++) {
-        let b = first + k;
-        if ((moving >> k) & 1u) == 0u {
-            continue;
+// Lemke's path for the island's n rows (the tableau B⁻¹ [I, −M, −e | q]
+// with B = I, lemke.wgsl; `spent`: loop work so far, grown), its basis
+// re-solved (resolve_basis) and checked; the basis, or NONE where Lemke
+// gave up or the check failed; the error into `error`.
+fn lemke_island(n: u32, spent: ptr<function, u32>, error: ptr<function, Scalar>) -> u32 {
+    let cols = 2u * n + 2u;
+    let rhs = cols - 1u;
+    for (var i = 0u; i < n; i++) {
+        let ri = i * cols;
+        for (var j = 0u; j < n; j++) {
+            t[ri + j] = Scalar(0.0);
+            t[ri + n + j] = -mm[ISLAND_MAX * i + j];
         }
-        let o = b * BS;
-        let q0 = normalize4(vec4<Scalar>(state[o + 3u], state[o + 4u], state[o + 5u], state[o + 6u]));
-        xs[k] = vec3_at_state(o) + lin[k] * dt;
-        qs[k] = integrate_rotation(q0, ang[k], dt);
-        let mag = abs(xs[k]) + abs(qs[k].xyz) + abs(lin[k]) + abs(ang[k]);
-        if !finite(mag.x + mag.y + mag.z + abs(qs[k].w)) {
-            flags |= NON_FINITE;
-        }
+        t[ri + i] = Scalar(1.0);
+        t[ri + 2u * n] = Scalar(-1.0);
+        t[ri + rhs] = qv[i];
+        basic[i] = i;
     }
-    var kinetic = Scalar(0.0);
-    var potential = Scalar(0.0);
-    var awake = 0u;
-    if flags == 0u {
-        for (var k = 0u; k < nb; k++) {
-            let b = first + k;
-            if is_static(b) {
-                continue;
-            }
-            let o = b * BS;
-            if ((moving >> k) & 1u) != 0u {
-                // A woken body counts its quiet steps afresh.
-                var quiet = select(words[2u * b + 1u], 0u, asleep(b));
-                let still = length3(lin[k]) < sleep_linear && length3(ang[k]) < sleep_angular;
-                if still {
-                    quiet = min(quiet, 0xfffffffeu) + 1u;
-                } else {
-                    quiet = 0u;
-                }
-                var sleeps = 0u;
-                if info.z > 0u && quiet >= info.z {
-                    sleeps = 1u;
-                    lin[k] = vec3<Scalar>(0.0, 0.0, 0.0);
-                    ang[k] = vec3<Scalar>(0.0, 0.0, 0.0);
-                }
-                words[2u * b] = sleeps;
-                words[2u * b + 1u] = quiet;
-                put_state(o, xs[k]);
-                state[o + 3u] = qs[k].x;
-                state[o + 4u] = qs[k].y;
-                state[o + 5u] = qs[k].z;
-                state[o + 6u] = qs[k].w;
-                put_state(o + 7u, lin[k]);
-                put_state(o + 10u, ang[k]);
-            }
-            // RigidBody::kinetic_energy and World::potential_energy after
-            // the step.
-            let v = vec3_at_state(o + 7u);
-            let om = vec3_at_state(o + 10u);
-            let p = placed_body(b);
-            let wb = unrotate(p, om);
-            let inertia = Scalar(1.0) / vec3_at_consts(sp.bodies_at + b * BC + 6u);
-            let m = body_const(b, 9u);
-            kinetic += Scalar(0.5) * m * dot3(v, v) + Scalar(0.5) * dot3(wb * wb, inertia);
-            potential += -m * dot3(g, vec3_at_state(o));
-            if !asleep(b) {
-                awake++;
+    *spent += n * cols;
+    var visited = 0u;
+    let max_pivots = u32(max(sp.max_pivots, Scalar(1.0)));
+    let status = lemke_pivots(n, *spent, sp.pivot_tol, max_pivots, sp.budget, &visited);
+    *spent += n + (visited + 1u) * ((n + 1u) * cols + 2u * n * n + 6u * n);
+    if status != 1u {
+        return NONE;
+    }
+    for (var i = 0u; i < n; i++) {
+        zv[i] = Scalar(0.0);
+    }
+    var basis = 0u;
+    if visited > 0u {
+        for (var i = 0u; i < n; i++) {
+            let v = basic[i];
+            if v >= n && v < 2u * n {
+                zv[v - n] = max(t[i * cols + rhs], Scalar(0.0));
             }
         }
+        basis = resolve_basis(n);
+        *spent += n * n * n;
     }
-    // The loop limit reached: flagged (the host steps the world from its
-    // state before the step and writes it back).
-    if flags == 0u && !loops_left() {
-        flags = BUDGET;
+    *error = check(n);
+    return select(basis, NONE, *error < Scalar(0.0));
+}
+
+@compute @workgroup_size(64)
+fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
+    var w = gid.x;
+    if sp.warm_bases != 0u {
+        if w >= atomicLoad(&lists[4u * LIST_SOLVE + 3u]) {
+            return;
+        }
+        w = atomicLoad(&lists[list_at(LIST_SOLVE) + w]);
     }
-    words[out + 2u] = flags;
-    let r = w * REC;
-    records[r] = kinetic;
-    records[r + 1u] = potential;
-    records[r + 2u] = max_penetration;
-    records[r + 3u] = max_error;
-    records[r + 4u] = Scalar(awake);
+    if w >= sp.count {
+        return;
+    }
+    let b = begin_world(w);
+    if b.handed {
+        return;
+    }
+    let hints = warm_hints(w, b);
+    var flags = b.flags;
+    var bases = 0u;
+    var max_error = Scalar(0.0);
+    var spent = 0u;
+    var members: array<u32, 16>;
+    for (var isl = 0u; isl < b.islands && flags == 0u; isl++) {
+        let n = island_rows(w, b, isl, &members);
+        if n > ISLAND_MAX {
+            flags |= ISLAND_TOO_LARGE;
+            break;
+        }
+        spent += n * n + b.count;
+        var error = Scalar(-1.0);
+        var basis = NONE;
+        if hints.x != 0u {
+            basis = warm_island(n, &members, hints.y, &error);
+            spent += (WARM_PIVOTS + 1u) * (n * n * n + 3u * n * n);
+        }
+        if basis == NONE {
+            basis = lemke_island(n, &spent, &error);
+        }
+        if basis == NONE {
+            flags |= NOT_SOLVED;
+            break;
+        }
+        bases |= apply_island(w, n, &members, basis);
+        max_error = max(max_error, error);
+    }
+    end_world(w, b, flags, bases, max_error);
+}
+
+// Lists world w for `world_solve` (its indirect dispatch: workgroups of
+// WORKGROUP worlds).
+fn defer_world(w: u32) {
+    push_list(LIST_SOLVE, w);
+}
+
+// step.rs finish for every world the solve stepped or flagged (a world
+// handed to world_friction is finished there).
+@compute @workgroup_size(64)
+fn world_finish(@builtin(global_invocation_id) gid: vec3<u32>) {
+    let w = gid.x;
+    if w >= sp.count {
+        return;
+    }
+    let flags = words[sp.out_at + 4u * w + 2u];
+    if flags == HANDED {
+        return;
+    }
+    load_velocities(w);
+    finish_world(w, flags, records[w * REC + 2u], records[w * REC + 3u]);
 }

@@ -1,25 +1,36 @@
-// One step of resident worlds (restitution 0), one invocation per world,
-// in entry points dispatched in one submission:
-// `world_collide` (src/world/step.rs `prepare`: gravity, `world_contacts`),
-// `world_solve_warm` (the worlds whose warm bases all hold, stepped without
-// Lemke's code; the rest listed in `deferred`), then over those alone
-// through an indirect dispatch `world_solve` (src/islands.rs `find_islands`, src/cpu/assembly.rs
-// `assemble_contact` / `assemble_island`, Lemke's path `lemke_pivots`, the
-// door's check `lcp_error` <= tolerance, `apply_impulses`, `finish` with
-// `integrate_rotation`, the world's figures; worlds with friction are
-// handed over to) `world_friction` (shaders/world_friction.wgsl, in
-// rounds). Several entry points rather than one: llvmpipe ends every loop
-// of an invocation after about 65,535 iterations in all, and each dispatch
-// starts that count afresh.
-//
-// Composed (src/gpu/shaders/compose.rs) after shaders/collide.wgsl (its
-// functions, up to its stage's bindings) and shaders/lemke.wgsl (up to its
-// kernel's part), and before shaders/world_solve.wgsl (`world_solve`, a
-// file of its own by phase), shaders/world_friction.wgsl and the cone
-// projection of shaders/friction_common.wgsl: collide_shapes' pair
-// functions (box_box, box_plane, sphere_plane, sphere_sphere, sphere_box,
-// dispatched and flipped as it does), lemke_pivots and project_on_cone are
-// called as they are.
+// One step of resident worlds (restitution 0): the step's parameters,
+// bindings, layouts and shared functions, composed (src/gpu/shaders/
+// compose.rs) into one module per phase, each with only what its phase
+// calls (naga writes every function of a module that touches no global
+// the entry point omits into its SPIR-V: pair functions into the solve,
+// Lemke into the collision, had they shared a module). The entry points,
+// dispatched in this order in one submission, no host round trip between
+// them (src/gpu/resident/dispatch.rs):
+// - module world_collide (after shaders/collide.wgsl's functions):
+//   `candidate_pairs` per world (src/world/step.rs `prepare`: gravity; the
+//   candidates of broad.rs `candidate_pairs`, listed by pair family), the
+//   narrow phase per listed pair and family in indirect dispatches
+//   (`narrow_box_box`, `narrow_box_plane`, `narrow_sphere`: collide.rs
+//   `collide_shapes`' pair functions), `world_contacts` per world (step.rs
+//   `world_contacts`: waking rounds, the contacts in pair order);
+//   shaders/world_collide.wgsl;
+// - module world_solve (after collide.wgsl's functions above its pair
+//   functions and shaders/lemke.wgsl's, with shaders/world_finish.wgsl):
+//   `world_solve_warm` per world (src/islands.rs `find_islands`,
+//   src/cpu/assembly.rs `assemble_contact` / `assemble_island`, the warm
+//   bases of world_cpu.rs `warm_settle`, the door's check `lcp_error` <=
+//   tolerance, `apply_impulses`; a world whose warm bases do not all hold
+//   is listed), `world_solve` per listed world (the same with Lemke's path
+//   `lemke_pivots`; per world where warm bases are off), `world_finish`
+//   per world (step.rs `finish` with `integrate_rotation`, the world's
+//   figures); shaders/world_solve.wgsl;
+// - module world_friction (the same with shaders/world_friction.wgsl,
+//   world_apgd.wgsl and friction_common.wgsl's cone projection):
+//   `world_friction` per world handed over by the solve, in rounds.
+// Several entry points rather than one: llvmpipe ends every loop of an
+// invocation after about 65,535 iterations in all, and each dispatch
+// starts that count afresh; each phase's code is a fraction of the step's
+// (a driver compiles each entry point on its own).
 //
 // A world the kernel cannot step is flagged (`flags` below) and its state
 // left as it was: the host steps it on the CPU from there. Flags: contact
@@ -46,9 +57,17 @@
 // - records: per world REC scalars (kinetic, potential, max penetration,
 //   max error, awake, friction rounds, and world_solve's warm-start
 //   memory: a hash of last step's contact ids, their bases);
-// - deferred: the worlds `world_solve_warm` leaves to `world_solve`
-//   (world_solve.wgsl): workgroups x, y, z of the indirect dispatch, the
-//   count, then the worlds; x and the count reset by world_collide.
+// - scratch, from params.reach_at: per body its reach this step
+//   (candidate_pairs);
+// - words, from params.cands_at: per world its candidates (their count,
+//   then pairs_per_world() bodies i | j << 8, then as many count words of
+//   the narrow phase: points | OVERFLOW | CUT);
+// - lists: four headers (workgroups x, y, z of an indirect dispatch, the
+//   count), then the entries of each list (`list_at`): the worlds
+//   `world_solve_warm` leaves to `world_solve` (emptied by
+//   candidate_pairs), the box–box, box–plane and sphere pairs
+//   (world << 8 | candidate; filled by candidate_pairs, emptied by
+//   world_contacts for the next step).
 
 const SCALAR_EPSILON: Scalar = 1.1920929e-7; // HOST scalar_epsilon
 
@@ -98,13 +117,17 @@ struct StepParams {
     // `budget` (llvmpipe runs 8 invocations in lockstep and counts their
     // loops together: lanes in different phases add up).
     friction_budget: u32,
-    // world_collide's pair records: where they start in `scratch`, and
+    // The narrow phase's pair records: where they start in `scratch`, and
     // records per world (SLOTS per candidate pair).
     pairs_at: u32,
     pair_slots: u32,
     // 1: world_solve tries last step's bases first (the CPU path's
     // warm_settle: warm starts on, a method that predicts).
     warm_bases: u32,
+    // candidate_pairs' lists: where the worlds' candidates start in
+    // `words`, where the bodies' reaches start in `scratch`.
+    cands_at: u32,
+    reach_at: u32,
     dt: Scalar,
     // The door's final check: lcp_error <= tolerance.
     tolerance: Scalar,
@@ -122,7 +145,7 @@ struct StepParams {
 @group(0) @binding(4) var<storage, read_write> scratch: array<Scalar>;
 @group(0) @binding(5) var<storage, read_write> words: array<u32>;
 @group(0) @binding(6) var<storage, read_write> records: array<Scalar>;
-@group(0) @binding(7) var<storage, read_write> deferred: array<atomic<u32>>;
+@group(0) @binding(7) var<storage, read_write> lists: array<atomic<u32>>;
 
 fn vec3_at_consts(at: u32) -> vec3<Scalar> {
     return vec3<Scalar>(consts[at], consts[at + 1u], consts[at + 2u]);
@@ -169,301 +192,67 @@ fn placed_body(k: u32) -> Placed {
     return placed_from(kind, size, vec3_at_state(o), q);
 }
 
-// An axis-aligned box (broad.rs Aabb::of): `ok` false for a plane.
-struct Aabb {
-    lo: vec3<Scalar>,
-    hi: vec3<Scalar>,
-    ok: bool,
+// The frictional phase's (shaders/world_friction.wgsl) per-world phases,
+// set by world_solve's handover.
+const F_IDLE: u32 = 0u;
+const F_ASSEMBLE: u32 = 1u;
+const F_SWEEP: u32 = 2u;
+
+// μ = √(μ_a μ_b) of bodies ga, gb (global).
+fn pair_friction(ga: u32, gb: u32) -> Scalar {
+    return sqrt(body_const(ga, 11u) * body_const(gb, 11u));
 }
 
-fn aabb_of(p: Placed, margin: Scalar) -> Aabb {
-    var half = vec3<Scalar>(p.size.x, p.size.x, p.size.x);
-    if p.kind == KIND_PLANE {
-        return Aabb(p.centre, p.centre, false);
-    }
-    if p.kind == KIND_BOX {
-        let h = p.size;
-        // |R| h by rows of R (the columns' components).
-        half = vec3<Scalar>(
-            dot3(abs(vec3<Scalar>(p.c0.x, p.c1.x, p.c2.x)), h),
-            dot3(abs(vec3<Scalar>(p.c0.y, p.c1.y, p.c2.y)), h),
-            dot3(abs(vec3<Scalar>(p.c0.z, p.c1.z, p.c2.z)), h),
-        );
-    }
-    half += vec3<Scalar>(margin, margin, margin);
-    return Aabb(p.centre - half, p.centre + half, true);
+// Family work lists in `lists` (header at 4 f: workgroups x, y, z, count):
+// 0 the worlds world_solve_warm leaves to world_solve, 1 box–box pairs,
+// 2 box–plane pairs, 3 pairs with a sphere.
+const LIST_SOLVE: u32 = 0u;
+const LIST_BOX_BOX: u32 = 1u;
+const LIST_BOX_PLANE: u32 = 2u;
+const LIST_SPHERE: u32 = 3u;
+
+// Candidates per world at most: SLOTS pair records each.
+fn pairs_per_world() -> u32 {
+    return sp.pair_slots / SLOTS;
 }
 
-fn overlaps(a: Aabb, b: Aabb) -> bool {
-    return all(a.lo <= b.hi) && all(b.lo <= a.hi);
+// Where list f's entries start in `lists`: after the four headers, the
+// solve list (a world each), then the pair lists (pairs_per_world() per
+// world each).
+fn list_at(f: u32) -> u32 {
+    if f == LIST_SOLVE {
+        return 16u;
+    }
+    return 16u + sp.count + (f - 1u) * sp.count * pairs_per_world();
 }
 
-// A box and a plane too far apart for any corner to come within `margin`
-// (box_plane would find nothing): the centre's height over the plane less
-// the box's half diagonal, with a slack above the rounding of box_plane's
-// corners (relative to the coordinates' size), at least `margin`.
-fn box_far_from_plane(b: Placed, p: Placed, margin: Scalar) -> bool {
-    let n = p.size;
-    let height = dot3(n, b.centre - p.centre);
-    let reach = length3(b.size) * length3(n);
-    let size = dot3(abs(n), abs(b.centre) + abs(p.centre)) + reach + abs(margin);
-    return height - reach >= margin + Scalar(64.0) * SCALAR_EPSILON * size;
+// Appends `entry` to list f, its workgroups (of 64) grown to cover it.
+fn push_list(f: u32, entry: u32) {
+    let k = atomicAdd(&lists[4u * f + 3u], 1u);
+    atomicMax(&lists[4u * f], k / 64u + 1u);
+    atomicStore(&lists[list_at(f) + k], entry);
 }
 
-// collide.wgsl's collide_shapes for a pair with a sphere: the sphere as
-// the first shape, the same calls; the caller flips the normals where the
-// sphere was the pair's second shape (collide_shapes' flip).
-fn collide_sphere(s: Placed, o: Placed, margin: Scalar) -> Manifold {
-    if o.kind == KIND_PLANE {
-        return sphere_plane(s.centre, s.size.x, o.centre, o.size, margin);
-    }
-    if o.kind == KIND_SPHERE {
-        return sphere_sphere(s.centre, s.size.x, o.centre, o.size.x, margin);
-    }
-    return sphere_box(s.centre, s.size.x, o, o.size, margin);
+// Empties list f (its workgroups 0; y and z stay 1).
+fn clear_list(f: u32) {
+    atomicStore(&lists[4u * f], 0u);
+    atomicStore(&lists[4u * f + 3u], 0u);
 }
 
-// Keeps candidate c's manifold (normals reversed where `flipped`) in world
-// w's pair records: its first SLOTS hits (point, normal, gap, feature); returns
-// its count word (length | OVERFLOW where the manifold overflowed).
-fn keep_manifold(w: u32, c: u32, m: Manifold, flipped: bool) -> u32 {
-    for (var h = 0u; h < min(m.len, SLOTS); h++) {
-        let hit = m.hits[h];
-        let at = sp.pairs_at + (w * sp.pair_slots + SLOTS * c + h) * CP;
-        put_scratch(at, hit.point);
-        put_scratch(at + 3u, select(hit.normal, -hit.normal, flipped));
-        scratch[at + 6u] = hit.gap;
-        scratch[at + 7u] = Scalar(hit.feature);
-    }
-    return m.len | select(0u, OVERFLOW, m.overflow);
-}
-
-// Step part 1 (step.rs prepare without impacts: restitution 0): v* = v +
-// Δt g for the awake dynamic bodies, then world_contacts: candidate pairs
-// (broad.rs candidate_pairs: boxes grown by half the margin plus the reach,
-// planes with every movable body; all pairs, in the sweep's sorted order
-// i < j), the narrow phase with margin + both reaches, sleeping bodies
-// woken by an awake one's contact (their v* = Δt g), until none wakes.
-//
-// In three phases, for llvmpipe, which runs every branch of an invocation
-// under a mask and every loop as often as its busiest lane: (1) the
-// candidates in pair order, less box–plane pairs that cannot touch
-// (box_far_from_plane); (2) the narrow phase of every candidate that an
-// awake body can reach through candidates (those world_contacts may
-// collide: a pair's manifold depends on the poses and reaches only, not on
-// when it is collided), in one loop per family (box–box, box–plane, with a
-// sphere) so that each lane pays for box_box only per box–box pair, the
-// manifolds kept in the pair records; (3) world_contacts' rounds over the
-// candidates in pair order, taking the kept manifolds: the same contacts in
-// the same order as collided there.
-@compute @workgroup_size(64)
-fn world_collide(@builtin(global_invocation_id) gid: vec3<u32>) {
-    let w = gid.x;
-    if w == 0u {
-        // No world left to world_solve yet this step.
-        atomicStore(&deferred[0], 0u);
-        atomicStore(&deferred[3], 0u);
-    }
-    if w >= sp.count {
-        return;
-    }
-    let info = worlds[w];
-    let first = info.x;
-    let nb = min(info.y, MAX_BODIES);
-    let g = vec3_at_consts(w * WC);
-    let margin = consts[w * WC + 3u];
-    let dt = sp.dt;
-    var placed: array<Placed, 16>;
-    var boxes: array<Aabb, 16>;
-    var reach: array<Scalar, 16>;
-    var awake_mask = 0u;
-    var movable = 0u;
-    for (var k = 0u; k < nb; k++) {
-        let b = first + k;
-        let awake = !is_static(b) && !asleep(b);
-        let o = b * BS;
-        var lin = vec3_at_state(o + 7u);
-        let ang = vec3_at_state(o + 10u);
-        if awake {
-            lin = lin + g * dt;
-            awake_mask |= 1u << k;
-            reach[k] = (length3(lin) + length3(ang) * body_const(b, 10u)) * dt;
-        } else {
-            reach[k] = Scalar(0.0);
-        }
-        if !is_static(b) {
-            movable |= 1u << k;
-        }
-        put_scratch(6u * b, lin);
-        put_scratch(6u * b + 3u, ang);
-        placed[k] = placed_body(b);
-        boxes[k] = aabb_of(placed[k], reach[k] + Scalar(0.5) * margin);
-    }
-    // (1) Candidates, packed i | j << 8.
-    var cands: array<u32, 120>;
-    var nc = 0u;
-    var spent = 0u;
-    for (var i = 0u; i < nb; i++) {
-        for (var j = i + 1u; j < nb; j++) {
-            let bi = boxes[i];
-            let bj = boxes[j];
-            let either = ((movable >> i) | (movable >> j)) & 1u;
-            var candidate = false;
-            if bi.ok && bj.ok {
-                candidate = either != 0u && overlaps(bi, bj);
-            } else if bi.ok != bj.ok {
-                // A plane with a movable bounded body.
-                let other = select(i, j, bj.ok);
-                let plane = select(j, i, bj.ok);
-                candidate = ((movable >> other) & 1u) != 0u;
-                if placed[other].kind == KIND_BOX {
-                    let pm = margin + reach[i] + reach[j];
-                    candidate = candidate && !box_far_from_plane(placed[other], placed[plane], pm);
-                }
-            }
-            spent += 1u;
-            if candidate {
-                cands[nc] = i | (j << 8u);
-                nc++;
-            }
-        }
-    }
-    // (2) Bodies an awake body can reach through candidates.
-    var live = awake_mask;
+// False where llvmpipe's loop limit was reached in this invocation: past
+// about 65,535 loop iterations of its group of invocations in one dispatch
+// every loop ends after its current iteration, so whatever the
+// invocation computed since may be cut short; this loop of two
+// iterations then ends after one. (Its bound is not a constant, so the
+// compiler keeps the loop.) Elsewhere always true.
+fn loops_left() -> bool {
+    let r = 2u + (sp.count >> 31u);
+    var k = 0u;
     loop {
-        let before = live;
-        for (var c = 0u; c < nc; c++) {
-            let ij = (1u << (cands[c] & 0xffu)) | (1u << (cands[c] >> 8u));
-            if (live & ij) != 0u {
-                live |= movable & ij;
-            }
-        }
-        if live == before {
+        if k >= r {
             break;
         }
+        k++;
     }
-    // Their candidates by family: box–box, box–plane, with a sphere.
-    var family: array<array<u32, 120>, 3>;
-    var members = vec3<u32>(0u, 0u, 0u);
-    for (var c = 0u; c < nc; c++) {
-        let i = cands[c] & 0xffu;
-        let j = cands[c] >> 8u;
-        if (live & ((1u << i) | (1u << j))) == 0u {
-            continue;
-        }
-        let ki = placed[i].kind;
-        let kj = placed[j].kind;
-        var f = 2u;
-        if ki == KIND_BOX && kj == KIND_BOX {
-            f = 0u;
-        } else if ki != KIND_SPHERE && kj != KIND_SPHERE {
-            f = 1u;
-        }
-        family[f][members[f]] = c;
-        members[f] += 1u;
-    }
-    var got: array<u32, 120>;
-    for (var t = 0u; t < members.x; t++) {
-        let c = family[0][t];
-        let i = cands[c] & 0xffu;
-        let j = cands[c] >> 8u;
-        let x = placed[i];
-        let y = placed[j];
-        got[c] = keep_manifold(w, c, box_box(x, x.size, y, y.size, margin + reach[i] + reach[j]), false);
-    }
-    for (var t = 0u; t < members.y; t++) {
-        let c = family[1][t];
-        let i = cands[c] & 0xffu;
-        let j = cands[c] >> 8u;
-        // collide_shapes: box_plane with the box first, flipped where the
-        // plane was the first shape.
-        let flipped = placed[i].kind == KIND_PLANE;
-        let b = placed[select(i, j, flipped)];
-        let p = placed[select(j, i, flipped)];
-        let m = box_plane(b, b.size, p.centre, p.size, margin + reach[i] + reach[j]);
-        got[c] = keep_manifold(w, c, m, flipped);
-    }
-    for (var t = 0u; t < members.z; t++) {
-        let c = family[2][t];
-        let i = cands[c] & 0xffu;
-        let j = cands[c] >> 8u;
-        let flipped = placed[i].kind != KIND_SPHERE;
-        let s = placed[select(i, j, flipped)];
-        let o = placed[select(j, i, flipped)];
-        let m = collide_sphere(s, o, margin + reach[i] + reach[j]);
-        got[c] = keep_manifold(w, c, m, flipped);
-    }
-    spent += 400u * (members.x + members.y + members.z);
-    // (3) world_contacts' rounds.
-    var done: array<u32, 4>;
-    var count = 0u;
-    var flags = 0u;
-    let slot0 = w * sp.slots;
-    loop {
-        var woke = false;
-        for (var c = 0u; c < nc; c++) {
-            let i = cands[c] & 0xffu;
-            let j = cands[c] >> 8u;
-            spent += 1u;
-            let bit = 1u << (c & 31u);
-            let seen = (done[c >> 5u] & bit) != 0u;
-            let on = (((awake_mask >> i) | (awake_mask >> j)) & 1u) != 0u;
-            if seen || !on {
-                continue;
-            }
-            done[c >> 5u] |= bit;
-            let len = got[c] & ~OVERFLOW;
-            if len == 0u {
-                continue;
-            }
-            for (var s = 0u; s < 2u; s++) {
-                let x = select(i, j, s == 1u);
-                if ((movable >> x) & 1u) != 0u && ((awake_mask >> x) & 1u) == 0u {
-                    awake_mask |= 1u << x;
-                    // step.rs prepare: a woken body's v* is Δt g.
-                    put_scratch(6u * (first + x), g * dt);
-                    put_scratch(6u * (first + x) + 3u, vec3<Scalar>(0.0, 0.0, 0.0));
-                    woke = true;
-                }
-            }
-            if (got[c] & OVERFLOW) != 0u || len > SLOTS {
-                flags |= CONTACTS_FULL;
-            }
-            // The dynamic body is a (normal from b to a).
-            let swap = is_static(first + i);
-            for (var h = 0u; h < min(len, SLOTS); h++) {
-                if count >= sp.slots {
-                    flags |= CONTACTS_FULL;
-                    break;
-                }
-                let kept = sp.pairs_at + (w * sp.pair_slots + SLOTS * c + h) * CP;
-                let normal = vec3_at_scratch(kept + 3u);
-                let slot = slot0 + count;
-                count++;
-                let at = sp.contacts_at + slot * CP;
-                put_scratch(at, vec3_at_scratch(kept));
-                put_scratch(at + 3u, select(normal, -normal, swap));
-                scratch[at + 6u] = scratch[kept + 6u];
-                scratch[at + 7u] = Scalar(0.0);
-                let a = select(i, j, swap);
-                let b = select(j, i, swap);
-                let key = sp.keys_at + 4u * slot;
-                words[key] = a;
-                words[key + 1u] = b;
-                words[key + 2u] = u32(scratch[kept + 7u]);
-                words[key + 3u] = 0u;
-            }
-        }
-        if !woke || spent > sp.budget {
-            break;
-        }
-    }
-    if spent > sp.budget || !loops_left() {
-        flags |= BUDGET;
-    }
-    let out = sp.out_at + 4u * w;
-    words[out] = count;
-    words[out + 1u] = awake_mask;
-    words[out + 2u] = flags;
-    words[out + 3u] = 0u;
+    return k == r;
 }

@@ -172,6 +172,9 @@ fn max_element(h: vec3<Scalar>) -> Scalar {
     return max(h.x, max(h.y, h.z));
 }
 
+// Pair functions (the resident step's solve and frictional phases take
+// the functions above this line only).
+
 // Sphere (centre c, radius r) against the plane through p with outward
 // normal n: φ = n·(c − p) − r, normal n (plane to sphere).
 fn sphere_plane(c: vec3<Scalar>, r: Scalar, p: vec3<Scalar>, n: vec3<Scalar>, margin: Scalar) -> Manifold {

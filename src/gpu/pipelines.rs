@@ -103,8 +103,9 @@ pub(crate) const COLLIDE_BINDINGS: Bindings = &[
     (6, ReadWrite),
 ];
 
-/// `world_collide` and `world_solve` (shaders/world_step.wgsl): params,
-/// worlds, consts, state, scratch, words, records, deferred worlds.
+/// Every entry point of the resident world step (shaders/world_step.wgsl's
+/// bindings, [`WorldStages`]): params, worlds, consts, state, scratch,
+/// words, records, lists (the pair lists and the deferred worlds).
 pub(crate) const WORLD_STEP_BINDINGS: Bindings = &[
     (0, Uniform),
     (1, Read),
@@ -254,11 +255,29 @@ pub(crate) struct Pipelines {
     friction_projected: Vec<OnceLock<Stage>>,
     /// [`Shader::Collide`] (the narrow phase), built on first use.
     collide: OnceLock<Stage>,
-    /// [`Shader::WorldStep`]'s `world_collide`, `world_solve` and `world_solve_warm`, built on
-    /// first use.
-    world_step: OnceLock<[Stage; 3]>,
-    /// [`Shader::WorldStep`]'s `world_friction`, built on first use.
+    /// The resident world step's stages, built on first use.
+    world_step: OnceLock<WorldStages>,
+    /// [`Shader::WorldFriction`]'s `world_friction`, built on first use.
     world_friction: OnceLock<Stage>,
+}
+
+/// The resident world step's entry points (every one with
+/// [`WORLD_STEP_BINDINGS`]), in dispatch order: shaders/world_step.wgsl's
+/// header.
+pub(crate) struct WorldStages {
+    /// [`Shader::WorldCollide`]: per world the candidates and the pair
+    /// lists; per listed pair the narrow phase by family (box–box,
+    /// box–plane, with a sphere: the lists 1, 2, 3 of `lists`, indirect
+    /// dispatches); per world the contacts.
+    pub(crate) candidate_pairs: Stage,
+    pub(crate) narrow: [Stage; 3],
+    pub(crate) world_contacts: Stage,
+    /// [`Shader::WorldSolve`]: per world the islands from their warm bases
+    /// (warm bases on), per deferred world (else per world) with Lemke's
+    /// path, then per world `finish`.
+    pub(crate) world_solve_warm: Stage,
+    pub(crate) world_solve: Stage,
+    pub(crate) world_finish: Stage,
 }
 
 /// The stage in `cache` (index n − 1), built on first use.
@@ -355,18 +374,27 @@ impl Pipelines {
         Ok(self.collide.get_or_init(|| stage))
     }
 
-    /// The resident world step's stages `world_collide`, `world_solve` and
-    /// `world_solve_warm` (one layout), built on first use.
-    pub(crate) fn world_step(&self, ctx: &GpuContext) -> Result<&[Stage; 3], Error> {
+    /// The resident world step's stages (one layout, [`WorldStages`]),
+    /// built on first use.
+    pub(crate) fn world_step(&self, ctx: &GpuContext) -> Result<&WorldStages, Error> {
         if let Some(s) = self.world_step.get() {
             return Ok(s);
         }
-        let stage = |entry| Stage::new(ctx, Shader::WorldStep, entry, WORLD_STEP_BINDINGS);
-        let stages = [
-            stage("world_collide")?,
-            stage("world_solve")?,
-            stage("world_solve_warm")?,
-        ];
+        let stage = |shader, entry| Stage::new(ctx, shader, entry, WORLD_STEP_BINDINGS);
+        let collide = |entry| stage(Shader::WorldCollide, entry);
+        let solve = |entry| stage(Shader::WorldSolve, entry);
+        let stages = WorldStages {
+            candidate_pairs: collide("candidate_pairs")?,
+            narrow: [
+                collide("narrow_box_box")?,
+                collide("narrow_box_plane")?,
+                collide("narrow_sphere")?,
+            ],
+            world_contacts: collide("world_contacts")?,
+            world_solve_warm: solve("world_solve_warm")?,
+            world_solve: solve("world_solve")?,
+            world_finish: solve("world_finish")?,
+        };
         Ok(self.world_step.get_or_init(|| stages))
     }
 
@@ -378,7 +406,7 @@ impl Pipelines {
         }
         let stage = Stage::new(
             ctx,
-            Shader::WorldStep,
+            Shader::WorldFriction,
             "world_friction",
             WORLD_STEP_BINDINGS,
         )?;

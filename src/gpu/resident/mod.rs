@@ -1,6 +1,6 @@
 //! Worlds resident on the GPU (issue 23): a batch of worlds (restitution 0)
 //! uploaded once and stepped by `shaders/world_step.wgsl` (dispatches
-//! `world_collide`, `world_solve`, and where a world may have friction
+//! the collision phase, the solve, and where a world may have friction
 //! rounds of `world_friction`), up to [`MOST_STEPS`] steps per submission,
 //! with nothing read back per step but a small record per world.
 //!
@@ -24,12 +24,13 @@
 //! ([`layout::flags`]) and keeps its state on the device. With friction,
 //! [`layout::FR`] more scalars per world (one island's rows, W, q and the
 //! sweeps' vectors) and 6 per contact slot (this step's reactions and the
-//! warm-start memory). `world_collide` keeps each candidate pair's
+//! warm-start memory). The narrow phase keeps each candidate pair's
 //! manifold in [`layout::contact_slots`] pair records of [`CP`] scalars
 //! per world before it orders the contacts. Several steps per submission
 //! keep a copy of the state, the words and the warm-start memory, and
 //! [`MOST_STEPS`] steps' records (at most 64 MiB).
 
+mod dispatch;
 pub mod layout;
 mod transfer;
 
@@ -144,10 +145,14 @@ pub struct ResidentWorlds {
     /// First body of each world, and the total at the end.
     first: Vec<usize>,
     slots: usize,
-    /// `world_collide`'s pair records: where they start in `scratch`, and
+    /// The narrow phase's pair records: where they start in `scratch`, and
     /// how many per world (4 per pair that may touch, whatever `slots`).
     pairs_at: usize,
     pair_slots: usize,
+    /// `candidate_pairs`' per-body reaches (in `scratch`) and per-world
+    /// candidates (in `words`): where they start.
+    reach_at: usize,
+    cands_at: usize,
     budget: u32,
     tolerances: [f64; 3],
     friction: Option<ResidentFriction>,
@@ -163,12 +168,13 @@ pub struct ResidentWorlds {
     scratch: wgpu::Buffer,
     words: wgpu::Buffer,
     records: wgpu::Buffer,
-    /// The worlds `world_solve_warm` leaves to `world_solve`: the indirect
-    /// dispatch's workgroups (x, y, z), their count, the worlds; and the
-    /// workgroups copied aside for the dispatch (a buffer bound for
-    /// storage cannot be its own dispatch's arguments).
-    deferred: wgpu::Buffer,
-    deferred_groups: wgpu::Buffer,
+    /// The step's work lists (the worlds `world_solve_warm` leaves to
+    /// `world_solve`, the pairs of each family for the narrow phase): per
+    /// list the indirect dispatch's workgroups (x, y, z) and the count,
+    /// then the entries ([`dispatch`]); and the headers copied aside for
+    /// the dispatches.
+    lists: wgpu::Buffer,
+    list_groups: wgpu::Buffer,
     bind: wgpu::BindGroup,
     /// Each step's records within a submission ([`Self::steps`]): per step
     /// the records, then the worlds' 4 words; mapped in place.
@@ -244,7 +250,21 @@ impl ResidentWorlds {
         let pairs_at = scratch_len;
         let pair_slots = contact_slots(worlds);
         scratch_len += n * pair_slots * CP;
-        let largest = [scratch_len * sb, words_len * 4, consts.len() * sb];
+        // candidate_pairs' per-body reaches and per-world candidates
+        // (count, bodies, count words: pair_slots / 4 candidates at most).
+        let reach_at = scratch_len;
+        scratch_len += bodies;
+        let cands_at = words_len;
+        let candidates = pair_slots / crate::gpu::collide::SLOTS;
+        words_len += n * (1 + 2 * candidates);
+        // The lists: the headers, the deferred worlds, three pair lists.
+        let lists_len = dispatch::LIST_HEADERS as usize / 4 + n + 3 * n * candidates;
+        let largest = [
+            scratch_len * sb,
+            words_len * 4,
+            consts.len() * sb,
+            lists_len * 4,
+        ];
         let limit = ctx.limits().max_storage_buffer_binding_size;
         let groups = n.div_ceil(super::pipelines::WORKGROUP as usize);
         if largest.iter().any(|&b| b as u64 > limit) || groups > 65_535 {
@@ -283,25 +303,23 @@ impl ResidentWorlds {
                 usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
                 mapped_at_creation: false,
             });
-            // Workgroups 0 × 1 × 1 and no world deferred (world_collide
-            // resets x and the count each step).
+            // Every list empty: workgroups 0 × 1 × 1, count 0 (the
+            // kernels empty them again each step).
             use wgpu::util::DeviceExt;
-            let mut list = vec![0u32; 4 + n];
-            list[1..3].copy_from_slice(&[1, 1]);
-            let deferred = ctx
+            let lists = ctx
                 .device
                 .create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                    label: Some("deferred worlds"),
-                    contents: bytemuck::cast_slice(&list),
+                    label: Some("world step lists"),
+                    contents: bytemuck::cast_slice(&dispatch::empty_lists(lists_len)),
                     usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
                 });
-            let deferred_groups = ctx.device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some("deferred workgroups"),
-                size: 12,
+            let list_groups = ctx.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("world step list workgroups"),
+                size: dispatch::LIST_HEADERS,
                 usage: wgpu::BufferUsages::INDIRECT | wgpu::BufferUsages::COPY_DST,
                 mapped_at_creation: false,
             });
-            let stage = &stages.world_step(ctx)?[0];
+            let stage = &stages.world_step(ctx)?.candidate_pairs;
             let bind = stage.bind(
                 ctx,
                 &[
@@ -312,7 +330,7 @@ impl ResidentWorlds {
                     &scratch,
                     &words_buffer,
                     &records,
-                    &deferred,
+                    &lists,
                 ],
             );
             // Each step's records of a submission: up to MOST_STEPS, within
@@ -342,6 +360,8 @@ impl ResidentWorlds {
                 slots,
                 pairs_at,
                 pair_slots,
+                reach_at,
+                cands_at,
                 budget,
                 tolerances: [tolerance, lemke.pivot_tol, lemke.max_pivots as f64],
                 friction,
@@ -354,8 +374,8 @@ impl ResidentWorlds {
                 scratch: scratch.clone(),
                 words: words_buffer,
                 records,
-                deferred,
-                deferred_groups,
+                lists,
+                list_groups,
                 bind,
             };
             r.write_params(ctx, 0.0);
@@ -386,7 +406,7 @@ impl ResidentWorlds {
             ProjectedMethod::Apgd => 2,
         };
         let at = self.at;
-        let ints: [u32; 20] = [
+        let ints: [u32; 21] = [
             n as u32,
             self.slots as u32,
             (n * WC) as u32,
@@ -406,10 +426,14 @@ impl ResidentWorlds {
             self.pairs_at as u32,
             self.pair_slots as u32,
             u32::from(self.warm_bases),
-            0,
+            self.cands_at as u32,
+            self.reach_at as u32,
         ];
         let [tol, pivot, pivots] = self.tolerances;
         let mut bytes = bytemuck::cast_slice(&ints).to_vec();
+        // The scalars at their alignment (StepParams' `dt`).
+        let align = self.precision.bytes() as usize;
+        bytes.resize(bytes.len().next_multiple_of(align), 0);
         let scalars = [dt, tol, pivot, pivots, f.tolerance];
         bytes.extend(scalars_to_bytes(&scalars, self.precision));
         bytes.resize(128, 0);
@@ -468,7 +492,6 @@ impl ResidentWorlds {
             0 => None,
             _ => Some(stages.world_friction(ctx)?),
         };
-        let groups = (n as u32).div_ceil(super::pipelines::WORKGROUP);
         let (rec_bytes, stride) = self.record_bytes();
         let out_at = (2 * self.first[n] * 4) as u64;
         let records = ctx.scoped("resident world steps", || {
@@ -478,13 +501,13 @@ impl ResidentWorlds {
                 self.save(&mut encoder);
             }
             for j in 0..k as u64 {
-                self.record(&mut encoder, &step_stages[0], groups);
-                self.record_solve(&mut encoder, step_stages, groups);
+                self.record_collide(&mut encoder, step_stages);
+                self.record_solve(&mut encoder, step_stages);
                 for stage in friction
                     .iter()
                     .flat_map(|s| std::iter::repeat_n(*s, rounds as usize))
                 {
-                    self.record(&mut encoder, stage, groups);
+                    self.record(&mut encoder, stage);
                 }
                 let at = j * stride;
                 encoder.copy_buffer_to_buffer(&self.records, 0, &self.history, at, rec_bytes);
@@ -589,7 +612,7 @@ impl ResidentWorlds {
     #[cfg(test)]
     pub(crate) fn deferred_worlds(&self, ctx: &GpuContext) -> Result<u32, Error> {
         let encoder = ctx.encoder("deferred worlds");
-        let v = ctx.submit_and_read(encoder, &[(&self.deferred, 16)])?;
+        let v = ctx.submit_and_read(encoder, &[(&self.lists, 16)])?;
         Ok(bytemuck::pod_read_unaligned(&v[0][12..16]))
     }
 
@@ -604,90 +627,6 @@ impl ResidentWorlds {
         if self.rounds.get() > 0 {
             self.rounds.set(rounds.clamp(1, MAX_ROUNDS));
         }
-    }
-
-    /// One step as [`Self::step`] does it, but `world_collide` and the
-    /// solve's dispatches ([`Self::record_solve`]) in a submission of their
-    /// own each, waited for: per phase its wall seconds and the difference of `clock` over
-    /// it (a CPU clock of the caller's; for benches; nothing read back).
-    ///
-    /// # Errors
-    /// [`Error::Gpu`] for device trouble.
-    #[cfg_attr(
-        not(test),
-        allow(
-            dead_code,
-            reason = "the phase measurement of src/tests/gpu_resident.rs"
-        )
-    )]
-    pub fn time_phases(
-        &self,
-        ctx: &GpuContext,
-        dt: f64,
-        clock: impl Fn() -> f64,
-    ) -> Result<[[f64; 2]; 2], Error> {
-        let stages = ctx.pipelines()?;
-        let groups = (self.count() as u32).div_ceil(super::pipelines::WORKGROUP);
-        let mut seconds = [[0.0; 2]; 2];
-        self.write_params(ctx, dt);
-        let step_stages = stages.world_step(ctx)?;
-        for (phase, s) in seconds.iter_mut().enumerate() {
-            let (start, cpu) = (std::time::Instant::now(), clock());
-            ctx.scoped("resident world step", || {
-                let mut encoder = ctx.encoder("resident world step");
-                match phase {
-                    0 => self.record(&mut encoder, &step_stages[0], groups),
-                    _ => self.record_solve(&mut encoder, step_stages, groups),
-                }
-                ctx.queue.submit([encoder.finish()]);
-                ctx.device
-                    .poll(wgpu::PollType::wait_indefinitely())
-                    .map_err(|e| Error::Gpu(format!("waiting for the GPU: {e}")))
-            })??;
-            *s = [start.elapsed().as_secs_f64(), clock() - cpu];
-        }
-        Ok(seconds)
-    }
-
-    /// `world_solve`'s dispatches after `world_collide`'s (`stages`: those
-    /// of `world_step`): with warm bases `world_solve_warm` over the worlds,
-    /// then `world_solve` over the worlds it deferred (an indirect
-    /// dispatch: none in a step where every warm basis held); else
-    /// `world_solve` over the worlds.
-    fn record_solve(
-        &self,
-        encoder: &mut wgpu::CommandEncoder,
-        stages: &[super::pipelines::Stage; 3],
-        groups: u32,
-    ) {
-        if !self.warm_bases {
-            return self.record(encoder, &stages[1], groups);
-        }
-        self.record(encoder, &stages[2], groups);
-        encoder.copy_buffer_to_buffer(&self.deferred, 0, &self.deferred_groups, 0, 12);
-        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-            label: Some("world step, deferred worlds"),
-            timestamp_writes: None,
-        });
-        pass.set_pipeline(&stages[1].pipeline);
-        pass.set_bind_group(0, &self.bind, &[]);
-        pass.dispatch_workgroups_indirect(&self.deferred_groups, 0);
-    }
-
-    /// A dispatch of `stage` over the worlds.
-    fn record(
-        &self,
-        encoder: &mut wgpu::CommandEncoder,
-        stage: &super::pipelines::Stage,
-        groups: u32,
-    ) {
-        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-            label: Some("world step"),
-            timestamp_writes: None,
-        });
-        pass.set_pipeline(&stage.pipeline);
-        pass.set_bind_group(0, &self.bind, &[]);
-        pass.dispatch_workgroups(groups.max(1), 1, 1);
     }
 
     /// Bodies of world `k`.

@@ -270,7 +270,7 @@ impl ResidentWorlds {
 #[cfg(test)]
 impl ResidentWorlds {
     /// The records buffer as it is now: per world [`super::layout::REC`]
-    /// scalars (the last two `world_solve`'s warm basis), not counted.
+    /// scalars (the last two the solve's warm basis), not counted.
     pub fn records_now(&self, ctx: &GpuContext) -> Result<Vec<f64>, Error> {
         let len = self.records.size();
         ctx.scoped("reading the records", || {

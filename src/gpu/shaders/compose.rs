@@ -33,6 +33,8 @@ const FRICTION_PROJECTED_GLOBAL_WGSL: &str =
     include_str!("../../../shaders/friction_projected_global.wgsl");
 const COLLIDE_WGSL: &str = include_str!("../../../shaders/collide.wgsl");
 const WORLD_STEP_WGSL: &str = include_str!("../../../shaders/world_step.wgsl");
+const WORLD_COLLIDE_WGSL: &str = include_str!("../../../shaders/world_collide.wgsl");
+const WORLD_FINISH_WGSL: &str = include_str!("../../../shaders/world_finish.wgsl");
 const WORLD_SOLVE_WGSL: &str = include_str!("../../../shaders/world_solve.wgsl");
 const WORLD_FRICTION_WGSL: &str = include_str!("../../../shaders/world_friction.wgsl");
 const WORLD_APGD_WGSL: &str = include_str!("../../../shaders/world_apgd.wgsl");
@@ -40,6 +42,9 @@ const WORLD_APGD_WGSL: &str = include_str!("../../../shaders/world_apgd.wgsl");
 /// Where `shaders/collide.wgsl`'s own stage starts: the world step kernel
 /// takes the functions above it.
 const COLLIDE_STAGE: &str = "// Stage `collide_pairs`.";
+/// Where `shaders/collide.wgsl`'s pair functions start: the resident
+/// step's solve and frictional modules take the functions above it.
+const COLLIDE_PAIRS: &str = "// Pair functions";
 /// Where `shaders/lemke.wgsl`'s own kernel starts: the world step kernel
 /// takes the functions above it.
 const LEMKE_KERNEL: &str = "// LEMKE KERNEL";
@@ -78,7 +83,9 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
             ("friction_projected_global", FRICTION_PROJECTED_GLOBAL_WGSL)
         }
         Shader::Collide => ("collide", COLLIDE_WGSL),
-        Shader::WorldStep => ("world_step", WORLD_STEP_WGSL),
+        Shader::WorldCollide => ("world_collide", WORLD_COLLIDE_WGSL),
+        Shader::WorldSolve => ("world_solve", WORLD_SOLVE_WGSL),
+        Shader::WorldFriction => ("world_friction", WORLD_FRICTION_WGSL),
     };
     let standalone = matches!(
         shader,
@@ -86,9 +93,18 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
     );
     let src = match shader {
         Shader::FrictionProjected(_) => format!("{FRICTION_COMMON_WGSL}\n{body}"),
-        Shader::WorldStep => format!(
-            "{}\n{}\n{body}\n{WORLD_SOLVE_WGSL}\n{WORLD_FRICTION_WGSL}\n{WORLD_APGD_WGSL}\n{}",
-            text_before(COLLIDE_WGSL, COLLIDE_STAGE)?,
+        Shader::WorldCollide => format!(
+            "{}\n{WORLD_STEP_WGSL}\n{body}",
+            text_before(COLLIDE_WGSL, COLLIDE_STAGE)?
+        ),
+        Shader::WorldSolve => format!(
+            "{}\n{}\n{WORLD_STEP_WGSL}\n{WORLD_FINISH_WGSL}\n{body}",
+            text_before(COLLIDE_WGSL, COLLIDE_PAIRS)?,
+            text_before(LEMKE_WGSL, LEMKE_KERNEL)?
+        ),
+        Shader::WorldFriction => format!(
+            "{}\n{}\n{WORLD_STEP_WGSL}\n{WORLD_FINISH_WGSL}\n{body}\n{WORLD_APGD_WGSL}\n{}",
+            text_before(COLLIDE_WGSL, COLLIDE_PAIRS)?,
             text_before(LEMKE_WGSL, LEMKE_KERNEL)?,
             text_from(FRICTION_COMMON_WGSL, CONE_PROJECTION)?
         ),
@@ -125,8 +141,17 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
             unroll_marked_loops(&s, &constants, true)?
         }
         // The world step: Lemke's finiteness tests and the error measure's
-        // epsilon (lcp_error's f64::EPSILON).
-        Shader::WorldStep => with_scalar_limits(&s, precision)?,
+        // epsilon (lcp_error's f64::EPSILON); the collision phase has no
+        // Lemke.
+        Shader::WorldSolve | Shader::WorldFriction => with_scalar_limits(&s, precision)?,
+        Shader::WorldCollide => replace_host_line(
+            &s,
+            "scalar_epsilon",
+            &format!(
+                "const SCALAR_EPSILON: Scalar = {};",
+                scalar_limits(precision).1
+            ),
+        )?,
         // Lemke: the scalar type's largest finite value (finiteness tests).
         Shader::Lemke => {
             let max = scalar_limits(precision).0;
@@ -149,9 +174,17 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
             format!("shaders/friction_common.wgsl + shaders/{file}.wgsl")
         }
         _ if standalone => format!("shaders/{file}.wgsl"),
-        Shader::WorldStep => "shaders/collide.wgsl (functions) + shaders/lemke.wgsl (functions) + \
-             shaders/world_step.wgsl + shaders/world_solve.wgsl + shaders/world_friction.wgsl + \
-             shaders/world_apgd.wgsl + shaders/friction_common.wgsl (project_on_cone on)"
+        Shader::WorldCollide => "shaders/collide.wgsl (functions) + shaders/world_step.wgsl + \
+             shaders/world_collide.wgsl"
+            .to_string(),
+        Shader::WorldSolve => "shaders/collide.wgsl (functions above its pair functions) + \
+             shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_finish.wgsl + \
+             shaders/world_solve.wgsl"
+            .to_string(),
+        Shader::WorldFriction => "shaders/collide.wgsl (functions above its pair functions) + \
+             shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_finish.wgsl + \
+             shaders/world_friction.wgsl + shaders/world_apgd.wgsl + shaders/friction_common.wgsl \
+             (project_on_cone on)"
             .to_string(),
         _ => format!("shaders/enumeration_basis.wgsl + shaders/{file}.wgsl"),
     };

@@ -66,12 +66,21 @@ pub(crate) enum Shader {
     FrictionProjected(usize),
     /// `shaders/collide.wgsl` (entry point collide_pairs): the narrow phase.
     Collide,
-    /// `shaders/world_step.wgsl` after the functions of `collide.wgsl` and
-    /// `lemke.wgsl`, with `world_solve.wgsl`, `world_friction.wgsl`,
+    /// One step of resident worlds, one module per phase, each
+    /// `shaders/world_step.wgsl` (the step's parameters, bindings and
+    /// shared functions) with what its phase calls:
+    /// the collision phase, `shaders/world_collide.wgsl` after every
+    /// function of `collide.wgsl` (entry points candidate_pairs,
+    /// narrow_box_box, narrow_box_plane, narrow_sphere, world_contacts);
+    WorldCollide,
+    /// the solve, `world_finish.wgsl` and `world_solve.wgsl` after
+    /// `collide.wgsl`'s functions above its pair functions and `lemke.wgsl`'s
+    /// (entry points world_solve_warm, world_solve, world_finish);
+    WorldSolve,
+    /// the frictional phase, as the solve's but `world_friction.wgsl`,
     /// `world_apgd.wgsl` and `friction_common.wgsl` from its cone
-    /// projection on (entry points world_collide,
-    /// world_solve, world_friction): one step of resident worlds.
-    WorldStep,
+    /// projection on for `world_solve.wgsl` (entry point world_friction).
+    WorldFriction,
 }
 
 impl Shader {
@@ -89,7 +98,8 @@ impl Shader {
         v.extend((1..=TREE_MAX_N).map(Shader::Tree));
         v.extend([Shader::Assembly, Shader::Impulses]);
         v.extend((1..=FRICTION_MAX_K).map(Shader::FrictionProjected));
-        v.extend([Shader::Collide, Shader::WorldStep]);
+        v.extend([Shader::Collide, Shader::WorldCollide]);
+        v.extend([Shader::WorldSolve, Shader::WorldFriction]);
         v
     }
 
@@ -107,7 +117,9 @@ impl Shader {
             Shader::Impulses => "impulses".into(),
             Shader::FrictionProjected(k) => format!("friction_projected_k{k}"),
             Shader::Collide => "collide".into(),
-            Shader::WorldStep => "world_step".into(),
+            Shader::WorldCollide => "world_collide".into(),
+            Shader::WorldSolve => "world_solve".into(),
+            Shader::WorldFriction => "world_friction".into(),
         }
     }
 
@@ -195,5 +207,7 @@ pub(crate) static GENERATED: &[(&str, &str, &str)] = generated!(
     "friction_projected_k15",
     "friction_projected_k16",
     "collide",
-    "world_step",
+    "world_collide",
+    "world_solve",
+    "world_friction",
 );

@@ -1,4 +1,4 @@
-// GENERATED from shaders/collide.wgsl (functions) + shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_solve.wgsl + shaders/world_friction.wgsl + shaders/world_apgd.wgsl + shaders/friction_common.wgsl (project_on_cone on) by src/gpu/shaders/compose.rs: do not edit.
+// GENERATED from shaders/collide.wgsl (functions above its pair functions) + shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_finish.wgsl + shaders/world_friction.wgsl + shaders/world_apgd.wgsl + shaders/friction_common.wgsl (project_on_cone on) by src/gpu/shaders/compose.rs: do not edit.
 // Regenerate: LCPBATCH_BLESS_SHADERS=1 cargo test --release generated_shaders_are_committed
 
 // Narrow phase: the contact points of candidate pairs of bodies (entry
@@ -29,7 +29,7 @@
 // The generator (src/gpu/shaders/compose.rs) replaces the line marked HOST
 // (scalar type) and writes shaders/generated/<name>_f32.wgsl and _f64.wgsl.
 
-alias Scalar = f64; // HOST scalar
+alias Scalar = f32; // HOST scalar
 
 const BODY: u32 = 12u;
 const KIND_SPHERE: u32 = 0u;
@@ -172,448 +172,6 @@ fn max_element(h: vec3<Scalar>) -> Scalar {
     return max(h.x, max(h.y, h.z));
 }
 
-// Sphere (centre c, radius r) against the plane through p with outward
-// normal n: φ = n·(c − p) − r, normal n (plane to sphere).
-fn sphere_plane(c: vec3<Scalar>, r: Scalar, p: vec3<Scalar>, n: vec3<Scalar>, margin: Scalar) -> Manifold {
-    let gap = dot3(n, c - p) - r;
-    if gap >= margin {
-        return Manifold();
-    }
-    return one_hit(Hit(c - n * (r + Scalar(0.5) * gap), n, gap, 0u));
-}
-
-// Sphere a against sphere b: φ = |c_a − c_b| − r_a − r_b, normal along
-// c_a − c_b (+y when the centres coincide).
-fn sphere_sphere(ca: vec3<Scalar>, ra: Scalar, cb: vec3<Scalar>, rb: Scalar, margin: Scalar) -> Manifold {
-    let d = ca - cb;
-    let dist = length3(d);
-    let gap = dist - ra - rb;
-    if gap >= margin {
-        return Manifold();
-    }
-    var normal = vec3<Scalar>(Scalar(0.0), Scalar(1.0), Scalar(0.0));
-    if dist > Scalar(0.0) {
-        normal = d / dist;
-    }
-    return one_hit(Hit(cb + normal * (rb + Scalar(0.5) * gap), normal, gap, 0u));
-}
-
-// The 8 corners of a box (half extents h), corner k having sign −/+ on
-// axis i as bit i of k is 0/1.
-fn corners(b: Placed, h: vec3<Scalar>) -> array<vec3<Scalar>, 8> {
-    var out: array<vec3<Scalar>, 8>;
-    for (var k = 0u; k < 8u; k++) {
-        let s = vec3<Scalar>(
-            select(h.x, -h.x, (k & 1u) == 0u),
-            select(h.y, -h.y, (k & 2u) == 0u),
-            select(h.z, -h.z, (k & 4u) == 0u),
-        );
-        out[k] = b.centre + rotate(b, s);
-    }
-    return out;
-}
-
-// Box against the plane through p with outward normal n: every corner
-// closer than `margin` (feature: the corner's index), reduced to 4.
-fn box_plane(b: Placed, h: vec3<Scalar>, p: vec3<Scalar>, n: vec3<Scalar>, margin: Scalar) -> Manifold {
-    var hits = Manifold();
-    let vs = corners(b, h);
-    for (var k = 0u; k < 8u; k++) {
-        let v = vs[k];
-        let gap = dot3(n, v - p);
-        if gap < margin {
-            push_hit(&hits, Hit(v - n * (Scalar(0.5) * gap), n, gap, k));
-        }
-    }
-    return reduce_to_four(hits);
-}
-
-// Sphere (centre c, radius r) against a box: the closest point of the box
-// to the centre; a centre inside the box leaves through the nearest face.
-// Normal from the box to the sphere.
-fn sphere_box(c: vec3<Scalar>, r: Scalar, b: Placed, h: vec3<Scalar>, margin: Scalar) -> Manifold {
-    let local = unrotate(b, c - b.centre);
-    // glam's clamp: max(−h) then min(h).
-    let clamped = min(max(local, -h), h);
-    var surface: vec3<Scalar>;
-    var normal_local = vec3<Scalar>(Scalar(0.0));
-    var dist: Scalar;
-    if any(clamped != local) {
-        let d = local - clamped;
-        let len = length3(d);
-        surface = clamped;
-        normal_local = d / len;
-        dist = len;
-    } else {
-        // Inside: the face with the least depth h_i − |x_i|.
-        let depth = h - abs(local);
-        var i = 2u;
-        if depth.x <= depth.y && depth.x <= depth.z {
-            i = 0u;
-        } else if depth.y <= depth.z {
-            i = 1u;
-        }
-        let sign = select(Scalar(-1.0), Scalar(1.0), local[i] >= Scalar(0.0));
-        surface = local;
-        surface[i] = sign * h[i];
-        normal_local[i] = sign;
-        dist = -depth[i];
-    }
-    let gap = dist - r;
-    if gap >= margin {
-        return Manifold();
-    }
-    let normal = rotate(b, normal_local);
-    let on_box = b.centre + rotate(b, surface);
-    return one_hit(Hit(on_box + normal * (Scalar(0.5) * gap), normal, gap, 0u));
-}
-
-// Signed area of triangle (first, second, i) about n.
-fn area(hits: Manifold, first: u32, second: u32, i: u32, n: vec3<Scalar>) -> Scalar {
-    let p0 = hits.hits[first].point;
-    return dot3(cross3(hits.hits[second].point - p0, hits.hits[i].point - p0), n);
-}
-
-// At most 4 points of a manifold, spread over its area: the deepest, the
-// farthest from it, then the two on either side of their line farthest from
-// it. Order is kept.
-fn reduce_to_four(hits: Manifold) -> Manifold {
-    if hits.len <= 4u {
-        return hits;
-    }
-    let n = hits.hits[0].normal;
-    // min_by keeps the first of equals, max_by the last.
-    var first = 0u;
-    for (var i = 1u; i < hits.len; i++) {
-        if total_less(hits.hits[i].gap, hits.hits[first].gap) {
-            first = i;
-        }
-    }
-    let pf = hits.hits[first].point;
-    var second = 0u;
-    var far = dot3(hits.hits[0].point - pf, hits.hits[0].point - pf);
-    for (var i = 1u; i < hits.len; i++) {
-        let d = hits.hits[i].point - pf;
-        let di = dot3(d, d);
-        if !total_less(di, far) {
-            second = i;
-            far = di;
-        }
-    }
-    var third = 0u;
-    var fourth = 0u;
-    var hi = area(hits, first, second, 0u, n);
-    var lo = hi;
-    for (var i = 1u; i < hits.len; i++) {
-        let a = area(hits, first, second, i, n);
-        if !total_less(a, hi) {
-            third = i;
-            hi = a;
-        }
-        if total_less(a, lo) {
-            fourth = i;
-            lo = a;
-        }
-    }
-    var out = Manifold();
-    out.overflow = hits.overflow;
-    for (var i = 0u; i < hits.len; i++) {
-        if i == first || i == second || i == third || i == fourth {
-            push_hit(&out, hits.hits[i]);
-        }
-    }
-    return out;
-}
-
-// The projection radius of box p (half extents h) on unit u.
-fn radius(p: Placed, h: vec3<Scalar>, u: vec3<Scalar>) -> Scalar {
-    return h.x * abs(dot3(p.c0, u)) + h.y * abs(dot3(p.c1, u)) + h.z * abs(dot3(p.c2, u));
-}
-
-// best_axis's answer: kind 0 (some axis separates by ≥ margin), 1 (face i
-// of x where of_x, else of y), 2 (edge i of x against edge j of y; unit
-// axis from x towards y).
-struct Axis {
-    kind: u32,
-    of_x: bool,
-    i: u32,
-    j: u32,
-    axis: vec3<Scalar>,
-}
-
-const AXIS_NONE: u32 = 0u;
-const AXIS_FACE: u32 = 1u;
-const AXIS_EDGE: u32 = 2u;
-
-// The best separating axis (see collide_box.rs best_axis).
-fn best_axis(x: Placed, hx: vec3<Scalar>, y: Placed, hy: vec3<Scalar>, margin: Scalar) -> Axis {
-    let d = y.centre - x.centre;
-    var face = Axis(AXIS_NONE, false, 0u, 0u, vec3<Scalar>(Scalar(0.0)));
-    var face_sep = Scalar(0.0);
-    let tol = Scalar(1e-3) * max(max_element(hx), max_element(hy));
-    for (var f = 0u; f < 6u; f++) {
-        let of_x = f < 3u;
-        let i = f % 3u;
-        var u = col(y, i);
-        if of_x {
-            u = col(x, i);
-        }
-        let sep = abs(dot3(d, u)) - radius(x, hx, u) - radius(y, hy, u);
-        if sep >= margin {
-            return Axis(AXIS_NONE, false, 0u, 0u, vec3<Scalar>(Scalar(0.0)));
-        }
-        // x's faces first; y's face only when clearly better.
-        var better: bool;
-        if face.kind == AXIS_NONE {
-            better = true;
-        } else if face.of_x && !of_x {
-            better = sep > Scalar(0.98) * face_sep + tol;
-        } else {
-            better = sep > face_sep;
-        }
-        if better {
-            face = Axis(AXIS_FACE, of_x, i, 0u, vec3<Scalar>(Scalar(0.0)));
-            face_sep = sep;
-        }
-    }
-    var edge = Axis(AXIS_NONE, false, 0u, 0u, vec3<Scalar>(Scalar(0.0)));
-    var edge_sep = Scalar(0.0);
-    for (var e = 0u; e < 9u; e++) {
-        let i = e / 3u;
-        let j = e % 3u;
-        let c = cross3(col(x, i), col(y, j));
-        let len = length3(c);
-        if len < Scalar(1e-6) {
-            continue; // parallel edges: a face axis covers them
-        }
-        var u = c / len;
-        if dot3(u, d) < Scalar(0.0) {
-            u = -u;
-        }
-        let sep = dot3(d, u) - radius(x, hx, u) - radius(y, hy, u);
-        if sep >= margin {
-            return Axis(AXIS_NONE, false, 0u, 0u, vec3<Scalar>(Scalar(0.0)));
-        }
-        if edge.kind == AXIS_NONE || sep > edge_sep {
-            edge = Axis(AXIS_EDGE, false, i, j, u);
-            edge_sep = sep;
-        }
-    }
-    if edge.kind == AXIS_EDGE && edge_sep > Scalar(0.98) * face_sep + tol {
-        return edge;
-    }
-    return face;
-}
-
-// Box x against box y, normals from y to x. The face of either box goes
-// through one call of face_contact, its reference box chosen first
-// (llvmpipe runs both sides of every branch under a mask: two calls would
-// cost two).
-fn box_box(x: Placed, hx: vec3<Scalar>, y: Placed, hy: vec3<Scalar>, margin: Scalar) -> Manifold {
-    let a = best_axis(x, hx, y, hy, margin);
-    if a.kind == AXIS_FACE {
-        let ref_is_y = !a.of_x;
-        var re = x;
-        var hr = hx;
-        var inc = y;
-        var hi = hy;
-        if ref_is_y {
-            re = y;
-            hr = hy;
-            inc = x;
-            hi = hx;
-        }
-        return face_contact(re, hr, inc, hi, a.i, margin, ref_is_y);
-    }
-    if a.kind == AXIS_EDGE {
-        return edge_contact(x, hx, y, hy, a.i, a.j, a.axis, margin);
-    }
-    return Manifold();
-}
-
-// A convex polygon of at most 8 tagged points (which incident vertex, or
-// which side plane cut which edge); `overflow` set by a push past 8.
-struct Polygon {
-    points: array<vec3<Scalar>, 8>,
-    tags: array<u32, 8>,
-    len: u32,
-    overflow: bool,
-}
-
-fn push_point(poly: ptr<function, Polygon>, p: vec3<Scalar>, tag: u32) {
-    if (*poly).len < 8u {
-        (*poly).points[(*poly).len] = p;
-        (*poly).tags[(*poly).len] = tag;
-        (*poly).len += 1u;
-    } else {
-        (*poly).overflow = true;
-    }
-}
-
-// Sutherland–Hodgman with a tolerance: the part of `poly` with pn·p ≤ off,
-// a vertex outside by at most `tol` kept as it is. A point made on the
-// plane is tagged 4 + 4·side + (the edge's first vertex's tag mod 4).
-fn clip(poly: Polygon, pn: vec3<Scalar>, off: Scalar, tol: Scalar, side: u32) -> Polygon {
-    var out = Polygon();
-    out.overflow = poly.overflow;
-    for (var k = 0u; k < poly.len; k++) {
-        let p = poly.points[k];
-        let tp = poly.tags[k];
-        let q = poly.points[(k + 1u) % poly.len];
-        let dp = dot3(pn, p) - off;
-        let dq = dot3(pn, q) - off;
-        if dp <= tol {
-            push_point(&out, p, tp);
-        }
-        // Crossing: the kept end is inside (d ≤ 0), the other beyond tol.
-        if (dp <= tol) != (dq <= tol) && min(dp, dq) <= Scalar(0.0) {
-            let t = dp / (dp - dq);
-            push_point(&out, p + (q - p) * t, 4u + 4u * side + (tp & 3u));
-        }
-    }
-    return out;
-}
-
-// The incident face of box `inc` clipped by the side planes of face `axis`
-// of box `re` (the reference); normals from y to x.
-fn face_contact(re: Placed, hr: vec3<Scalar>, inc: Placed, hi: vec3<Scalar>, axis: u32, margin: Scalar, ref_is_y: bool) -> Manifold {
-    let d = inc.centre - re.centre;
-    var n = col(re, axis);
-    let flipped = dot3(n, d) < Scalar(0.0);
-    let ref_face = 2u * axis + select(0u, 1u, flipped);
-    if flipped {
-        n = -n;
-    }
-    // Incident face: the face of inc most anti-parallel to n (max_by: the
-    // last of equals).
-    let dots = vec3<Scalar>(dot3(inc.c0, n), dot3(inc.c1, n), dot3(inc.c2, n));
-    var k = 0u;
-    for (var m = 1u; m < 3u; m++) {
-        if !total_less(abs(dots[m]), abs(dots[k])) {
-            k = m;
-        }
-    }
-    let s = select(Scalar(1.0), Scalar(-1.0), dots[k] > Scalar(0.0));
-    let inc_face = 2u * k + select(0u, 1u, s < Scalar(0.0));
-    let u = (k + 1u) % 3u;
-    let v = (k + 2u) % 3u;
-    let fc = inc.centre + col(inc, k) * (s * hi[k]);
-    let eu = col(inc, u) * hi[u];
-    let ev = col(inc, v) * hi[v];
-    var poly = Polygon();
-    push_point(&poly, fc + eu + ev, 0u);
-    push_point(&poly, fc - eu + ev, 1u);
-    push_point(&poly, fc - eu - ev, 2u);
-    push_point(&poly, fc + eu - ev, 3u);
-    // Side planes of the reference face: ±t at distance h_t from the centre.
-    let tol = CLIP_TOL * max_element(hr);
-    var side = 0u;
-    for (var t = 0u; t < 3u; t++) {
-        if t == axis {
-            continue;
-        }
-        for (var sg = 0u; sg < 2u; sg++) {
-            let pn = col(re, t) * select(Scalar(-1.0), Scalar(1.0), sg == 0u);
-            let off = dot3(pn, re.centre) + hr[t];
-            poly = clip(poly, pn, off, tol, side);
-            side += 1u;
-        }
-    }
-    let face_point = re.centre + n * hr[axis];
-    var normal = -n;
-    if ref_is_y {
-        normal = n;
-    }
-    let base = (select(0u, 1u, ref_is_y) << 11u) | (ref_face << 8u) | (inc_face << 5u);
-    var hits = Manifold();
-    hits.overflow = poly.overflow;
-    for (var m = 0u; m < poly.len; m++) {
-        let p = poly.points[m];
-        let gap = dot3(n, p - face_point);
-        if gap < margin {
-            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (poly.tags[m] & 31u)));
-        }
-    }
-    return reduce_to_four(hits);
-}
-
-// Edge i of x against edge j of y along `axis` (from x to y): the closest
-// points of the two supporting edges, one contact.
-fn edge_contact(x: Placed, hx: vec3<Scalar>, y: Placed, hy: vec3<Scalar>, i: u32, j: u32, axis: vec3<Scalar>, margin: Scalar) -> Manifold {
-    // The edge of x farthest along the axis, the edge of y farthest against it.
-    var pa = x.centre;
-    var pb = y.centre;
-    for (var k = 0u; k < 3u; k++) {
-        if k != i {
-            let c = col(x, k);
-            pa += c * (hx[k] * signum(dot3(c, axis)));
-        }
-        if k != j {
-            let c = col(y, k);
-            pb -= c * (hy[k] * signum(dot3(c, axis)));
-        }
-    }
-    let da = col(x, i);
-    let db = col(y, j);
-    // Closest points of the lines pa + s da and pb + t db (unit directions).
-    let r = pa - pb;
-    let b = dot3(da, db);
-    let denom = Scalar(1.0) - b * b;
-    let c = dot3(da, r);
-    let f = dot3(db, r);
-    var s = Scalar(0.0);
-    if denom > Scalar(1e-12) {
-        s = clamp((b * f - c) / denom, -hx[i], hx[i]);
-    }
-    let t = clamp(b * s + f, -hy[j], hy[j]);
-    let qa = pa + da * s;
-    let qb = pb + db * t;
-    let gap = dot3(qb - qa, axis);
-    if gap >= margin {
-        return Manifold();
-    }
-    return one_hit(Hit((qa + qb) * Scalar(0.5), -axis, gap, (7u << 8u) | (3u * i + j)));
-}
-
-// Normals of every hit reversed (a pair given the other way round).
-fn flip(m: Manifold) -> Manifold {
-    var out = m;
-    for (var k = 0u; k < out.len; k++) {
-        out.hits[k].normal = -out.hits[k].normal;
-    }
-    return out;
-}
-
-// The contact points of shapes x and y closer than `margin`, normals from
-// y to x. Two planes give none.
-fn collide_shapes(x: Placed, y: Placed, margin: Scalar) -> Manifold {
-    if x.kind == KIND_SPHERE && y.kind == KIND_PLANE {
-        return sphere_plane(x.centre, x.size.x, y.centre, y.size, margin);
-    }
-    if x.kind == KIND_PLANE && y.kind == KIND_SPHERE {
-        return flip(sphere_plane(y.centre, y.size.x, x.centre, x.size, margin));
-    }
-    if x.kind == KIND_SPHERE && y.kind == KIND_SPHERE {
-        return sphere_sphere(x.centre, x.size.x, y.centre, y.size.x, margin);
-    }
-    if x.kind == KIND_BOX && y.kind == KIND_PLANE {
-        return box_plane(x, x.size, y.centre, y.size, margin);
-    }
-    if x.kind == KIND_PLANE && y.kind == KIND_BOX {
-        return flip(box_plane(y, y.size, x.centre, x.size, margin));
-    }
-    if x.kind == KIND_SPHERE && y.kind == KIND_BOX {
-        return sphere_box(x.centre, x.size.x, y, y.size, margin);
-    }
-    if x.kind == KIND_BOX && y.kind == KIND_SPHERE {
-        return flip(sphere_box(y.centre, y.size.x, x, x.size, margin));
-    }
-    if x.kind == KIND_BOX && y.kind == KIND_BOX {
-        return box_box(x, x.size, y, y.size, margin);
-    }
-    return Manifold();
-}
-
 
 // Lemke's complementary pivoting method, the textbook run: one invocation
 // per island. CPU twin: `lemke_textbook_basis` (src/cpu/lemke.rs) on
@@ -646,7 +204,7 @@ fn collide_shapes(x: Placed, y: Placed, margin: Scalar) -> Manifold {
 // the entering column is a pivot when it exceeds it times the column's
 // largest magnitude), _pad1 the pivot cap (src/gpu/pipelines.rs).
 
-const SCALAR_MAX: Scalar = 1.7976931348623157e308; // HOST scalar_max
+const SCALAR_MAX: Scalar = 3.4028234663852886e38; // HOST scalar_max
 
 const GAVE_UP: u32 = 4u;
 
@@ -850,28 +408,39 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 }
 
 
-// One step of resident worlds (restitution 0), one invocation per world,
-// in entry points dispatched in one submission:
-// `world_collide` (src/world/step.rs `prepare`: gravity, `world_contacts`),
-// `world_solve_warm` (the worlds whose warm bases all hold, stepped without
-// Lemke's code; the rest listed in `deferred`), then over those alone
-// through an indirect dispatch `world_solve` (src/islands.rs `find_islands`, src/cpu/assembly.rs
-// `assemble_contact` / `assemble_island`, Lemke's path `lemke_pivots`, the
-// door's check `lcp_error` <= tolerance, `apply_impulses`, `finish` with
-// `integrate_rotation`, the world's figures; worlds with friction are
-// handed over to) `world_friction` (shaders/world_friction.wgsl, in
-// rounds). Several entry points rather than one: llvmpipe ends every loop
-// of an invocation after about 65,535 iterations in all, and each dispatch
-// starts that count afresh.
-//
-// Composed (src/gpu/shaders/compose.rs) after shaders/collide.wgsl (its
-// functions, up to its stage's bindings) and shaders/lemke.wgsl (up to its
-// kernel's part), and before shaders/world_solve.wgsl (`world_solve`, a
-// file of its own by phase), shaders/world_friction.wgsl and the cone
-// projection of shaders/friction_common.wgsl: collide_shapes' pair
-// functions (box_box, box_plane, sphere_plane, sphere_sphere, sphere_box,
-// dispatched and flipped as it does), lemke_pivots and project_on_cone are
-// called as they are.
+// One step of resident worlds (restitution 0): the step's parameters,
+// bindings, layouts and shared functions, composed (src/gpu/shaders/
+// compose.rs) into one module per phase, each with only what its phase
+// calls (naga writes every function of a module that touches no global
+// the entry point omits into its SPIR-V: pair functions into the solve,
+// Lemke into the collision, had they shared a module). The entry points,
+// dispatched in this order in one submission, no host round trip between
+// them (src/gpu/resident/dispatch.rs):
+// - module world_collide (after shaders/collide.wgsl's functions):
+//   `candidate_pairs` per world (src/world/step.rs `prepare`: gravity; the
+//   candidates of broad.rs `candidate_pairs`, listed by pair family), the
+//   narrow phase per listed pair and family in indirect dispatches
+//   (`narrow_box_box`, `narrow_box_plane`, `narrow_sphere`: collide.rs
+//   `collide_shapes`' pair functions), `world_contacts` per world (step.rs
+//   `world_contacts`: waking rounds, the contacts in pair order);
+//   shaders/world_collide.wgsl;
+// - module world_solve (after collide.wgsl's functions above its pair
+//   functions and shaders/lemke.wgsl's, with shaders/world_finish.wgsl):
+//   `world_solve_warm` per world (src/islands.rs `find_islands`,
+//   src/cpu/assembly.rs `assemble_contact` / `assemble_island`, the warm
+//   bases of world_cpu.rs `warm_settle`, the door's check `lcp_error` <=
+//   tolerance, `apply_impulses`; a world whose warm bases do not all hold
+//   is listed), `world_solve` per listed world (the same with Lemke's path
+//   `lemke_pivots`; per world where warm bases are off), `world_finish`
+//   per world (step.rs `finish` with `integrate_rotation`, the world's
+//   figures); shaders/world_solve.wgsl;
+// - module world_friction (the same with shaders/world_friction.wgsl,
+//   world_apgd.wgsl and friction_common.wgsl's cone projection):
+//   `world_friction` per world handed over by the solve, in rounds.
+// Several entry points rather than one: llvmpipe ends every loop of an
+// invocation after about 65,535 iterations in all, and each dispatch
+// starts that count afresh; each phase's code is a fraction of the step's
+// (a driver compiles each entry point on its own).
 //
 // A world the kernel cannot step is flagged (`flags` below) and its state
 // left as it was: the host steps it on the CPU from there. Flags: contact
@@ -898,11 +467,19 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 // - records: per world REC scalars (kinetic, potential, max penetration,
 //   max error, awake, friction rounds, and world_solve's warm-start
 //   memory: a hash of last step's contact ids, their bases);
-// - deferred: the worlds `world_solve_warm` leaves to `world_solve`
-//   (world_solve.wgsl): workgroups x, y, z of the indirect dispatch, the
-//   count, then the worlds; x and the count reset by world_collide.
+// - scratch, from params.reach_at: per body its reach this step
+//   (candidate_pairs);
+// - words, from params.cands_at: per world its candidates (their count,
+//   then pairs_per_world() bodies i | j << 8, then as many count words of
+//   the narrow phase: points | OVERFLOW | CUT);
+// - lists: four headers (workgroups x, y, z of an indirect dispatch, the
+//   count), then the entries of each list (`list_at`): the worlds
+//   `world_solve_warm` leaves to `world_solve` (emptied by
+//   candidate_pairs), the box–box, box–plane and sphere pairs
+//   (world << 8 | candidate; filled by candidate_pairs, emptied by
+//   world_contacts for the next step).
 
-const SCALAR_EPSILON: Scalar = 2.220446049250313e-16; // HOST scalar_epsilon
+const SCALAR_EPSILON: Scalar = 1.1920929e-7; // HOST scalar_epsilon
 
 const MAX_BODIES: u32 = 16u;
 const WC: u32 = 6u;
@@ -950,13 +527,17 @@ struct StepParams {
     // `budget` (llvmpipe runs 8 invocations in lockstep and counts their
     // loops together: lanes in different phases add up).
     friction_budget: u32,
-    // world_collide's pair records: where they start in `scratch`, and
+    // The narrow phase's pair records: where they start in `scratch`, and
     // records per world (SLOTS per candidate pair).
     pairs_at: u32,
     pair_slots: u32,
     // 1: world_solve tries last step's bases first (the CPU path's
     // warm_settle: warm starts on, a method that predicts).
     warm_bases: u32,
+    // candidate_pairs' lists: where the worlds' candidates start in
+    // `words`, where the bodies' reaches start in `scratch`.
+    cands_at: u32,
+    reach_at: u32,
     dt: Scalar,
     // The door's final check: lcp_error <= tolerance.
     tolerance: Scalar,
@@ -974,7 +555,7 @@ struct StepParams {
 @group(0) @binding(4) var<storage, read_write> scratch: array<Scalar>;
 @group(0) @binding(5) var<storage, read_write> words: array<u32>;
 @group(0) @binding(6) var<storage, read_write> records: array<Scalar>;
-@group(0) @binding(7) var<storage, read_write> deferred: array<atomic<u32>>;
+@group(0) @binding(7) var<storage, read_write> lists: array<atomic<u32>>;
 
 fn vec3_at_consts(at: u32) -> vec3<Scalar> {
     return vec3<Scalar>(consts[at], consts[at + 1u], consts[at + 2u]);
@@ -1021,600 +602,51 @@ fn placed_body(k: u32) -> Placed {
     return placed_from(kind, size, vec3_at_state(o), q);
 }
 
-// An axis-aligned box (broad.rs Aabb::of): `ok` false for a plane.
-struct Aabb {
-    lo: vec3<Scalar>,
-    hi: vec3<Scalar>,
-    ok: bool,
+// The frictional phase's (shaders/world_friction.wgsl) per-world phases,
+// set by world_solve's handover.
+const F_IDLE: u32 = 0u;
+const F_ASSEMBLE: u32 = 1u;
+const F_SWEEP: u32 = 2u;
+
+// μ = √(μ_a μ_b) of bodies ga, gb (global).
+fn pair_friction(ga: u32, gb: u32) -> Scalar {
+    return sqrt(body_const(ga, 11u) * body_const(gb, 11u));
 }
 
-fn aabb_of(p: Placed, margin: Scalar) -> Aabb {
-    var half = vec3<Scalar>(p.size.x, p.size.x, p.size.x);
-    if p.kind == KIND_PLANE {
-        return Aabb(p.centre, p.centre, false);
-    }
-    if p.kind == KIND_BOX {
-        let h = p.size;
-        // |R| h by rows of R (the columns' components).
-        half = vec3<Scalar>(
-            dot3(abs(vec3<Scalar>(p.c0.x, p.c1.x, p.c2.x)), h),
-            dot3(abs(vec3<Scalar>(p.c0.y, p.c1.y, p.c2.y)), h),
-            dot3(abs(vec3<Scalar>(p.c0.z, p.c1.z, p.c2.z)), h),
-        );
-    }
-    half += vec3<Scalar>(margin, margin, margin);
-    return Aabb(p.centre - half, p.centre + half, true);
+// Family work lists in `lists` (header at 4 f: workgroups x, y, z, count):
+// 0 the worlds world_solve_warm leaves to world_solve, 1 box–box pairs,
+// 2 box–plane pairs, 3 pairs with a sphere.
+const LIST_SOLVE: u32 = 0u;
+const LIST_BOX_BOX: u32 = 1u;
+const LIST_BOX_PLANE: u32 = 2u;
+const LIST_SPHERE: u32 = 3u;
+
+// Candidates per world at most: SLOTS pair records each.
+fn pairs_per_world() -> u32 {
+    return sp.pair_slots / SLOTS;
 }
 
-fn overlaps(a: Aabb, b: Aabb) -> bool {
-    return all(a.lo <= b.hi) && all(b.lo <= a.hi);
+// Where list f's entries start in `lists`: after the four headers, the
+// solve list (a world each), then the pair lists (pairs_per_world() per
+// world each).
+fn list_at(f: u32) -> u32 {
+    if f == LIST_SOLVE {
+        return 16u;
+    }
+    return 16u + sp.count + (f - 1u) * sp.count * pairs_per_world();
 }
 
-// A box and a plane too far apart for any corner to come within `margin`
-// (box_plane would find nothing): the centre's height over the plane less
-// the box's half diagonal, with a slack above the rounding of box_plane's
-// corners (relative to the coordinates' size), at least `margin`.
-fn box_far_from_plane(b: Placed, p: Placed, margin: Scalar) -> bool {
-    let n = p.size;
-    let height = dot3(n, b.centre - p.centre);
-    let reach = length3(b.size) * length3(n);
-    let size = dot3(abs(n), abs(b.centre) + abs(p.centre)) + reach + abs(margin);
-    return height - reach >= margin + Scalar(64.0) * SCALAR_EPSILON * size;
+// Appends `entry` to list f, its workgroups (of 64) grown to cover it.
+fn push_list(f: u32, entry: u32) {
+    let k = atomicAdd(&lists[4u * f + 3u], 1u);
+    atomicMax(&lists[4u * f], k / 64u + 1u);
+    atomicStore(&lists[list_at(f) + k], entry);
 }
 
-// collide.wgsl's collide_shapes for a pair with a sphere: the sphere as
-// the first shape, the same calls; the caller flips the normals where the
-// sphere was the pair's second shape (collide_shapes' flip).
-fn collide_sphere(s: Placed, o: Placed, margin: Scalar) -> Manifold {
-    if o.kind == KIND_PLANE {
-        return sphere_plane(s.centre, s.size.x, o.centre, o.size, margin);
-    }
-    if o.kind == KIND_SPHERE {
-        return sphere_sphere(s.centre, s.size.x, o.centre, o.size.x, margin);
-    }
-    return sphere_box(s.centre, s.size.x, o, o.size, margin);
-}
-
-// Keeps candidate c's manifold (normals reversed where `flipped`) in world
-// w's pair records: its first SLOTS hits (point, normal, gap, feature); returns
-// its count word (length | OVERFLOW where the manifold overflowed).
-fn keep_manifold(w: u32, c: u32, m: Manifold, flipped: bool) -> u32 {
-    for (var h = 0u; h < min(m.len, SLOTS); h++) {
-        let hit = m.hits[h];
-        let at = sp.pairs_at + (w * sp.pair_slots + SLOTS * c + h) * CP;
-        put_scratch(at, hit.point);
-        put_scratch(at + 3u, select(hit.normal, -hit.normal, flipped));
-        scratch[at + 6u] = hit.gap;
-        scratch[at + 7u] = Scalar(hit.feature);
-    }
-    return m.len | select(0u, OVERFLOW, m.overflow);
-}
-
-// Step part 1 (step.rs prepare without impacts: restitution 0): v* = v +
-// Δt g for the awake dynamic bodies, then world_contacts: candidate pairs
-// (broad.rs candidate_pairs: boxes grown by half the margin plus the reach,
-// planes with every movable body; all pairs, in the sweep's sorted order
-// i < j), the narrow phase with margin + both reaches, sleeping bodies
-// woken by an awake one's contact (their v* = Δt g), until none wakes.
-//
-// In three phases, for llvmpipe, which runs every branch of an invocation
-// under a mask and every loop as often as its busiest lane: (1) the
-// candidates in pair order, less box–plane pairs that cannot touch
-// (box_far_from_plane); (2) the narrow phase of every candidate that an
-// awake body can reach through candidates (those world_contacts may
-// collide: a pair's manifold depends on the poses and reaches only, not on
-// when it is collided), in one loop per family (box–box, box–plane, with a
-// sphere) so that each lane pays for box_box only per box–box pair, the
-// manifolds kept in the pair records; (3) world_contacts' rounds over the
-// candidates in pair order, taking the kept manifolds: the same contacts in
-// the same order as collided there.
-@compute @workgroup_size(64)
-fn world_collide(@builtin(global_invocation_id) gid: vec3<u32>) {
-    let w = gid.x;
-    if w == 0u {
-        // No world left to world_solve yet this step.
-        atomicStore(&deferred[0], 0u);
-        atomicStore(&deferred[3], 0u);
-    }
-    if w >= sp.count {
-        return;
-    }
-    let info = worlds[w];
-    let first = info.x;
-    let nb = min(info.y, MAX_BODIES);
-    let g = vec3_at_consts(w * WC);
-    let margin = consts[w * WC + 3u];
-    let dt = sp.dt;
-    var placed: array<Placed, 16>;
-    var boxes: array<Aabb, 16>;
-    var reach: array<Scalar, 16>;
-    var awake_mask = 0u;
-    var movable = 0u;
-    for (var k = 0u; k < nb; k++) {
-        let b = first + k;
-        let awake = !is_static(b) && !asleep(b);
-        let o = b * BS;
-        var lin = vec3_at_state(o + 7u);
-        let ang = vec3_at_state(o + 10u);
-        if awake {
-            lin = lin + g * dt;
-            awake_mask |= 1u << k;
-            reach[k] = (length3(lin) + length3(ang) * body_const(b, 10u)) * dt;
-        } else {
-            reach[k] = Scalar(0.0);
-        }
-        if !is_static(b) {
-            movable |= 1u << k;
-        }
-        put_scratch(6u * b, lin);
-        put_scratch(6u * b + 3u, ang);
-        placed[k] = placed_body(b);
-        boxes[k] = aabb_of(placed[k], reach[k] + Scalar(0.5) * margin);
-    }
-    // (1) Candidates, packed i | j << 8.
-    var cands: array<u32, 120>;
-    var nc = 0u;
-    var spent = 0u;
-    for (var i = 0u; i < nb; i++) {
-        for (var j = i + 1u; j < nb; j++) {
-            let bi = boxes[i];
-            let bj = boxes[j];
-            let either = ((movable >> i) | (movable >> j)) & 1u;
-            var candidate = false;
-            if bi.ok && bj.ok {
-                candidate = either != 0u && overlaps(bi, bj);
-            } else if bi.ok != bj.ok {
-                // A plane with a movable bounded body.
-                let other = select(i, j, bj.ok);
-                let plane = select(j, i, bj.ok);
-                candidate = ((movable >> other) & 1u) != 0u;
-                if placed[other].kind == KIND_BOX {
-                    let pm = margin + reach[i] + reach[j];
-                    candidate = candidate && !box_far_from_plane(placed[other], placed[plane], pm);
-                }
-            }
-            spent += 1u;
-            if candidate {
-                cands[nc] = i | (j << 8u);
-                nc++;
-            }
-        }
-    }
-    // (2) Bodies an awake body can reach through candidates.
-    var live = awake_mask;
-    loop {
-        let before = live;
-        for (var c = 0u; c < nc; c++) {
-            let ij = (1u << (cands[c] & 0xffu)) | (1u << (cands[c] >> 8u));
-            if (live & ij) != 0u {
-                live |= movable & ij;
-            }
-        }
-        if live == before {
-            break;
-        }
-    }
-    // Their candidates by family: box–box, box–plane, with a sphere.
-    var family: array<array<u32, 120>, 3>;
-    var members = vec3<u32>(0u, 0u, 0u);
-    for (var c = 0u; c < nc; c++) {
-        let i = cands[c] & 0xffu;
-        let j = cands[c] >> 8u;
-        if (live & ((1u << i) | (1u << j))) == 0u {
-            continue;
-        }
-        let ki = placed[i].kind;
-        let kj = placed[j].kind;
-        var f = 2u;
-        if ki == KIND_BOX && kj == KIND_BOX {
-            f = 0u;
-        } else if ki != KIND_SPHERE && kj != KIND_SPHERE {
-            f = 1u;
-        }
-        family[f][members[f]] = c;
-        members[f] += 1u;
-    }
-    var got: array<u32, 120>;
-    for (var t = 0u; t < members.x; t++) {
-        let c = family[0][t];
-        let i = cands[c] & 0xffu;
-        let j = cands[c] >> 8u;
-        let x = placed[i];
-        let y = placed[j];
-        got[c] = keep_manifold(w, c, box_box(x, x.size, y, y.size, margin + reach[i] + reach[j]), false);
-    }
-    for (var t = 0u; t < members.y; t++) {
-        let c = family[1][t];
-        let i = cands[c] & 0xffu;
-        let j = cands[c] >> 8u;
-        // collide_shapes: box_plane with the box first, flipped where the
-        // plane was the first shape.
-        let flipped = placed[i].kind == KIND_PLANE;
-        let b = placed[select(i, j, flipped)];
-        let p = placed[select(j, i, flipped)];
-        let m = box_plane(b, b.size, p.centre, p.size, margin + reach[i] + reach[j]);
-        got[c] = keep_manifold(w, c, m, flipped);
-    }
-    for (var t = 0u; t < members.z; t++) {
-        let c = family[2][t];
-        let i = cands[c] & 0xffu;
-        let j = cands[c] >> 8u;
-        let flipped = placed[i].kind != KIND_SPHERE;
-        let s = placed[select(i, j, flipped)];
-        let o = placed[select(j, i, flipped)];
-        let m = collide_sphere(s, o, margin + reach[i] + reach[j]);
-        got[c] = keep_manifold(w, c, m, flipped);
-    }
-    spent += 400u * (members.x + members.y + members.z);
-    // (3) world_contacts' rounds.
-    var done: array<u32, 4>;
-    var count = 0u;
-    var flags = 0u;
-    let slot0 = w * sp.slots;
-    loop {
-        var woke = false;
-        for (var c = 0u; c < nc; c++) {
-            let i = cands[c] & 0xffu;
-            let j = cands[c] >> 8u;
-            spent += 1u;
-            let bit = 1u << (c & 31u);
-            let seen = (done[c >> 5u] & bit) != 0u;
-            let on = (((awake_mask >> i) | (awake_mask >> j)) & 1u) != 0u;
-            if seen || !on {
-                continue;
-            }
-            done[c >> 5u] |= bit;
-            let len = got[c] & ~OVERFLOW;
-            if len == 0u {
-                continue;
-            }
-            for (var s = 0u; s < 2u; s++) {
-                let x = select(i, j, s == 1u);
-                if ((movable >> x) & 1u) != 0u && ((awake_mask >> x) & 1u) == 0u {
-                    awake_mask |= 1u << x;
-                    // step.rs prepare: a woken body's v* is Δt g.
-                    put_scratch(6u * (first + x), g * dt);
-                    put_scratch(6u * (first + x) + 3u, vec3<Scalar>(0.0, 0.0, 0.0));
-                    woke = true;
-                }
-            }
-            if (got[c] & OVERFLOW) != 0u || len > SLOTS {
-                flags |= CONTACTS_FULL;
-            }
-            // The dynamic body is a (normal from b to a).
-            let swap = is_static(first + i);
-            for (var h = 0u; h < min(len, SLOTS); h++) {
-                if count >= sp.slots {
-                    flags |= CONTACTS_FULL;
-                    break;
-                }
-                let kept = sp.pairs_at + (w * sp.pair_slots + SLOTS * c + h) * CP;
-                let normal = vec3_at_scratch(kept + 3u);
-                let slot = slot0 + count;
-                count++;
-                let at = sp.contacts_at + slot * CP;
-                put_scratch(at, vec3_at_scratch(kept));
-                put_scratch(at + 3u, select(normal, -normal, swap));
-                scratch[at + 6u] = scratch[kept + 6u];
-                scratch[at + 7u] = Scalar(0.0);
-                let a = select(i, j, swap);
-                let b = select(j, i, swap);
-                let key = sp.keys_at + 4u * slot;
-                words[key] = a;
-                words[key + 1u] = b;
-                words[key + 2u] = u32(scratch[kept + 7u]);
-                words[key + 3u] = 0u;
-            }
-        }
-        if !woke || spent > sp.budget {
-            break;
-        }
-    }
-    if spent > sp.budget || !loops_left() {
-        flags |= BUDGET;
-    }
-    let out = sp.out_at + 4u * w;
-    words[out] = count;
-    words[out + 1u] = awake_mask;
-    words[out + 2u] = flags;
-    words[out + 3u] = 0u;
-}
-
-// The second phase of shaders/world_step.wgsl (composed after it): one
-// island's rows, the check, the islands, `world_solve`.
-
-// One island's contact rows (src/cpu/assembly.rs ContactRow), row i of the
-// island at 12 i: the Jacobian and the response M⁻¹Jᵀ of sides a (0..6)
-// and b (6..12); q; the dynamic body of each side (NONE: static in the
-// step's scene); the answer z.
-const NONE: u32 = 0xffffffffu;
-var<private> jac: array<Scalar, 192>;
-var<private> resp: array<Scalar, 192>;
-var<private> qv: array<Scalar, 16>;
-var<private> sides: array<vec2<u32>, 16>;
-var<private> zv: array<Scalar, 16>;
-// The island's M (row i at ISLAND_MAX i), assembled once for the tableau,
-// the basis solves and the check; w = M z + q of the last check; the basis
-// solve's x over cand.
-var<private> mm: array<Scalar, 256>;
-var<private> wv: array<Scalar, 16>;
-var<private> xs: array<Scalar, 16>;
-// Per body of the world: v* and then the velocities after the impulses.
-var<private> lin: array<vec3<Scalar>, 16>;
-var<private> ang: array<vec3<Scalar>, 16>;
-
-fn put_row(dst: ptr<private, array<Scalar, 192>>, at: u32, v: vec3<Scalar>) {
-    (*dst)[at] = v.x;
-    (*dst)[at + 1u] = v.y;
-    (*dst)[at + 2u] = v.z;
-}
-
-fn row_vec3(src: ptr<private, array<Scalar, 192>>, at: u32) -> vec3<Scalar> {
-    return vec3<Scalar>((*src)[at], (*src)[at + 1u], (*src)[at + 2u]);
-}
-
-// The world-frame inverse inertia R diag(1/I) Rᵀ of body b (global index)
-// times v, at the step's start pose.
-fn inv_inertia_mul(b: u32, v: vec3<Scalar>) -> vec3<Scalar> {
-    let p = placed_body(b);
-    let inv = vec3_at_consts(sp.bodies_at + b * BC + 6u);
-    return rotate(p, inv * unrotate(p, v));
-}
-
-// The dynamic body of each side of contact `slot` (global) in the step's
-// scene, NONE where that side is static or not moving: the `sides` of its
-// rows (friction rows of world_friction.wgsl included).
-fn contact_sides(slot: u32, moving: u32) -> vec2<u32> {
-    let key = sp.keys_at + 4u * slot;
-    let a = words[key];
-    let b = words[key + 1u];
-    var s = vec2<u32>(NONE, NONE);
-    if ((moving >> a) & 1u) != 0u {
-        s.x = a;
-    }
-    if ((moving >> b) & 1u) != 0u {
-        s.y = b;
-    }
-    return s;
-}
-
-// assemble_contact: row i of the island from contact `slot` of world with
-// first body `first` and moving-body mask `moving`; bias φ/Δt, ε = 0.
-fn assemble_contact(slot: u32, i: u32, first: u32, moving: u32) {
-    let at = sp.contacts_at + slot * CP;
-    let key = sp.keys_at + 4u * slot;
-    let a = words[key];
-    let b = words[key + 1u];
-    let p = vec3_at_scratch(at);
-    let n = vec3_at_scratch(at + 3u);
-    let gap = scratch[at + 6u];
-    let ga = first + a;
-    let gb = first + b;
-    let ra = p - vec3_at_state(ga * BS);
-    let rb = p - vec3_at_state(gb * BS);
-    let ra_n = cross3(ra, n);
-    let rb_n = cross3(rb, n);
-    let r = 12u * i;
-    put_row(&jac, r, n);
-    put_row(&jac, r + 3u, ra_n);
-    put_row(&jac, r + 6u, -n);
-    put_row(&jac, r + 9u, -rb_n);
-    let s = contact_sides(slot, moving);
-    if s.x != NONE {
-        put_row(&resp, r, n * body_const(ga, 5u));
-        put_row(&resp, r + 3u, inv_inertia_mul(ga, ra_n));
-    }
-    if s.y != NONE {
-        put_row(&resp, r + 6u, -n * body_const(gb, 5u));
-        put_row(&resp, r + 9u, -inv_inertia_mul(gb, rb_n));
-    }
-    sides[i] = s;
-    let pdot = (lin[a] + cross3(ang[a], ra)) - (lin[b] + cross3(ang[b], rb));
-    qv[i] = dot3(pdot, n) + gap / sp.dt;
-}
-
-fn dot6(x: u32, y: u32) -> Scalar {
-    var m = Scalar(0.0);
-    for (var k = 0u; k < 6u; k++) {
-        m += jac[x + k] * resp[y + k];
-    }
-    return m;
-}
-
-// assembly.rs matrix_entry: M_ij over the dynamic bodies rows i and j
-// share, the sides in its order (a–a, a–b, b–a, b–b), into `mm` for the
-// island's n rows.
-fn fill_matrix(n: u32) {
-    for (var i = 0u; i < n; i++) {
-        let si = sides[i];
-        for (var j = 0u; j < n; j++) {
-            let sj = sides[j];
-            // A side of row i meets at most one side of row j (a row's
-            // two bodies differ): one dot6 per side of row i, in order.
-            let ja = select(6u, 0u, si.x == sj.x);
-            let jb = select(6u, 0u, si.y == sj.x);
-            var m = Scalar(0.0);
-            if si.x != NONE && (si.x == sj.x || si.x == sj.y) {
-                m += dot6(12u * i, 12u * j + ja);
-            }
-            if si.y != NONE && (si.y == sj.x || si.y == sj.y) {
-                m += dot6(12u * i + 6u, 12u * j + jb);
-            }
-            mm[ISLAND_MAX * i + j] = m;
-        }
-    }
-}
-
-// lcp.rs norm2 of the first n entries of the rows given by `which`: 0: z −
-// max(0, z − w) (w in `wv`), 1: q.
-fn scaled_norm(n: u32, which: u32) -> Scalar {
-    var big = Scalar(0.0);
-    for (var i = 0u; i < n; i++) {
-        var x = qv[i];
-        if which == 0u {
-            x = zv[i] - max(Scalar(0.0), zv[i] - wv[i]);
-        }
-        big = max(big, abs(x));
-    }
-    if big == Scalar(0.0) || !finite(big) {
-        return big;
-    }
-    var sum = Scalar(0.0);
-    for (var i = 0u; i < n; i++) {
-        var x = qv[i];
-        if which == 0u {
-            x = zv[i] - max(Scalar(0.0), zv[i] - wv[i]);
-        }
-        sum += (x / big) * (x / big);
-    }
-    return big * sqrt(sum);
-}
-
-// The door's final check of the island's z (check_solution): w = M z + q
-// (into `wv`), z and w finite, lcp_error(z, w, q) finite and <= tolerance.
-// The error, or -1 where the check fails.
-fn check(n: u32) -> Scalar {
-    var ok = true;
-    for (var i = 0u; i < n; i++) {
-        var s = Scalar(0.0);
-        for (var j = 0u; j < n; j++) {
-            s += mm[ISLAND_MAX * i + j] * zv[j];
-        }
-        wv[i] = qv[i] + s;
-        ok = ok && finite(wv[i]) && finite(zv[i]);
-    }
-    let num = scaled_norm(n, 0u);
-    let qn = scaled_norm(n, 1u);
-    var error = num;
-    if qn > SCALAR_EPSILON {
-        error = num / qn;
-    }
-    if !ok || !finite(error) || !(error <= sp.tolerance) {
-        return Scalar(-1.0);
-    }
-    return error;
-}
-
-// M_SS x = −q_S over the contacts S = cand[0..k] by Gaussian elimination
-// with partial pivoting (textbook_checked), in the tableau `t`, x into
-// `xs`. False where M_SS is singular or x not finite.
-fn solve_on(k: u32) -> bool {
-    let cols = k + 1u;
-    for (var r = 0u; r < k; r++) {
-        for (var c = 0u; c < k; c++) {
-            t[r * cols + c] = mm[ISLAND_MAX * cand[r] + cand[c]];
-        }
-        t[r * cols + k] = -qv[cand[r]];
-    }
-    for (var p = 0u; p < k; p++) {
-        var best = p;
-        var big = abs(t[p * cols + p]);
-        for (var r = p + 1u; r < k; r++) {
-            let v = abs(t[r * cols + p]);
-            if v > big {
-                big = v;
-                best = r;
-            }
-        }
-        if !(big > Scalar(0.0)) || !finite(big) {
-            return false;
-        }
-        for (var c = p; c <= k; c++) {
-            let v = t[p * cols + c];
-            t[p * cols + c] = t[best * cols + c];
-            t[best * cols + c] = v;
-        }
-        for (var r = p + 1u; r < k; r++) {
-            let f = t[r * cols + p] / t[p * cols + p];
-            for (var c = p; c <= k; c++) {
-                t[r * cols + c] -= f * t[p * cols + c];
-            }
-        }
-    }
-    var ok = true;
-    for (var r = k; r > 0u; r--) {
-        let i = r - 1u;
-        var s = t[i * cols + k];
-        for (var c = i + 1u; c < k; c++) {
-            s -= t[i * cols + c] * xs[c];
-        }
-        xs[i] = s / t[i * cols + i];
-        ok = ok && finite(xs[i]);
-    }
-    return ok;
-}
-
-// The basis Lemke ended on, re-solved in f64 as the CPU path re-solves it
-// (textbook_checked, `solve_on`): z = max(x, 0) over the basic z's; Lemke's
-// own z where M_SS is singular or the answer not finite. The basis (bit i:
-// z_i basic).
-fn resolve_basis(n: u32) -> u32 {
-    var k = 0u;
-    var mask = 0u;
-    for (var i = 0u; i < n; i++) {
-        let v = basic[i];
-        if v >= n && v < 2u * n {
-            cand[k] = v - n;
-            mask |= 1u << (v - n);
-            k++;
-        }
-    }
-    if solve_on(k) {
-        for (var i = 0u; i < k; i++) {
-            zv[cand[i]] = max(xs[i], Scalar(0.0));
-        }
-    }
-    return mask;
-}
-
-// Block principal pivots tried from the warm basis (world_cpu.rs
-// WARM_PIVOTS).
-const WARM_PIVOTS: u32 = 3u;
-
-// The CPU path's warm start (world_cpu.rs warm_settle) for an island of n
-// contacts: last step's basis `hint` (bit i: contact i basic) solved
-// (`solve_on`), z = max(x, 0), kept where the door's check passes (its
-// error into `error`); else up to WARM_PIVOTS block principal pivots from
-// it: basic contacts at z = 0 leave, the others with w < 0 enter. The
-// basis kept, or NONE (Lemke's path then): singular, no pivot left to
-// make, or the pivots spent.
-fn warm_basis(n: u32, hint: u32, error: ptr<function, Scalar>) -> u32 {
-    var mask = hint;
-    for (var round = 0u; round <= WARM_PIVOTS; round++) {
-        var k = 0u;
-        for (var i = 0u; i < n; i++) {
-            zv[i] = Scalar(0.0);
-            if ((mask >> i) & 1u) != 0u {
-                cand[k] = i;
-                k++;
-            }
-        }
-        if !solve_on(k) {
-            return NONE;
-        }
-        for (var r = 0u; r < k; r++) {
-            zv[cand[r]] = max(xs[r], Scalar(0.0));
-        }
-        *error = check(n);
-        if *error >= Scalar(0.0) {
-            return mask;
-        }
-        var next = mask;
-        for (var i = 0u; i < n; i++) {
-            let bit = 1u << i;
-            if (mask & bit) != 0u && zv[i] <= Scalar(0.0) {
-                next &= ~bit;
-            }
-            if (mask & bit) == 0u && wv[i] < Scalar(0.0) {
-                next |= bit;
-            }
-        }
-        if next == mask {
-            return NONE;
-        }
-        mask = next;
-    }
-    return NONE;
+// Empties list f (its workgroups 0; y and z stay 1).
+fn clear_list(f: u32) {
+    atomicStore(&lists[4u * f], 0u);
+    atomicStore(&lists[4u * f + 3u], 0u);
 }
 
 // False where llvmpipe's loop limit was reached in this invocation: past
@@ -1635,13 +667,35 @@ fn loops_left() -> bool {
     return k == r;
 }
 
-fn find(parent: ptr<function, array<u32, 16>>, x0: u32) -> u32 {
-    var x = x0;
-    while (*parent)[x] != x {
-        (*parent)[x] = (*parent)[(*parent)[x]];
-        x = (*parent)[x];
+// Shared by the resident step's solve (shaders/world_solve.wgsl) and
+// frictional (shaders/world_friction.wgsl) phases, composed before both:
+// the bodies' velocities of a world while its islands are solved, the
+// sides of a contact's rows, and step.rs finish.
+
+// A side of a contact row with no dynamic body (static in the step's scene).
+const NONE: u32 = 0xffffffffu;
+// The dynamic body of each side of an island's rows (contact_sides), row
+// i at i.
+var<private> sides: array<vec2<u32>, 16>;
+// Per body of the world: v* and then the velocities after the impulses.
+var<private> lin: array<vec3<Scalar>, 16>;
+var<private> ang: array<vec3<Scalar>, 16>;
+
+// The dynamic body of each side of contact `slot` (global) in the step's
+// scene, NONE where that side is static or not moving: the `sides` of its
+// rows (friction rows of world_friction.wgsl included).
+fn contact_sides(slot: u32, moving: u32) -> vec2<u32> {
+    let key = sp.keys_at + 4u * slot;
+    let a = words[key];
+    let b = words[key + 1u];
+    var s = vec2<u32>(NONE, NONE);
+    if ((moving >> a) & 1u) != 0u {
+        s.x = a;
     }
-    return x;
+    if ((moving >> b) & 1u) != 0u {
+        s.y = b;
+    }
+    return s;
 }
 
 // step.rs integrate_rotation: normalise(q + ½Δt (ω, 0) ⊗ q).
@@ -1670,243 +724,13 @@ fn load_velocities(w: u32) {
     }
 }
 
-// Step parts 2 and 3 for one world: find_islands (union–find through the
-// moving bodies, islands in the order of their first contact), per island
-// assembly, the warm basis (`warm_basis`) and where it fails Lemke
-// (lemke_pivots), the check, the impulses; then finish (poses, sleep
-// counters) and the world's figures. A flagged world (here or in
-// world_collide) keeps its state.
-//
-// The warm-start memory is the world's record (scalars 6 and 7): a hash of
-// last step's contact ids (a, b, feature, in order) and its bases (bit c:
-// contact c basic, c < 32). With `sp.warm_bases` the bases are hints where
-// this step's ids hash alike, as the CPU path's memory by id: every answer
-// passes the door's check whatever basis it came from.
-//
-// In two entry points where `sp.warm_bases` (llvmpipe runs every branch
-// of an invocation under a mask, so Lemke's path, rarely taken once the
-// warm bases hold, would cost every world every step): `world_solve_warm`
-// over every world, without Lemke's path: a world with an island whose
-// warm basis fails (or without a warm basis) is left as it is and listed
-// in `deferred`; then `world_solve`, dispatched indirectly over the listed
-// worlds only, steps them from the start with Lemke's path. Both rewrite
-// what they write before the island loop alike, so a listed world ends as
-// it would in `world_solve` alone. Without `sp.warm_bases`, `world_solve`
-// alone over every world.
-@compute @workgroup_size(64)
-fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
-    var w = gid.x;
-    if sp.warm_bases != 0u {
-        if w >= atomicLoad(&deferred[3]) {
-            return;
-        }
-        w = atomicLoad(&deferred[4u + w]);
-    }
-    if w >= sp.count {
-        return;
-    }
-    solve_world(w, true);
-}
-
-@compute @workgroup_size(64)
-fn world_solve_warm(@builtin(global_invocation_id) gid: vec3<u32>) {
-    let w = gid.x;
-    if w >= sp.count {
-        return;
-    }
-    solve_world(w, false);
-}
-
-// Lists world w for `world_solve` (its indirect dispatch: workgroups of
-// WORKGROUP worlds).
-fn defer_world(w: u32) {
-    let k = atomicAdd(&deferred[3], 1u);
-    atomicMax(&deferred[0], k / 64u + 1u);
-    atomicStore(&deferred[4u + k], w);
-}
-
-// world_solve for world w; without `lemke`, a world that would take
-// Lemke's path is deferred (`defer_world`) instead.
-fn solve_world(w: u32, lemke: bool) {
+// World w's velocities (lin, ang) into `scratch`, for world_finish.
+fn store_velocities(w: u32) {
     let first = worlds[w].x;
-    let out = sp.out_at + 4u * w;
-    let count = words[out];
-    let moving = words[out + 1u];
-    var flags = words[out + 2u];
-    let slot0 = w * sp.slots;
-    records[w * REC + 5u] = Scalar(0.0);
-    load_velocities(w);
-    // Islands.
-    var parent: array<u32, 16>;
-    var island_of_root: array<u32, 16>;
-    for (var k = 0u; k < MAX_BODIES; k++) {
-        parent[k] = k;
-        island_of_root[k] = NONE;
+    for (var k = 0u; k < min(worlds[w].y, MAX_BODIES); k++) {
+        put_scratch(6u * (first + k), lin[k]);
+        put_scratch(6u * (first + k) + 3u, ang[k]);
     }
-    for (var c = 0u; c < count; c++) {
-        let key = sp.keys_at + 4u * (slot0 + c);
-        let a = words[key];
-        let b = words[key + 1u];
-        if ((moving >> a) & (moving >> b) & 1u) != 0u {
-            let ra = find(&parent, a);
-            let rb = find(&parent, b);
-            parent[max(ra, rb)] = min(ra, rb);
-        }
-    }
-    var islands = 0u;
-    var max_penetration = Scalar(0.0);
-    var ids = 2166136261u ^ count;
-    for (var c = 0u; c < count; c++) {
-        let key = sp.keys_at + 4u * (slot0 + c);
-        let a = words[key];
-        ids = (ids ^ a) * 16777619u;
-        ids = (ids ^ words[key + 1u]) * 16777619u;
-        ids = (ids ^ words[key + 2u]) * 16777619u;
-        let body = select(words[key + 1u], a, ((moving >> a) & 1u) != 0u);
-        let root = find(&parent, body);
-        if island_of_root[root] == NONE {
-            island_of_root[root] = islands;
-            islands++;
-        }
-        words[key + 3u] = island_of_root[root];
-        max_penetration = max(max_penetration, -scratch[sp.contacts_at + (slot0 + c) * CP + 6u]);
-    }
-    // A world with friction (a contact with μ > 0: Scene::has_friction)
-    // goes to world_friction, flagged HANDED until that finishes it; its
-    // rounds there are counted from 0 (the record's sixth scalar).
-    var frictional = false;
-    for (var c = 0u; c < count; c++) {
-        let key = sp.keys_at + 4u * (slot0 + c);
-        frictional = frictional || pair_friction(first + words[key], first + words[key + 1u]) > Scalar(0.0);
-    }
-    let fs = sp.fstate_at + 4u * w;
-    words[fs] = F_IDLE;
-    words[out + 3u] = islands;
-    if frictional && flags == 0u {
-        if sp.friction_at == 0u {
-            flags |= NOT_SOLVED;
-        } else {
-            words[fs] = F_ASSEMBLE;
-            words[fs + 1u] = 0u;
-            words[fs + 2u] = 0u;
-            words[out + 2u] = HANDED;
-            records[w * REC + 2u] = max_penetration;
-            records[w * REC + 3u] = Scalar(0.0);
-            return;
-        }
-    }
-    // Per island: assembly, the warm basis or Lemke, check, impulses.
-    let rec = w * REC;
-    let warm = sp.warm_bases != 0u && records[rec + 6u] == Scalar(ids);
-    let hints = u32(records[rec + 7u]);
-    var bases = 0u;
-    var max_error = Scalar(0.0);
-    var spent = 0u;
-    var members: array<u32, 16>;
-    for (var isl = 0u; isl < islands && flags == 0u; isl++) {
-        var n = 0u;
-        for (var c = 0u; c < count; c++) {
-            if words[sp.keys_at + 4u * (slot0 + c) + 3u] == isl {
-                if n < ISLAND_MAX {
-                    members[n] = c;
-                }
-                n++;
-            }
-        }
-        if n > ISLAND_MAX {
-            flags |= ISLAND_TOO_LARGE;
-            break;
-        }
-        for (var i = 0u; i < n; i++) {
-            assemble_contact(slot0 + members[i], i, first, moving);
-        }
-        fill_matrix(n);
-        spent += n * n + count;
-        var error = Scalar(-1.0);
-        var basis = NONE;
-        if warm {
-            var hint = 0u;
-            for (var i = 0u; i < n; i++) {
-                hint |= select(0u, ((hints >> members[i]) & 1u) << i, members[i] < 32u);
-            }
-            basis = warm_basis(n, hint, &error);
-            spent += (WARM_PIVOTS + 1u) * (n * n * n + 3u * n * n);
-        }
-        if basis == NONE && !lemke {
-            defer_world(w);
-            return;
-        }
-        if basis == NONE {
-            // The tableau B⁻¹ [I, −M, −e | q] with B = I (lemke.wgsl).
-            let cols = 2u * n + 2u;
-            let rhs = cols - 1u;
-            for (var i = 0u; i < n; i++) {
-                let ri = i * cols;
-                for (var j = 0u; j < n; j++) {
-                    t[ri + j] = Scalar(0.0);
-                    t[ri + n + j] = -mm[ISLAND_MAX * i + j];
-                }
-                t[ri + i] = Scalar(1.0);
-                t[ri + 2u * n] = Scalar(-1.0);
-                t[ri + rhs] = qv[i];
-                basic[i] = i;
-            }
-            spent += n * cols;
-            var visited = 0u;
-            let max_pivots = u32(max(sp.max_pivots, Scalar(1.0)));
-            let status = lemke_pivots(n, spent, sp.pivot_tol, max_pivots, sp.budget, &visited);
-            spent += n + (visited + 1u) * ((n + 1u) * cols + 2u * n * n + 6u * n);
-            if status != 1u {
-                flags |= NOT_SOLVED;
-                break;
-            }
-            for (var i = 0u; i < n; i++) {
-                zv[i] = Scalar(0.0);
-            }
-            basis = 0u;
-            if visited > 0u {
-                for (var i = 0u; i < n; i++) {
-                    let v = basic[i];
-                    if v >= n && v < 2u * n {
-                        zv[v - n] = max(t[i * cols + rhs], Scalar(0.0));
-                    }
-                }
-                basis = resolve_basis(n);
-                spent += n * n * n;
-            }
-            error = check(n);
-            if error < Scalar(0.0) {
-                flags |= NOT_SOLVED;
-                break;
-            }
-        }
-        for (var i = 0u; i < n; i++) {
-            bases |= select(0u, ((basis >> i) & 1u) << members[i], members[i] < 32u);
-        }
-        max_error = max(max_error, error);
-        // cpu/impulses.rs velocities_after: v += M⁻¹Jᵀ z per side.
-        for (var i = 0u; i < n; i++) {
-            let zi = zv[i];
-            scratch[sp.contacts_at + (slot0 + members[i]) * CP + 7u] = zi;
-            if zi == Scalar(0.0) {
-                continue;
-            }
-            let s = sides[i];
-            let r = 12u * i;
-            if s.x != NONE {
-                lin[s.x] += row_vec3(&resp, r) * zi;
-                ang[s.x] += row_vec3(&resp, r + 3u) * zi;
-            }
-            if s.y != NONE {
-                lin[s.y] += row_vec3(&resp, r + 6u) * zi;
-                ang[s.y] += row_vec3(&resp, r + 9u) * zi;
-            }
-        }
-    }
-    // Last step's ids and bases: kept where the world was stepped here.
-    records[rec + 6u] = select(Scalar(-1.0), Scalar(ids), flags == 0u);
-    records[rec + 7u] = Scalar(bases);
-    finish_world(w, flags, max_penetration, max_error);
 }
 
 // step.rs finish for world w after its impulses (velocities in lin, ang):
@@ -2003,13 +827,15 @@ fn finish_world(w: u32, flags0: u32, max_penetration: Scalar, max_error: Scalar)
     records[r + 4u] = Scalar(awake);
 }
 
-// The frictional phase of shaders/world_step.wgsl (composed after
-// world_solve.wgsl, before the cone projection of friction_common.wgsl):
+
+// The frictional phase of shaders/world_step.wgsl (a module of its own:
+// composed after world_step.wgsl and world_finish.wgsl, before
+// world_apgd.wgsl and the cone projection of friction_common.wgsl):
 // the islands of the worlds with friction (a contact with μ > 0 this step;
 // world_solve hands them over with the phase F_ASSEMBLE and the flag HANDED,
 // which stays until the world is finished), one invocation per world.
 // `world_friction` is dispatched several times per step (rounds, after
-// world_solve, in the same submission); each invocation goes on where the
+// world_solve and world_finish, in the same submission); each invocation goes on where the
 // last round stopped and does at most `sp.friction_budget` of loop work
 // (llvmpipe ends an invocation's loops after about 65,535 iterations in
 // all, counted over 8 invocations in lockstep). A world
@@ -2026,7 +852,7 @@ fn finish_world(w: u32, flags0: u32, max_penetration: Scalar, max_error: Scalar)
 // - the sweeps of friction/projected.rs `sweeps` (Gauss–Seidel or Jacobi,
 //   η per contact by contact_steps, relaxation 1): each iteration u =
 //   W x + q, the stop measure, a sweep; from the warm start (the last
-//   step's reactions of the same (a, b, feature), world_collide) or 0,
+//   step's reactions of the same (a, b, feature)) or 0,
 //   projected on the cones;
 // - the judgement in f64 (ProjectedSolution::judge, FrictionResiduals):
 //   solved when r and u are finite and the cone error is at most the
@@ -2072,18 +898,8 @@ const METHOD_APGD: u32 = 2u;
 // Below this scale the stop measure is not divided (projected.rs SCALE_FLOOR).
 const SCALE_FLOOR: Scalar = Scalar(2.220446049250313e-16);
 
-// Phases.
-const F_IDLE: u32 = 0u;
-const F_ASSEMBLE: u32 = 1u;
-const F_SWEEP: u32 = 2u;
-
 // The island's contact slots (global), in order.
 var<private> fmembers: array<u32, 16>;
-
-// μ = √(μ_a μ_b) of bodies ga, gb (global).
-fn pair_friction(ga: u32, gb: u32) -> Scalar {
-    return sqrt(body_const(ga, 11u) * body_const(gb, 11u));
-}
 
 // scene.rs tangent_basis(n).
 fn tangent_basis(n: vec3<Scalar>) -> array<vec3<Scalar>, 2> {
@@ -2180,7 +996,7 @@ fn friction_entry(base: u32, x: u32, y: u32) -> Scalar {
 }
 
 // The island's problem (its n contacts in fmembers): rows, q, μ, W, η, and
-// the start x (the warm start where world_collide found one, else 0),
+// the start x (the warm start where one was kept, else 0),
 // projected on the cones.
 fn assemble_friction(base: u32, n: u32, first: u32, moving: u32) {
     for (var i = 0u; i < n; i++) {
@@ -2558,7 +1374,7 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
         put_scratch(6u * (first + k) + 3u, ang[k]);
     }
     if !loops_left() {
-        // The loop limit reached (world_solve.wgsl loops_left): this
+        // The loop limit reached (world_step.wgsl loops_left): this
         // round's work may be cut short; flagged, the CPU steps the world.
         words[fs] = F_IDLE;
         words[out + 2u] = BUDGET;
