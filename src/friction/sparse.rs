@@ -67,6 +67,13 @@ impl Pattern {
         }
     }
 
+    /// `other`'s pattern into this one, reusing its buffers (the pattern
+    /// of a problem whose W has `other`'s nonzero blocks: PROX's W + αI).
+    pub fn copy_from(&mut self, other: &Pattern) {
+        self.start.clone_from(&other.start);
+        self.cols.clone_from(&other.cols);
+    }
+
     /// Contact i's neighbours (itself included), ascending.
     #[inline]
     pub fn row(&self, i: usize) -> &[usize] {
