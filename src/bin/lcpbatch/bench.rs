@@ -6,15 +6,15 @@
 //! noisy); the table, the JSON and the plots say which machine and adapter.
 
 use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::Instant;
 
 use serde::Serialize;
 
 use lcpbatch::generate::families::{family_batch, islands_of_size, BenchFamily};
-use lcpbatch::io::write_atomically;
 use lcpbatch::{Backend, Error, GpuSettings, Lcp, Method, Report, Settings, Solver};
 
+use crate::bench_table::{print_table, row_line, write_json};
 use crate::devices::{gpu_solvers, machine_description};
 use crate::plots::{self, Curve};
 
@@ -442,103 +442,6 @@ fn time_vs_batch(opts: &BenchOptions, gpus: &mut [Solver]) -> Result<Vec<Curve>,
         }
     }
     Ok(curves)
-}
-
-/// Prints the table.
-/// One row of the family table.
-fn row_line(r: &BenchRow) -> String {
-    let st: Vec<String> = r.statuses.iter().map(|(k, v)| format!("{k}={v}")).collect();
-    format!(
-        "{:<17} {:<28} {:<7} {:>8} {:>12.0} {:>10.1e} {:>10.1e}  {} {}",
-        r.family,
-        r.solver,
-        r.backend,
-        r.islands,
-        r.islands_per_second,
-        r.median_error,
-        r.max_error,
-        st.join(" "),
-        r.note
-    )
-}
-
-fn print_table(rows: &[BenchRow]) {
-    println!(
-        "{:<17} {:<28} {:<7} {:>8} {:>12} {:>10} {:>10}  statuses / notes",
-        "family", "solver", "backend", "islands", "islands/s", "median err", "max err"
-    );
-    for r in rows {
-        println!("{}", row_line(r));
-    }
-    let gpu_rows: Vec<&BenchRow> = rows
-        .iter()
-        .filter(|r| !r.phases_us_per_island.is_empty())
-        .collect();
-    if !gpu_rows.is_empty() {
-        println!(
-            "\nGPU rows, µs per island by phase (host side, adding up to the call; kernels: \
-             the host's wait for them), then the kernels by the device's timestamps and the \
-             host work overlapped with them:"
-        );
-    }
-    for r in gpu_rows {
-        let phases: Vec<String> = r
-            .phases_us_per_island
-            .iter()
-            .map(|(name, us)| format!("{name} {us:.2}"))
-            .collect();
-        let device = r
-            .device_kernels_us_per_island
-            .map_or("none".to_string(), |us| format!("{us:.2}"));
-        println!(
-            "{:<17} {:<28} {}; device kernels {device}, overlapped {:.2}",
-            r.family,
-            r.solver,
-            phases.join(", "),
-            r.overlapped_us_per_island
-        );
-    }
-}
-
-/// Writes the rows and the curves (seconds per island) as JSON, atomically.
-fn write_json(
-    rows: &[BenchRow],
-    curves: &[(&str, &[Curve])],
-    machine: &str,
-    path: &Path,
-) -> Result<(), Error> {
-    #[derive(Serialize)]
-    struct CurveOut<'a> {
-        plot: &'a str,
-        label: &'a str,
-        /// (x, seconds per island)
-        points: &'a [(f64, f64)],
-    }
-    #[derive(Serialize)]
-    struct File<'a> {
-        machine: &'a str,
-        rows: &'a [BenchRow],
-        curves: Vec<CurveOut<'a>>,
-    }
-    let curves = curves
-        .iter()
-        .flat_map(|(plot, cs)| {
-            cs.iter().map(move |(label, points)| CurveOut {
-                plot,
-                label,
-                points,
-            })
-        })
-        .collect();
-    let file = File {
-        machine,
-        rows,
-        curves,
-    };
-    write_atomically(
-        path,
-        &serde_json::to_string_pretty(&file).expect("serialisable"),
-    )
 }
 
 /// Runs every family through every row, prints the table, writes

@@ -3,6 +3,7 @@
 
 mod bench;
 mod bench_friction;
+mod bench_table;
 mod demo;
 mod devices;
 mod generate;
