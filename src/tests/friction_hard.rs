@@ -7,8 +7,10 @@
 //! inner scalings ρ where it creeps (`friction::prox`, `Creep`), 5 of these
 //! 648 ended `not_converged` at that cap (heavy boxes on light ones, μ 0.3,
 //! PROX creeping: its inner Newton, scaled by the light box's effective
-//! mass, could not weigh the heavy box's impulses), and the test ran at a
-//! cap of 5,000.
+//! mass, could not weigh the heavy box's impulses; solved island by island
+//! with `solve_friction_problem`, BENCHMARKS.md, 2026-11-28), and the test
+//! ran 216 of them at a cap of 5,000.
+
 use glam::{DMat3, DVec3};
 
 use crate::generate::{box_body, Rng};
