@@ -1,10 +1,15 @@
 //! Small hard frictional islands (issue: friction at every size, item 5):
 //! stacks of 2–4 boxes whose masses differ by up to 1e4, at μ up to 2,
-//! falling and drifting, solved by `auto` and judged by the checked
+//! falling and drifting, solved by `auto` at its default settings (the
+//! cap of 1,000 iterations, tolerance 1e-8) and judged by the checked
 //! Coulomb error of each answer (the report's status), not against stored
-//! answers. At the default cap of 1,000 iterations 3 of the
-//! 216 stacks end `not_converged` (heavy boxes on light ones at μ ≥ 1,
-//! PROX still creeping); the test raises the cap to 5,000.
+//! answers: 648 stacks, 24 per (boxes, ratio, μ). Before PROX raised its
+//! inner scalings ρ where it creeps (`friction::prox`, `Creep`), 5 of these
+//! 648 ended `not_converged` at that cap (heavy boxes on light ones, μ 0.3,
+//! PROX creeping: its inner Newton, scaled by the light box's effective
+//! mass, could not weigh the heavy box's impulses; solved island by island
+//! with `solve_friction_problem`, BENCHMARKS.md, 2026-11-28), and the test
+//! ran 216 of them at a cap of 5,000.
 
 use glam::{DMat3, DVec3};
 
@@ -69,20 +74,18 @@ fn family(per: usize) -> Vec<(String, Scene)> {
 }
 
 #[test]
-fn stacks_with_mass_ratios_to_1e4_and_mu_to_2_are_solved_by_auto() {
+fn stacks_with_mass_ratios_to_1e4_and_mu_to_2_are_solved_by_auto_at_its_defaults() {
     let mut solver = Solver::new(Settings {
         backend: Backend::Cpu,
-        friction_max_iterations: 5000,
         ..Settings::default()
     })
     .unwrap();
-    let scenes = family(8);
+    let scenes = family(24);
+    assert_eq!(scenes.len(), 648);
     let mut failed = Vec::new();
-    let mut most = 0;
     for (name, scene) in &scenes {
         let r = solver.solve_scenes(std::slice::from_ref(scene)).unwrap();
         for f in &r.friction {
-            most = most.max(f.solution.iterations);
             if f.status() != Status::Solved {
                 failed.push(format!(
                     "{name}: {:?} error {:e} iterations {}",
@@ -93,8 +96,6 @@ fn stacks_with_mass_ratios_to_1e4_and_mu_to_2_are_solved_by_auto() {
             }
         }
     }
-    // The hardest needed 2,019 (PROX's inner Newton steps included).
-    assert!(most <= 5000, "{most}");
     assert!(
         failed.is_empty(),
         "{} of {} not solved:\n{}",
