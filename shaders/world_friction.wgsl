@@ -1,12 +1,12 @@
 // The frictional phase of shaders/world_step.wgsl (a module of its own:
-// composed after world_step.wgsl and world_finish.wgsl, before
+// composed after world_step.wgsl and world_bodies.wgsl, before
 // world_apgd.wgsl and the cone projection of friction_common.wgsl):
 // the islands of the worlds with friction (a contact with μ > 0 this step;
-// world_solve hands them over with the phase F_ASSEMBLE and the flag HANDED,
-// which stays until the world is finished), one invocation per world.
-// `world_friction` is dispatched several times per step (rounds, after
-// world_solve and world_finish, in the same submission); each invocation goes on where the
-// last round stopped and does at most `sp.friction_budget` of loop work
+// world_solve_warm hands them over with the phase F_ASSEMBLE and the flag
+// HANDED, which stays until the world is finished), one invocation per
+// world. `world_friction` is dispatched several times per step (rounds,
+// after the solve, in the same submission); each invocation goes on where
+// the last round stopped and does at most `sp.friction_budget` of loop work
 // (llvmpipe ends an invocation's loops after about 65,535 iterations in
 // all, counted over 8 invocations in lockstep). A world
 // not finished after the step's last round keeps HANDED: the host steps it
@@ -29,7 +29,9 @@
 //   tolerance, else the world is flagged NOT_SOLVED (the CPU steps it);
 //   the Coulomb error (Siconos fc3d with De Saxcé's correction) is the
 //   world's max_error, as the CPU reports it;
-// - the impulses (apply_friction_impulses), then `finish_world`.
+// - the impulses (apply_friction_impulses); the world, every island
+//   solved, is left F_DONE: world_finish (after the last round) remembers
+//   its reactions and finishes it.
 //
 // With APGD (sp.gauss_seidel == METHOD_APGD) instead of the sweeps: the
 // twin of friction/apgd.rs `apgd` (from the same start; L from
@@ -84,7 +86,7 @@ fn tangent_basis(n: vec3<Scalar>) -> array<vec3<Scalar>, 2> {
 
 // I⁻¹ v of body b (global) as the CPU's scene body holds I⁻¹: the matrix
 // R diag(1/I) Rᵀ (RigidBody::inv_inertia_at, glam's products in their
-// order), then glam's mul_vec3 (world_solve's inv_inertia_mul rotates the
+// order), then glam's mul_vec3 (world_island.wgsl's inv_inertia_mul rotates the
 // vector instead: the same up to rounding, which would part the sweeps'
 // iterates from the CPU's).
 fn inv_inertia_mat_mul(b: u32, v: vec3<Scalar>) -> vec3<Scalar> {
@@ -421,7 +423,7 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
     }
     let fs = sp.fstate_at + 4u * w;
     var phase = words[fs];
-    if phase == F_IDLE {
+    if phase == F_IDLE || phase == F_DONE {
         return;
     }
     records[w * REC + 5u] += Scalar(1.0);
@@ -551,10 +553,9 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
         return;
     }
     if finished {
-        words[fs] = F_IDLE;
-        remember_reactions(w, count);
-        let r = w * REC;
-        finish_world(w, 0u, records[r + 2u], records[r + 3u]);
+        // world_finish remembers its reactions and finishes it after the
+        // step's last round.
+        words[fs] = F_DONE;
     }
 }
 
@@ -564,11 +565,7 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
 // step.rs contact_id without the world); in `scratch` from
 // sp.memory_r_at, 3 scalars per entry (r_n, r_t₁, r_t₂). This step's
 // reactions wait in `scratch` from sp.reactions_at (3 per contact slot)
-// until the world is finished.
-fn contact_key(slot: u32) -> u32 {
-    let key = sp.keys_at + 4u * slot;
-    return (words[key] << 16u) | (words[key + 1u] << 12u) | (words[key + 2u] & 0xfffu);
-}
+// until the world is finished (world_finish.wgsl remember_reactions).
 
 // The warm start of contact `slot` (world_friction.rs: the remembered
 // reaction of its id, the last entry of that id; 0 where none or warm
@@ -592,19 +589,4 @@ fn warm_start(slot: u32) -> vec3<Scalar> {
 fn keep_reaction(slot: u32, r: vec3<Scalar>) {
     scratch[sp.contacts_at + slot * CP + 7u] = r.x;
     put_scratch(sp.reactions_at + 3u * slot, r);
-}
-
-// WarmMemory::record of a finished world's step (every island solved):
-// its contacts' ids and reactions replace the memory.
-fn remember_reactions(w: u32, count: u32) {
-    if sp.warm_start == 0u {
-        return;
-    }
-    let m = sp.memory_at + w * (sp.slots + 1u);
-    words[m] = count;
-    for (var e = 0u; e < count; e++) {
-        let slot = w * sp.slots + e;
-        words[m + 1u + e] = contact_key(slot);
-        put_scratch(sp.memory_r_at + 3u * slot, vec3_at_scratch(sp.reactions_at + 3u * slot));
-    }
 }

@@ -1,4 +1,4 @@
-// GENERATED from shaders/collide.wgsl (functions above its pair functions) + shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_finish.wgsl + shaders/world_friction.wgsl + shaders/world_apgd.wgsl + shaders/friction_common.wgsl (project_on_cone on) by src/gpu/shaders/compose.rs: do not edit.
+// GENERATED from shaders/collide.wgsl (functions above its pair functions) + shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_bodies.wgsl + shaders/world_friction.wgsl + shaders/world_apgd.wgsl + shaders/friction_common.wgsl (project_on_cone on) by src/gpu/shaders/compose.rs: do not edit.
 // Regenerate: LCPBATCH_BLESS_SHADERS=1 cargo test --release generated_shaders_are_committed
 
 // Narrow phase: the contact points of candidate pairs of bodies (entry
@@ -425,18 +425,24 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 //   `world_contacts`: waking rounds, the contacts in pair order);
 //   shaders/world_collide.wgsl;
 // - module world_solve (after collide.wgsl's functions above its pair
-//   functions and shaders/lemke.wgsl's, with shaders/world_finish.wgsl):
-//   `world_solve_warm` per world (src/islands.rs `find_islands`,
-//   src/cpu/assembly.rs `assemble_contact` / `assemble_island`, the warm
-//   bases of world_cpu.rs `warm_settle`, the door's check `lcp_error` <=
-//   tolerance, `apply_impulses`; a world whose warm bases do not all hold
-//   is listed), `world_solve` per listed world (the same with Lemke's path
-//   `lemke_pivots`; per world where warm bases are off), `world_finish`
-//   per world (step.rs `finish` with `integrate_rotation`, the world's
-//   figures); shaders/world_solve.wgsl;
-// - module world_friction (the same with shaders/world_friction.wgsl,
-//   world_apgd.wgsl and friction_common.wgsl's cone projection):
-//   `world_friction` per world handed over by the solve, in rounds.
+//   functions and shaders/lemke.wgsl's, with shaders/world_bodies.wgsl
+//   and world_island.wgsl): `world_solve_warm` per world (src/islands.rs
+//   `find_islands`, src/cpu/assembly.rs `assemble_contact` /
+//   `assemble_island`, the warm bases of world_cpu.rs `warm_settle`, the
+//   door's check `lcp_error` <= tolerance, `apply_impulses`; the islands
+//   whose warm basis does not hold, every island without warm bases,
+//   listed with their world); shaders/world_solve.wgsl;
+// - module world_lemke (the same, shaders/world_lemke.wgsl):
+//   `world_lemke` per listed world (its listed islands by Lemke's path
+//   `lemke_pivots`, the basis re-solved, the check, the impulses);
+// - module world_friction (after the same, shaders/world_bodies.wgsl,
+//   world_friction.wgsl, world_apgd.wgsl and friction_common.wgsl's cone
+//   projection): `world_friction` per world handed over by the solve, in
+//   rounds;
+// - module world_finish (shaders/world_bodies.wgsl, world_finish.wgsl):
+//   `world_finish` per world (step.rs `finish` with `integrate_rotation`,
+//   the world's figures; a world world_friction finished: its reactions
+//   remembered first).
 // Several entry points rather than one: llvmpipe ends every loop of an
 // invocation after about 65,535 iterations in all, and each dispatch
 // starts that count afresh; each phase's code is a fraction of the step's
@@ -465,7 +471,7 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 //   (contacts, moving-body mask, flags, islands); from params.keys_at per
 //   contact slot 4 (a, b, feature, island);
 // - records: per world REC scalars (kinetic, potential, max penetration,
-//   max error, awake, friction rounds, and world_solve's warm-start
+//   max error, awake, friction rounds, and the solve's warm-start
 //   memory: a hash of last step's contact ids, their bases);
 // - scratch, from params.reach_at: per body its reach this step
 //   (candidate_pairs);
@@ -474,8 +480,8 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 //   the narrow phase: points | OVERFLOW | CUT);
 // - lists: four headers (workgroups x, y, z of an indirect dispatch, the
 //   count), then the entries of each list (`list_at`): the worlds
-//   `world_solve_warm` leaves to `world_solve` (emptied by
-//   candidate_pairs), the box–box, box–plane and sphere pairs
+//   `world_solve_warm` leaves to `world_lemke` with their islands (two
+//   words each; emptied by candidate_pairs), the box–box, box–plane and sphere pairs
 //   (world << 8 | candidate; filled by candidate_pairs, emptied by
 //   world_contacts for the next step).
 
@@ -494,7 +500,7 @@ const ISLAND_TOO_LARGE: u32 = 2u;
 const NOT_SOLVED: u32 = 4u;
 const NON_FINITE: u32 = 8u;
 const BUDGET: u32 = 16u;
-const HANDED: u32 = 32u; // with world_friction until it finishes the world (world_solve.wgsl)
+const HANDED: u32 = 32u; // with world_friction until it finishes the world (world_solve.wgsl begin_world)
 
 struct StepParams {
     // Worlds.
@@ -531,7 +537,7 @@ struct StepParams {
     // records per world (SLOTS per candidate pair).
     pairs_at: u32,
     pair_slots: u32,
-    // 1: world_solve tries last step's bases first (the CPU path's
+    // 1: world_solve_warm tries last step's bases first (the CPU path's
     // warm_settle: warm starts on, a method that predicts).
     warm_bases: u32,
     // candidate_pairs' lists: where the worlds' candidates start in
@@ -603,20 +609,23 @@ fn placed_body(k: u32) -> Placed {
 }
 
 // The frictional phase's (shaders/world_friction.wgsl) per-world phases,
-// set by world_solve's handover.
+// set by the solve's handover (world_solve.wgsl begin_world); F_DONE:
+// every island solved, for world_finish to finish.
 const F_IDLE: u32 = 0u;
 const F_ASSEMBLE: u32 = 1u;
 const F_SWEEP: u32 = 2u;
+const F_DONE: u32 = 3u;
 
 // μ = √(μ_a μ_b) of bodies ga, gb (global).
 fn pair_friction(ga: u32, gb: u32) -> Scalar {
     return sqrt(body_const(ga, 11u) * body_const(gb, 11u));
 }
 
-// Family work lists in `lists` (header at 4 f: workgroups x, y, z, count):
-// 0 the worlds world_solve_warm leaves to world_solve, 1 box–box pairs,
-// 2 box–plane pairs, 3 pairs with a sphere.
-const LIST_SOLVE: u32 = 0u;
+// Work lists in `lists` (header at 4 f: workgroups x, y, z, count): 0
+// the worlds world_solve_warm leaves to world_lemke (two words each: the
+// world, its islands for Lemke's path), 1 box–box pairs, 2 box–plane
+// pairs, 3 pairs with a sphere.
+const LIST_LEMKE: u32 = 0u;
 const LIST_BOX_BOX: u32 = 1u;
 const LIST_BOX_PLANE: u32 = 2u;
 const LIST_SPHERE: u32 = 3u;
@@ -627,13 +636,13 @@ fn pairs_per_world() -> u32 {
 }
 
 // Where list f's entries start in `lists`: after the four headers, the
-// solve list (a world each), then the pair lists (pairs_per_world() per
-// world each).
+// Lemke list (two words a world), then the pair lists (pairs_per_world()
+// per world each).
 fn list_at(f: u32) -> u32 {
-    if f == LIST_SOLVE {
+    if f == LIST_LEMKE {
         return 16u;
     }
-    return 16u + sp.count + (f - 1u) * sp.count * pairs_per_world();
+    return 16u + 2u * sp.count + (f - 1u) * sp.count * pairs_per_world();
 }
 
 // Appends `entry` to list f, its workgroups (of 64) grown to cover it.
@@ -667,10 +676,11 @@ fn loops_left() -> bool {
     return k == r;
 }
 
-// Shared by the resident step's solve (shaders/world_solve.wgsl) and
-// frictional (shaders/world_friction.wgsl) phases, composed before both:
-// the bodies' velocities of a world while its islands are solved, the
-// sides of a contact's rows, and step.rs finish.
+// Shared by the resident step's solve (shaders/world_solve.wgsl,
+// world_lemke.wgsl), frictional (world_friction.wgsl) and finish
+// (world_finish.wgsl) modules, composed before each: the bodies'
+// velocities of a world while its islands are solved, the sides of a
+// contact's rows, a contact's id.
 
 // A side of a contact row with no dynamic body (static in the step's scene).
 const NONE: u32 = 0xffffffffu;
@@ -698,23 +708,6 @@ fn contact_sides(slot: u32, moving: u32) -> vec2<u32> {
     return s;
 }
 
-// step.rs integrate_rotation: normalise(q + ½Δt (ω, 0) ⊗ q).
-fn integrate_rotation(q: vec4<Scalar>, w: vec3<Scalar>, dt: Scalar) -> vec4<Scalar> {
-    // glam's DQuat product (w.x, w.y, w.z, 0) ⊗ q.
-    let spin = vec4<Scalar>(
-        w.x * q.w + w.y * q.z - w.z * q.y,
-        -w.x * q.z + w.y * q.w + w.z * q.x,
-        w.x * q.y - w.y * q.x + w.z * q.w,
-        -w.x * q.x - w.y * q.y - w.z * q.z,
-    );
-    return normalize4(q + Scalar(0.5) * dt * spin);
-}
-
-fn normalize4(q: vec4<Scalar>) -> vec4<Scalar> {
-    let len = sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
-    return q * (Scalar(1.0) / len);
-}
-
 // lin, ang: the velocities of world w's bodies in `scratch`.
 fn load_velocities(w: u32) {
     let first = worlds[w].x;
@@ -733,110 +726,22 @@ fn store_velocities(w: u32) {
     }
 }
 
-// step.rs finish for world w after its impulses (velocities in lin, ang):
-// woken bodies awake, moving bodies integrated, sleep counters; then the
-// world's flags and figures. A flagged world keeps its state.
-fn finish_world(w: u32, flags0: u32, max_penetration: Scalar, max_error: Scalar) {
-    let info = worlds[w];
-    let first = info.x;
-    let nb = min(info.y, MAX_BODIES);
-    let out = sp.out_at + 4u * w;
-    let moving = words[out + 1u];
-    var flags = flags0;
-    let dt = sp.dt;
-    let g = vec3_at_consts(w * WC);
-    let sleep_linear = consts[w * WC + 4u];
-    let sleep_angular = consts[w * WC + 5u];
-    var xs: array<vec3<Scalar>, 16>;
-    var qs: array<vec4<Scalar>, 16>;
-    for (var k = 0u; k < nb && flags == 0u; k++) {
-        let b = first + k;
-        if ((moving >> k) & 1u) == 0u {
-            continue;
-        }
-        let o = b * BS;
-        let q0 = normalize4(vec4<Scalar>(state[o + 3u], state[o + 4u], state[o + 5u], state[o + 6u]));
-        xs[k] = vec3_at_state(o) + lin[k] * dt;
-        qs[k] = integrate_rotation(q0, ang[k], dt);
-        let mag = abs(xs[k]) + abs(qs[k].xyz) + abs(lin[k]) + abs(ang[k]);
-        if !finite(mag.x + mag.y + mag.z + abs(qs[k].w)) {
-            flags |= NON_FINITE;
-        }
-    }
-    var kinetic = Scalar(0.0);
-    var potential = Scalar(0.0);
-    var awake = 0u;
-    if flags == 0u {
-        for (var k = 0u; k < nb; k++) {
-            let b = first + k;
-            if is_static(b) {
-                continue;
-            }
-            let o = b * BS;
-            if ((moving >> k) & 1u) != 0u {
-                // A woken body counts its quiet steps afresh.
-                var quiet = select(words[2u * b + 1u], 0u, asleep(b));
-                let still = length3(lin[k]) < sleep_linear && length3(ang[k]) < sleep_angular;
-                if still {
-                    quiet = min(quiet, 0xfffffffeu) + 1u;
-                } else {
-                    quiet = 0u;
-                }
-                var sleeps = 0u;
-                if info.z > 0u && quiet >= info.z {
-                    sleeps = 1u;
-                    lin[k] = vec3<Scalar>(0.0, 0.0, 0.0);
-                    ang[k] = vec3<Scalar>(0.0, 0.0, 0.0);
-                }
-                words[2u * b] = sleeps;
-                words[2u * b + 1u] = quiet;
-                put_state(o, xs[k]);
-                state[o + 3u] = qs[k].x;
-                state[o + 4u] = qs[k].y;
-                state[o + 5u] = qs[k].z;
-                state[o + 6u] = qs[k].w;
-                put_state(o + 7u, lin[k]);
-                put_state(o + 10u, ang[k]);
-            }
-            // RigidBody::kinetic_energy and World::potential_energy after
-            // the step.
-            let v = vec3_at_state(o + 7u);
-            let om = vec3_at_state(o + 10u);
-            let p = placed_body(b);
-            let wb = unrotate(p, om);
-            let inertia = Scalar(1.0) / vec3_at_consts(sp.bodies_at + b * BC + 6u);
-            let m = body_const(b, 9u);
-            kinetic += Scalar(0.5) * m * dot3(v, v) + Scalar(0.5) * dot3(wb * wb, inertia);
-            potential += -m * dot3(g, vec3_at_state(o));
-            if !asleep(b) {
-                awake++;
-            }
-        }
-    }
-    // The loop limit reached: flagged (the host steps the world from its
-    // state before the step and writes it back).
-    if flags == 0u && !loops_left() {
-        flags = BUDGET;
-    }
-    words[out + 2u] = flags;
-    let r = w * REC;
-    records[r] = kinetic;
-    records[r + 1u] = potential;
-    records[r + 2u] = max_penetration;
-    records[r + 3u] = max_error;
-    records[r + 4u] = Scalar(awake);
+// A contact's id in the world's memories: (a << 16) | (b << 12) |
+// (feature & 0xfff), as step.rs contact_id without the world.
+fn contact_key(slot: u32) -> u32 {
+    let key = sp.keys_at + 4u * slot;
+    return (words[key] << 16u) | (words[key + 1u] << 12u) | (words[key + 2u] & 0xfffu);
 }
 
-
 // The frictional phase of shaders/world_step.wgsl (a module of its own:
-// composed after world_step.wgsl and world_finish.wgsl, before
+// composed after world_step.wgsl and world_bodies.wgsl, before
 // world_apgd.wgsl and the cone projection of friction_common.wgsl):
 // the islands of the worlds with friction (a contact with μ > 0 this step;
-// world_solve hands them over with the phase F_ASSEMBLE and the flag HANDED,
-// which stays until the world is finished), one invocation per world.
-// `world_friction` is dispatched several times per step (rounds, after
-// world_solve and world_finish, in the same submission); each invocation goes on where the
-// last round stopped and does at most `sp.friction_budget` of loop work
+// world_solve_warm hands them over with the phase F_ASSEMBLE and the flag
+// HANDED, which stays until the world is finished), one invocation per
+// world. `world_friction` is dispatched several times per step (rounds,
+// after the solve, in the same submission); each invocation goes on where
+// the last round stopped and does at most `sp.friction_budget` of loop work
 // (llvmpipe ends an invocation's loops after about 65,535 iterations in
 // all, counted over 8 invocations in lockstep). A world
 // not finished after the step's last round keeps HANDED: the host steps it
@@ -859,7 +764,9 @@ fn finish_world(w: u32, flags0: u32, max_penetration: Scalar, max_error: Scalar)
 //   tolerance, else the world is flagged NOT_SOLVED (the CPU steps it);
 //   the Coulomb error (Siconos fc3d with De Saxcé's correction) is the
 //   world's max_error, as the CPU reports it;
-// - the impulses (apply_friction_impulses), then `finish_world`.
+// - the impulses (apply_friction_impulses); the world, every island
+//   solved, is left F_DONE: world_finish (after the last round) remembers
+//   its reactions and finishes it.
 //
 // With APGD (sp.gauss_seidel == METHOD_APGD) instead of the sweeps: the
 // twin of friction/apgd.rs `apgd` (from the same start; L from
@@ -914,7 +821,7 @@ fn tangent_basis(n: vec3<Scalar>) -> array<vec3<Scalar>, 2> {
 
 // I⁻¹ v of body b (global) as the CPU's scene body holds I⁻¹: the matrix
 // R diag(1/I) Rᵀ (RigidBody::inv_inertia_at, glam's products in their
-// order), then glam's mul_vec3 (world_solve's inv_inertia_mul rotates the
+// order), then glam's mul_vec3 (world_island.wgsl's inv_inertia_mul rotates the
 // vector instead: the same up to rounding, which would part the sweeps'
 // iterates from the CPU's).
 fn inv_inertia_mat_mul(b: u32, v: vec3<Scalar>) -> vec3<Scalar> {
@@ -1251,7 +1158,7 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
     }
     let fs = sp.fstate_at + 4u * w;
     var phase = words[fs];
-    if phase == F_IDLE {
+    if phase == F_IDLE || phase == F_DONE {
         return;
     }
     records[w * REC + 5u] += Scalar(1.0);
@@ -1381,10 +1288,9 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
         return;
     }
     if finished {
-        words[fs] = F_IDLE;
-        remember_reactions(w, count);
-        let r = w * REC;
-        finish_world(w, 0u, records[r + 2u], records[r + 3u]);
+        // world_finish remembers its reactions and finishes it after the
+        // step's last round.
+        words[fs] = F_DONE;
     }
 }
 
@@ -1394,11 +1300,7 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
 // step.rs contact_id without the world); in `scratch` from
 // sp.memory_r_at, 3 scalars per entry (r_n, r_t₁, r_t₂). This step's
 // reactions wait in `scratch` from sp.reactions_at (3 per contact slot)
-// until the world is finished.
-fn contact_key(slot: u32) -> u32 {
-    let key = sp.keys_at + 4u * slot;
-    return (words[key] << 16u) | (words[key + 1u] << 12u) | (words[key + 2u] & 0xfffu);
-}
+// until the world is finished (world_finish.wgsl remember_reactions).
 
 // The warm start of contact `slot` (world_friction.rs: the remembered
 // reaction of its id, the last entry of that id; 0 where none or warm
@@ -1422,21 +1324,6 @@ fn warm_start(slot: u32) -> vec3<Scalar> {
 fn keep_reaction(slot: u32, r: vec3<Scalar>) {
     scratch[sp.contacts_at + slot * CP + 7u] = r.x;
     put_scratch(sp.reactions_at + 3u * slot, r);
-}
-
-// WarmMemory::record of a finished world's step (every island solved):
-// its contacts' ids and reactions replace the memory.
-fn remember_reactions(w: u32, count: u32) {
-    if sp.warm_start == 0u {
-        return;
-    }
-    let m = sp.memory_at + w * (sp.slots + 1u);
-    words[m] = count;
-    for (var e = 0u; e < count; e++) {
-        let slot = w * sp.slots + e;
-        words[m + 1u + e] = contact_key(slot);
-        put_scratch(sp.memory_r_at + 3u * slot, vec3_at_scratch(sp.reactions_at + 3u * slot));
-    }
 }
 
 // APGD in the frictional phase of shaders/world_step.wgsl (composed after

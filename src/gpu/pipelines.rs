@@ -272,11 +272,12 @@ pub(crate) struct WorldStages {
     pub(crate) candidate_pairs: Stage,
     pub(crate) narrow: [Stage; 3],
     pub(crate) world_contacts: Stage,
-    /// [`Shader::WorldSolve`]: per world the islands from their warm bases
-    /// (warm bases on), per deferred world (else per world) with Lemke's
-    /// path, then per world `finish`.
+    /// [`Shader::WorldSolve`]: per world the islands whose warm bases
+    /// hold, the others listed; [`Shader::WorldLemke`]: per listed world
+    /// those islands by Lemke's path (indirect); [`Shader::WorldFinish`]:
+    /// per world `finish` (after the frictional rounds, where any).
     pub(crate) world_solve_warm: Stage,
-    pub(crate) world_solve: Stage,
+    pub(crate) world_lemke: Stage,
     pub(crate) world_finish: Stage,
 }
 
@@ -382,7 +383,6 @@ impl Pipelines {
         }
         let stage = |shader, entry| Stage::new(ctx, shader, entry, WORLD_STEP_BINDINGS);
         let collide = |entry| stage(Shader::WorldCollide, entry);
-        let solve = |entry| stage(Shader::WorldSolve, entry);
         let stages = WorldStages {
             candidate_pairs: collide("candidate_pairs")?,
             narrow: [
@@ -391,9 +391,9 @@ impl Pipelines {
                 collide("narrow_sphere")?,
             ],
             world_contacts: collide("world_contacts")?,
-            world_solve_warm: solve("world_solve_warm")?,
-            world_solve: solve("world_solve")?,
-            world_finish: solve("world_finish")?,
+            world_solve_warm: stage(Shader::WorldSolve, "world_solve_warm")?,
+            world_lemke: stage(Shader::WorldLemke, "world_lemke")?,
+            world_finish: stage(Shader::WorldFinish, "world_finish")?,
         };
         Ok(self.world_step.get_or_init(|| stages))
     }

@@ -21,7 +21,7 @@ pub const BS: usize = 13;
 /// Scalars per contact slot in `scratch`: point (3), normal (3), gap, z.
 pub const CP: usize = 8;
 /// Scalars per world in `records`: kinetic, potential, max penetration,
-/// max error, awake, friction rounds, and `world_solve`'s warm-start
+/// max error, awake, friction rounds, and `world_solve_warm`'s warm-start
 /// memory (a hash of last step's contact ids, the bases of its islands by
 /// contact; read back with the rest, unused by the host).
 pub const REC: usize = 8;
@@ -46,7 +46,7 @@ pub mod flags {
     /// The loop budget of an invocation was spent, or llvmpipe's loop
     /// limit was met (`loops_left`).
     pub const BUDGET: u32 = 16;
-    /// Handed by `world_solve` to `world_friction` and kept until that
+    /// Handed by `world_solve_warm` to `world_friction` and kept until that
     /// finishes it: set after the step's last round, the rounds ran out
     /// for the world (counted as [`BUDGET`]).
     pub const HANDED: u32 = 32;

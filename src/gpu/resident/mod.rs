@@ -109,7 +109,7 @@ fn friction_budget(budget: u32) -> u32 {
 }
 
 /// The state, the words, the records (whose last two scalars are
-/// `world_solve`'s warm basis) and the warm-start memory as they were
+/// `world_solve_warm`'s warm basis) and the warm-start memory as they were
 /// before a submission of several steps.
 struct Saved {
     state: wgpu::Buffer,
@@ -156,7 +156,7 @@ pub struct ResidentWorlds {
     budget: u32,
     tolerances: [f64; 3],
     friction: Option<ResidentFriction>,
-    /// `world_solve` tries last step's bases first (the CPU path's
+    /// `world_solve_warm` tries last step's bases first (the CPU path's
     /// `warm_settle`: `warm_start` on, a method that predicts).
     warm_bases: bool,
     at: FrictionAt,
@@ -169,7 +169,7 @@ pub struct ResidentWorlds {
     words: wgpu::Buffer,
     records: wgpu::Buffer,
     /// The step's work lists (the worlds `world_solve_warm` leaves to
-    /// `world_solve`, the pairs of each family for the narrow phase): per
+    /// `world_lemke`, two words each, the pairs of each family for the narrow phase): per
     /// list the indirect dispatch's workgroups (x, y, z) and the count,
     /// then the entries ([`dispatch`]); and the headers copied aside for
     /// the dispatches.
@@ -257,8 +257,9 @@ impl ResidentWorlds {
         let cands_at = words_len;
         let candidates = pair_slots / crate::gpu::collide::SLOTS;
         words_len += n * (1 + 2 * candidates);
-        // The lists: the headers, the deferred worlds, three pair lists.
-        let lists_len = dispatch::LIST_HEADERS as usize / 4 + n + 3 * n * candidates;
+        // The lists: the headers, the worlds for Lemke's path (a world and
+        // its islands each), three pair lists.
+        let lists_len = dispatch::LIST_HEADERS as usize / 4 + 2 * n + 3 * n * candidates;
         let largest = [
             scratch_len * sb,
             words_len * 4,
@@ -502,13 +503,8 @@ impl ResidentWorlds {
             }
             for j in 0..k as u64 {
                 self.record_collide(&mut encoder, step_stages);
-                self.record_solve(&mut encoder, step_stages);
-                for stage in friction
-                    .iter()
-                    .flat_map(|s| std::iter::repeat_n(*s, rounds as usize))
-                {
-                    self.record(&mut encoder, stage);
-                }
+                let friction = friction.map(|s| (s, rounds));
+                self.record_solve(&mut encoder, step_stages, friction);
                 let at = j * stride;
                 encoder.copy_buffer_to_buffer(&self.records, 0, &self.history, at, rec_bytes);
                 let words = 16 * n as u64;
@@ -604,8 +600,9 @@ impl ResidentWorlds {
         (self.at.region != 0).then_some((self.at.memory_r as u64 * sb, len))
     }
 
-    /// Worlds `world_solve_warm` left to `world_solve` in the last step
-    /// (a warm basis that did not hold, or none; 0 without warm bases).
+    /// Worlds `world_solve_warm` left to `world_lemke` in the last step
+    /// (a warm basis that did not hold, or none: without warm bases every
+    /// world with contacts).
     ///
     /// # Errors
     /// [`Error::Gpu`] for device trouble.

@@ -34,8 +34,11 @@ const FRICTION_PROJECTED_GLOBAL_WGSL: &str =
 const COLLIDE_WGSL: &str = include_str!("../../../shaders/collide.wgsl");
 const WORLD_STEP_WGSL: &str = include_str!("../../../shaders/world_step.wgsl");
 const WORLD_COLLIDE_WGSL: &str = include_str!("../../../shaders/world_collide.wgsl");
-const WORLD_FINISH_WGSL: &str = include_str!("../../../shaders/world_finish.wgsl");
+const WORLD_BODIES_WGSL: &str = include_str!("../../../shaders/world_bodies.wgsl");
+const WORLD_ISLAND_WGSL: &str = include_str!("../../../shaders/world_island.wgsl");
 const WORLD_SOLVE_WGSL: &str = include_str!("../../../shaders/world_solve.wgsl");
+const WORLD_LEMKE_WGSL: &str = include_str!("../../../shaders/world_lemke.wgsl");
+const WORLD_FINISH_WGSL: &str = include_str!("../../../shaders/world_finish.wgsl");
 const WORLD_FRICTION_WGSL: &str = include_str!("../../../shaders/world_friction.wgsl");
 const WORLD_APGD_WGSL: &str = include_str!("../../../shaders/world_apgd.wgsl");
 
@@ -85,7 +88,19 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         Shader::Collide => ("collide", COLLIDE_WGSL),
         Shader::WorldCollide => ("world_collide", WORLD_COLLIDE_WGSL),
         Shader::WorldSolve => ("world_solve", WORLD_SOLVE_WGSL),
+        Shader::WorldLemke => ("world_lemke", WORLD_LEMKE_WGSL),
         Shader::WorldFriction => ("world_friction", WORLD_FRICTION_WGSL),
+        Shader::WorldFinish => ("world_finish", WORLD_FINISH_WGSL),
+    };
+    // The resident solve, frictional and finish modules start alike: the
+    // functions above collide.wgsl's pair functions and lemke.wgsl's, the
+    // step's header, the bodies' velocities.
+    let world_head = || -> Result<String, Error> {
+        Ok(format!(
+            "{}\n{}\n{WORLD_STEP_WGSL}\n{WORLD_BODIES_WGSL}",
+            text_before(COLLIDE_WGSL, COLLIDE_PAIRS)?,
+            text_before(LEMKE_WGSL, LEMKE_KERNEL)?
+        ))
     };
     let standalone = matches!(
         shader,
@@ -97,15 +112,13 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
             "{}\n{WORLD_STEP_WGSL}\n{body}",
             text_before(COLLIDE_WGSL, COLLIDE_STAGE)?
         ),
-        Shader::WorldSolve => format!(
-            "{}\n{}\n{WORLD_STEP_WGSL}\n{WORLD_FINISH_WGSL}\n{body}",
-            text_before(COLLIDE_WGSL, COLLIDE_PAIRS)?,
-            text_before(LEMKE_WGSL, LEMKE_KERNEL)?
-        ),
+        Shader::WorldSolve | Shader::WorldLemke => {
+            format!("{}\n{WORLD_ISLAND_WGSL}\n{body}", world_head()?)
+        }
+        Shader::WorldFinish => format!("{}\n{body}", world_head()?),
         Shader::WorldFriction => format!(
-            "{}\n{}\n{WORLD_STEP_WGSL}\n{WORLD_FINISH_WGSL}\n{body}\n{WORLD_APGD_WGSL}\n{}",
-            text_before(COLLIDE_WGSL, COLLIDE_PAIRS)?,
-            text_before(LEMKE_WGSL, LEMKE_KERNEL)?,
+            "{}\n{body}\n{WORLD_APGD_WGSL}\n{}",
+            world_head()?,
             text_from(FRICTION_COMMON_WGSL, CONE_PROJECTION)?
         ),
         _ if standalone => body.to_string(),
@@ -143,7 +156,9 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         // The world step: Lemke's finiteness tests and the error measure's
         // epsilon (lcp_error's f64::EPSILON); the collision phase has no
         // Lemke.
-        Shader::WorldSolve | Shader::WorldFriction => with_scalar_limits(&s, precision)?,
+        Shader::WorldSolve | Shader::WorldLemke | Shader::WorldFriction | Shader::WorldFinish => {
+            with_scalar_limits(&s, precision)?
+        }
         Shader::WorldCollide => replace_host_line(
             &s,
             "scalar_epsilon",
@@ -177,12 +192,17 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         Shader::WorldCollide => "shaders/collide.wgsl (functions) + shaders/world_step.wgsl + \
              shaders/world_collide.wgsl"
             .to_string(),
-        Shader::WorldSolve => "shaders/collide.wgsl (functions above its pair functions) + \
-             shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_finish.wgsl + \
-             shaders/world_solve.wgsl"
+        Shader::WorldSolve | Shader::WorldLemke => format!(
+            "shaders/collide.wgsl (functions above its pair functions) + \
+             shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_bodies.wgsl + \
+             shaders/world_island.wgsl + shaders/{file}.wgsl"
+        ),
+        Shader::WorldFinish => "shaders/collide.wgsl (functions above its pair functions) + \
+             shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_bodies.wgsl + \
+             shaders/world_finish.wgsl"
             .to_string(),
         Shader::WorldFriction => "shaders/collide.wgsl (functions above its pair functions) + \
-             shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_finish.wgsl + \
+             shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_bodies.wgsl + \
              shaders/world_friction.wgsl + shaders/world_apgd.wgsl + shaders/friction_common.wgsl \
              (project_on_cone on)"
             .to_string(),

@@ -73,14 +73,22 @@ pub(crate) enum Shader {
     /// function of `collide.wgsl` (entry points candidate_pairs,
     /// narrow_box_box, narrow_box_plane, narrow_sphere, world_contacts);
     WorldCollide,
-    /// the solve, `world_finish.wgsl` and `world_solve.wgsl` after
-    /// `collide.wgsl`'s functions above its pair functions and `lemke.wgsl`'s
-    /// (entry points world_solve_warm, world_solve, world_finish);
+    /// the solve from the warm bases, `world_bodies.wgsl`,
+    /// `world_island.wgsl` and `world_solve.wgsl` after `collide.wgsl`'s
+    /// functions above its pair functions and `lemke.wgsl`'s (entry point
+    /// world_solve_warm);
     WorldSolve,
+    /// Lemke's path, as the solve's with `world_lemke.wgsl` for
+    /// `world_solve.wgsl` (entry point world_lemke);
+    WorldLemke,
     /// the frictional phase, as the solve's but `world_friction.wgsl`,
     /// `world_apgd.wgsl` and `friction_common.wgsl` from its cone
-    /// projection on for `world_solve.wgsl` (entry point world_friction).
+    /// projection on for `world_island.wgsl` and `world_solve.wgsl` (entry
+    /// point world_friction);
     WorldFriction,
+    /// the finish, `world_bodies.wgsl` and `world_finish.wgsl` after the
+    /// same functions (entry point world_finish).
+    WorldFinish,
 }
 
 impl Shader {
@@ -99,7 +107,8 @@ impl Shader {
         v.extend([Shader::Assembly, Shader::Impulses]);
         v.extend((1..=FRICTION_MAX_K).map(Shader::FrictionProjected));
         v.extend([Shader::Collide, Shader::WorldCollide]);
-        v.extend([Shader::WorldSolve, Shader::WorldFriction]);
+        v.extend([Shader::WorldSolve, Shader::WorldLemke]);
+        v.extend([Shader::WorldFriction, Shader::WorldFinish]);
         v
     }
 
@@ -119,7 +128,9 @@ impl Shader {
             Shader::Collide => "collide".into(),
             Shader::WorldCollide => "world_collide".into(),
             Shader::WorldSolve => "world_solve".into(),
+            Shader::WorldLemke => "world_lemke".into(),
             Shader::WorldFriction => "world_friction".into(),
+            Shader::WorldFinish => "world_finish".into(),
         }
     }
 
@@ -209,5 +220,7 @@ pub(crate) static GENERATED: &[(&str, &str, &str)] = generated!(
     "collide",
     "world_collide",
     "world_solve",
+    "world_lemke",
     "world_friction",
+    "world_finish",
 );
