@@ -54,3 +54,19 @@ fn contact_key(slot: u32) -> u32 {
     let key = sp.keys_at + 4u * slot;
     return (words[key] << 16u) | (words[key + 1u] << 12u) | (words[key + 2u] & 0xfffu);
 }
+
+// Island `isl` of world w (`count` contacts): its contacts (indices in
+// the world) into `members` (the first ISLAND_MAX); its size.
+fn island_members(w: u32, count: u32, isl: u32, members: ptr<function, array<u32, 16>>) -> u32 {
+    let slot0 = w * sp.slots;
+    var n = 0u;
+    for (var c = 0u; c < count; c++) {
+        if words[sp.keys_at + 4u * (slot0 + c) + 3u] == isl {
+            if n < ISLAND_MAX {
+                (*members)[n] = c;
+            }
+            n++;
+        }
+    }
+    return n;
+}

@@ -1,7 +1,8 @@
 // The finish of the resident step (shaders/world_step.wgsl's header; a
 // module of its own, composed after world_step.wgsl and world_bodies.wgsl):
-// step.rs finish (poses, sleep counters) and the world's figures, for every
-// world the solve stepped or flagged and every world world_friction
+// the impulses of the solve (cpu/impulses.rs), step.rs finish (poses, sleep
+// counters) and the world's figures, for every world the solve stepped or
+// flagged and every world world_friction
 // finished (F_DONE: its reactions remembered first), in one dispatch after
 // the frictional rounds. A world world_friction has not finished (still
 // HANDED) is left to the host.
@@ -118,6 +119,32 @@ fn finish_world(w: u32, flags0: u32, max_penetration: Scalar, max_error: Scalar)
 }
 
 
+// cpu/impulses.rs velocities_after for world w's contacts: v += M⁻¹Jᵀ z
+// per side (the response world_assemble kept, z the solve's), contact
+// after contact in slot order (zero impulses skipped): each body takes its
+// island's impulses in the island's order.
+fn apply_impulses(w: u32) {
+    let out = sp.out_at + 4u * w;
+    let moving = words[out + 1u];
+    let slot0 = w * sp.slots;
+    for (var c = 0u; c < words[out]; c++) {
+        let z = scratch[sp.contacts_at + (slot0 + c) * CP + 7u];
+        if z == Scalar(0.0) {
+            continue;
+        }
+        let s = contact_sides(slot0 + c, moving);
+        let r = row_at(slot0 + c);
+        if s.x != NONE {
+            lin[s.x] += vec3_at_scratch(r + 1u) * z;
+            ang[s.x] += vec3_at_scratch(r + 4u) * z;
+        }
+        if s.y != NONE {
+            lin[s.y] += vec3_at_scratch(r + 7u) * z;
+            ang[s.y] += vec3_at_scratch(r + 10u) * z;
+        }
+    }
+}
+
 // WarmMemory::record of a finished world's step (every island solved):
 // its contacts' ids and reactions replace the memory (world_friction.wgsl's
 // header gives the layout).
@@ -134,9 +161,10 @@ fn remember_reactions(w: u32, count: u32) {
     }
 }
 
-// step.rs finish for world w from the velocities the solve (or
-// world_friction) left in `scratch`; a world still with world_friction
-// (HANDED, not F_DONE) is skipped.
+// step.rs finish for world w: from v* and the solve's impulses
+// (`apply_impulses`), or from the velocities world_friction left in
+// `scratch` (F_DONE); a world still with world_friction (HANDED, not
+// F_DONE) is skipped, a flagged world keeps its state.
 @compute @workgroup_size(64)
 fn world_finish(@builtin(global_invocation_id) gid: vec3<u32>) {
     let w = gid.x;
@@ -153,7 +181,12 @@ fn world_finish(@builtin(global_invocation_id) gid: vec3<u32>) {
         words[fs] = F_IDLE;
         remember_reactions(w, words[out]);
         flags = 0u;
+        load_velocities(w);
+    } else {
+        load_velocities(w);
+        if flags == 0u {
+            apply_impulses(w);
+        }
     }
-    load_velocities(w);
     finish_world(w, flags, records[w * REC + 2u], records[w * REC + 3u]);
 }

@@ -76,8 +76,8 @@ fn lemke_island(n: u32, spent: ptr<function, u32>, error: ptr<function, Scalar>)
 }
 
 // The listed islands of the listed world (`listed`: bit i for island i,
-// WARM_TRIED) by Lemke's path (`lemke_island`), in island order, from the
-// velocities world_solve_warm left; the loop work counts every island
+// WARM_TRIED) by Lemke's path (`lemke_island`), in island order, their z
+// into their contact slots; the loop work counts every island
 // before, its warm bases tried where they were (world_solve_warm), as one
 // pass over the islands counts it. A world Lemke cannot solve is flagged
 // NOT_SOLVED (the CPU steps it from its state).
@@ -91,9 +91,7 @@ fn world_lemke(@builtin(global_invocation_id) gid: vec3<u32>) {
     let listed = atomicLoad(&lists[at + 1u]);
     let out = sp.out_at + 4u * w;
     let count = words[out];
-    let moving = words[out + 1u];
     let islands = words[out + 3u];
-    load_velocities(w);
     let rec = w * REC;
     var flags = 0u;
     var bases = u32(records[rec + 7u]);
@@ -107,7 +105,7 @@ fn world_lemke(@builtin(global_invocation_id) gid: vec3<u32>) {
         let lemke = ((listed >> isl) & 1u) != 0u;
         var n = 0u;
         if lemke {
-            n = island_rows(w, count, moving, isl, &members);
+            n = load_island(w, count, isl, &members);
         } else {
             n = island_members(w, count, isl, &members);
         }
@@ -124,7 +122,7 @@ fn world_lemke(@builtin(global_invocation_id) gid: vec3<u32>) {
             flags |= NOT_SOLVED;
             break;
         }
-        bases |= apply_island(w, n, &members, basis);
+        bases |= keep_island(w, n, &members, basis);
         max_error = max(max_error, error);
     }
     end_solve(w, flags, bases, max_error);

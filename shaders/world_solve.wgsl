@@ -1,8 +1,8 @@
 // The solve phase of the resident step, per world (shaders/world_step.wgsl's
 // header; a module of its own, composed after world_step.wgsl,
-// world_bodies.wgsl and world_island.wgsl): the islands (find_islands),
-// the handover of a world with friction, and each island from last step's
-// basis; the entry point `world_solve_warm`.
+// world_bodies.wgsl and world_island.wgsl): each island of a world
+// world_assemble did not hand over or flag from last step's basis; the
+// entry point `world_solve_warm`.
 //
 // The warm-start memory is the world's record (scalars 6 and 7): a hash of
 // last step's contact ids (a, b, feature, in order) and its bases (bit c:
@@ -14,114 +14,29 @@
 // of an invocation under a mask, so Lemke's path, rarely taken once the
 // warm bases hold, would cost every world every step; and a driver
 // compiles each entry point with all it may call): `world_solve_warm` per
-// world solves each island whose warm basis holds and applies its
-// impulses; the other islands (every island without warm bases) it lists
-// with their world (LIST_LEMKE) for `world_lemke` (shaders/world_lemke.wgsl),
-// an indirect dispatch over the listed worlds, which solves them by
-// Lemke's path from the velocities left here. The islands' dynamic bodies
-// are disjoint, so each body takes its own island's impulses in the
-// island's order, as in one pass over the islands; `world_lemke` counts
-// the loop work of the islands before as that pass would. Then
-// `world_finish` (shaders/world_finish.wgsl) per world.
+// world solves each island whose warm basis holds, its z into its
+// contact slots; the other islands (every island without warm bases) it
+// lists with their world (LIST_LEMKE) for `world_lemke`
+// (shaders/world_lemke.wgsl), an indirect dispatch over the listed worlds,
+// which solves them by Lemke's path, their z into the same slots
+// (`world_lemke` counts the loop work of the islands before as one pass
+// over the islands would). Then `world_finish` (shaders/world_finish.wgsl)
+// per world applies every contact's impulse in slot order: the islands'
+// dynamic bodies are disjoint, so each body takes its own island's
+// impulses in the island's order, as the CPU path applies them.
 
-fn find(parent: ptr<function, array<u32, 16>>, x0: u32) -> u32 {
-    var x = x0;
-    while (*parent)[x] != x {
-        (*parent)[x] = (*parent)[(*parent)[x]];
-        x = (*parent)[x];
-    }
-    return x;
-}
-
-
-
-// A world's contacts as the solve starts (`begin_world`): contacts, the
-// moving-body mask, the flags of world_contacts, islands, the hash of the
-// contact ids, the deepest penetration; `handed`: the world has friction
-// and went to world_friction (or was flagged NOT_SOLVED without it).
-struct Begun {
-    count: u32,
-    moving: u32,
-    flags: u32,
-    islands: u32,
-    ids: u32,
-    max_penetration: Scalar,
-    handed: bool,
-}
-
-// World w's islands (each contact's in its key's fourth word), the hash of
-// its contact ids and its deepest penetration; its velocities v* into lin,
-// ang. A world with friction (a contact with μ > 0: Scene::has_friction)
-// goes to world_friction, flagged HANDED until that finishes it; its
-// rounds there are counted from 0 (the record's sixth scalar).
-fn begin_world(w: u32) -> Begun {
-    let first = worlds[w].x;
-    let out = sp.out_at + 4u * w;
-    let count = words[out];
-    let moving = words[out + 1u];
-    var flags = words[out + 2u];
-    let slot0 = w * sp.slots;
-    records[w * REC + 5u] = Scalar(0.0);
-    load_velocities(w);
-    var parent: array<u32, 16>;
-    var island_of_root: array<u32, 16>;
-    for (var k = 0u; k < MAX_BODIES; k++) {
-        parent[k] = k;
-        island_of_root[k] = NONE;
-    }
-    for (var c = 0u; c < count; c++) {
-        let key = sp.keys_at + 4u * (slot0 + c);
-        let a = words[key];
-        let b = words[key + 1u];
-        if ((moving >> a) & (moving >> b) & 1u) != 0u {
-            let ra = find(&parent, a);
-            let rb = find(&parent, b);
-            parent[max(ra, rb)] = min(ra, rb);
-        }
-    }
-    var islands = 0u;
-    var max_penetration = Scalar(0.0);
+// The hash of world w's contact ids (a, b, feature, in order; FNV-1a
+// over its `count` contacts): the warm-start memory's key.
+fn contact_ids(w: u32, count: u32) -> u32 {
     var ids = 2166136261u ^ count;
     for (var c = 0u; c < count; c++) {
-        let key = sp.keys_at + 4u * (slot0 + c);
-        let a = words[key];
-        ids = (ids ^ a) * 16777619u;
+        let key = sp.keys_at + 4u * (w * sp.slots + c);
+        ids = (ids ^ words[key]) * 16777619u;
         ids = (ids ^ words[key + 1u]) * 16777619u;
         ids = (ids ^ words[key + 2u]) * 16777619u;
-        let body = select(words[key + 1u], a, ((moving >> a) & 1u) != 0u);
-        let root = find(&parent, body);
-        if island_of_root[root] == NONE {
-            island_of_root[root] = islands;
-            islands++;
-        }
-        words[key + 3u] = island_of_root[root];
-        max_penetration = max(max_penetration, -scratch[sp.contacts_at + (slot0 + c) * CP + 6u]);
     }
-    var frictional = false;
-    for (var c = 0u; c < count; c++) {
-        let key = sp.keys_at + 4u * (slot0 + c);
-        frictional = frictional || pair_friction(first + words[key], first + words[key + 1u]) > Scalar(0.0);
-    }
-    let fs = sp.fstate_at + 4u * w;
-    words[fs] = F_IDLE;
-    words[out + 3u] = islands;
-    var handed = false;
-    if frictional && flags == 0u {
-        if sp.friction_at == 0u {
-            flags |= NOT_SOLVED;
-        } else {
-            words[fs] = F_ASSEMBLE;
-            words[fs + 1u] = 0u;
-            words[fs + 2u] = 0u;
-            words[out + 2u] = HANDED;
-            records[w * REC + 2u] = max_penetration;
-            records[w * REC + 3u] = Scalar(0.0);
-            handed = true;
-        }
-    }
-    return Begun(count, moving, flags, islands, ids, max_penetration, handed);
+    return ids;
 }
-
 
 // The CPU path's warm start (world_cpu.rs warm_settle) for an island of n
 // contacts: last step's basis `hint` (bit i: contact i basic) solved
@@ -189,37 +104,34 @@ fn defer_world(w: u32, listed: u32) {
     atomicStore(&lists[list_at(LIST_LEMKE) + 2u * k + 1u], listed);
 }
 
-// Step parts 2 and 3 for world w (src/islands.rs find_islands, per island
-// assembly and the CPU path's warm_settle, the door's check, the
-// impulses) where its islands' warm bases hold; the others listed for
-// world_lemke. A flagged world (here or in world_contacts) keeps its
-// state.
+// Step part 3 for world w (the CPU path's warm_settle per island, the
+// door's check) where its islands' warm bases hold; the others listed for
+// world_lemke. A world handed to world_friction is left to it; a flagged
+// world (world_contacts, world_assemble) keeps its state.
 @compute @workgroup_size(64)
 fn world_solve_warm(@builtin(global_invocation_id) gid: vec3<u32>) {
     let w = gid.x;
     if w >= sp.count {
         return;
     }
-    let b = begin_world(w);
-    if b.handed {
+    let out = sp.out_at + 4u * w;
+    var flags = words[out + 2u];
+    if flags == HANDED {
         return;
     }
+    let count = words[out];
+    let islands = words[out + 3u];
+    let ids = contact_ids(w, count);
     let rec = w * REC;
-    let warm = sp.warm_bases != 0u && records[rec + 6u] == Scalar(b.ids);
+    let warm = sp.warm_bases != 0u && records[rec + 6u] == Scalar(ids);
     let hints = u32(records[rec + 7u]);
-    records[rec + 6u] = Scalar(b.ids);
-    records[rec + 2u] = b.max_penetration;
-    var flags = b.flags;
+    records[rec + 6u] = Scalar(ids);
     var bases = 0u;
     var max_error = Scalar(0.0);
     var listed = 0u;
     var members: array<u32, 16>;
-    for (var isl = 0u; isl < b.islands && flags == 0u; isl++) {
-        let n = island_rows(w, b.count, b.moving, isl, &members);
-        if n > ISLAND_MAX {
-            flags |= ISLAND_TOO_LARGE;
-            break;
-        }
+    for (var isl = 0u; isl < islands && flags == 0u; isl++) {
+        let n = load_island(w, count, isl, &members);
         var error = Scalar(-1.0);
         var basis = NONE;
         if warm {
@@ -229,7 +141,7 @@ fn world_solve_warm(@builtin(global_invocation_id) gid: vec3<u32>) {
             listed |= 1u << isl;
             continue;
         }
-        bases |= apply_island(w, n, &members, basis);
+        bases |= keep_island(w, n, &members, basis);
         max_error = max(max_error, error);
     }
     flags = end_solve(w, flags, bases, max_error);

@@ -54,7 +54,9 @@
 // - state: per body BS scalars (position 3, orientation x, y, z, w,
 //   velocity 3, angular velocity 3);
 // - scratch: per body 6 scalars (v*, then v after the impulses), then per
-//   contact slot CP scalars (point 3, normal 3, gap, z); from
+//   contact slot CP scalars (point 3, normal 3, gap, z), then per contact
+//   slot ROW scalars (`row_at`: q, the response M⁻¹Jᵀ of sides a and b,
+//   the contact's row of its island's M; world_assemble); from
 //   params.pairs_at per world params.pair_slots pair records of CP scalars
 //   (point 3, normal 3, gap, feature), SLOTS per candidate pair;
 // - words: per body 2 (asleep, quiet steps); from params.out_at per world 4
@@ -83,6 +85,7 @@ const BC: u32 = 12u;
 const BS: u32 = 13u;
 const CP: u32 = 8u;
 const REC: u32 = 8u;
+const ROW: u32 = 29u;
 const ISLAND_MAX: u32 = 16u;
 
 const CONTACTS_FULL: u32 = 1u;
@@ -196,6 +199,12 @@ fn placed_body(k: u32) -> Placed {
     let kind = u32(body_const(k, 0u));
     let size = vec3_at_consts(sp.bodies_at + k * BC + 1u);
     return placed_from(kind, size, vec3_at_state(o), q);
+}
+
+// Where contact slot `slot`'s row starts in `scratch`: after the contact
+// slots (q, response 12, the row of M over the island's members 16).
+fn row_at(slot: u32) -> u32 {
+    return sp.contacts_at + sp.count * sp.slots * CP + slot * ROW;
 }
 
 // The frictional phase's (shaders/world_friction.wgsl) per-world phases,

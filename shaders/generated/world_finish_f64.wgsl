@@ -464,7 +464,9 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 // - state: per body BS scalars (position 3, orientation x, y, z, w,
 //   velocity 3, angular velocity 3);
 // - scratch: per body 6 scalars (v*, then v after the impulses), then per
-//   contact slot CP scalars (point 3, normal 3, gap, z); from
+//   contact slot CP scalars (point 3, normal 3, gap, z), then per contact
+//   slot ROW scalars (`row_at`: q, the response M⁻¹Jᵀ of sides a and b,
+//   the contact's row of its island's M; world_assemble); from
 //   params.pairs_at per world params.pair_slots pair records of CP scalars
 //   (point 3, normal 3, gap, feature), SLOTS per candidate pair;
 // - words: per body 2 (asleep, quiet steps); from params.out_at per world 4
@@ -493,6 +495,7 @@ const BC: u32 = 12u;
 const BS: u32 = 13u;
 const CP: u32 = 8u;
 const REC: u32 = 8u;
+const ROW: u32 = 29u;
 const ISLAND_MAX: u32 = 16u;
 
 const CONTACTS_FULL: u32 = 1u;
@@ -606,6 +609,12 @@ fn placed_body(k: u32) -> Placed {
     let kind = u32(body_const(k, 0u));
     let size = vec3_at_consts(sp.bodies_at + k * BC + 1u);
     return placed_from(kind, size, vec3_at_state(o), q);
+}
+
+// Where contact slot `slot`'s row starts in `scratch`: after the contact
+// slots (q, response 12, the row of M over the island's members 16).
+fn row_at(slot: u32) -> u32 {
+    return sp.contacts_at + sp.count * sp.slots * CP + slot * ROW;
 }
 
 // The frictional phase's (shaders/world_friction.wgsl) per-world phases,
@@ -733,10 +742,27 @@ fn contact_key(slot: u32) -> u32 {
     return (words[key] << 16u) | (words[key + 1u] << 12u) | (words[key + 2u] & 0xfffu);
 }
 
+// Island `isl` of world w (`count` contacts): its contacts (indices in
+// the world) into `members` (the first ISLAND_MAX); its size.
+fn island_members(w: u32, count: u32, isl: u32, members: ptr<function, array<u32, 16>>) -> u32 {
+    let slot0 = w * sp.slots;
+    var n = 0u;
+    for (var c = 0u; c < count; c++) {
+        if words[sp.keys_at + 4u * (slot0 + c) + 3u] == isl {
+            if n < ISLAND_MAX {
+                (*members)[n] = c;
+            }
+            n++;
+        }
+    }
+    return n;
+}
+
 // The finish of the resident step (shaders/world_step.wgsl's header; a
 // module of its own, composed after world_step.wgsl and world_bodies.wgsl):
-// step.rs finish (poses, sleep counters) and the world's figures, for every
-// world the solve stepped or flagged and every world world_friction
+// the impulses of the solve (cpu/impulses.rs), step.rs finish (poses, sleep
+// counters) and the world's figures, for every world the solve stepped or
+// flagged and every world world_friction
 // finished (F_DONE: its reactions remembered first), in one dispatch after
 // the frictional rounds. A world world_friction has not finished (still
 // HANDED) is left to the host.
@@ -853,6 +879,32 @@ fn finish_world(w: u32, flags0: u32, max_penetration: Scalar, max_error: Scalar)
 }
 
 
+// cpu/impulses.rs velocities_after for world w's contacts: v += M⁻¹Jᵀ z
+// per side (the response world_assemble kept, z the solve's), contact
+// after contact in slot order (zero impulses skipped): each body takes its
+// island's impulses in the island's order.
+fn apply_impulses(w: u32) {
+    let out = sp.out_at + 4u * w;
+    let moving = words[out + 1u];
+    let slot0 = w * sp.slots;
+    for (var c = 0u; c < words[out]; c++) {
+        let z = scratch[sp.contacts_at + (slot0 + c) * CP + 7u];
+        if z == Scalar(0.0) {
+            continue;
+        }
+        let s = contact_sides(slot0 + c, moving);
+        let r = row_at(slot0 + c);
+        if s.x != NONE {
+            lin[s.x] += vec3_at_scratch(r + 1u) * z;
+            ang[s.x] += vec3_at_scratch(r + 4u) * z;
+        }
+        if s.y != NONE {
+            lin[s.y] += vec3_at_scratch(r + 7u) * z;
+            ang[s.y] += vec3_at_scratch(r + 10u) * z;
+        }
+    }
+}
+
 // WarmMemory::record of a finished world's step (every island solved):
 // its contacts' ids and reactions replace the memory (world_friction.wgsl's
 // header gives the layout).
@@ -869,9 +921,10 @@ fn remember_reactions(w: u32, count: u32) {
     }
 }
 
-// step.rs finish for world w from the velocities the solve (or
-// world_friction) left in `scratch`; a world still with world_friction
-// (HANDED, not F_DONE) is skipped.
+// step.rs finish for world w: from v* and the solve's impulses
+// (`apply_impulses`), or from the velocities world_friction left in
+// `scratch` (F_DONE); a world still with world_friction (HANDED, not
+// F_DONE) is skipped, a flagged world keeps its state.
 @compute @workgroup_size(64)
 fn world_finish(@builtin(global_invocation_id) gid: vec3<u32>) {
     let w = gid.x;
@@ -888,7 +941,12 @@ fn world_finish(@builtin(global_invocation_id) gid: vec3<u32>) {
         words[fs] = F_IDLE;
         remember_reactions(w, words[out]);
         flags = 0u;
+        load_velocities(w);
+    } else {
+        load_velocities(w);
+        if flags == 0u {
+            apply_impulses(w);
+        }
     }
-    load_velocities(w);
     finish_world(w, flags, records[w * REC + 2u], records[w * REC + 3u]);
 }

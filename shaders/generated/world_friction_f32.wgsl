@@ -464,7 +464,9 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 // - state: per body BS scalars (position 3, orientation x, y, z, w,
 //   velocity 3, angular velocity 3);
 // - scratch: per body 6 scalars (v*, then v after the impulses), then per
-//   contact slot CP scalars (point 3, normal 3, gap, z); from
+//   contact slot CP scalars (point 3, normal 3, gap, z), then per contact
+//   slot ROW scalars (`row_at`: q, the response M⁻¹Jᵀ of sides a and b,
+//   the contact's row of its island's M; world_assemble); from
 //   params.pairs_at per world params.pair_slots pair records of CP scalars
 //   (point 3, normal 3, gap, feature), SLOTS per candidate pair;
 // - words: per body 2 (asleep, quiet steps); from params.out_at per world 4
@@ -493,6 +495,7 @@ const BC: u32 = 12u;
 const BS: u32 = 13u;
 const CP: u32 = 8u;
 const REC: u32 = 8u;
+const ROW: u32 = 29u;
 const ISLAND_MAX: u32 = 16u;
 
 const CONTACTS_FULL: u32 = 1u;
@@ -606,6 +609,12 @@ fn placed_body(k: u32) -> Placed {
     let kind = u32(body_const(k, 0u));
     let size = vec3_at_consts(sp.bodies_at + k * BC + 1u);
     return placed_from(kind, size, vec3_at_state(o), q);
+}
+
+// Where contact slot `slot`'s row starts in `scratch`: after the contact
+// slots (q, response 12, the row of M over the island's members 16).
+fn row_at(slot: u32) -> u32 {
+    return sp.contacts_at + sp.count * sp.slots * CP + slot * ROW;
 }
 
 // The frictional phase's (shaders/world_friction.wgsl) per-world phases,
@@ -731,6 +740,22 @@ fn store_velocities(w: u32) {
 fn contact_key(slot: u32) -> u32 {
     let key = sp.keys_at + 4u * slot;
     return (words[key] << 16u) | (words[key + 1u] << 12u) | (words[key + 2u] & 0xfffu);
+}
+
+// Island `isl` of world w (`count` contacts): its contacts (indices in
+// the world) into `members` (the first ISLAND_MAX); its size.
+fn island_members(w: u32, count: u32, isl: u32, members: ptr<function, array<u32, 16>>) -> u32 {
+    let slot0 = w * sp.slots;
+    var n = 0u;
+    for (var c = 0u; c < count; c++) {
+        if words[sp.keys_at + 4u * (slot0 + c) + 3u] == isl {
+            if n < ISLAND_MAX {
+                (*members)[n] = c;
+            }
+            n++;
+        }
+    }
+    return n;
 }
 
 // The frictional phase of shaders/world_step.wgsl (a module of its own:

@@ -272,10 +272,13 @@ pub(crate) struct WorldStages {
     pub(crate) candidate_pairs: Stage,
     pub(crate) narrow: [Stage; 3],
     pub(crate) world_contacts: Stage,
-    /// [`Shader::WorldSolve`]: per world the islands whose warm bases
+    /// [`Shader::WorldAssemble`]: per world the islands, handed over to
+    /// the frictional phase or assembled (M, q, the responses kept per
+    /// contact slot); [`Shader::WorldSolve`]: per world the islands whose warm bases
     /// hold, the others listed; [`Shader::WorldLemke`]: per listed world
     /// those islands by Lemke's path (indirect); [`Shader::WorldFinish`]:
     /// per world `finish` (after the frictional rounds, where any).
+    pub(crate) world_assemble: Stage,
     pub(crate) world_solve_warm: Stage,
     pub(crate) world_lemke: Stage,
     pub(crate) world_finish: Stage,
@@ -391,6 +394,7 @@ impl Pipelines {
                 collide("narrow_sphere")?,
             ],
             world_contacts: collide("world_contacts")?,
+            world_assemble: stage(Shader::WorldAssemble, "world_assemble")?,
             world_solve_warm: stage(Shader::WorldSolve, "world_solve_warm")?,
             world_lemke: stage(Shader::WorldLemke, "world_lemke")?,
             world_finish: stage(Shader::WorldFinish, "world_finish")?,

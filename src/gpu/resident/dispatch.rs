@@ -2,7 +2,7 @@
 //! encoder in the order of `shaders/world_step.wgsl`'s header: the
 //! collision phase ([`ResidentWorlds::record_collide`]: `candidate_pairs`,
 //! the narrow phase per pair family over its list, `world_contacts`), then
-//! the solve ([`ResidentWorlds::record_solve`]: `world_solve_warm`,
+//! the solve ([`ResidentWorlds::record_solve`]: `world_assemble`, `world_solve_warm`,
 //! `world_lemke` over the worlds it listed), the rounds of
 //! `world_friction` where any, `world_finish`. The lists'
 //! sizes are on the device: the indirect dispatches read their workgroups
@@ -50,8 +50,8 @@ impl ResidentWorlds {
         self.record(encoder, &stages.world_contacts);
     }
 
-    /// The solve's dispatches after the collision phase:
-    /// `world_solve_warm` over the worlds, then `world_lemke` over the
+    /// The solve's dispatches after the collision phase: `world_assemble`
+    /// and `world_solve_warm` over the worlds, then `world_lemke` over the
     /// worlds it listed (indirect: none in a step where every warm basis
     /// held; every world with contacts without warm bases); then the
     /// frictional rounds (`friction`, where any) and `world_finish` over
@@ -62,6 +62,7 @@ impl ResidentWorlds {
         stages: &WorldStages,
         friction: Option<(&Stage, u32)>,
     ) {
+        self.record(encoder, &stages.world_assemble);
         self.record(encoder, &stages.world_solve_warm);
         encoder.copy_buffer_to_buffer(&self.lists, 0, &self.list_groups, 0, 12);
         self.record_listed(encoder, &stages.world_lemke, 0);

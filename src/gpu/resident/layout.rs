@@ -20,6 +20,10 @@ pub const BC: usize = 12;
 pub const BS: usize = 13;
 /// Scalars per contact slot in `scratch`: point (3), normal (3), gap, z.
 pub const CP: usize = 8;
+/// Scalars per contact slot's row in `scratch`, after the contact slots
+/// (`world_assemble`): q, the response M⁻¹Jᵀ of sides a and b (12), the
+/// contact's row of its island's M (16).
+pub const ROW: usize = 29;
 /// Scalars per world in `records`: kinetic, potential, max penetration,
 /// max error, awake, friction rounds, and `world_solve_warm`'s warm-start
 /// memory (a hash of last step's contact ids, the bases of its islands by
@@ -178,7 +182,7 @@ mod tests {
             ("BS", BS),
         ]
         .into_iter()
-        .chain([("CP", CP), ("REC", REC)])
+        .chain([("CP", CP), ("ROW", ROW), ("REC", REC)])
         {
             assert!(
                 src.contains(&format!("const {name}: u32 = {v}u;")),

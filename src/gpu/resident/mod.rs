@@ -44,7 +44,7 @@ use crate::world::World;
 use crate::Error;
 use layout::{
     contact_slots, may_have_friction, pack_body_consts, pack_body_state, pack_world_consts, BC, CP,
-    FR, REC, WC,
+    FR, REC, ROW, WC,
 };
 use std::cell::Cell;
 
@@ -233,7 +233,8 @@ impl ResidentWorlds {
         }
         let n = worlds.len();
         let contacts_at = 6 * bodies;
-        let mut scratch_len = contacts_at + n * slots * CP;
+        // The contact slots, then their rows (world_assemble).
+        let mut scratch_len = contacts_at + n * slots * (CP + ROW);
         let keys_at = 2 * bodies + 4 * n;
         let fstate_at = keys_at + 4 * n * slots;
         let mut words_len = fstate_at + 4 * n;

@@ -35,6 +35,7 @@ const COLLIDE_WGSL: &str = include_str!("../../../shaders/collide.wgsl");
 const WORLD_STEP_WGSL: &str = include_str!("../../../shaders/world_step.wgsl");
 const WORLD_COLLIDE_WGSL: &str = include_str!("../../../shaders/world_collide.wgsl");
 const WORLD_BODIES_WGSL: &str = include_str!("../../../shaders/world_bodies.wgsl");
+const WORLD_ASSEMBLE_WGSL: &str = include_str!("../../../shaders/world_assemble.wgsl");
 const WORLD_ISLAND_WGSL: &str = include_str!("../../../shaders/world_island.wgsl");
 const WORLD_SOLVE_WGSL: &str = include_str!("../../../shaders/world_solve.wgsl");
 const WORLD_LEMKE_WGSL: &str = include_str!("../../../shaders/world_lemke.wgsl");
@@ -87,6 +88,7 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         }
         Shader::Collide => ("collide", COLLIDE_WGSL),
         Shader::WorldCollide => ("world_collide", WORLD_COLLIDE_WGSL),
+        Shader::WorldAssemble => ("world_assemble", WORLD_ASSEMBLE_WGSL),
         Shader::WorldSolve => ("world_solve", WORLD_SOLVE_WGSL),
         Shader::WorldLemke => ("world_lemke", WORLD_LEMKE_WGSL),
         Shader::WorldFriction => ("world_friction", WORLD_FRICTION_WGSL),
@@ -115,7 +117,7 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         Shader::WorldSolve | Shader::WorldLemke => {
             format!("{}\n{WORLD_ISLAND_WGSL}\n{body}", world_head()?)
         }
-        Shader::WorldFinish => format!("{}\n{body}", world_head()?),
+        Shader::WorldAssemble | Shader::WorldFinish => format!("{}\n{body}", world_head()?),
         Shader::WorldFriction => format!(
             "{}\n{body}\n{WORLD_APGD_WGSL}\n{}",
             world_head()?,
@@ -156,9 +158,11 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         // The world step: Lemke's finiteness tests and the error measure's
         // epsilon (lcp_error's f64::EPSILON); the collision phase has no
         // Lemke.
-        Shader::WorldSolve | Shader::WorldLemke | Shader::WorldFriction | Shader::WorldFinish => {
-            with_scalar_limits(&s, precision)?
-        }
+        Shader::WorldAssemble
+        | Shader::WorldSolve
+        | Shader::WorldLemke
+        | Shader::WorldFriction
+        | Shader::WorldFinish => with_scalar_limits(&s, precision)?,
         Shader::WorldCollide => replace_host_line(
             &s,
             "scalar_epsilon",
@@ -197,10 +201,11 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
              shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_bodies.wgsl + \
              shaders/world_island.wgsl + shaders/{file}.wgsl"
         ),
-        Shader::WorldFinish => "shaders/collide.wgsl (functions above its pair functions) + \
+        Shader::WorldAssemble | Shader::WorldFinish => format!(
+            "shaders/collide.wgsl (functions above its pair functions) + \
              shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_bodies.wgsl + \
-             shaders/world_finish.wgsl"
-            .to_string(),
+             shaders/{file}.wgsl"
+        ),
         Shader::WorldFriction => "shaders/collide.wgsl (functions above its pair functions) + \
              shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_bodies.wgsl + \
              shaders/world_friction.wgsl + shaders/world_apgd.wgsl + shaders/friction_common.wgsl \

@@ -73,10 +73,13 @@ pub(crate) enum Shader {
     /// function of `collide.wgsl` (entry points candidate_pairs,
     /// narrow_box_box, narrow_box_plane, narrow_sphere, world_contacts);
     WorldCollide,
+    /// the islands and their assembly, `world_bodies.wgsl` and
+    /// `world_assemble.wgsl` after `collide.wgsl`'s functions above its
+    /// pair functions and `lemke.wgsl`'s (entry point world_assemble);
+    WorldAssemble,
     /// the solve from the warm bases, `world_bodies.wgsl`,
-    /// `world_island.wgsl` and `world_solve.wgsl` after `collide.wgsl`'s
-    /// functions above its pair functions and `lemke.wgsl`'s (entry point
-    /// world_solve_warm);
+    /// `world_island.wgsl` and `world_solve.wgsl` after the same functions
+    /// (entry point world_solve_warm);
     WorldSolve,
     /// Lemke's path, as the solve's with `world_lemke.wgsl` for
     /// `world_solve.wgsl` (entry point world_lemke);
@@ -107,7 +110,11 @@ impl Shader {
         v.extend([Shader::Assembly, Shader::Impulses]);
         v.extend((1..=FRICTION_MAX_K).map(Shader::FrictionProjected));
         v.extend([Shader::Collide, Shader::WorldCollide]);
-        v.extend([Shader::WorldSolve, Shader::WorldLemke]);
+        v.extend([
+            Shader::WorldAssemble,
+            Shader::WorldSolve,
+            Shader::WorldLemke,
+        ]);
         v.extend([Shader::WorldFriction, Shader::WorldFinish]);
         v
     }
@@ -127,6 +134,7 @@ impl Shader {
             Shader::FrictionProjected(k) => format!("friction_projected_k{k}"),
             Shader::Collide => "collide".into(),
             Shader::WorldCollide => "world_collide".into(),
+            Shader::WorldAssemble => "world_assemble".into(),
             Shader::WorldSolve => "world_solve".into(),
             Shader::WorldLemke => "world_lemke".into(),
             Shader::WorldFriction => "world_friction".into(),
@@ -219,6 +227,7 @@ pub(crate) static GENERATED: &[(&str, &str, &str)] = generated!(
     "friction_projected_k16",
     "collide",
     "world_collide",
+    "world_assemble",
     "world_solve",
     "world_lemke",
     "world_friction",
