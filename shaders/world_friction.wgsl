@@ -1,6 +1,8 @@
-// The frictional phase of shaders/world_step.wgsl (a module of its own:
-// composed after world_step.wgsl and world_bodies.wgsl, before
-// world_apgd.wgsl and the cone projection of friction_common.wgsl):
+// The frictional phase of shaders/world_step.wgsl (two modules, one per
+// method: composed after world_step.wgsl and world_bodies.wgsl, before
+// world_sweeps.wgsl (module world_friction: Jacobi, Gauss–Seidel) or
+// world_apgd.wgsl (module world_friction_apgd), and the cone projection of
+// friction_common.wgsl; each module holds only its method's code):
 // the islands of the worlds with friction (a contact with μ > 0 this step;
 // world_solve_warm hands them over with the phase F_ASSEMBLE and the flag
 // HANDED, which stays until the world is finished), one invocation per
@@ -64,8 +66,18 @@ const F_BEST: u32 = 3824u;
 const F_UBEST: u32 = 3872u;
 const F_APGD: u32 = 3920u;
 
-// sp.gauss_seidel: 0 Jacobi, 1 Gauss–Seidel sweeps, METHOD_APGD.
+// sp.gauss_seidel: 0 Jacobi, 1 Gauss–Seidel sweeps, METHOD_APGD (the
+// module world_friction_apgd; the sweeps are the module world_friction).
 const METHOD_APGD: u32 = 2u;
+
+// The method's iterations in a round (`method_round`: world_sweeps.wgsl or
+// world_apgd.wgsl, one in each module): the budget spent first (the next
+// round goes on), done, failed (the world flagged NOT_SOLVED), or done on
+// a non-finite stop measure (judged as failed).
+const ROUND_SPENT: u32 = 0u;
+const ROUND_DONE: u32 = 1u;
+const ROUND_FAILED: u32 = 2u;
+const ROUND_NOT_FINITE: u32 = 3u;
 
 // Below this scale the stop measure is not divided (projected.rs SCALE_FLOOR).
 const SCALE_FLOOR: Scalar = Scalar(2.220446049250313e-16);
@@ -336,26 +348,6 @@ fn stop_measure(base: u32, n: u32, q2: Scalar, xs: u32, us: u32) -> Scalar {
     return e;
 }
 
-// One sweep of projected.rs `sweeps` (u from the iteration's start; for
-// Gauss–Seidel each contact's rows again from the reactions so far).
-fn sweep(base: u32, n: u32) {
-    let dim = 3u * n;
-    for (var i = 0u; i < n; i++) {
-        let c = 3u * i;
-        if sp.gauss_seidel != 0u {
-            contact_velocity(base, dim, i, base + F_X, base + F_U);
-        }
-        let h = scratch[base + F_ETA + i];
-        let x = vec3_x(base, i);
-        let u = vec3_u(base, i);
-        let p = project_on_cone(
-            vec3<Scalar>(x.x - h * u.x, x.y - h * u.y, x.z - h * u.z),
-            scratch[base + F_MU + i],
-        );
-        put_scratch(base + F_X + c, p);
-    }
-}
-
 // ProjectedSolution::judge of x with u = W x + q (the sweeps' last
 // iteration computed it from this x, which it left as it was), the cone
 // error (the status) and the Coulomb error
@@ -461,12 +453,8 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
         }
         let dim = 3u * n;
         // Costs: the loop iterations of each part (see contact_velocity).
-        let apgd = sp.gauss_seidel == METHOD_APGD;
         if phase == F_ASSEMBLE {
-            var cost = 12u * n * n + n * (sp.slots + 1u) + 64u;
-            if apgd {
-                cost += 4u * n * n + 16u * n + 16u;
-            }
+            let cost = 12u * n * n + n * (sp.slots + 1u) + 64u + method_start_cost(n);
             if spent > count && spent + cost > sp.friction_budget {
                 break;
             }
@@ -476,48 +464,20 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
             words[fs + 3u] = 0u;
             phase = F_SWEEP;
             words[fs] = phase;
-            if apgd && !apgd_start(base, n, sum_squares_at(base + F_Q, dim)) {
+            if !method_start(base, n) {
                 flags |= NOT_SOLVED;
                 break;
             }
         }
-        // Iterations of `sweeps`: u, the stop measure, a sweep.
-        let cost = 2u * n * n + 8u * n + 16u;
         let q2 = sum_squares_at(base + F_Q, dim);
-        var done = false;
-        var failed = false;
-        if apgd {
-            let r = apgd_round(base, n, q2, fs, spent);
-            spent = r.x;
-            if r.y == 2u {
-                flags |= NOT_SOLVED;
-                break;
-            }
-            done = r.y == 1u;
+        let r = method_round(base, n, q2, fs, spent);
+        spent = r.x;
+        if r.y == ROUND_FAILED {
+            flags |= NOT_SOLVED;
+            break;
         }
-        loop {
-            if apgd {
-                break;
-            }
-            if spent + cost > sp.friction_budget {
-                break;
-            }
-            spent += cost;
-            let it = words[fs + 2u];
-            friction_velocity(base, n, F_X, F_U);
-            let err = stop_measure(base, n, q2, F_X, F_U);
-            if !finite(err) {
-                failed = true;
-                done = true;
-                break;
-            }
-            if err <= sp.friction_tolerance || it >= sp.max_iterations {
-                done = true;
-                break;
-            }
-            sweep(base, n);
-            words[fs + 2u] = it + 1u;
-        }
+        let done = r.y == ROUND_DONE || r.y == ROUND_NOT_FINITE;
+        let failed = r.y == ROUND_NOT_FINITE;
         // The judgement's loops (no product: u is the last iteration's).
         let judged = 16u * n + 64u;
         if !done || spent + judged > sp.friction_budget {

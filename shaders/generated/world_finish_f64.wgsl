@@ -466,7 +466,8 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 // - scratch: per body 6 scalars (v*, then v after the impulses), then per
 //   contact slot CP scalars (point 3, normal 3, gap, z), then per contact
 //   slot ROW scalars (`row_at`: q, the response M⁻¹Jᵀ of sides a and b,
-//   the contact's row of its island's M; world_assemble); from
+//   the contact's row of its island's M (world_assemble), the basic
+//   variable of its row where Lemke's path ended (world_lemke)); from
 //   params.pairs_at per world params.pair_slots pair records of CP scalars
 //   (point 3, normal 3, gap, feature), SLOTS per candidate pair;
 // - words: per body 2 (asleep, quiet steps); from params.out_at per world 4
@@ -495,7 +496,7 @@ const BC: u32 = 12u;
 const BS: u32 = 13u;
 const CP: u32 = 8u;
 const REC: u32 = 8u;
-const ROW: u32 = 29u;
+const ROW: u32 = 30u;
 const ISLAND_MAX: u32 = 16u;
 
 const CONTACTS_FULL: u32 = 1u;
@@ -612,7 +613,8 @@ fn placed_body(k: u32) -> Placed {
 }
 
 // Where contact slot `slot`'s row starts in `scratch`: after the contact
-// slots (q, response 12, the row of M over the island's members 16).
+// slots (q, response 12, the row of M over the island's members 16, the
+// row's basic variable at Lemke's end 1).
 fn row_at(slot: u32) -> u32 {
     return sp.contacts_at + sp.count * sp.slots * CP + slot * ROW;
 }

@@ -1,4 +1,4 @@
-// GENERATED from shaders/collide.wgsl (functions above its pair functions) + shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_bodies.wgsl + shaders/world_friction.wgsl + shaders/world_apgd.wgsl + shaders/friction_common.wgsl (project_on_cone on) by src/gpu/shaders/compose.rs: do not edit.
+// GENERATED from shaders/collide.wgsl (functions above its pair functions) + shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_bodies.wgsl + shaders/world_friction.wgsl + shaders/world_sweeps.wgsl + shaders/friction_common.wgsl (project_on_cone on) by src/gpu/shaders/compose.rs: do not edit.
 // Regenerate: LCPBATCH_BLESS_SHADERS=1 cargo test --release generated_shaders_are_committed
 
 // Narrow phase: the contact points of candidate pairs of bodies (entry
@@ -466,7 +466,8 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 // - scratch: per body 6 scalars (v*, then v after the impulses), then per
 //   contact slot CP scalars (point 3, normal 3, gap, z), then per contact
 //   slot ROW scalars (`row_at`: q, the response M⁻¹Jᵀ of sides a and b,
-//   the contact's row of its island's M; world_assemble); from
+//   the contact's row of its island's M (world_assemble), the basic
+//   variable of its row where Lemke's path ended (world_lemke)); from
 //   params.pairs_at per world params.pair_slots pair records of CP scalars
 //   (point 3, normal 3, gap, feature), SLOTS per candidate pair;
 // - words: per body 2 (asleep, quiet steps); from params.out_at per world 4
@@ -495,7 +496,7 @@ const BC: u32 = 12u;
 const BS: u32 = 13u;
 const CP: u32 = 8u;
 const REC: u32 = 8u;
-const ROW: u32 = 29u;
+const ROW: u32 = 30u;
 const ISLAND_MAX: u32 = 16u;
 
 const CONTACTS_FULL: u32 = 1u;
@@ -612,7 +613,8 @@ fn placed_body(k: u32) -> Placed {
 }
 
 // Where contact slot `slot`'s row starts in `scratch`: after the contact
-// slots (q, response 12, the row of M over the island's members 16).
+// slots (q, response 12, the row of M over the island's members 16, the
+// row's basic variable at Lemke's end 1).
 fn row_at(slot: u32) -> u32 {
     return sp.contacts_at + sp.count * sp.slots * CP + slot * ROW;
 }
@@ -758,9 +760,11 @@ fn island_members(w: u32, count: u32, isl: u32, members: ptr<function, array<u32
     return n;
 }
 
-// The frictional phase of shaders/world_step.wgsl (a module of its own:
-// composed after world_step.wgsl and world_bodies.wgsl, before
-// world_apgd.wgsl and the cone projection of friction_common.wgsl):
+// The frictional phase of shaders/world_step.wgsl (two modules, one per
+// method: composed after world_step.wgsl and world_bodies.wgsl, before
+// world_sweeps.wgsl (module world_friction: Jacobi, Gauss–Seidel) or
+// world_apgd.wgsl (module world_friction_apgd), and the cone projection of
+// friction_common.wgsl; each module holds only its method's code):
 // the islands of the worlds with friction (a contact with μ > 0 this step;
 // world_solve_warm hands them over with the phase F_ASSEMBLE and the flag
 // HANDED, which stays until the world is finished), one invocation per
@@ -824,8 +828,18 @@ const F_BEST: u32 = 3824u;
 const F_UBEST: u32 = 3872u;
 const F_APGD: u32 = 3920u;
 
-// sp.gauss_seidel: 0 Jacobi, 1 Gauss–Seidel sweeps, METHOD_APGD.
+// sp.gauss_seidel: 0 Jacobi, 1 Gauss–Seidel sweeps, METHOD_APGD (the
+// module world_friction_apgd; the sweeps are the module world_friction).
 const METHOD_APGD: u32 = 2u;
+
+// The method's iterations in a round (`method_round`: world_sweeps.wgsl or
+// world_apgd.wgsl, one in each module): the budget spent first (the next
+// round goes on), done, failed (the world flagged NOT_SOLVED), or done on
+// a non-finite stop measure (judged as failed).
+const ROUND_SPENT: u32 = 0u;
+const ROUND_DONE: u32 = 1u;
+const ROUND_FAILED: u32 = 2u;
+const ROUND_NOT_FINITE: u32 = 3u;
 
 // Below this scale the stop measure is not divided (projected.rs SCALE_FLOOR).
 const SCALE_FLOOR: Scalar = Scalar(2.220446049250313e-16);
@@ -1096,26 +1110,6 @@ fn stop_measure(base: u32, n: u32, q2: Scalar, xs: u32, us: u32) -> Scalar {
     return e;
 }
 
-// One sweep of projected.rs `sweeps` (u from the iteration's start; for
-// Gauss–Seidel each contact's rows again from the reactions so far).
-fn sweep(base: u32, n: u32) {
-    let dim = 3u * n;
-    for (var i = 0u; i < n; i++) {
-        let c = 3u * i;
-        if sp.gauss_seidel != 0u {
-            contact_velocity(base, dim, i, base + F_X, base + F_U);
-        }
-        let h = scratch[base + F_ETA + i];
-        let x = vec3_x(base, i);
-        let u = vec3_u(base, i);
-        let p = project_on_cone(
-            vec3<Scalar>(x.x - h * u.x, x.y - h * u.y, x.z - h * u.z),
-            scratch[base + F_MU + i],
-        );
-        put_scratch(base + F_X + c, p);
-    }
-}
-
 // ProjectedSolution::judge of x with u = W x + q (the sweeps' last
 // iteration computed it from this x, which it left as it was), the cone
 // error (the status) and the Coulomb error
@@ -1221,12 +1215,8 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
         }
         let dim = 3u * n;
         // Costs: the loop iterations of each part (see contact_velocity).
-        let apgd = sp.gauss_seidel == METHOD_APGD;
         if phase == F_ASSEMBLE {
-            var cost = 12u * n * n + n * (sp.slots + 1u) + 64u;
-            if apgd {
-                cost += 4u * n * n + 16u * n + 16u;
-            }
+            let cost = 12u * n * n + n * (sp.slots + 1u) + 64u + method_start_cost(n);
             if spent > count && spent + cost > sp.friction_budget {
                 break;
             }
@@ -1236,48 +1226,20 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
             words[fs + 3u] = 0u;
             phase = F_SWEEP;
             words[fs] = phase;
-            if apgd && !apgd_start(base, n, sum_squares_at(base + F_Q, dim)) {
+            if !method_start(base, n) {
                 flags |= NOT_SOLVED;
                 break;
             }
         }
-        // Iterations of `sweeps`: u, the stop measure, a sweep.
-        let cost = 2u * n * n + 8u * n + 16u;
         let q2 = sum_squares_at(base + F_Q, dim);
-        var done = false;
-        var failed = false;
-        if apgd {
-            let r = apgd_round(base, n, q2, fs, spent);
-            spent = r.x;
-            if r.y == 2u {
-                flags |= NOT_SOLVED;
-                break;
-            }
-            done = r.y == 1u;
+        let r = method_round(base, n, q2, fs, spent);
+        spent = r.x;
+        if r.y == ROUND_FAILED {
+            flags |= NOT_SOLVED;
+            break;
         }
-        loop {
-            if apgd {
-                break;
-            }
-            if spent + cost > sp.friction_budget {
-                break;
-            }
-            spent += cost;
-            let it = words[fs + 2u];
-            friction_velocity(base, n, F_X, F_U);
-            let err = stop_measure(base, n, q2, F_X, F_U);
-            if !finite(err) {
-                failed = true;
-                done = true;
-                break;
-            }
-            if err <= sp.friction_tolerance || it >= sp.max_iterations {
-                done = true;
-                break;
-            }
-            sweep(base, n);
-            words[fs + 2u] = it + 1u;
-        }
+        let done = r.y == ROUND_DONE || r.y == ROUND_NOT_FINITE;
+        let failed = r.y == ROUND_NOT_FINITE;
         // The judgement's loops (no product: u is the last iteration's).
         let judged = 16u * n + 64u;
         if !done || spent + judged > sp.friction_budget {
@@ -1351,175 +1313,69 @@ fn keep_reaction(slot: u32, r: vec3<Scalar>) {
     put_scratch(sp.reactions_at + 3u * slot, r);
 }
 
-// APGD in the frictional phase of shaders/world_step.wgsl (composed after
-// world_friction.wgsl, whose header gives the method, the layout of a
-// world's region and the rounds; `world_friction` calls apgd_start after
-// an island's assembly and apgd_round in each round): the twin of
-// friction/apgd.rs, its arithmetic in its order, on the island's W, q and
-// μ in `scratch`. accept_step and apgd_momentum are friction_common.wgsl's
-// (the batch APGD kernels' own).
+// The projected sweeps in the frictional phase of shaders/world_step.wgsl
+// (module world_friction, composed after world_friction.wgsl, whose header
+// gives the method, the layout of a world's region and the rounds): the
+// method's part of `world_friction` for Jacobi and Gauss–Seidel
+// (friction/projected.rs `sweeps`).
 
-// Copies contact after contact 3n entries from base + `src` to base + `dst`.
-fn copy_entries(base: u32, n: u32, src: u32, dst: u32) {
-    for (var i = 0u; i < n; i++) {
-        put_scratch(base + dst + 3u * i, vec3_at_scratch(base + src + 3u * i));
-    }
-}
-
-// apgd.rs first_lipschitz: ‖W e‖ / ‖e‖ for e = (1, …, 1), else the largest
-// |W_rr|, else 1.
-fn first_lipschitz(base: u32, n: u32) -> Scalar {
+// One sweep of projected.rs `sweeps` (u from the iteration's start; for
+// Gauss–Seidel each contact's rows again from the reactions so far).
+fn sweep(base: u32, n: u32) {
     let dim = 3u * n;
-    var s2 = Scalar(0.0);
-    for (var r = 0u; r < dim; r++) {
-        let row = base + F_W + r * dim;
-        var s = Scalar(0.0);
-        for (var j = 0u; j < dim; j += 3u) {
-            s += scratch[row + j];
-            s += scratch[row + j + 1u];
-            s += scratch[row + j + 2u];
+    for (var i = 0u; i < n; i++) {
+        let c = 3u * i;
+        if sp.gauss_seidel != 0u {
+            contact_velocity(base, dim, i, base + F_X, base + F_U);
         }
-        s2 += s * s;
+        let h = scratch[base + F_ETA + i];
+        let x = vec3_x(base, i);
+        let u = vec3_u(base, i);
+        let p = project_on_cone(
+            vec3<Scalar>(x.x - h * u.x, x.y - h * u.y, x.z - h * u.z),
+            scratch[base + F_MU + i],
+        );
+        put_scratch(base + F_X + c, p);
     }
-    let l = sqrt(s2 / Scalar(dim));
-    if l > Scalar(0.0) && finite(l) {
-        return l;
-    }
-    var d = Scalar(0.0);
-    for (var r = 0u; r < dim; r++) {
-        d = max(d, abs(scratch[base + F_W + r * dim + r]));
-    }
-    return select(Scalar(1.0), d, d > Scalar(0.0) && finite(d));
 }
 
-// APGD's start (apgd.rs apgd) from x (projected by assemble_friction):
-// u(x), its error, y = x, u(y) = u(x), best = x, θ = 1, L; false where
-// the error is not finite (the twin fails).
-fn apgd_start(base: u32, n: u32, q2: Scalar) -> bool {
-    friction_velocity(base, n, F_X, F_U);
-    let err = stop_measure(base, n, q2, F_X, F_U);
-    copy_entries(base, n, F_X, F_Y);
-    copy_entries(base, n, F_U, F_UY);
-    copy_entries(base, n, F_X, F_BEST);
-    copy_entries(base, n, F_U, F_UBEST);
-    let a = base + F_APGD;
-    scratch[a] = Scalar(1.0);
-    scratch[a + 1u] = first_lipschitz(base, n);
-    scratch[a + 2u] = err;
-    return finite(err);
+// Loop work of the method's start after an island's assembly: none (the
+// sweeps start from x as assembled).
+fn method_start_cost(n: u32) -> u32 {
+    return 0u;
 }
 
-// One backtracking try from y with step 1/L (apgd_iteration): the trial
-// xn = P_K(y − u(y) / L) into T1, u(xn) into T2; whether accept_step takes
-// it (d = xn − y, W d = u(xn) − u(y)).
-fn apgd_try(base: u32, n: u32, lipschitz: Scalar) -> bool {
-    let t = Scalar(1.0) / lipschitz;
-    for (var i = 0u; i < n; i++) {
-        let y = vec3_at_scratch(base + F_Y + 3u * i);
-        let uy = vec3_at_scratch(base + F_UY + 3u * i);
-        put_scratch(base + F_T1 + 3u * i, project_on_cone(y - t * uy, scratch[base + F_MU + i]));
-    }
-    friction_velocity(base, n, F_T1, F_T2);
-    var curvature = Scalar(0.0);
-    var d2 = Scalar(0.0);
-    var g2 = Scalar(0.0);
-    for (var i = 0u; i < n; i++) {
-        let d = vec3_at_scratch(base + F_T1 + 3u * i) - vec3_at_scratch(base + F_Y + 3u * i);
-        let uy = vec3_at_scratch(base + F_UY + 3u * i);
-        let wd = vec3_at_scratch(base + F_T2 + 3u * i) - uy;
-        curvature += d.x * wd.x;
-        curvature += d.y * wd.y;
-        curvature += d.z * wd.z;
-        d2 += d.x * d.x;
-        d2 += d.y * d.y;
-        d2 += d.z * d.z;
-        g2 += uy.x * uy.x;
-        g2 += uy.y * uy.y;
-        g2 += uy.z * uy.z;
-    }
-    return accept_step(curvature, d2, g2, lipschitz);
-}
-
-// After an accepted try (apgd_iteration): the best iterate (with its u),
-// the momentum, the gradient restart, x = xn, L × 0.9, the iteration
-// counted in words[fs + 2]; false where the trial's error is not finite.
-fn apgd_accept(base: u32, n: u32, q2: Scalar, fs: u32) -> bool {
-    let err = stop_measure(base, n, q2, F_T1, F_T2);
-    if !finite(err) {
-        return false;
-    }
-    let a = base + F_APGD;
-    if err < scratch[a + 2u] {
-        scratch[a + 2u] = err;
-        copy_entries(base, n, F_T1, F_BEST);
-        copy_entries(base, n, F_T2, F_UBEST);
-    }
-    let m = apgd_momentum(scratch[a]);
-    var g_dot = Scalar(0.0);
-    for (var i = 0u; i < n; i++) {
-        let d = vec3_at_scratch(base + F_T1 + 3u * i) - vec3_x(base, i);
-        let uy = vec3_at_scratch(base + F_UY + 3u * i);
-        g_dot += uy.x * d.x;
-        g_dot += uy.y * d.y;
-        g_dot += uy.z * d.z;
-    }
-    let restart = g_dot > Scalar(0.0);
-    for (var i = 0u; i < n; i++) {
-        let xn = vec3_at_scratch(base + F_T1 + 3u * i);
-        let un = vec3_at_scratch(base + F_T2 + 3u * i);
-        var y = xn;
-        var uy = un;
-        if !restart {
-            y = xn + m.y * (xn - vec3_x(base, i));
-            uy = un + m.y * (un - vec3_u(base, i));
-        }
-        put_scratch(base + F_Y + 3u * i, y);
-        put_scratch(base + F_UY + 3u * i, uy);
-        put_scratch(base + F_X + 3u * i, xn);
-        put_scratch(base + F_U + 3u * i, un);
-    }
-    scratch[a] = select(m.x, Scalar(1.0), restart);
-    scratch[a + 1u] = scratch[a + 1u] * Scalar(0.9);
-    words[fs + 2u] += 1u;
-    words[fs + 3u] = 0u;
+// The method's start after an island's assembly: nothing to do.
+fn method_start(base: u32, n: u32) -> bool {
     return true;
 }
 
-// The APGD iterations of a round within `budget` from `spent` (the twin's
-// loop: stop at the tolerance or the cap, else a try, doubling L where it
-// fails): (loop work spent, 1 done, 2 failed), the best iterate and its u
-// in x and u where done.
-fn apgd_round(base: u32, n: u32, q2: Scalar, fs: u32, spent0: u32) -> vec2<u32> {
-    let cost = n * n + 10u * n + 16u;
-    let a = base + F_APGD;
+// Iterations of `sweeps` within `sp.friction_budget` from `spent0`: u, the
+// stop measure, a sweep, until the tolerance or the cap (ROUND_DONE), a
+// non-finite measure (ROUND_NOT_FINITE) or the budget (ROUND_SPENT):
+// (loop work spent, that).
+fn method_round(base: u32, n: u32, q2: Scalar, fs: u32, spent0: u32) -> vec2<u32> {
+    let cost = 2u * n * n + 8u * n + 16u;
     var spent = spent0;
-    var end = 0u;
+    var end = ROUND_SPENT;
     loop {
-        if scratch[a + 2u] <= sp.friction_tolerance || words[fs + 2u] >= sp.max_iterations {
-            copy_entries(base, n, F_BEST, F_X);
-            copy_entries(base, n, F_UBEST, F_U);
-            spent += 2u * n;
-            end = 1u;
-            break;
-        }
         if spent + cost > sp.friction_budget {
             break;
         }
         spent += cost;
-        let l = scratch[a + 1u];
-        if apgd_try(base, n, l) {
-            if !apgd_accept(base, n, q2, fs) {
-                end = 2u;
-                break;
-            }
-        } else {
-            scratch[a + 1u] = Scalar(2.0) * l;
-            words[fs + 3u] += 1u;
-            if words[fs + 3u] >= MAX_BACKTRACKS || !finite(scratch[a + 1u]) {
-                end = 2u;
-                break;
-            }
+        let it = words[fs + 2u];
+        friction_velocity(base, n, F_X, F_U);
+        let err = stop_measure(base, n, q2, F_X, F_U);
+        if !finite(err) {
+            end = ROUND_NOT_FINITE;
+            break;
         }
+        if err <= sp.friction_tolerance || it >= sp.max_iterations {
+            end = ROUND_DONE;
+            break;
+        }
+        sweep(base, n);
+        words[fs + 2u] = it + 1u;
     }
     return vec2<u32>(spent, end);
 }

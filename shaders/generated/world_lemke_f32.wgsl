@@ -466,7 +466,8 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 // - scratch: per body 6 scalars (v*, then v after the impulses), then per
 //   contact slot CP scalars (point 3, normal 3, gap, z), then per contact
 //   slot ROW scalars (`row_at`: q, the response M⁻¹Jᵀ of sides a and b,
-//   the contact's row of its island's M; world_assemble); from
+//   the contact's row of its island's M (world_assemble), the basic
+//   variable of its row where Lemke's path ended (world_lemke)); from
 //   params.pairs_at per world params.pair_slots pair records of CP scalars
 //   (point 3, normal 3, gap, feature), SLOTS per candidate pair;
 // - words: per body 2 (asleep, quiet steps); from params.out_at per world 4
@@ -495,7 +496,7 @@ const BC: u32 = 12u;
 const BS: u32 = 13u;
 const CP: u32 = 8u;
 const REC: u32 = 8u;
-const ROW: u32 = 29u;
+const ROW: u32 = 30u;
 const ISLAND_MAX: u32 = 16u;
 
 const CONTACTS_FULL: u32 = 1u;
@@ -612,7 +613,8 @@ fn placed_body(k: u32) -> Placed {
 }
 
 // Where contact slot `slot`'s row starts in `scratch`: after the contact
-// slots (q, response 12, the row of M over the island's members 16).
+// slots (q, response 12, the row of M over the island's members 16, the
+// row's basic variable at Lemke's end 1).
 fn row_at(slot: u32) -> u32 {
     return sp.contacts_at + sp.count * sp.slots * CP + slot * ROW;
 }
@@ -935,39 +937,20 @@ const WARM_TRIED: u32 = 0x80000000u;
 // composed after world_step.wgsl, world_bodies.wgsl, shaders/lemke.wgsl's
 // functions and world_island.wgsl): the entry point `world_lemke`, an
 // indirect dispatch over the worlds world_solve_warm listed (LIST_LEMKE),
-// one invocation per listed world (not per island: a world's islands are
-// few and share its velocities, and the loop work of the islands before
-// counts toward an island's pivot budget as one pass over the world's
-// islands counts it).
-
-// The basis Lemke ended on, re-solved in f64 as the CPU path re-solves it
-// (textbook_checked, `solve_on`): z = max(x, 0) over the basic z's; Lemke's
-// own z where M_SS is singular or the answer not finite. The basis (bit i:
-// z_i basic).
-fn resolve_basis(n: u32) -> u32 {
-    var k = 0u;
-    var mask = 0u;
-    for (var i = 0u; i < n; i++) {
-        let v = basic[i];
-        if v >= n && v < 2u * n {
-            cand[k] = v - n;
-            mask |= 1u << (v - n);
-            k++;
-        }
-    }
-    if solve_on(k) {
-        for (var i = 0u; i < k; i++) {
-            zv[cand[i]] = max(xs[i], Scalar(0.0));
-        }
-    }
-    return mask;
-}
+// one invocation per listed world (not per island: the loop work of the
+// islands before counts toward an island's pivot budget, as one pass over
+// the world's islands counts it). The basis each island's path ended on
+// and its z wait in the island's contact slots for `world_lemke_check`
+// (shaders/world_lemke_check.wgsl: the basis re-solved in f64, the door's
+// check), the CPU path's lemke_textbook_basis then textbook_checked.
 
 // Lemke's path for the island's n rows (the tableau B⁻¹ [I, −M, −e | q]
-// with B = I, lemke.wgsl; `spent`: loop work so far, grown), its basis
-// re-solved (resolve_basis) and checked; the basis, or NONE where Lemke
-// gave up or the check failed; the error into `error`.
-fn lemke_island(n: u32, spent: ptr<function, u32>, error: ptr<function, Scalar>) -> u32 {
+// with B = I, lemke.wgsl; `spent`: loop work so far, grown as one pass
+// with the re-solve counts it): z = max(rhs, 0) over the basic z's (0
+// elsewhere) into the members' z slots, each row's basic variable into its
+// row (`row_at` + 29; row i's own w where no pivot was made, which
+// world_lemke_check's re-solve leaves alone). False where Lemke gave up.
+fn lemke_island(w: u32, n: u32, members: ptr<function, array<u32, 16>>, spent: ptr<function, u32>) -> bool {
     let cols = 2u * n + 2u;
     let rhs = cols - 1u;
     for (var i = 0u; i < n; i++) {
@@ -987,32 +970,31 @@ fn lemke_island(n: u32, spent: ptr<function, u32>, error: ptr<function, Scalar>)
     let status = lemke_pivots(n, *spent, sp.pivot_tol, max_pivots, sp.budget, &visited);
     *spent += n + (visited + 1u) * ((n + 1u) * cols + 2u * n * n + 6u * n);
     if status != 1u {
-        return NONE;
+        return false;
     }
+    let slot0 = w * sp.slots;
     for (var i = 0u; i < n; i++) {
-        zv[i] = Scalar(0.0);
+        scratch[sp.contacts_at + (slot0 + (*members)[i]) * CP + 7u] = Scalar(0.0);
+        scratch[row_at(slot0 + (*members)[i]) + 29u] = Scalar(select(basic[i], i, visited == 0u));
     }
-    var basis = 0u;
     if visited > 0u {
         for (var i = 0u; i < n; i++) {
             let v = basic[i];
             if v >= n && v < 2u * n {
-                zv[v - n] = max(t[i * cols + rhs], Scalar(0.0));
+                scratch[sp.contacts_at + (slot0 + (*members)[v - n]) * CP + 7u] = max(t[i * cols + rhs], Scalar(0.0));
             }
         }
-        basis = resolve_basis(n);
         *spent += n * n * n;
     }
-    *error = check(n);
-    return select(basis, NONE, *error < Scalar(0.0));
+    return true;
 }
 
 // The listed islands of the listed world (`listed`: bit i for island i,
-// WARM_TRIED) by Lemke's path (`lemke_island`), in island order, their z
-// into their contact slots; the loop work counts every island
-// before, its warm bases tried where they were (world_solve_warm), as one
-// pass over the islands counts it. A world Lemke cannot solve is flagged
-// NOT_SOLVED (the CPU steps it from its state).
+// WARM_TRIED) by Lemke's path (`lemke_island`), in island order; the loop
+// work counts every island before, its warm bases tried where they were
+// (world_solve_warm), as one pass over the islands counts it. A world
+// where Lemke gives up is flagged NOT_SOLVED (the CPU steps it from its
+// state).
 @compute @workgroup_size(64)
 fn world_lemke(@builtin(global_invocation_id) gid: vec3<u32>) {
     if gid.x >= atomicLoad(&lists[4u * LIST_LEMKE + 3u]) {
@@ -1024,10 +1006,7 @@ fn world_lemke(@builtin(global_invocation_id) gid: vec3<u32>) {
     let out = sp.out_at + 4u * w;
     let count = words[out];
     let islands = words[out + 3u];
-    let rec = w * REC;
     var flags = 0u;
-    var bases = u32(records[rec + 7u]);
-    var max_error = records[rec + 3u];
     var spent = 0u;
     var members: array<u32, 16>;
     for (var isl = 0u; isl < islands; isl++) {
@@ -1045,17 +1024,11 @@ fn world_lemke(@builtin(global_invocation_id) gid: vec3<u32>) {
         if (listed & WARM_TRIED) != 0u {
             spent += (WARM_PIVOTS + 1u) * (n * n * n + 3u * n * n);
         }
-        if !lemke {
-            continue;
-        }
-        var error = Scalar(-1.0);
-        let basis = lemke_island(n, &spent, &error);
-        if basis == NONE {
+        if lemke && !lemke_island(w, n, &members, &spent) {
             flags |= NOT_SOLVED;
             break;
         }
-        bases |= keep_island(w, n, &members, basis);
-        max_error = max(max_error, error);
     }
-    end_solve(w, flags, bases, max_error);
+    let rec = w * REC;
+    end_solve(w, flags, u32(records[rec + 7u]), records[rec + 3u]);
 }

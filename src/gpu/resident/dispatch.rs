@@ -3,7 +3,7 @@
 //! collision phase ([`ResidentWorlds::record_collide`]: `candidate_pairs`,
 //! the narrow phase per pair family over its list, `world_contacts`), then
 //! the solve ([`ResidentWorlds::record_solve`]: `world_assemble`, `world_solve_warm`,
-//! `world_lemke` over the worlds it listed), the rounds of
+//! `world_lemke` and `world_lemke_check` over the worlds it listed), the rounds of
 //! `world_friction` where any, `world_finish`. The lists'
 //! sizes are on the device: the indirect dispatches read their workgroups
 //! from a copy of the lists' headers ([`LIST_HEADERS`]), made between the
@@ -51,9 +51,10 @@ impl ResidentWorlds {
     }
 
     /// The solve's dispatches after the collision phase: `world_assemble`
-    /// and `world_solve_warm` over the worlds, then `world_lemke` over the
-    /// worlds it listed (indirect: none in a step where every warm basis
-    /// held; every world with contacts without warm bases); then the
+    /// and `world_solve_warm` over the worlds, then `world_lemke` and
+    /// `world_lemke_check` over the worlds it listed (indirect: none in a
+    /// step where every warm basis held; every world with contacts without
+    /// warm bases); then the
     /// frictional rounds (`friction`, where any) and `world_finish` over
     /// the worlds.
     pub(super) fn record_solve(
@@ -66,6 +67,7 @@ impl ResidentWorlds {
         self.record(encoder, &stages.world_solve_warm);
         encoder.copy_buffer_to_buffer(&self.lists, 0, &self.list_groups, 0, 12);
         self.record_listed(encoder, &stages.world_lemke, 0);
+        self.record_listed(encoder, &stages.world_lemke_check, 0);
         if let Some((stage, rounds)) = friction {
             for _ in 0..rounds {
                 self.record(encoder, stage);

@@ -22,8 +22,9 @@ pub const BS: usize = 13;
 pub const CP: usize = 8;
 /// Scalars per contact slot's row in `scratch`, after the contact slots
 /// (`world_assemble`): q, the response M⁻¹Jᵀ of sides a and b (12), the
-/// contact's row of its island's M (16).
-pub const ROW: usize = 29;
+/// contact's row of its island's M (16); the row's basic variable where
+/// Lemke's path ended (`world_lemke`).
+pub const ROW: usize = 30;
 /// Scalars per world in `records`: kinetic, potential, max penetration,
 /// max error, awake, friction rounds, and `world_solve_warm`'s warm-start
 /// memory (a hash of last step's contact ids, the bases of its islands by

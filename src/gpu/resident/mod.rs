@@ -492,7 +492,12 @@ impl ResidentWorlds {
         let rounds = self.rounds.get();
         let friction = match rounds {
             0 => None,
-            _ => Some(stages.world_friction(ctx)?),
+            _ => {
+                let apgd = self
+                    .friction
+                    .is_some_and(|f| f.method == ProjectedMethod::Apgd);
+                Some(stages.world_friction(ctx, apgd)?)
+            }
         };
         let (rec_bytes, stride) = self.record_bytes();
         let out_at = (2 * self.first[n] * 4) as u64;

@@ -39,8 +39,10 @@ const WORLD_ASSEMBLE_WGSL: &str = include_str!("../../../shaders/world_assemble.
 const WORLD_ISLAND_WGSL: &str = include_str!("../../../shaders/world_island.wgsl");
 const WORLD_SOLVE_WGSL: &str = include_str!("../../../shaders/world_solve.wgsl");
 const WORLD_LEMKE_WGSL: &str = include_str!("../../../shaders/world_lemke.wgsl");
+const WORLD_LEMKE_CHECK_WGSL: &str = include_str!("../../../shaders/world_lemke_check.wgsl");
 const WORLD_FINISH_WGSL: &str = include_str!("../../../shaders/world_finish.wgsl");
 const WORLD_FRICTION_WGSL: &str = include_str!("../../../shaders/world_friction.wgsl");
+const WORLD_SWEEPS_WGSL: &str = include_str!("../../../shaders/world_sweeps.wgsl");
 const WORLD_APGD_WGSL: &str = include_str!("../../../shaders/world_apgd.wgsl");
 
 /// Where `shaders/collide.wgsl`'s own stage starts: the world step kernel
@@ -91,7 +93,10 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         Shader::WorldAssemble => ("world_assemble", WORLD_ASSEMBLE_WGSL),
         Shader::WorldSolve => ("world_solve", WORLD_SOLVE_WGSL),
         Shader::WorldLemke => ("world_lemke", WORLD_LEMKE_WGSL),
-        Shader::WorldFriction => ("world_friction", WORLD_FRICTION_WGSL),
+        Shader::WorldLemkeCheck => ("world_lemke_check", WORLD_LEMKE_CHECK_WGSL),
+        Shader::WorldFriction | Shader::WorldFrictionApgd => {
+            ("world_friction", WORLD_FRICTION_WGSL)
+        }
         Shader::WorldFinish => ("world_finish", WORLD_FINISH_WGSL),
     };
     // The resident solve, frictional and finish modules start alike: the
@@ -114,13 +119,17 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
             "{}\n{WORLD_STEP_WGSL}\n{body}",
             text_before(COLLIDE_WGSL, COLLIDE_STAGE)?
         ),
-        Shader::WorldSolve | Shader::WorldLemke => {
+        Shader::WorldSolve | Shader::WorldLemke | Shader::WorldLemkeCheck => {
             format!("{}\n{WORLD_ISLAND_WGSL}\n{body}", world_head()?)
         }
         Shader::WorldAssemble | Shader::WorldFinish => format!("{}\n{body}", world_head()?),
-        Shader::WorldFriction => format!(
-            "{}\n{body}\n{WORLD_APGD_WGSL}\n{}",
+        Shader::WorldFriction | Shader::WorldFrictionApgd => format!(
+            "{}\n{body}\n{}\n{}",
             world_head()?,
+            match shader {
+                Shader::WorldFriction => WORLD_SWEEPS_WGSL,
+                _ => WORLD_APGD_WGSL,
+            },
             text_from(FRICTION_COMMON_WGSL, CONE_PROJECTION)?
         ),
         _ if standalone => body.to_string(),
@@ -161,7 +170,9 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         Shader::WorldAssemble
         | Shader::WorldSolve
         | Shader::WorldLemke
+        | Shader::WorldLemkeCheck
         | Shader::WorldFriction
+        | Shader::WorldFrictionApgd
         | Shader::WorldFinish => with_scalar_limits(&s, precision)?,
         Shader::WorldCollide => replace_host_line(
             &s,
@@ -196,7 +207,7 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         Shader::WorldCollide => "shaders/collide.wgsl (functions) + shaders/world_step.wgsl + \
              shaders/world_collide.wgsl"
             .to_string(),
-        Shader::WorldSolve | Shader::WorldLemke => format!(
+        Shader::WorldSolve | Shader::WorldLemke | Shader::WorldLemkeCheck => format!(
             "shaders/collide.wgsl (functions above its pair functions) + \
              shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_bodies.wgsl + \
              shaders/world_island.wgsl + shaders/{file}.wgsl"
@@ -206,11 +217,16 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
              shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_bodies.wgsl + \
              shaders/{file}.wgsl"
         ),
-        Shader::WorldFriction => "shaders/collide.wgsl (functions above its pair functions) + \
+        Shader::WorldFriction | Shader::WorldFrictionApgd => format!(
+            "shaders/collide.wgsl (functions above its pair functions) + \
              shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_bodies.wgsl + \
-             shaders/world_friction.wgsl + shaders/world_apgd.wgsl + shaders/friction_common.wgsl \
-             (project_on_cone on)"
-            .to_string(),
+             shaders/world_friction.wgsl + shaders/world_{}.wgsl + shaders/friction_common.wgsl \
+             (project_on_cone on)",
+            match shader {
+                Shader::WorldFriction => "sweeps",
+                _ => "apgd",
+            }
+        ),
         _ => format!("shaders/enumeration_basis.wgsl + shaders/{file}.wgsl"),
     };
     Ok(format!(

@@ -84,11 +84,18 @@ pub(crate) enum Shader {
     /// Lemke's path, as the solve's with `world_lemke.wgsl` for
     /// `world_solve.wgsl` (entry point world_lemke);
     WorldLemke,
-    /// the frictional phase, as the solve's but `world_friction.wgsl`,
-    /// `world_apgd.wgsl` and `friction_common.wgsl` from its cone
-    /// projection on for `world_island.wgsl` and `world_solve.wgsl` (entry
-    /// point world_friction);
+    /// its basis re-solved and checked, `world_lemke_check.wgsl` for
+    /// `world_lemke.wgsl` (entry point world_lemke_check);
+    WorldLemkeCheck,
+    /// the frictional phase with the projected sweeps, as the solve's but
+    /// `world_friction.wgsl`, `world_sweeps.wgsl` and
+    /// `friction_common.wgsl` from its cone projection on for
+    /// `world_island.wgsl` and `world_solve.wgsl` (entry point
+    /// world_friction);
     WorldFriction,
+    /// the same with APGD, `world_apgd.wgsl` for `world_sweeps.wgsl`
+    /// (entry point world_friction);
+    WorldFrictionApgd,
     /// the finish, `world_bodies.wgsl` and `world_finish.wgsl` after the
     /// same functions (entry point world_finish).
     WorldFinish,
@@ -114,8 +121,13 @@ impl Shader {
             Shader::WorldAssemble,
             Shader::WorldSolve,
             Shader::WorldLemke,
+            Shader::WorldLemkeCheck,
         ]);
-        v.extend([Shader::WorldFriction, Shader::WorldFinish]);
+        v.extend([
+            Shader::WorldFriction,
+            Shader::WorldFrictionApgd,
+            Shader::WorldFinish,
+        ]);
         v
     }
 
@@ -137,7 +149,9 @@ impl Shader {
             Shader::WorldAssemble => "world_assemble".into(),
             Shader::WorldSolve => "world_solve".into(),
             Shader::WorldLemke => "world_lemke".into(),
+            Shader::WorldLemkeCheck => "world_lemke_check".into(),
             Shader::WorldFriction => "world_friction".into(),
+            Shader::WorldFrictionApgd => "world_friction_apgd".into(),
             Shader::WorldFinish => "world_finish".into(),
         }
     }
@@ -230,6 +244,8 @@ pub(crate) static GENERATED: &[(&str, &str, &str)] = generated!(
     "world_assemble",
     "world_solve",
     "world_lemke",
+    "world_lemke_check",
     "world_friction",
+    "world_friction_apgd",
     "world_finish",
 );
