@@ -169,3 +169,14 @@ fn end_solve(w: u32, flags0: u32, bases: u32, max_error: Scalar) -> u32 {
 // The Lemke list's second word: bit i for island i (i < ISLAND_MAX), and
 // WARM_TRIED where the world's warm bases were tried first.
 const WARM_TRIED: u32 = 0x80000000u;
+
+// Entry k of the Lemke list (world_solve.wgsl defer_world): the world and
+// its listed islands; (NONE, 0) past the list's end (the indirect
+// dispatch's last workgroup).
+fn lemke_entry(k: u32) -> vec2<u32> {
+    if k >= atomicLoad(&lists[4u * LIST_LEMKE + 3u]) {
+        return vec2<u32>(NONE, 0u);
+    }
+    let at = list_at(LIST_LEMKE) + 2u * k;
+    return vec2<u32>(atomicLoad(&lists[at]), atomicLoad(&lists[at + 1u]));
+}

@@ -63,12 +63,12 @@ fn lemke_island(w: u32, n: u32, members: ptr<function, array<u32, 16>>, spent: p
 // state).
 @compute @workgroup_size(64)
 fn world_lemke(@builtin(global_invocation_id) gid: vec3<u32>) {
-    if gid.x >= atomicLoad(&lists[4u * LIST_LEMKE + 3u]) {
+    let entry = lemke_entry(gid.x);
+    if entry.x == NONE {
         return;
     }
-    let at = list_at(LIST_LEMKE) + 2u * gid.x;
-    let w = atomicLoad(&lists[at]);
-    let listed = atomicLoad(&lists[at + 1u]);
+    let w = entry.x;
+    let listed = entry.y;
     let out = sp.out_at + 4u * w;
     let count = words[out];
     let islands = words[out + 3u];

@@ -35,12 +35,12 @@ fn resolve_basis(n: u32) -> u32 {
 // whose check fails is flagged NOT_SOLVED (the CPU steps it).
 @compute @workgroup_size(64)
 fn world_lemke_check(@builtin(global_invocation_id) gid: vec3<u32>) {
-    if gid.x >= atomicLoad(&lists[4u * LIST_LEMKE + 3u]) {
+    let entry = lemke_entry(gid.x);
+    if entry.x == NONE {
         return;
     }
-    let at = list_at(LIST_LEMKE) + 2u * gid.x;
-    let w = atomicLoad(&lists[at]);
-    let listed = atomicLoad(&lists[at + 1u]);
+    let w = entry.x;
+    let listed = entry.y;
     let out = sp.out_at + 4u * w;
     if words[out + 2u] != 0u {
         return;

@@ -932,6 +932,17 @@ fn end_solve(w: u32, flags0: u32, bases: u32, max_error: Scalar) -> u32 {
 // WARM_TRIED where the world's warm bases were tried first.
 const WARM_TRIED: u32 = 0x80000000u;
 
+// Entry k of the Lemke list (world_solve.wgsl defer_world): the world and
+// its listed islands; (NONE, 0) past the list's end (the indirect
+// dispatch's last workgroup).
+fn lemke_entry(k: u32) -> vec2<u32> {
+    if k >= atomicLoad(&lists[4u * LIST_LEMKE + 3u]) {
+        return vec2<u32>(NONE, 0u);
+    }
+    let at = list_at(LIST_LEMKE) + 2u * k;
+    return vec2<u32>(atomicLoad(&lists[at]), atomicLoad(&lists[at + 1u]));
+}
+
 // The check of Lemke's islands in the resident step (shaders/world_solve.wgsl's
 // header; a module of its own, composed after world_step.wgsl,
 // world_bodies.wgsl, shaders/lemke.wgsl's functions and world_island.wgsl):
@@ -969,12 +980,12 @@ fn resolve_basis(n: u32) -> u32 {
 // whose check fails is flagged NOT_SOLVED (the CPU steps it).
 @compute @workgroup_size(64)
 fn world_lemke_check(@builtin(global_invocation_id) gid: vec3<u32>) {
-    if gid.x >= atomicLoad(&lists[4u * LIST_LEMKE + 3u]) {
+    let entry = lemke_entry(gid.x);
+    if entry.x == NONE {
         return;
     }
-    let at = list_at(LIST_LEMKE) + 2u * gid.x;
-    let w = atomicLoad(&lists[at]);
-    let listed = atomicLoad(&lists[at + 1u]);
+    let w = entry.x;
+    let listed = entry.y;
     let out = sp.out_at + 4u * w;
     if words[out + 2u] != 0u {
         return;

@@ -932,6 +932,17 @@ fn end_solve(w: u32, flags0: u32, bases: u32, max_error: Scalar) -> u32 {
 // WARM_TRIED where the world's warm bases were tried first.
 const WARM_TRIED: u32 = 0x80000000u;
 
+// Entry k of the Lemke list (world_solve.wgsl defer_world): the world and
+// its listed islands; (NONE, 0) past the list's end (the indirect
+// dispatch's last workgroup).
+fn lemke_entry(k: u32) -> vec2<u32> {
+    if k >= atomicLoad(&lists[4u * LIST_LEMKE + 3u]) {
+        return vec2<u32>(NONE, 0u);
+    }
+    let at = list_at(LIST_LEMKE) + 2u * k;
+    return vec2<u32>(atomicLoad(&lists[at]), atomicLoad(&lists[at + 1u]));
+}
+
 // Lemke's path for the islands of the resident step whose warm basis did
 // not hold (shaders/world_solve.wgsl's header; a module of its own,
 // composed after world_step.wgsl, world_bodies.wgsl, shaders/lemke.wgsl's
@@ -997,12 +1008,12 @@ fn lemke_island(w: u32, n: u32, members: ptr<function, array<u32, 16>>, spent: p
 // state).
 @compute @workgroup_size(64)
 fn world_lemke(@builtin(global_invocation_id) gid: vec3<u32>) {
-    if gid.x >= atomicLoad(&lists[4u * LIST_LEMKE + 3u]) {
+    let entry = lemke_entry(gid.x);
+    if entry.x == NONE {
         return;
     }
-    let at = list_at(LIST_LEMKE) + 2u * gid.x;
-    let w = atomicLoad(&lists[at]);
-    let listed = atomicLoad(&lists[at + 1u]);
+    let w = entry.x;
+    let listed = entry.y;
     let out = sp.out_at + 4u * w;
     let count = words[out];
     let islands = words[out + 3u];

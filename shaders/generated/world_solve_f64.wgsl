@@ -932,6 +932,17 @@ fn end_solve(w: u32, flags0: u32, bases: u32, max_error: Scalar) -> u32 {
 // WARM_TRIED where the world's warm bases were tried first.
 const WARM_TRIED: u32 = 0x80000000u;
 
+// Entry k of the Lemke list (world_solve.wgsl defer_world): the world and
+// its listed islands; (NONE, 0) past the list's end (the indirect
+// dispatch's last workgroup).
+fn lemke_entry(k: u32) -> vec2<u32> {
+    if k >= atomicLoad(&lists[4u * LIST_LEMKE + 3u]) {
+        return vec2<u32>(NONE, 0u);
+    }
+    let at = list_at(LIST_LEMKE) + 2u * k;
+    return vec2<u32>(atomicLoad(&lists[at]), atomicLoad(&lists[at + 1u]));
+}
+
 // The solve phase of the resident step, per world (shaders/world_step.wgsl's
 // header; a module of its own, composed after world_step.wgsl,
 // world_bodies.wgsl and world_island.wgsl): each island of a world
