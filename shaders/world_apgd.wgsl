@@ -1,7 +1,8 @@
-// APGD in the frictional phase of shaders/world_step.wgsl (composed after
-// world_friction.wgsl, whose header gives the method, the layout of a
-// world's region and the rounds; `world_friction` calls apgd_start after
-// an island's assembly and apgd_round in each round): the twin of
+// APGD in the frictional phase of shaders/world_step.wgsl (module
+// world_friction_apgd, composed after world_friction.wgsl, whose header
+// gives the method, the layout of a world's region and the rounds;
+// `world_friction` calls method_start (apgd_start) after an island's
+// assembly and method_round (apgd_round) in each round): the twin of
 // friction/apgd.rs, its arithmetic in its order, on the island's W, q and
 // μ in `scratch`. accept_step and apgd_momentum are friction_common.wgsl's
 // (the batch APGD kernels' own).
@@ -134,19 +135,20 @@ fn apgd_accept(base: u32, n: u32, q2: Scalar, fs: u32) -> bool {
 
 // The APGD iterations of a round within `budget` from `spent` (the twin's
 // loop: stop at the tolerance or the cap, else a try, doubling L where it
-// fails): (loop work spent, 1 done, 2 failed), the best iterate and its u
+// fails): (loop work spent, ROUND_DONE or ROUND_FAILED; ROUND_SPENT where
+// the budget ends it first), the best iterate and its u
 // in x and u where done.
 fn apgd_round(base: u32, n: u32, q2: Scalar, fs: u32, spent0: u32) -> vec2<u32> {
     let cost = n * n + 10u * n + 16u;
     let a = base + F_APGD;
     var spent = spent0;
-    var end = 0u;
+    var end = ROUND_SPENT;
     loop {
         if scratch[a + 2u] <= sp.friction_tolerance || words[fs + 2u] >= sp.max_iterations {
             copy_entries(base, n, F_BEST, F_X);
             copy_entries(base, n, F_UBEST, F_U);
             spent += 2u * n;
-            end = 1u;
+            end = ROUND_DONE;
             break;
         }
         if spent + cost > sp.friction_budget {
@@ -156,17 +158,32 @@ fn apgd_round(base: u32, n: u32, q2: Scalar, fs: u32, spent0: u32) -> vec2<u32> 
         let l = scratch[a + 1u];
         if apgd_try(base, n, l) {
             if !apgd_accept(base, n, q2, fs) {
-                end = 2u;
+                end = ROUND_FAILED;
                 break;
             }
         } else {
             scratch[a + 1u] = Scalar(2.0) * l;
             words[fs + 3u] += 1u;
             if words[fs + 3u] >= MAX_BACKTRACKS || !finite(scratch[a + 1u]) {
-                end = 2u;
+                end = ROUND_FAILED;
                 break;
             }
         }
     }
     return vec2<u32>(spent, end);
+}
+
+// Loop work of APGD's start after an island's assembly.
+fn method_start_cost(n: u32) -> u32 {
+    return 4u * n * n + 16u * n + 16u;
+}
+
+// APGD's start after an island's assembly (apgd_start).
+fn method_start(base: u32, n: u32) -> bool {
+    return apgd_start(base, n, sum_squares_at(base + F_Q, 3u * n));
+}
+
+// APGD's iterations of a round (apgd_round).
+fn method_round(base: u32, n: u32, q2: Scalar, fs: u32, spent0: u32) -> vec2<u32> {
+    return apgd_round(base, n, q2, fs, spent0);
 }

@@ -109,8 +109,8 @@ fn keep_manifold(w: u32, c: u32, m: Manifold, flipped: bool) -> u32 {
 fn candidate_pairs(@builtin(global_invocation_id) gid: vec3<u32>) {
     let w = gid.x;
     if w == 0u {
-        // No world left to world_solve yet this step.
-        clear_list(LIST_SOLVE);
+        // No world left to world_lemke yet this step.
+        clear_list(LIST_LEMKE);
     }
     if w >= sp.count {
         return;

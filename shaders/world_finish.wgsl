@@ -1,33 +1,11 @@
-// Shared by the resident step's solve (shaders/world_solve.wgsl) and
-// frictional (shaders/world_friction.wgsl) phases, composed before both:
-// the bodies' velocities of a world while its islands are solved, the
-// sides of a contact's rows, and step.rs finish.
-
-// A side of a contact row with no dynamic body (static in the step's scene).
-const NONE: u32 = 0xffffffffu;
-// The dynamic body of each side of an island's rows (contact_sides), row
-// i at i.
-var<private> sides: array<vec2<u32>, 16>;
-// Per body of the world: v* and then the velocities after the impulses.
-var<private> lin: array<vec3<Scalar>, 16>;
-var<private> ang: array<vec3<Scalar>, 16>;
-
-// The dynamic body of each side of contact `slot` (global) in the step's
-// scene, NONE where that side is static or not moving: the `sides` of its
-// rows (friction rows of world_friction.wgsl included).
-fn contact_sides(slot: u32, moving: u32) -> vec2<u32> {
-    let key = sp.keys_at + 4u * slot;
-    let a = words[key];
-    let b = words[key + 1u];
-    var s = vec2<u32>(NONE, NONE);
-    if ((moving >> a) & 1u) != 0u {
-        s.x = a;
-    }
-    if ((moving >> b) & 1u) != 0u {
-        s.y = b;
-    }
-    return s;
-}
+// The finish of the resident step (shaders/world_step.wgsl's header; a
+// module of its own, composed after world_step.wgsl and world_bodies.wgsl):
+// the impulses of the solve (cpu/impulses.rs), step.rs finish (poses, sleep
+// counters) and the world's figures, for every world the solve stepped or
+// flagged and every world world_friction
+// finished (F_DONE: its reactions remembered first), in one dispatch after
+// the frictional rounds. A world world_friction has not finished (still
+// HANDED) is left to the host.
 
 // step.rs integrate_rotation: normalise(q + ½Δt (ω, 0) ⊗ q).
 fn integrate_rotation(q: vec4<Scalar>, w: vec3<Scalar>, dt: Scalar) -> vec4<Scalar> {
@@ -44,24 +22,6 @@ fn integrate_rotation(q: vec4<Scalar>, w: vec3<Scalar>, dt: Scalar) -> vec4<Scal
 fn normalize4(q: vec4<Scalar>) -> vec4<Scalar> {
     let len = sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
     return q * (Scalar(1.0) / len);
-}
-
-// lin, ang: the velocities of world w's bodies in `scratch`.
-fn load_velocities(w: u32) {
-    let first = worlds[w].x;
-    for (var k = 0u; k < min(worlds[w].y, MAX_BODIES); k++) {
-        lin[k] = vec3_at_scratch(6u * (first + k));
-        ang[k] = vec3_at_scratch(6u * (first + k) + 3u);
-    }
-}
-
-// World w's velocities (lin, ang) into `scratch`, for world_finish.
-fn store_velocities(w: u32) {
-    let first = worlds[w].x;
-    for (var k = 0u; k < min(worlds[w].y, MAX_BODIES); k++) {
-        put_scratch(6u * (first + k), lin[k]);
-        put_scratch(6u * (first + k) + 3u, ang[k]);
-    }
 }
 
 // step.rs finish for world w after its impulses (velocities in lin, ang):
@@ -158,3 +118,75 @@ fn finish_world(w: u32, flags0: u32, max_penetration: Scalar, max_error: Scalar)
     records[r + 4u] = Scalar(awake);
 }
 
+
+// cpu/impulses.rs velocities_after for world w's contacts: v += M⁻¹Jᵀ z
+// per side (the response world_assemble kept, z the solve's), contact
+// after contact in slot order (zero impulses skipped): each body takes its
+// island's impulses in the island's order.
+fn apply_impulses(w: u32) {
+    let out = sp.out_at + 4u * w;
+    let moving = words[out + 1u];
+    let slot0 = w * sp.slots;
+    for (var c = 0u; c < words[out]; c++) {
+        let z = scratch[sp.contacts_at + (slot0 + c) * CP + 7u];
+        if z == Scalar(0.0) {
+            continue;
+        }
+        let s = contact_sides(slot0 + c, moving);
+        let r = row_at(slot0 + c);
+        if s.x != NONE {
+            lin[s.x] += vec3_at_scratch(r + 1u) * z;
+            ang[s.x] += vec3_at_scratch(r + 4u) * z;
+        }
+        if s.y != NONE {
+            lin[s.y] += vec3_at_scratch(r + 7u) * z;
+            ang[s.y] += vec3_at_scratch(r + 10u) * z;
+        }
+    }
+}
+
+// WarmMemory::record of a finished world's step (every island solved):
+// its contacts' ids and reactions replace the memory (world_friction.wgsl's
+// header gives the layout).
+fn remember_reactions(w: u32, count: u32) {
+    if sp.warm_start == 0u {
+        return;
+    }
+    let m = sp.memory_at + w * (sp.slots + 1u);
+    words[m] = count;
+    for (var e = 0u; e < count; e++) {
+        let slot = w * sp.slots + e;
+        words[m + 1u + e] = contact_key(slot);
+        put_scratch(sp.memory_r_at + 3u * slot, vec3_at_scratch(sp.reactions_at + 3u * slot));
+    }
+}
+
+// step.rs finish for world w: from v* and the solve's impulses
+// (`apply_impulses`), or from the velocities world_friction left in
+// `scratch` (F_DONE); a world still with world_friction (HANDED, not
+// F_DONE) is skipped, a flagged world keeps its state.
+@compute @workgroup_size(64)
+fn world_finish(@builtin(global_invocation_id) gid: vec3<u32>) {
+    let w = gid.x;
+    if w >= sp.count {
+        return;
+    }
+    let out = sp.out_at + 4u * w;
+    var flags = words[out + 2u];
+    if flags == HANDED {
+        let fs = sp.fstate_at + 4u * w;
+        if words[fs] != F_DONE {
+            return;
+        }
+        words[fs] = F_IDLE;
+        remember_reactions(w, words[out]);
+        flags = 0u;
+        load_velocities(w);
+    } else {
+        load_velocities(w);
+        if flags == 0u {
+            apply_impulses(w);
+        }
+    }
+    finish_world(w, flags, records[w * REC + 2u], records[w * REC + 3u]);
+}

@@ -1,12 +1,14 @@
-// The frictional phase of shaders/world_step.wgsl (a module of its own:
-// composed after world_step.wgsl and world_finish.wgsl, before
-// world_apgd.wgsl and the cone projection of friction_common.wgsl):
+// The frictional phase of shaders/world_step.wgsl (two modules, one per
+// method: composed after world_step.wgsl and world_bodies.wgsl, before
+// world_sweeps.wgsl (module world_friction: Jacobi, Gauss–Seidel) or
+// world_apgd.wgsl (module world_friction_apgd), and the cone projection of
+// friction_common.wgsl; each module holds only its method's code):
 // the islands of the worlds with friction (a contact with μ > 0 this step;
-// world_solve hands them over with the phase F_ASSEMBLE and the flag HANDED,
-// which stays until the world is finished), one invocation per world.
-// `world_friction` is dispatched several times per step (rounds, after
-// world_solve and world_finish, in the same submission); each invocation goes on where the
-// last round stopped and does at most `sp.friction_budget` of loop work
+// world_solve_warm hands them over with the phase F_ASSEMBLE and the flag
+// HANDED, which stays until the world is finished), one invocation per
+// world. `world_friction` is dispatched several times per step (rounds,
+// after the solve, in the same submission); each invocation goes on where
+// the last round stopped and does at most `sp.friction_budget` of loop work
 // (llvmpipe ends an invocation's loops after about 65,535 iterations in
 // all, counted over 8 invocations in lockstep). A world
 // not finished after the step's last round keeps HANDED: the host steps it
@@ -29,7 +31,9 @@
 //   tolerance, else the world is flagged NOT_SOLVED (the CPU steps it);
 //   the Coulomb error (Siconos fc3d with De Saxcé's correction) is the
 //   world's max_error, as the CPU reports it;
-// - the impulses (apply_friction_impulses), then `finish_world`.
+// - the impulses (apply_friction_impulses); the world, every island
+//   solved, is left F_DONE: world_finish (after the last round) remembers
+//   its reactions and finishes it.
 //
 // With APGD (sp.gauss_seidel == METHOD_APGD) instead of the sweeps: the
 // twin of friction/apgd.rs `apgd` (from the same start; L from
@@ -62,8 +66,18 @@ const F_BEST: u32 = 3824u;
 const F_UBEST: u32 = 3872u;
 const F_APGD: u32 = 3920u;
 
-// sp.gauss_seidel: 0 Jacobi, 1 Gauss–Seidel sweeps, METHOD_APGD.
+// sp.gauss_seidel: 0 Jacobi, 1 Gauss–Seidel sweeps, METHOD_APGD (the
+// module world_friction_apgd; the sweeps are the module world_friction).
 const METHOD_APGD: u32 = 2u;
+
+// The method's iterations in a round (`method_round`: world_sweeps.wgsl or
+// world_apgd.wgsl, one in each module): the budget spent first (the next
+// round goes on), done, failed (the world flagged NOT_SOLVED), or done on
+// a non-finite stop measure (judged as failed).
+const ROUND_SPENT: u32 = 0u;
+const ROUND_DONE: u32 = 1u;
+const ROUND_FAILED: u32 = 2u;
+const ROUND_NOT_FINITE: u32 = 3u;
 
 // Below this scale the stop measure is not divided (projected.rs SCALE_FLOOR).
 const SCALE_FLOOR: Scalar = Scalar(2.220446049250313e-16);
@@ -84,7 +98,7 @@ fn tangent_basis(n: vec3<Scalar>) -> array<vec3<Scalar>, 2> {
 
 // I⁻¹ v of body b (global) as the CPU's scene body holds I⁻¹: the matrix
 // R diag(1/I) Rᵀ (RigidBody::inv_inertia_at, glam's products in their
-// order), then glam's mul_vec3 (world_solve's inv_inertia_mul rotates the
+// order), then glam's mul_vec3 (world_island.wgsl's inv_inertia_mul rotates the
 // vector instead: the same up to rounding, which would part the sweeps'
 // iterates from the CPU's).
 fn inv_inertia_mat_mul(b: u32, v: vec3<Scalar>) -> vec3<Scalar> {
@@ -334,26 +348,6 @@ fn stop_measure(base: u32, n: u32, q2: Scalar, xs: u32, us: u32) -> Scalar {
     return e;
 }
 
-// One sweep of projected.rs `sweeps` (u from the iteration's start; for
-// Gauss–Seidel each contact's rows again from the reactions so far).
-fn sweep(base: u32, n: u32) {
-    let dim = 3u * n;
-    for (var i = 0u; i < n; i++) {
-        let c = 3u * i;
-        if sp.gauss_seidel != 0u {
-            contact_velocity(base, dim, i, base + F_X, base + F_U);
-        }
-        let h = scratch[base + F_ETA + i];
-        let x = vec3_x(base, i);
-        let u = vec3_u(base, i);
-        let p = project_on_cone(
-            vec3<Scalar>(x.x - h * u.x, x.y - h * u.y, x.z - h * u.z),
-            scratch[base + F_MU + i],
-        );
-        put_scratch(base + F_X + c, p);
-    }
-}
-
 // ProjectedSolution::judge of x with u = W x + q (the sweeps' last
 // iteration computed it from this x, which it left as it was), the cone
 // error (the status) and the Coulomb error
@@ -421,7 +415,7 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
     }
     let fs = sp.fstate_at + 4u * w;
     var phase = words[fs];
-    if phase == F_IDLE {
+    if phase == F_IDLE || phase == F_DONE {
         return;
     }
     records[w * REC + 5u] += Scalar(1.0);
@@ -459,12 +453,8 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
         }
         let dim = 3u * n;
         // Costs: the loop iterations of each part (see contact_velocity).
-        let apgd = sp.gauss_seidel == METHOD_APGD;
         if phase == F_ASSEMBLE {
-            var cost = 12u * n * n + n * (sp.slots + 1u) + 64u;
-            if apgd {
-                cost += 4u * n * n + 16u * n + 16u;
-            }
+            let cost = 12u * n * n + n * (sp.slots + 1u) + 64u + method_start_cost(n);
             if spent > count && spent + cost > sp.friction_budget {
                 break;
             }
@@ -474,48 +464,20 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
             words[fs + 3u] = 0u;
             phase = F_SWEEP;
             words[fs] = phase;
-            if apgd && !apgd_start(base, n, sum_squares_at(base + F_Q, dim)) {
+            if !method_start(base, n) {
                 flags |= NOT_SOLVED;
                 break;
             }
         }
-        // Iterations of `sweeps`: u, the stop measure, a sweep.
-        let cost = 2u * n * n + 8u * n + 16u;
         let q2 = sum_squares_at(base + F_Q, dim);
-        var done = false;
-        var failed = false;
-        if apgd {
-            let r = apgd_round(base, n, q2, fs, spent);
-            spent = r.x;
-            if r.y == 2u {
-                flags |= NOT_SOLVED;
-                break;
-            }
-            done = r.y == 1u;
+        let r = method_round(base, n, q2, fs, spent);
+        spent = r.x;
+        if r.y == ROUND_FAILED {
+            flags |= NOT_SOLVED;
+            break;
         }
-        loop {
-            if apgd {
-                break;
-            }
-            if spent + cost > sp.friction_budget {
-                break;
-            }
-            spent += cost;
-            let it = words[fs + 2u];
-            friction_velocity(base, n, F_X, F_U);
-            let err = stop_measure(base, n, q2, F_X, F_U);
-            if !finite(err) {
-                failed = true;
-                done = true;
-                break;
-            }
-            if err <= sp.friction_tolerance || it >= sp.max_iterations {
-                done = true;
-                break;
-            }
-            sweep(base, n);
-            words[fs + 2u] = it + 1u;
-        }
+        let done = r.y == ROUND_DONE || r.y == ROUND_NOT_FINITE;
+        let failed = r.y == ROUND_NOT_FINITE;
         // The judgement's loops (no product: u is the last iteration's).
         let judged = 16u * n + 64u;
         if !done || spent + judged > sp.friction_budget {
@@ -551,10 +513,9 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
         return;
     }
     if finished {
-        words[fs] = F_IDLE;
-        remember_reactions(w, count);
-        let r = w * REC;
-        finish_world(w, 0u, records[r + 2u], records[r + 3u]);
+        // world_finish remembers its reactions and finishes it after the
+        // step's last round.
+        words[fs] = F_DONE;
     }
 }
 
@@ -564,11 +525,7 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
 // step.rs contact_id without the world); in `scratch` from
 // sp.memory_r_at, 3 scalars per entry (r_n, r_t₁, r_t₂). This step's
 // reactions wait in `scratch` from sp.reactions_at (3 per contact slot)
-// until the world is finished.
-fn contact_key(slot: u32) -> u32 {
-    let key = sp.keys_at + 4u * slot;
-    return (words[key] << 16u) | (words[key + 1u] << 12u) | (words[key + 2u] & 0xfffu);
-}
+// until the world is finished (world_finish.wgsl remember_reactions).
 
 // The warm start of contact `slot` (world_friction.rs: the remembered
 // reaction of its id, the last entry of that id; 0 where none or warm
@@ -592,19 +549,4 @@ fn warm_start(slot: u32) -> vec3<Scalar> {
 fn keep_reaction(slot: u32, r: vec3<Scalar>) {
     scratch[sp.contacts_at + slot * CP + 7u] = r.x;
     put_scratch(sp.reactions_at + 3u * slot, r);
-}
-
-// WarmMemory::record of a finished world's step (every island solved):
-// its contacts' ids and reactions replace the memory.
-fn remember_reactions(w: u32, count: u32) {
-    if sp.warm_start == 0u {
-        return;
-    }
-    let m = sp.memory_at + w * (sp.slots + 1u);
-    words[m] = count;
-    for (var e = 0u; e < count; e++) {
-        let slot = w * sp.slots + e;
-        words[m + 1u + e] = contact_key(slot);
-        put_scratch(sp.memory_r_at + 3u * slot, vec3_at_scratch(sp.reactions_at + 3u * slot));
-    }
 }

@@ -635,18 +635,24 @@ fn collide_shapes(x: Placed, y: Placed, margin: Scalar) -> Manifold {
 //   `world_contacts`: waking rounds, the contacts in pair order);
 //   shaders/world_collide.wgsl;
 // - module world_solve (after collide.wgsl's functions above its pair
-//   functions and shaders/lemke.wgsl's, with shaders/world_finish.wgsl):
-//   `world_solve_warm` per world (src/islands.rs `find_islands`,
-//   src/cpu/assembly.rs `assemble_contact` / `assemble_island`, the warm
-//   bases of world_cpu.rs `warm_settle`, the door's check `lcp_error` <=
-//   tolerance, `apply_impulses`; a world whose warm bases do not all hold
-//   is listed), `world_solve` per listed world (the same with Lemke's path
-//   `lemke_pivots`; per world where warm bases are off), `world_finish`
-//   per world (step.rs `finish` with `integrate_rotation`, the world's
-//   figures); shaders/world_solve.wgsl;
-// - module world_friction (the same with shaders/world_friction.wgsl,
-//   world_apgd.wgsl and friction_common.wgsl's cone projection):
-//   `world_friction` per world handed over by the solve, in rounds.
+//   functions and shaders/lemke.wgsl's, with shaders/world_bodies.wgsl
+//   and world_island.wgsl): `world_solve_warm` per world (src/islands.rs
+//   `find_islands`, src/cpu/assembly.rs `assemble_contact` /
+//   `assemble_island`, the warm bases of world_cpu.rs `warm_settle`, the
+//   door's check `lcp_error` <= tolerance, `apply_impulses`; the islands
+//   whose warm basis does not hold, every island without warm bases,
+//   listed with their world); shaders/world_solve.wgsl;
+// - module world_lemke (the same, shaders/world_lemke.wgsl):
+//   `world_lemke` per listed world (its listed islands by Lemke's path
+//   `lemke_pivots`, the basis re-solved, the check, the impulses);
+// - module world_friction (after the same, shaders/world_bodies.wgsl,
+//   world_friction.wgsl, world_apgd.wgsl and friction_common.wgsl's cone
+//   projection): `world_friction` per world handed over by the solve, in
+//   rounds;
+// - module world_finish (shaders/world_bodies.wgsl, world_finish.wgsl):
+//   `world_finish` per world (step.rs `finish` with `integrate_rotation`,
+//   the world's figures; a world world_friction finished: its reactions
+//   remembered first).
 // Several entry points rather than one: llvmpipe ends every loop of an
 // invocation after about 65,535 iterations in all, and each dispatch
 // starts that count afresh; each phase's code is a fraction of the step's
@@ -668,14 +674,17 @@ fn collide_shapes(x: Placed, y: Placed, margin: Scalar) -> Manifold {
 // - state: per body BS scalars (position 3, orientation x, y, z, w,
 //   velocity 3, angular velocity 3);
 // - scratch: per body 6 scalars (v*, then v after the impulses), then per
-//   contact slot CP scalars (point 3, normal 3, gap, z); from
+//   contact slot CP scalars (point 3, normal 3, gap, z), then per contact
+//   slot ROW scalars (`row_at`: q, the response M⁻¹Jᵀ of sides a and b,
+//   the contact's row of its island's M (world_assemble), the basic
+//   variable of its row where Lemke's path ended (world_lemke)); from
 //   params.pairs_at per world params.pair_slots pair records of CP scalars
 //   (point 3, normal 3, gap, feature), SLOTS per candidate pair;
 // - words: per body 2 (asleep, quiet steps); from params.out_at per world 4
 //   (contacts, moving-body mask, flags, islands); from params.keys_at per
 //   contact slot 4 (a, b, feature, island);
 // - records: per world REC scalars (kinetic, potential, max penetration,
-//   max error, awake, friction rounds, and world_solve's warm-start
+//   max error, awake, friction rounds, and the solve's warm-start
 //   memory: a hash of last step's contact ids, their bases);
 // - scratch, from params.reach_at: per body its reach this step
 //   (candidate_pairs);
@@ -684,8 +693,8 @@ fn collide_shapes(x: Placed, y: Placed, margin: Scalar) -> Manifold {
 //   the narrow phase: points | OVERFLOW | CUT);
 // - lists: four headers (workgroups x, y, z of an indirect dispatch, the
 //   count), then the entries of each list (`list_at`): the worlds
-//   `world_solve_warm` leaves to `world_solve` (emptied by
-//   candidate_pairs), the box–box, box–plane and sphere pairs
+//   `world_solve_warm` leaves to `world_lemke` with their islands (two
+//   words each; emptied by candidate_pairs), the box–box, box–plane and sphere pairs
 //   (world << 8 | candidate; filled by candidate_pairs, emptied by
 //   world_contacts for the next step).
 
@@ -697,6 +706,7 @@ const BC: u32 = 12u;
 const BS: u32 = 13u;
 const CP: u32 = 8u;
 const REC: u32 = 8u;
+const ROW: u32 = 30u;
 const ISLAND_MAX: u32 = 16u;
 
 const CONTACTS_FULL: u32 = 1u;
@@ -704,7 +714,7 @@ const ISLAND_TOO_LARGE: u32 = 2u;
 const NOT_SOLVED: u32 = 4u;
 const NON_FINITE: u32 = 8u;
 const BUDGET: u32 = 16u;
-const HANDED: u32 = 32u; // with world_friction until it finishes the world (world_solve.wgsl)
+const HANDED: u32 = 32u; // with world_friction until it finishes the world (world_solve.wgsl begin_world)
 
 struct StepParams {
     // Worlds.
@@ -741,7 +751,7 @@ struct StepParams {
     // records per world (SLOTS per candidate pair).
     pairs_at: u32,
     pair_slots: u32,
-    // 1: world_solve tries last step's bases first (the CPU path's
+    // 1: world_solve_warm tries last step's bases first (the CPU path's
     // warm_settle: warm starts on, a method that predicts).
     warm_bases: u32,
     // candidate_pairs' lists: where the worlds' candidates start in
@@ -812,21 +822,31 @@ fn placed_body(k: u32) -> Placed {
     return placed_from(kind, size, vec3_at_state(o), q);
 }
 
+// Where contact slot `slot`'s row starts in `scratch`: after the contact
+// slots (q, response 12, the row of M over the island's members 16, the
+// row's basic variable at Lemke's end 1).
+fn row_at(slot: u32) -> u32 {
+    return sp.contacts_at + sp.count * sp.slots * CP + slot * ROW;
+}
+
 // The frictional phase's (shaders/world_friction.wgsl) per-world phases,
-// set by world_solve's handover.
+// set by the solve's handover (world_solve.wgsl begin_world); F_DONE:
+// every island solved, for world_finish to finish.
 const F_IDLE: u32 = 0u;
 const F_ASSEMBLE: u32 = 1u;
 const F_SWEEP: u32 = 2u;
+const F_DONE: u32 = 3u;
 
 // μ = √(μ_a μ_b) of bodies ga, gb (global).
 fn pair_friction(ga: u32, gb: u32) -> Scalar {
     return sqrt(body_const(ga, 11u) * body_const(gb, 11u));
 }
 
-// Family work lists in `lists` (header at 4 f: workgroups x, y, z, count):
-// 0 the worlds world_solve_warm leaves to world_solve, 1 box–box pairs,
-// 2 box–plane pairs, 3 pairs with a sphere.
-const LIST_SOLVE: u32 = 0u;
+// Work lists in `lists` (header at 4 f: workgroups x, y, z, count): 0
+// the worlds world_solve_warm leaves to world_lemke (two words each: the
+// world, its islands for Lemke's path), 1 box–box pairs, 2 box–plane
+// pairs, 3 pairs with a sphere.
+const LIST_LEMKE: u32 = 0u;
 const LIST_BOX_BOX: u32 = 1u;
 const LIST_BOX_PLANE: u32 = 2u;
 const LIST_SPHERE: u32 = 3u;
@@ -837,13 +857,13 @@ fn pairs_per_world() -> u32 {
 }
 
 // Where list f's entries start in `lists`: after the four headers, the
-// solve list (a world each), then the pair lists (pairs_per_world() per
-// world each).
+// Lemke list (two words a world), then the pair lists (pairs_per_world()
+// per world each).
 fn list_at(f: u32) -> u32 {
-    if f == LIST_SOLVE {
+    if f == LIST_LEMKE {
         return 16u;
     }
-    return 16u + sp.count + (f - 1u) * sp.count * pairs_per_world();
+    return 16u + 2u * sp.count + (f - 1u) * sp.count * pairs_per_world();
 }
 
 // Appends `entry` to list f, its workgroups (of 64) grown to cover it.
@@ -988,8 +1008,8 @@ fn keep_manifold(w: u32, c: u32, m: Manifold, flipped: bool) -> u32 {
 fn candidate_pairs(@builtin(global_invocation_id) gid: vec3<u32>) {
     let w = gid.x;
     if w == 0u {
-        // No world left to world_solve yet this step.
-        clear_list(LIST_SOLVE);
+        // No world left to world_lemke yet this step.
+        clear_list(LIST_LEMKE);
     }
     if w >= sp.count {
         return;

@@ -1,4 +1,4 @@
-// GENERATED from shaders/collide.wgsl (functions above its pair functions) + shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_finish.wgsl + shaders/world_friction.wgsl + shaders/world_apgd.wgsl + shaders/friction_common.wgsl (project_on_cone on) by src/gpu/shaders/compose.rs: do not edit.
+// GENERATED from shaders/collide.wgsl (functions above its pair functions) + shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_bodies.wgsl + shaders/world_friction.wgsl + shaders/world_sweeps.wgsl + shaders/friction_common.wgsl (project_on_cone on) by src/gpu/shaders/compose.rs: do not edit.
 // Regenerate: LCPBATCH_BLESS_SHADERS=1 cargo test --release generated_shaders_are_committed
 
 // Narrow phase: the contact points of candidate pairs of bodies (entry
@@ -425,18 +425,24 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 //   `world_contacts`: waking rounds, the contacts in pair order);
 //   shaders/world_collide.wgsl;
 // - module world_solve (after collide.wgsl's functions above its pair
-//   functions and shaders/lemke.wgsl's, with shaders/world_finish.wgsl):
-//   `world_solve_warm` per world (src/islands.rs `find_islands`,
-//   src/cpu/assembly.rs `assemble_contact` / `assemble_island`, the warm
-//   bases of world_cpu.rs `warm_settle`, the door's check `lcp_error` <=
-//   tolerance, `apply_impulses`; a world whose warm bases do not all hold
-//   is listed), `world_solve` per listed world (the same with Lemke's path
-//   `lemke_pivots`; per world where warm bases are off), `world_finish`
-//   per world (step.rs `finish` with `integrate_rotation`, the world's
-//   figures); shaders/world_solve.wgsl;
-// - module world_friction (the same with shaders/world_friction.wgsl,
-//   world_apgd.wgsl and friction_common.wgsl's cone projection):
-//   `world_friction` per world handed over by the solve, in rounds.
+//   functions and shaders/lemke.wgsl's, with shaders/world_bodies.wgsl
+//   and world_island.wgsl): `world_solve_warm` per world (src/islands.rs
+//   `find_islands`, src/cpu/assembly.rs `assemble_contact` /
+//   `assemble_island`, the warm bases of world_cpu.rs `warm_settle`, the
+//   door's check `lcp_error` <= tolerance, `apply_impulses`; the islands
+//   whose warm basis does not hold, every island without warm bases,
+//   listed with their world); shaders/world_solve.wgsl;
+// - module world_lemke (the same, shaders/world_lemke.wgsl):
+//   `world_lemke` per listed world (its listed islands by Lemke's path
+//   `lemke_pivots`, the basis re-solved, the check, the impulses);
+// - module world_friction (after the same, shaders/world_bodies.wgsl,
+//   world_friction.wgsl, world_apgd.wgsl and friction_common.wgsl's cone
+//   projection): `world_friction` per world handed over by the solve, in
+//   rounds;
+// - module world_finish (shaders/world_bodies.wgsl, world_finish.wgsl):
+//   `world_finish` per world (step.rs `finish` with `integrate_rotation`,
+//   the world's figures; a world world_friction finished: its reactions
+//   remembered first).
 // Several entry points rather than one: llvmpipe ends every loop of an
 // invocation after about 65,535 iterations in all, and each dispatch
 // starts that count afresh; each phase's code is a fraction of the step's
@@ -458,14 +464,17 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 // - state: per body BS scalars (position 3, orientation x, y, z, w,
 //   velocity 3, angular velocity 3);
 // - scratch: per body 6 scalars (v*, then v after the impulses), then per
-//   contact slot CP scalars (point 3, normal 3, gap, z); from
+//   contact slot CP scalars (point 3, normal 3, gap, z), then per contact
+//   slot ROW scalars (`row_at`: q, the response M⁻¹Jᵀ of sides a and b,
+//   the contact's row of its island's M (world_assemble), the basic
+//   variable of its row where Lemke's path ended (world_lemke)); from
 //   params.pairs_at per world params.pair_slots pair records of CP scalars
 //   (point 3, normal 3, gap, feature), SLOTS per candidate pair;
 // - words: per body 2 (asleep, quiet steps); from params.out_at per world 4
 //   (contacts, moving-body mask, flags, islands); from params.keys_at per
 //   contact slot 4 (a, b, feature, island);
 // - records: per world REC scalars (kinetic, potential, max penetration,
-//   max error, awake, friction rounds, and world_solve's warm-start
+//   max error, awake, friction rounds, and the solve's warm-start
 //   memory: a hash of last step's contact ids, their bases);
 // - scratch, from params.reach_at: per body its reach this step
 //   (candidate_pairs);
@@ -474,8 +483,8 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 //   the narrow phase: points | OVERFLOW | CUT);
 // - lists: four headers (workgroups x, y, z of an indirect dispatch, the
 //   count), then the entries of each list (`list_at`): the worlds
-//   `world_solve_warm` leaves to `world_solve` (emptied by
-//   candidate_pairs), the box–box, box–plane and sphere pairs
+//   `world_solve_warm` leaves to `world_lemke` with their islands (two
+//   words each; emptied by candidate_pairs), the box–box, box–plane and sphere pairs
 //   (world << 8 | candidate; filled by candidate_pairs, emptied by
 //   world_contacts for the next step).
 
@@ -487,6 +496,7 @@ const BC: u32 = 12u;
 const BS: u32 = 13u;
 const CP: u32 = 8u;
 const REC: u32 = 8u;
+const ROW: u32 = 30u;
 const ISLAND_MAX: u32 = 16u;
 
 const CONTACTS_FULL: u32 = 1u;
@@ -494,7 +504,7 @@ const ISLAND_TOO_LARGE: u32 = 2u;
 const NOT_SOLVED: u32 = 4u;
 const NON_FINITE: u32 = 8u;
 const BUDGET: u32 = 16u;
-const HANDED: u32 = 32u; // with world_friction until it finishes the world (world_solve.wgsl)
+const HANDED: u32 = 32u; // with world_friction until it finishes the world (world_solve.wgsl begin_world)
 
 struct StepParams {
     // Worlds.
@@ -531,7 +541,7 @@ struct StepParams {
     // records per world (SLOTS per candidate pair).
     pairs_at: u32,
     pair_slots: u32,
-    // 1: world_solve tries last step's bases first (the CPU path's
+    // 1: world_solve_warm tries last step's bases first (the CPU path's
     // warm_settle: warm starts on, a method that predicts).
     warm_bases: u32,
     // candidate_pairs' lists: where the worlds' candidates start in
@@ -602,21 +612,31 @@ fn placed_body(k: u32) -> Placed {
     return placed_from(kind, size, vec3_at_state(o), q);
 }
 
+// Where contact slot `slot`'s row starts in `scratch`: after the contact
+// slots (q, response 12, the row of M over the island's members 16, the
+// row's basic variable at Lemke's end 1).
+fn row_at(slot: u32) -> u32 {
+    return sp.contacts_at + sp.count * sp.slots * CP + slot * ROW;
+}
+
 // The frictional phase's (shaders/world_friction.wgsl) per-world phases,
-// set by world_solve's handover.
+// set by the solve's handover (world_solve.wgsl begin_world); F_DONE:
+// every island solved, for world_finish to finish.
 const F_IDLE: u32 = 0u;
 const F_ASSEMBLE: u32 = 1u;
 const F_SWEEP: u32 = 2u;
+const F_DONE: u32 = 3u;
 
 // μ = √(μ_a μ_b) of bodies ga, gb (global).
 fn pair_friction(ga: u32, gb: u32) -> Scalar {
     return sqrt(body_const(ga, 11u) * body_const(gb, 11u));
 }
 
-// Family work lists in `lists` (header at 4 f: workgroups x, y, z, count):
-// 0 the worlds world_solve_warm leaves to world_solve, 1 box–box pairs,
-// 2 box–plane pairs, 3 pairs with a sphere.
-const LIST_SOLVE: u32 = 0u;
+// Work lists in `lists` (header at 4 f: workgroups x, y, z, count): 0
+// the worlds world_solve_warm leaves to world_lemke (two words each: the
+// world, its islands for Lemke's path), 1 box–box pairs, 2 box–plane
+// pairs, 3 pairs with a sphere.
+const LIST_LEMKE: u32 = 0u;
 const LIST_BOX_BOX: u32 = 1u;
 const LIST_BOX_PLANE: u32 = 2u;
 const LIST_SPHERE: u32 = 3u;
@@ -627,13 +647,13 @@ fn pairs_per_world() -> u32 {
 }
 
 // Where list f's entries start in `lists`: after the four headers, the
-// solve list (a world each), then the pair lists (pairs_per_world() per
-// world each).
+// Lemke list (two words a world), then the pair lists (pairs_per_world()
+// per world each).
 fn list_at(f: u32) -> u32 {
-    if f == LIST_SOLVE {
+    if f == LIST_LEMKE {
         return 16u;
     }
-    return 16u + sp.count + (f - 1u) * sp.count * pairs_per_world();
+    return 16u + 2u * sp.count + (f - 1u) * sp.count * pairs_per_world();
 }
 
 // Appends `entry` to list f, its workgroups (of 64) grown to cover it.
@@ -667,10 +687,11 @@ fn loops_left() -> bool {
     return k == r;
 }
 
-// Shared by the resident step's solve (shaders/world_solve.wgsl) and
-// frictional (shaders/world_friction.wgsl) phases, composed before both:
-// the bodies' velocities of a world while its islands are solved, the
-// sides of a contact's rows, and step.rs finish.
+// Shared by the resident step's solve (shaders/world_solve.wgsl,
+// world_lemke.wgsl), frictional (world_friction.wgsl) and finish
+// (world_finish.wgsl) modules, composed before each: the bodies'
+// velocities of a world while its islands are solved, the sides of a
+// contact's rows, a contact's id.
 
 // A side of a contact row with no dynamic body (static in the step's scene).
 const NONE: u32 = 0xffffffffu;
@@ -698,23 +719,6 @@ fn contact_sides(slot: u32, moving: u32) -> vec2<u32> {
     return s;
 }
 
-// step.rs integrate_rotation: normalise(q + ½Δt (ω, 0) ⊗ q).
-fn integrate_rotation(q: vec4<Scalar>, w: vec3<Scalar>, dt: Scalar) -> vec4<Scalar> {
-    // glam's DQuat product (w.x, w.y, w.z, 0) ⊗ q.
-    let spin = vec4<Scalar>(
-        w.x * q.w + w.y * q.z - w.z * q.y,
-        -w.x * q.z + w.y * q.w + w.z * q.x,
-        w.x * q.y - w.y * q.x + w.z * q.w,
-        -w.x * q.x - w.y * q.y - w.z * q.z,
-    );
-    return normalize4(q + Scalar(0.5) * dt * spin);
-}
-
-fn normalize4(q: vec4<Scalar>) -> vec4<Scalar> {
-    let len = sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
-    return q * (Scalar(1.0) / len);
-}
-
 // lin, ang: the velocities of world w's bodies in `scratch`.
 fn load_velocities(w: u32) {
     let first = worlds[w].x;
@@ -733,110 +737,40 @@ fn store_velocities(w: u32) {
     }
 }
 
-// step.rs finish for world w after its impulses (velocities in lin, ang):
-// woken bodies awake, moving bodies integrated, sleep counters; then the
-// world's flags and figures. A flagged world keeps its state.
-fn finish_world(w: u32, flags0: u32, max_penetration: Scalar, max_error: Scalar) {
-    let info = worlds[w];
-    let first = info.x;
-    let nb = min(info.y, MAX_BODIES);
-    let out = sp.out_at + 4u * w;
-    let moving = words[out + 1u];
-    var flags = flags0;
-    let dt = sp.dt;
-    let g = vec3_at_consts(w * WC);
-    let sleep_linear = consts[w * WC + 4u];
-    let sleep_angular = consts[w * WC + 5u];
-    var xs: array<vec3<Scalar>, 16>;
-    var qs: array<vec4<Scalar>, 16>;
-    for (var k = 0u; k < nb && flags == 0u; k++) {
-        let b = first + k;
-        if ((moving >> k) & 1u) == 0u {
-            continue;
-        }
-        let o = b * BS;
-        let q0 = normalize4(vec4<Scalar>(state[o + 3u], state[o + 4u], state[o + 5u], state[o + 6u]));
-        xs[k] = vec3_at_state(o) + lin[k] * dt;
-        qs[k] = integrate_rotation(q0, ang[k], dt);
-        let mag = abs(xs[k]) + abs(qs[k].xyz) + abs(lin[k]) + abs(ang[k]);
-        if !finite(mag.x + mag.y + mag.z + abs(qs[k].w)) {
-            flags |= NON_FINITE;
-        }
-    }
-    var kinetic = Scalar(0.0);
-    var potential = Scalar(0.0);
-    var awake = 0u;
-    if flags == 0u {
-        for (var k = 0u; k < nb; k++) {
-            let b = first + k;
-            if is_static(b) {
-                continue;
-            }
-            let o = b * BS;
-            if ((moving >> k) & 1u) != 0u {
-                // A woken body counts its quiet steps afresh.
-                var quiet = select(words[2u * b + 1u], 0u, asleep(b));
-                let still = length3(lin[k]) < sleep_linear && length3(ang[k]) < sleep_angular;
-                if still {
-                    quiet = min(quiet, 0xfffffffeu) + 1u;
-                } else {
-                    quiet = 0u;
-                }
-                var sleeps = 0u;
-                if info.z > 0u && quiet >= info.z {
-                    sleeps = 1u;
-                    lin[k] = vec3<Scalar>(0.0, 0.0, 0.0);
-                    ang[k] = vec3<Scalar>(0.0, 0.0, 0.0);
-                }
-                words[2u * b] = sleeps;
-                words[2u * b + 1u] = quiet;
-                put_state(o, xs[k]);
-                state[o + 3u] = qs[k].x;
-                state[o + 4u] = qs[k].y;
-                state[o + 5u] = qs[k].z;
-                state[o + 6u] = qs[k].w;
-                put_state(o + 7u, lin[k]);
-                put_state(o + 10u, ang[k]);
-            }
-            // RigidBody::kinetic_energy and World::potential_energy after
-            // the step.
-            let v = vec3_at_state(o + 7u);
-            let om = vec3_at_state(o + 10u);
-            let p = placed_body(b);
-            let wb = unrotate(p, om);
-            let inertia = Scalar(1.0) / vec3_at_consts(sp.bodies_at + b * BC + 6u);
-            let m = body_const(b, 9u);
-            kinetic += Scalar(0.5) * m * dot3(v, v) + Scalar(0.5) * dot3(wb * wb, inertia);
-            potential += -m * dot3(g, vec3_at_state(o));
-            if !asleep(b) {
-                awake++;
-            }
-        }
-    }
-    // The loop limit reached: flagged (the host steps the world from its
-    // state before the step and writes it back).
-    if flags == 0u && !loops_left() {
-        flags = BUDGET;
-    }
-    words[out + 2u] = flags;
-    let r = w * REC;
-    records[r] = kinetic;
-    records[r + 1u] = potential;
-    records[r + 2u] = max_penetration;
-    records[r + 3u] = max_error;
-    records[r + 4u] = Scalar(awake);
+// A contact's id in the world's memories: (a << 16) | (b << 12) |
+// (feature & 0xfff), as step.rs contact_id without the world.
+fn contact_key(slot: u32) -> u32 {
+    let key = sp.keys_at + 4u * slot;
+    return (words[key] << 16u) | (words[key + 1u] << 12u) | (words[key + 2u] & 0xfffu);
 }
 
+// Island `isl` of world w (`count` contacts): its contacts (indices in
+// the world) into `members` (the first ISLAND_MAX); its size.
+fn island_members(w: u32, count: u32, isl: u32, members: ptr<function, array<u32, 16>>) -> u32 {
+    let slot0 = w * sp.slots;
+    var n = 0u;
+    for (var c = 0u; c < count; c++) {
+        if words[sp.keys_at + 4u * (slot0 + c) + 3u] == isl {
+            if n < ISLAND_MAX {
+                (*members)[n] = c;
+            }
+            n++;
+        }
+    }
+    return n;
+}
 
-// The frictional phase of shaders/world_step.wgsl (a module of its own:
-// composed after world_step.wgsl and world_finish.wgsl, before
-// world_apgd.wgsl and the cone projection of friction_common.wgsl):
+// The frictional phase of shaders/world_step.wgsl (two modules, one per
+// method: composed after world_step.wgsl and world_bodies.wgsl, before
+// world_sweeps.wgsl (module world_friction: Jacobi, Gauss–Seidel) or
+// world_apgd.wgsl (module world_friction_apgd), and the cone projection of
+// friction_common.wgsl; each module holds only its method's code):
 // the islands of the worlds with friction (a contact with μ > 0 this step;
-// world_solve hands them over with the phase F_ASSEMBLE and the flag HANDED,
-// which stays until the world is finished), one invocation per world.
-// `world_friction` is dispatched several times per step (rounds, after
-// world_solve and world_finish, in the same submission); each invocation goes on where the
-// last round stopped and does at most `sp.friction_budget` of loop work
+// world_solve_warm hands them over with the phase F_ASSEMBLE and the flag
+// HANDED, which stays until the world is finished), one invocation per
+// world. `world_friction` is dispatched several times per step (rounds,
+// after the solve, in the same submission); each invocation goes on where
+// the last round stopped and does at most `sp.friction_budget` of loop work
 // (llvmpipe ends an invocation's loops after about 65,535 iterations in
 // all, counted over 8 invocations in lockstep). A world
 // not finished after the step's last round keeps HANDED: the host steps it
@@ -859,7 +793,9 @@ fn finish_world(w: u32, flags0: u32, max_penetration: Scalar, max_error: Scalar)
 //   tolerance, else the world is flagged NOT_SOLVED (the CPU steps it);
 //   the Coulomb error (Siconos fc3d with De Saxcé's correction) is the
 //   world's max_error, as the CPU reports it;
-// - the impulses (apply_friction_impulses), then `finish_world`.
+// - the impulses (apply_friction_impulses); the world, every island
+//   solved, is left F_DONE: world_finish (after the last round) remembers
+//   its reactions and finishes it.
 //
 // With APGD (sp.gauss_seidel == METHOD_APGD) instead of the sweeps: the
 // twin of friction/apgd.rs `apgd` (from the same start; L from
@@ -892,8 +828,18 @@ const F_BEST: u32 = 3824u;
 const F_UBEST: u32 = 3872u;
 const F_APGD: u32 = 3920u;
 
-// sp.gauss_seidel: 0 Jacobi, 1 Gauss–Seidel sweeps, METHOD_APGD.
+// sp.gauss_seidel: 0 Jacobi, 1 Gauss–Seidel sweeps, METHOD_APGD (the
+// module world_friction_apgd; the sweeps are the module world_friction).
 const METHOD_APGD: u32 = 2u;
+
+// The method's iterations in a round (`method_round`: world_sweeps.wgsl or
+// world_apgd.wgsl, one in each module): the budget spent first (the next
+// round goes on), done, failed (the world flagged NOT_SOLVED), or done on
+// a non-finite stop measure (judged as failed).
+const ROUND_SPENT: u32 = 0u;
+const ROUND_DONE: u32 = 1u;
+const ROUND_FAILED: u32 = 2u;
+const ROUND_NOT_FINITE: u32 = 3u;
 
 // Below this scale the stop measure is not divided (projected.rs SCALE_FLOOR).
 const SCALE_FLOOR: Scalar = Scalar(2.220446049250313e-16);
@@ -914,7 +860,7 @@ fn tangent_basis(n: vec3<Scalar>) -> array<vec3<Scalar>, 2> {
 
 // I⁻¹ v of body b (global) as the CPU's scene body holds I⁻¹: the matrix
 // R diag(1/I) Rᵀ (RigidBody::inv_inertia_at, glam's products in their
-// order), then glam's mul_vec3 (world_solve's inv_inertia_mul rotates the
+// order), then glam's mul_vec3 (world_island.wgsl's inv_inertia_mul rotates the
 // vector instead: the same up to rounding, which would part the sweeps'
 // iterates from the CPU's).
 fn inv_inertia_mat_mul(b: u32, v: vec3<Scalar>) -> vec3<Scalar> {
@@ -1164,26 +1110,6 @@ fn stop_measure(base: u32, n: u32, q2: Scalar, xs: u32, us: u32) -> Scalar {
     return e;
 }
 
-// One sweep of projected.rs `sweeps` (u from the iteration's start; for
-// Gauss–Seidel each contact's rows again from the reactions so far).
-fn sweep(base: u32, n: u32) {
-    let dim = 3u * n;
-    for (var i = 0u; i < n; i++) {
-        let c = 3u * i;
-        if sp.gauss_seidel != 0u {
-            contact_velocity(base, dim, i, base + F_X, base + F_U);
-        }
-        let h = scratch[base + F_ETA + i];
-        let x = vec3_x(base, i);
-        let u = vec3_u(base, i);
-        let p = project_on_cone(
-            vec3<Scalar>(x.x - h * u.x, x.y - h * u.y, x.z - h * u.z),
-            scratch[base + F_MU + i],
-        );
-        put_scratch(base + F_X + c, p);
-    }
-}
-
 // ProjectedSolution::judge of x with u = W x + q (the sweeps' last
 // iteration computed it from this x, which it left as it was), the cone
 // error (the status) and the Coulomb error
@@ -1251,7 +1177,7 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
     }
     let fs = sp.fstate_at + 4u * w;
     var phase = words[fs];
-    if phase == F_IDLE {
+    if phase == F_IDLE || phase == F_DONE {
         return;
     }
     records[w * REC + 5u] += Scalar(1.0);
@@ -1289,12 +1215,8 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
         }
         let dim = 3u * n;
         // Costs: the loop iterations of each part (see contact_velocity).
-        let apgd = sp.gauss_seidel == METHOD_APGD;
         if phase == F_ASSEMBLE {
-            var cost = 12u * n * n + n * (sp.slots + 1u) + 64u;
-            if apgd {
-                cost += 4u * n * n + 16u * n + 16u;
-            }
+            let cost = 12u * n * n + n * (sp.slots + 1u) + 64u + method_start_cost(n);
             if spent > count && spent + cost > sp.friction_budget {
                 break;
             }
@@ -1304,48 +1226,20 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
             words[fs + 3u] = 0u;
             phase = F_SWEEP;
             words[fs] = phase;
-            if apgd && !apgd_start(base, n, sum_squares_at(base + F_Q, dim)) {
+            if !method_start(base, n) {
                 flags |= NOT_SOLVED;
                 break;
             }
         }
-        // Iterations of `sweeps`: u, the stop measure, a sweep.
-        let cost = 2u * n * n + 8u * n + 16u;
         let q2 = sum_squares_at(base + F_Q, dim);
-        var done = false;
-        var failed = false;
-        if apgd {
-            let r = apgd_round(base, n, q2, fs, spent);
-            spent = r.x;
-            if r.y == 2u {
-                flags |= NOT_SOLVED;
-                break;
-            }
-            done = r.y == 1u;
+        let r = method_round(base, n, q2, fs, spent);
+        spent = r.x;
+        if r.y == ROUND_FAILED {
+            flags |= NOT_SOLVED;
+            break;
         }
-        loop {
-            if apgd {
-                break;
-            }
-            if spent + cost > sp.friction_budget {
-                break;
-            }
-            spent += cost;
-            let it = words[fs + 2u];
-            friction_velocity(base, n, F_X, F_U);
-            let err = stop_measure(base, n, q2, F_X, F_U);
-            if !finite(err) {
-                failed = true;
-                done = true;
-                break;
-            }
-            if err <= sp.friction_tolerance || it >= sp.max_iterations {
-                done = true;
-                break;
-            }
-            sweep(base, n);
-            words[fs + 2u] = it + 1u;
-        }
+        let done = r.y == ROUND_DONE || r.y == ROUND_NOT_FINITE;
+        let failed = r.y == ROUND_NOT_FINITE;
         // The judgement's loops (no product: u is the last iteration's).
         let judged = 16u * n + 64u;
         if !done || spent + judged > sp.friction_budget {
@@ -1381,10 +1275,9 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
         return;
     }
     if finished {
-        words[fs] = F_IDLE;
-        remember_reactions(w, count);
-        let r = w * REC;
-        finish_world(w, 0u, records[r + 2u], records[r + 3u]);
+        // world_finish remembers its reactions and finishes it after the
+        // step's last round.
+        words[fs] = F_DONE;
     }
 }
 
@@ -1394,11 +1287,7 @@ fn world_friction(@builtin(global_invocation_id) gid: vec3<u32>) {
 // step.rs contact_id without the world); in `scratch` from
 // sp.memory_r_at, 3 scalars per entry (r_n, r_t₁, r_t₂). This step's
 // reactions wait in `scratch` from sp.reactions_at (3 per contact slot)
-// until the world is finished.
-fn contact_key(slot: u32) -> u32 {
-    let key = sp.keys_at + 4u * slot;
-    return (words[key] << 16u) | (words[key + 1u] << 12u) | (words[key + 2u] & 0xfffu);
-}
+// until the world is finished (world_finish.wgsl remember_reactions).
 
 // The warm start of contact `slot` (world_friction.rs: the remembered
 // reaction of its id, the last entry of that id; 0 where none or warm
@@ -1424,190 +1313,69 @@ fn keep_reaction(slot: u32, r: vec3<Scalar>) {
     put_scratch(sp.reactions_at + 3u * slot, r);
 }
 
-// WarmMemory::record of a finished world's step (every island solved):
-// its contacts' ids and reactions replace the memory.
-fn remember_reactions(w: u32, count: u32) {
-    if sp.warm_start == 0u {
-        return;
-    }
-    let m = sp.memory_at + w * (sp.slots + 1u);
-    words[m] = count;
-    for (var e = 0u; e < count; e++) {
-        let slot = w * sp.slots + e;
-        words[m + 1u + e] = contact_key(slot);
-        put_scratch(sp.memory_r_at + 3u * slot, vec3_at_scratch(sp.reactions_at + 3u * slot));
-    }
-}
+// The projected sweeps in the frictional phase of shaders/world_step.wgsl
+// (module world_friction, composed after world_friction.wgsl, whose header
+// gives the method, the layout of a world's region and the rounds): the
+// method's part of `world_friction` for Jacobi and Gauss–Seidel
+// (friction/projected.rs `sweeps`).
 
-// APGD in the frictional phase of shaders/world_step.wgsl (composed after
-// world_friction.wgsl, whose header gives the method, the layout of a
-// world's region and the rounds; `world_friction` calls apgd_start after
-// an island's assembly and apgd_round in each round): the twin of
-// friction/apgd.rs, its arithmetic in its order, on the island's W, q and
-// μ in `scratch`. accept_step and apgd_momentum are friction_common.wgsl's
-// (the batch APGD kernels' own).
-
-// Copies contact after contact 3n entries from base + `src` to base + `dst`.
-fn copy_entries(base: u32, n: u32, src: u32, dst: u32) {
-    for (var i = 0u; i < n; i++) {
-        put_scratch(base + dst + 3u * i, vec3_at_scratch(base + src + 3u * i));
-    }
-}
-
-// apgd.rs first_lipschitz: ‖W e‖ / ‖e‖ for e = (1, …, 1), else the largest
-// |W_rr|, else 1.
-fn first_lipschitz(base: u32, n: u32) -> Scalar {
+// One sweep of projected.rs `sweeps` (u from the iteration's start; for
+// Gauss–Seidel each contact's rows again from the reactions so far).
+fn sweep(base: u32, n: u32) {
     let dim = 3u * n;
-    var s2 = Scalar(0.0);
-    for (var r = 0u; r < dim; r++) {
-        let row = base + F_W + r * dim;
-        var s = Scalar(0.0);
-        for (var j = 0u; j < dim; j += 3u) {
-            s += scratch[row + j];
-            s += scratch[row + j + 1u];
-            s += scratch[row + j + 2u];
+    for (var i = 0u; i < n; i++) {
+        let c = 3u * i;
+        if sp.gauss_seidel != 0u {
+            contact_velocity(base, dim, i, base + F_X, base + F_U);
         }
-        s2 += s * s;
+        let h = scratch[base + F_ETA + i];
+        let x = vec3_x(base, i);
+        let u = vec3_u(base, i);
+        let p = project_on_cone(
+            vec3<Scalar>(x.x - h * u.x, x.y - h * u.y, x.z - h * u.z),
+            scratch[base + F_MU + i],
+        );
+        put_scratch(base + F_X + c, p);
     }
-    let l = sqrt(s2 / Scalar(dim));
-    if l > Scalar(0.0) && finite(l) {
-        return l;
-    }
-    var d = Scalar(0.0);
-    for (var r = 0u; r < dim; r++) {
-        d = max(d, abs(scratch[base + F_W + r * dim + r]));
-    }
-    return select(Scalar(1.0), d, d > Scalar(0.0) && finite(d));
 }
 
-// APGD's start (apgd.rs apgd) from x (projected by assemble_friction):
-// u(x), its error, y = x, u(y) = u(x), best = x, θ = 1, L; false where
-// the error is not finite (the twin fails).
-fn apgd_start(base: u32, n: u32, q2: Scalar) -> bool {
-    friction_velocity(base, n, F_X, F_U);
-    let err = stop_measure(base, n, q2, F_X, F_U);
-    copy_entries(base, n, F_X, F_Y);
-    copy_entries(base, n, F_U, F_UY);
-    copy_entries(base, n, F_X, F_BEST);
-    copy_entries(base, n, F_U, F_UBEST);
-    let a = base + F_APGD;
-    scratch[a] = Scalar(1.0);
-    scratch[a + 1u] = first_lipschitz(base, n);
-    scratch[a + 2u] = err;
-    return finite(err);
+// Loop work of the method's start after an island's assembly: none (the
+// sweeps start from x as assembled).
+fn method_start_cost(n: u32) -> u32 {
+    return 0u;
 }
 
-// One backtracking try from y with step 1/L (apgd_iteration): the trial
-// xn = P_K(y − u(y) / L) into T1, u(xn) into T2; whether accept_step takes
-// it (d = xn − y, W d = u(xn) − u(y)).
-fn apgd_try(base: u32, n: u32, lipschitz: Scalar) -> bool {
-    let t = Scalar(1.0) / lipschitz;
-    for (var i = 0u; i < n; i++) {
-        let y = vec3_at_scratch(base + F_Y + 3u * i);
-        let uy = vec3_at_scratch(base + F_UY + 3u * i);
-        put_scratch(base + F_T1 + 3u * i, project_on_cone(y - t * uy, scratch[base + F_MU + i]));
-    }
-    friction_velocity(base, n, F_T1, F_T2);
-    var curvature = Scalar(0.0);
-    var d2 = Scalar(0.0);
-    var g2 = Scalar(0.0);
-    for (var i = 0u; i < n; i++) {
-        let d = vec3_at_scratch(base + F_T1 + 3u * i) - vec3_at_scratch(base + F_Y + 3u * i);
-        let uy = vec3_at_scratch(base + F_UY + 3u * i);
-        let wd = vec3_at_scratch(base + F_T2 + 3u * i) - uy;
-        curvature += d.x * wd.x;
-        curvature += d.y * wd.y;
-        curvature += d.z * wd.z;
-        d2 += d.x * d.x;
-        d2 += d.y * d.y;
-        d2 += d.z * d.z;
-        g2 += uy.x * uy.x;
-        g2 += uy.y * uy.y;
-        g2 += uy.z * uy.z;
-    }
-    return accept_step(curvature, d2, g2, lipschitz);
-}
-
-// After an accepted try (apgd_iteration): the best iterate (with its u),
-// the momentum, the gradient restart, x = xn, L × 0.9, the iteration
-// counted in words[fs + 2]; false where the trial's error is not finite.
-fn apgd_accept(base: u32, n: u32, q2: Scalar, fs: u32) -> bool {
-    let err = stop_measure(base, n, q2, F_T1, F_T2);
-    if !finite(err) {
-        return false;
-    }
-    let a = base + F_APGD;
-    if err < scratch[a + 2u] {
-        scratch[a + 2u] = err;
-        copy_entries(base, n, F_T1, F_BEST);
-        copy_entries(base, n, F_T2, F_UBEST);
-    }
-    let m = apgd_momentum(scratch[a]);
-    var g_dot = Scalar(0.0);
-    for (var i = 0u; i < n; i++) {
-        let d = vec3_at_scratch(base + F_T1 + 3u * i) - vec3_x(base, i);
-        let uy = vec3_at_scratch(base + F_UY + 3u * i);
-        g_dot += uy.x * d.x;
-        g_dot += uy.y * d.y;
-        g_dot += uy.z * d.z;
-    }
-    let restart = g_dot > Scalar(0.0);
-    for (var i = 0u; i < n; i++) {
-        let xn = vec3_at_scratch(base + F_T1 + 3u * i);
-        let un = vec3_at_scratch(base + F_T2 + 3u * i);
-        var y = xn;
-        var uy = un;
-        if !restart {
-            y = xn + m.y * (xn - vec3_x(base, i));
-            uy = un + m.y * (un - vec3_u(base, i));
-        }
-        put_scratch(base + F_Y + 3u * i, y);
-        put_scratch(base + F_UY + 3u * i, uy);
-        put_scratch(base + F_X + 3u * i, xn);
-        put_scratch(base + F_U + 3u * i, un);
-    }
-    scratch[a] = select(m.x, Scalar(1.0), restart);
-    scratch[a + 1u] = scratch[a + 1u] * Scalar(0.9);
-    words[fs + 2u] += 1u;
-    words[fs + 3u] = 0u;
+// The method's start after an island's assembly: nothing to do.
+fn method_start(base: u32, n: u32) -> bool {
     return true;
 }
 
-// The APGD iterations of a round within `budget` from `spent` (the twin's
-// loop: stop at the tolerance or the cap, else a try, doubling L where it
-// fails): (loop work spent, 1 done, 2 failed), the best iterate and its u
-// in x and u where done.
-fn apgd_round(base: u32, n: u32, q2: Scalar, fs: u32, spent0: u32) -> vec2<u32> {
-    let cost = n * n + 10u * n + 16u;
-    let a = base + F_APGD;
+// Iterations of `sweeps` within `sp.friction_budget` from `spent0`: u, the
+// stop measure, a sweep, until the tolerance or the cap (ROUND_DONE), a
+// non-finite measure (ROUND_NOT_FINITE) or the budget (ROUND_SPENT):
+// (loop work spent, that).
+fn method_round(base: u32, n: u32, q2: Scalar, fs: u32, spent0: u32) -> vec2<u32> {
+    let cost = 2u * n * n + 8u * n + 16u;
     var spent = spent0;
-    var end = 0u;
+    var end = ROUND_SPENT;
     loop {
-        if scratch[a + 2u] <= sp.friction_tolerance || words[fs + 2u] >= sp.max_iterations {
-            copy_entries(base, n, F_BEST, F_X);
-            copy_entries(base, n, F_UBEST, F_U);
-            spent += 2u * n;
-            end = 1u;
-            break;
-        }
         if spent + cost > sp.friction_budget {
             break;
         }
         spent += cost;
-        let l = scratch[a + 1u];
-        if apgd_try(base, n, l) {
-            if !apgd_accept(base, n, q2, fs) {
-                end = 2u;
-                break;
-            }
-        } else {
-            scratch[a + 1u] = Scalar(2.0) * l;
-            words[fs + 3u] += 1u;
-            if words[fs + 3u] >= MAX_BACKTRACKS || !finite(scratch[a + 1u]) {
-                end = 2u;
-                break;
-            }
+        let it = words[fs + 2u];
+        friction_velocity(base, n, F_X, F_U);
+        let err = stop_measure(base, n, q2, F_X, F_U);
+        if !finite(err) {
+            end = ROUND_NOT_FINITE;
+            break;
         }
+        if err <= sp.friction_tolerance || it >= sp.max_iterations {
+            end = ROUND_DONE;
+            break;
+        }
+        sweep(base, n);
+        words[fs + 2u] = it + 1u;
     }
     return vec2<u32>(spent, end);
 }

@@ -1,4 +1,4 @@
-// GENERATED from shaders/collide.wgsl (functions above its pair functions) + shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_finish.wgsl + shaders/world_solve.wgsl by src/gpu/shaders/compose.rs: do not edit.
+// GENERATED from shaders/collide.wgsl (functions above its pair functions) + shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_bodies.wgsl + shaders/world_island.wgsl + shaders/world_solve.wgsl by src/gpu/shaders/compose.rs: do not edit.
 // Regenerate: LCPBATCH_BLESS_SHADERS=1 cargo test --release generated_shaders_are_committed
 
 // Narrow phase: the contact points of candidate pairs of bodies (entry
@@ -425,18 +425,24 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 //   `world_contacts`: waking rounds, the contacts in pair order);
 //   shaders/world_collide.wgsl;
 // - module world_solve (after collide.wgsl's functions above its pair
-//   functions and shaders/lemke.wgsl's, with shaders/world_finish.wgsl):
-//   `world_solve_warm` per world (src/islands.rs `find_islands`,
-//   src/cpu/assembly.rs `assemble_contact` / `assemble_island`, the warm
-//   bases of world_cpu.rs `warm_settle`, the door's check `lcp_error` <=
-//   tolerance, `apply_impulses`; a world whose warm bases do not all hold
-//   is listed), `world_solve` per listed world (the same with Lemke's path
-//   `lemke_pivots`; per world where warm bases are off), `world_finish`
-//   per world (step.rs `finish` with `integrate_rotation`, the world's
-//   figures); shaders/world_solve.wgsl;
-// - module world_friction (the same with shaders/world_friction.wgsl,
-//   world_apgd.wgsl and friction_common.wgsl's cone projection):
-//   `world_friction` per world handed over by the solve, in rounds.
+//   functions and shaders/lemke.wgsl's, with shaders/world_bodies.wgsl
+//   and world_island.wgsl): `world_solve_warm` per world (src/islands.rs
+//   `find_islands`, src/cpu/assembly.rs `assemble_contact` /
+//   `assemble_island`, the warm bases of world_cpu.rs `warm_settle`, the
+//   door's check `lcp_error` <= tolerance, `apply_impulses`; the islands
+//   whose warm basis does not hold, every island without warm bases,
+//   listed with their world); shaders/world_solve.wgsl;
+// - module world_lemke (the same, shaders/world_lemke.wgsl):
+//   `world_lemke` per listed world (its listed islands by Lemke's path
+//   `lemke_pivots`, the basis re-solved, the check, the impulses);
+// - module world_friction (after the same, shaders/world_bodies.wgsl,
+//   world_friction.wgsl, world_apgd.wgsl and friction_common.wgsl's cone
+//   projection): `world_friction` per world handed over by the solve, in
+//   rounds;
+// - module world_finish (shaders/world_bodies.wgsl, world_finish.wgsl):
+//   `world_finish` per world (step.rs `finish` with `integrate_rotation`,
+//   the world's figures; a world world_friction finished: its reactions
+//   remembered first).
 // Several entry points rather than one: llvmpipe ends every loop of an
 // invocation after about 65,535 iterations in all, and each dispatch
 // starts that count afresh; each phase's code is a fraction of the step's
@@ -458,14 +464,17 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 // - state: per body BS scalars (position 3, orientation x, y, z, w,
 //   velocity 3, angular velocity 3);
 // - scratch: per body 6 scalars (v*, then v after the impulses), then per
-//   contact slot CP scalars (point 3, normal 3, gap, z); from
+//   contact slot CP scalars (point 3, normal 3, gap, z), then per contact
+//   slot ROW scalars (`row_at`: q, the response M⁻¹Jᵀ of sides a and b,
+//   the contact's row of its island's M (world_assemble), the basic
+//   variable of its row where Lemke's path ended (world_lemke)); from
 //   params.pairs_at per world params.pair_slots pair records of CP scalars
 //   (point 3, normal 3, gap, feature), SLOTS per candidate pair;
 // - words: per body 2 (asleep, quiet steps); from params.out_at per world 4
 //   (contacts, moving-body mask, flags, islands); from params.keys_at per
 //   contact slot 4 (a, b, feature, island);
 // - records: per world REC scalars (kinetic, potential, max penetration,
-//   max error, awake, friction rounds, and world_solve's warm-start
+//   max error, awake, friction rounds, and the solve's warm-start
 //   memory: a hash of last step's contact ids, their bases);
 // - scratch, from params.reach_at: per body its reach this step
 //   (candidate_pairs);
@@ -474,8 +483,8 @@ fn lemke_pivots(n: u32, spent0: u32, pivot_tol: Scalar, max_pivots: u32, budget:
 //   the narrow phase: points | OVERFLOW | CUT);
 // - lists: four headers (workgroups x, y, z of an indirect dispatch, the
 //   count), then the entries of each list (`list_at`): the worlds
-//   `world_solve_warm` leaves to `world_solve` (emptied by
-//   candidate_pairs), the box–box, box–plane and sphere pairs
+//   `world_solve_warm` leaves to `world_lemke` with their islands (two
+//   words each; emptied by candidate_pairs), the box–box, box–plane and sphere pairs
 //   (world << 8 | candidate; filled by candidate_pairs, emptied by
 //   world_contacts for the next step).
 
@@ -487,6 +496,7 @@ const BC: u32 = 12u;
 const BS: u32 = 13u;
 const CP: u32 = 8u;
 const REC: u32 = 8u;
+const ROW: u32 = 30u;
 const ISLAND_MAX: u32 = 16u;
 
 const CONTACTS_FULL: u32 = 1u;
@@ -494,7 +504,7 @@ const ISLAND_TOO_LARGE: u32 = 2u;
 const NOT_SOLVED: u32 = 4u;
 const NON_FINITE: u32 = 8u;
 const BUDGET: u32 = 16u;
-const HANDED: u32 = 32u; // with world_friction until it finishes the world (world_solve.wgsl)
+const HANDED: u32 = 32u; // with world_friction until it finishes the world (world_solve.wgsl begin_world)
 
 struct StepParams {
     // Worlds.
@@ -531,7 +541,7 @@ struct StepParams {
     // records per world (SLOTS per candidate pair).
     pairs_at: u32,
     pair_slots: u32,
-    // 1: world_solve tries last step's bases first (the CPU path's
+    // 1: world_solve_warm tries last step's bases first (the CPU path's
     // warm_settle: warm starts on, a method that predicts).
     warm_bases: u32,
     // candidate_pairs' lists: where the worlds' candidates start in
@@ -602,21 +612,31 @@ fn placed_body(k: u32) -> Placed {
     return placed_from(kind, size, vec3_at_state(o), q);
 }
 
+// Where contact slot `slot`'s row starts in `scratch`: after the contact
+// slots (q, response 12, the row of M over the island's members 16, the
+// row's basic variable at Lemke's end 1).
+fn row_at(slot: u32) -> u32 {
+    return sp.contacts_at + sp.count * sp.slots * CP + slot * ROW;
+}
+
 // The frictional phase's (shaders/world_friction.wgsl) per-world phases,
-// set by world_solve's handover.
+// set by the solve's handover (world_solve.wgsl begin_world); F_DONE:
+// every island solved, for world_finish to finish.
 const F_IDLE: u32 = 0u;
 const F_ASSEMBLE: u32 = 1u;
 const F_SWEEP: u32 = 2u;
+const F_DONE: u32 = 3u;
 
 // μ = √(μ_a μ_b) of bodies ga, gb (global).
 fn pair_friction(ga: u32, gb: u32) -> Scalar {
     return sqrt(body_const(ga, 11u) * body_const(gb, 11u));
 }
 
-// Family work lists in `lists` (header at 4 f: workgroups x, y, z, count):
-// 0 the worlds world_solve_warm leaves to world_solve, 1 box–box pairs,
-// 2 box–plane pairs, 3 pairs with a sphere.
-const LIST_SOLVE: u32 = 0u;
+// Work lists in `lists` (header at 4 f: workgroups x, y, z, count): 0
+// the worlds world_solve_warm leaves to world_lemke (two words each: the
+// world, its islands for Lemke's path), 1 box–box pairs, 2 box–plane
+// pairs, 3 pairs with a sphere.
+const LIST_LEMKE: u32 = 0u;
 const LIST_BOX_BOX: u32 = 1u;
 const LIST_BOX_PLANE: u32 = 2u;
 const LIST_SPHERE: u32 = 3u;
@@ -627,13 +647,13 @@ fn pairs_per_world() -> u32 {
 }
 
 // Where list f's entries start in `lists`: after the four headers, the
-// solve list (a world each), then the pair lists (pairs_per_world() per
-// world each).
+// Lemke list (two words a world), then the pair lists (pairs_per_world()
+// per world each).
 fn list_at(f: u32) -> u32 {
-    if f == LIST_SOLVE {
+    if f == LIST_LEMKE {
         return 16u;
     }
-    return 16u + sp.count + (f - 1u) * sp.count * pairs_per_world();
+    return 16u + 2u * sp.count + (f - 1u) * sp.count * pairs_per_world();
 }
 
 // Appends `entry` to list f, its workgroups (of 64) grown to cover it.
@@ -667,10 +687,11 @@ fn loops_left() -> bool {
     return k == r;
 }
 
-// Shared by the resident step's solve (shaders/world_solve.wgsl) and
-// frictional (shaders/world_friction.wgsl) phases, composed before both:
-// the bodies' velocities of a world while its islands are solved, the
-// sides of a contact's rows, and step.rs finish.
+// Shared by the resident step's solve (shaders/world_solve.wgsl,
+// world_lemke.wgsl), frictional (world_friction.wgsl) and finish
+// (world_finish.wgsl) modules, composed before each: the bodies'
+// velocities of a world while its islands are solved, the sides of a
+// contact's rows, a contact's id.
 
 // A side of a contact row with no dynamic body (static in the step's scene).
 const NONE: u32 = 0xffffffffu;
@@ -698,23 +719,6 @@ fn contact_sides(slot: u32, moving: u32) -> vec2<u32> {
     return s;
 }
 
-// step.rs integrate_rotation: normalise(q + ½Δt (ω, 0) ⊗ q).
-fn integrate_rotation(q: vec4<Scalar>, w: vec3<Scalar>, dt: Scalar) -> vec4<Scalar> {
-    // glam's DQuat product (w.x, w.y, w.z, 0) ⊗ q.
-    let spin = vec4<Scalar>(
-        w.x * q.w + w.y * q.z - w.z * q.y,
-        -w.x * q.z + w.y * q.w + w.z * q.x,
-        w.x * q.y - w.y * q.x + w.z * q.w,
-        -w.x * q.x - w.y * q.y - w.z * q.z,
-    );
-    return normalize4(q + Scalar(0.5) * dt * spin);
-}
-
-fn normalize4(q: vec4<Scalar>) -> vec4<Scalar> {
-    let len = sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
-    return q * (Scalar(1.0) / len);
-}
-
 // lin, ang: the velocities of world w's bodies in `scratch`.
 fn load_velocities(w: u32) {
     let first = worlds[w].x;
@@ -733,204 +737,58 @@ fn store_velocities(w: u32) {
     }
 }
 
-// step.rs finish for world w after its impulses (velocities in lin, ang):
-// woken bodies awake, moving bodies integrated, sleep counters; then the
-// world's flags and figures. A flagged world keeps its state.
-fn finish_world(w: u32, flags0: u32, max_penetration: Scalar, max_error: Scalar) {
-    let info = worlds[w];
-    let first = info.x;
-    let nb = min(info.y, MAX_BODIES);
-    let out = sp.out_at + 4u * w;
-    let moving = words[out + 1u];
-    var flags = flags0;
-    let dt = sp.dt;
-    let g = vec3_at_consts(w * WC);
-    let sleep_linear = consts[w * WC + 4u];
-    let sleep_angular = consts[w * WC + 5u];
-    var xs: array<vec3<Scalar>, 16>;
-    var qs: array<vec4<Scalar>, 16>;
-    for (var k = 0u; k < nb && flags == 0u; k++) {
-        let b = first + k;
-        if ((moving >> k) & 1u) == 0u {
-            continue;
-        }
-        let o = b * BS;
-        let q0 = normalize4(vec4<Scalar>(state[o + 3u], state[o + 4u], state[o + 5u], state[o + 6u]));
-        xs[k] = vec3_at_state(o) + lin[k] * dt;
-        qs[k] = integrate_rotation(q0, ang[k], dt);
-        let mag = abs(xs[k]) + abs(qs[k].xyz) + abs(lin[k]) + abs(ang[k]);
-        if !finite(mag.x + mag.y + mag.z + abs(qs[k].w)) {
-            flags |= NON_FINITE;
-        }
-    }
-    var kinetic = Scalar(0.0);
-    var potential = Scalar(0.0);
-    var awake = 0u;
-    if flags == 0u {
-        for (var k = 0u; k < nb; k++) {
-            let b = first + k;
-            if is_static(b) {
-                continue;
-            }
-            let o = b * BS;
-            if ((moving >> k) & 1u) != 0u {
-                // A woken body counts its quiet steps afresh.
-                var quiet = select(words[2u * b + 1u], 0u, asleep(b));
-                let still = length3(lin[k]) < sleep_linear && length3(ang[k]) < sleep_angular;
-                if still {
-                    quiet = min(quiet, 0xfffffffeu) + 1u;
-                } else {
-                    quiet = 0u;
-                }
-                var sleeps = 0u;
-                if info.z > 0u && quiet >= info.z {
-                    sleeps = 1u;
-                    lin[k] = vec3<Scalar>(0.0, 0.0, 0.0);
-                    ang[k] = vec3<Scalar>(0.0, 0.0, 0.0);
-                }
-                words[2u * b] = sleeps;
-                words[2u * b + 1u] = quiet;
-                put_state(o, xs[k]);
-                state[o + 3u] = qs[k].x;
-                state[o + 4u] = qs[k].y;
-                state[o + 5u] = qs[k].z;
-                state[o + 6u] = qs[k].w;
-                put_state(o + 7u, lin[k]);
-                put_state(o + 10u, ang[k]);
-            }
-            // RigidBody::kinetic_energy and World::potential_energy after
-            // the step.
-            let v = vec3_at_state(o + 7u);
-            let om = vec3_at_state(o + 10u);
-            let p = placed_body(b);
-            let wb = unrotate(p, om);
-            let inertia = Scalar(1.0) / vec3_at_consts(sp.bodies_at + b * BC + 6u);
-            let m = body_const(b, 9u);
-            kinetic += Scalar(0.5) * m * dot3(v, v) + Scalar(0.5) * dot3(wb * wb, inertia);
-            potential += -m * dot3(g, vec3_at_state(o));
-            if !asleep(b) {
-                awake++;
-            }
-        }
-    }
-    // The loop limit reached: flagged (the host steps the world from its
-    // state before the step and writes it back).
-    if flags == 0u && !loops_left() {
-        flags = BUDGET;
-    }
-    words[out + 2u] = flags;
-    let r = w * REC;
-    records[r] = kinetic;
-    records[r + 1u] = potential;
-    records[r + 2u] = max_penetration;
-    records[r + 3u] = max_error;
-    records[r + 4u] = Scalar(awake);
+// A contact's id in the world's memories: (a << 16) | (b << 12) |
+// (feature & 0xfff), as step.rs contact_id without the world.
+fn contact_key(slot: u32) -> u32 {
+    let key = sp.keys_at + 4u * slot;
+    return (words[key] << 16u) | (words[key + 1u] << 12u) | (words[key + 2u] & 0xfffu);
 }
 
+// Island `isl` of world w (`count` contacts): its contacts (indices in
+// the world) into `members` (the first ISLAND_MAX); its size.
+fn island_members(w: u32, count: u32, isl: u32, members: ptr<function, array<u32, 16>>) -> u32 {
+    let slot0 = w * sp.slots;
+    var n = 0u;
+    for (var c = 0u; c < count; c++) {
+        if words[sp.keys_at + 4u * (slot0 + c) + 3u] == isl {
+            if n < ISLAND_MAX {
+                (*members)[n] = c;
+            }
+            n++;
+        }
+    }
+    return n;
+}
 
-// The solve phase of the resident step (shaders/world_step.wgsl's header;
-// composed after it and shaders/world_finish.wgsl): one island's rows, the
-// check, the islands, the entry points `world_solve_warm`, `world_solve`
-// and `world_finish`.
+// An island of the resident step's solve (shaders/world_step.wgsl's
+// header; composed after it and world_bodies.wgsl, before world_solve.wgsl
+// or world_lemke.wgsl, each a module of its own): the island's M and q as
+// world_assemble kept them, the basis solve, the door's check, its answer
+// kept in its contact slots, and the end of a solve dispatch for a world.
 
-// One island's contact rows (src/cpu/assembly.rs ContactRow), row i of the
-// island at 12 i: the Jacobian and the response M⁻¹Jᵀ of sides a (0..6)
-// and b (6..12); q (the dynamic body of each side: `sides`,
-// shaders/world_finish.wgsl); the answer z.
-var<private> jac: array<Scalar, 192>;
-var<private> resp: array<Scalar, 192>;
+// The island's q and answer z (row i at i); its M (row i at ISLAND_MAX i);
+// w = M z + q of the last check; the basis solve's x over cand.
 var<private> qv: array<Scalar, 16>;
 var<private> zv: array<Scalar, 16>;
-// The island's M (row i at ISLAND_MAX i), assembled once for the tableau,
-// the basis solves and the check; w = M z + q of the last check; the basis
-// solve's x over cand.
 var<private> mm: array<Scalar, 256>;
 var<private> wv: array<Scalar, 16>;
 var<private> xs: array<Scalar, 16>;
 
-fn put_row(dst: ptr<private, array<Scalar, 192>>, at: u32, v: vec3<Scalar>) {
-    (*dst)[at] = v.x;
-    (*dst)[at + 1u] = v.y;
-    (*dst)[at + 2u] = v.z;
-}
-
-fn row_vec3(src: ptr<private, array<Scalar, 192>>, at: u32) -> vec3<Scalar> {
-    return vec3<Scalar>((*src)[at], (*src)[at + 1u], (*src)[at + 2u]);
-}
-
-// The world-frame inverse inertia R diag(1/I) Rᵀ of body b (global index)
-// times v, at the step's start pose.
-fn inv_inertia_mul(b: u32, v: vec3<Scalar>) -> vec3<Scalar> {
-    let p = placed_body(b);
-    let inv = vec3_at_consts(sp.bodies_at + b * BC + 6u);
-    return rotate(p, inv * unrotate(p, v));
-}
-
-// assemble_contact: row i of the island from contact `slot` of world with
-// first body `first` and moving-body mask `moving`; bias φ/Δt, ε = 0.
-fn assemble_contact(slot: u32, i: u32, first: u32, moving: u32) {
-    let at = sp.contacts_at + slot * CP;
-    let key = sp.keys_at + 4u * slot;
-    let a = words[key];
-    let b = words[key + 1u];
-    let p = vec3_at_scratch(at);
-    let n = vec3_at_scratch(at + 3u);
-    let gap = scratch[at + 6u];
-    let ga = first + a;
-    let gb = first + b;
-    let ra = p - vec3_at_state(ga * BS);
-    let rb = p - vec3_at_state(gb * BS);
-    let ra_n = cross3(ra, n);
-    let rb_n = cross3(rb, n);
-    let r = 12u * i;
-    put_row(&jac, r, n);
-    put_row(&jac, r + 3u, ra_n);
-    put_row(&jac, r + 6u, -n);
-    put_row(&jac, r + 9u, -rb_n);
-    let s = contact_sides(slot, moving);
-    if s.x != NONE {
-        put_row(&resp, r, n * body_const(ga, 5u));
-        put_row(&resp, r + 3u, inv_inertia_mul(ga, ra_n));
-    }
-    if s.y != NONE {
-        put_row(&resp, r + 6u, -n * body_const(gb, 5u));
-        put_row(&resp, r + 9u, -inv_inertia_mul(gb, rb_n));
-    }
-    sides[i] = s;
-    let pdot = (lin[a] + cross3(ang[a], ra)) - (lin[b] + cross3(ang[b], rb));
-    qv[i] = dot3(pdot, n) + gap / sp.dt;
-}
-
-fn dot6(x: u32, y: u32) -> Scalar {
-    var m = Scalar(0.0);
-    for (var k = 0u; k < 6u; k++) {
-        m += jac[x + k] * resp[y + k];
-    }
-    return m;
-}
-
-// assembly.rs matrix_entry: M_ij over the dynamic bodies rows i and j
-// share, the sides in its order (a–a, a–b, b–a, b–b), into `mm` for the
-// island's n rows.
-fn fill_matrix(n: u32) {
+// Island `isl` of world w (`count` contacts): its members (island_members)
+// and its M and q from their contact slots (world_assemble.wgsl
+// keep_rows); its size (at most ISLAND_MAX: world_assemble flagged the
+// world otherwise).
+fn load_island(w: u32, count: u32, isl: u32, members: ptr<function, array<u32, 16>>) -> u32 {
+    let n = island_members(w, count, isl, members);
+    let slot0 = w * sp.slots;
     for (var i = 0u; i < n; i++) {
-        let si = sides[i];
+        let r = row_at(slot0 + (*members)[i]);
+        qv[i] = scratch[r];
         for (var j = 0u; j < n; j++) {
-            let sj = sides[j];
-            // A side of row i meets at most one side of row j (a row's
-            // two bodies differ): one dot6 per side of row i, in order.
-            let ja = select(6u, 0u, si.x == sj.x);
-            let jb = select(6u, 0u, si.y == sj.x);
-            var m = Scalar(0.0);
-            if si.x != NONE && (si.x == sj.x || si.x == sj.y) {
-                m += dot6(12u * i, 12u * j + ja);
-            }
-            if si.y != NONE && (si.y == sj.x || si.y == sj.y) {
-                m += dot6(12u * i + 6u, 12u * j + jb);
-            }
-            mm[ISLAND_MAX * i + j] = m;
+            mm[ISLAND_MAX * i + j] = scratch[r + 13u + j];
         }
     }
+    return n;
 }
 
 // lcp.rs norm2 of the first n entries of the rows given by `which`: 0: z −
@@ -1032,32 +890,98 @@ fn solve_on(k: u32) -> bool {
     return ok;
 }
 
-// The basis Lemke ended on, re-solved in f64 as the CPU path re-solves it
-// (textbook_checked, `solve_on`): z = max(x, 0) over the basic z's; Lemke's
-// own z where M_SS is singular or the answer not finite. The basis (bit i:
-// z_i basic).
-fn resolve_basis(n: u32) -> u32 {
-    var k = 0u;
-    var mask = 0u;
-    for (var i = 0u; i < n; i++) {
-        let v = basic[i];
-        if v >= n && v < 2u * n {
-            cand[k] = v - n;
-            mask |= 1u << (v - n);
-            k++;
-        }
-    }
-    if solve_on(k) {
-        for (var i = 0u; i < k; i++) {
-            zv[cand[i]] = max(xs[i], Scalar(0.0));
-        }
-    }
-    return mask;
-}
-
 // Block principal pivots tried from the warm basis (world_cpu.rs
 // WARM_PIVOTS).
 const WARM_PIVOTS: u32 = 3u;
+
+// The island's answer zv kept in its contact slots (world_finish.wgsl
+// applies it); its basis (bit i: row i basic) as the world's bases (bit c:
+// contact c basic, c < 32).
+fn keep_island(w: u32, n: u32, members: ptr<function, array<u32, 16>>, basis: u32) -> u32 {
+    let slot0 = w * sp.slots;
+    var bases = 0u;
+    for (var i = 0u; i < n; i++) {
+        let m = (*members)[i];
+        bases |= select(0u, ((basis >> i) & 1u) << m, m < 32u);
+        scratch[sp.contacts_at + (slot0 + m) * CP + 7u] = zv[i];
+    }
+    return bases;
+}
+
+// The end of a solve dispatch for world w: the flags (BUDGET where
+// llvmpipe's loop limit was reached in this dispatch), the warm-start ids
+// forgotten (-1: no warm bases next step) where the world is flagged, its
+// bases so far (bit c: contact c basic), its largest error so far. The
+// flags.
+fn end_solve(w: u32, flags0: u32, bases: u32, max_error: Scalar) -> u32 {
+    var flags = flags0;
+    if flags == 0u && !loops_left() {
+        flags = BUDGET;
+    }
+    let rec = w * REC;
+    if flags != 0u {
+        records[rec + 6u] = Scalar(-1.0);
+    }
+    records[rec + 7u] = Scalar(bases);
+    records[rec + 3u] = max_error;
+    words[sp.out_at + 4u * w + 2u] = flags;
+    return flags;
+}
+
+// The Lemke list's second word: bit i for island i (i < ISLAND_MAX), and
+// WARM_TRIED where the world's warm bases were tried first.
+const WARM_TRIED: u32 = 0x80000000u;
+
+// Entry k of the Lemke list (world_solve.wgsl defer_world): the world and
+// its listed islands; (NONE, 0) past the list's end (the indirect
+// dispatch's last workgroup).
+fn lemke_entry(k: u32) -> vec2<u32> {
+    if k >= atomicLoad(&lists[4u * LIST_LEMKE + 3u]) {
+        return vec2<u32>(NONE, 0u);
+    }
+    let at = list_at(LIST_LEMKE) + 2u * k;
+    return vec2<u32>(atomicLoad(&lists[at]), atomicLoad(&lists[at + 1u]));
+}
+
+// The solve phase of the resident step, per world (shaders/world_step.wgsl's
+// header; a module of its own, composed after world_step.wgsl,
+// world_bodies.wgsl and world_island.wgsl): each island of a world
+// world_assemble did not hand over or flag from last step's basis; the
+// entry point `world_solve_warm`.
+//
+// The warm-start memory is the world's record (scalars 6 and 7): a hash of
+// last step's contact ids (a, b, feature, in order) and its bases (bit c:
+// contact c basic, c < 32). With `sp.warm_bases` the bases are hints where
+// this step's ids hash alike, as the CPU path's memory by id: every answer
+// passes the door's check whatever basis it came from.
+//
+// The solve in two entry points, two modules (llvmpipe runs every branch
+// of an invocation under a mask, so Lemke's path, rarely taken once the
+// warm bases hold, would cost every world every step; and a driver
+// compiles each entry point with all it may call): `world_solve_warm` per
+// world solves each island whose warm basis holds, its z into its
+// contact slots; the other islands (every island without warm bases) it
+// lists with their world (LIST_LEMKE) for `world_lemke`
+// (shaders/world_lemke.wgsl), an indirect dispatch over the listed worlds,
+// which solves them by Lemke's path, their z into the same slots
+// (`world_lemke` counts the loop work of the islands before as one pass
+// over the islands would). Then `world_finish` (shaders/world_finish.wgsl)
+// per world applies every contact's impulse in slot order: the islands'
+// dynamic bodies are disjoint, so each body takes its own island's
+// impulses in the island's order, as the CPU path applies them.
+
+// The hash of world w's contact ids (a, b, feature, in order; FNV-1a
+// over its `count` contacts): the warm-start memory's key.
+fn contact_ids(w: u32, count: u32) -> u32 {
+    var ids = 2166136261u ^ count;
+    for (var c = 0u; c < count; c++) {
+        let key = sp.keys_at + 4u * (w * sp.slots + c);
+        ids = (ids ^ words[key]) * 16777619u;
+        ids = (ids ^ words[key + 1u]) * 16777619u;
+        ids = (ids ^ words[key + 2u]) * 16777619u;
+    }
+    return ids;
+}
 
 // The CPU path's warm start (world_cpu.rs warm_settle) for an island of n
 // contacts: last step's basis `hint` (bit i: contact i basic) solved
@@ -1105,154 +1029,6 @@ fn warm_basis(n: u32, hint: u32, error: ptr<function, Scalar>) -> u32 {
     return NONE;
 }
 
-fn find(parent: ptr<function, array<u32, 16>>, x0: u32) -> u32 {
-    var x = x0;
-    while (*parent)[x] != x {
-        (*parent)[x] = (*parent)[(*parent)[x]];
-        x = (*parent)[x];
-    }
-    return x;
-}
-
-
-// Step parts 2 and 3 for one world: find_islands (union–find through the
-// moving bodies, islands in the order of their first contact), per island
-// assembly, the warm basis (`warm_basis`) and where it fails Lemke
-// (lemke_pivots), the check, the impulses (`world_solve_warm`,
-// `world_solve`); then finish (poses, sleep counters) and the world's
-// figures (`world_finish`). A flagged world (here or in world_contacts)
-// keeps its state.
-//
-// The warm-start memory is the world's record (scalars 6 and 7): a hash of
-// last step's contact ids (a, b, feature, in order) and its bases (bit c:
-// contact c basic, c < 32). With `sp.warm_bases` the bases are hints where
-// this step's ids hash alike, as the CPU path's memory by id: every answer
-// passes the door's check whatever basis it came from.
-//
-// In separate entry points, each a dispatch: where `sp.warm_bases`
-// (llvmpipe runs every branch of an invocation under a mask, so Lemke's
-// path, rarely taken once the warm bases hold, would cost every world
-// every step) `world_solve_warm` over every world, without Lemke's code:
-// a world with an island whose warm basis fails (or without a warm basis)
-// is left as it is and listed (LIST_SOLVE); then `world_solve`,
-// dispatched indirectly over the listed worlds only, steps them from the
-// start with Lemke's path. Both rewrite what they write before the island
-// loop alike, so a listed world ends as it would in `world_solve` alone.
-// Without `sp.warm_bases`, `world_solve` alone over every world. Then
-// `world_finish` over every world not handed to world_friction, from the
-// velocities the solve left in `scratch`.
-
-// A world's contacts as the solve starts (`begin_world`): contacts, the
-// moving-body mask, the flags of world_contacts, islands, the hash of the
-// contact ids, the deepest penetration; `handed`: the world has friction
-// and went to world_friction (or was flagged NOT_SOLVED without it).
-struct Begun {
-    count: u32,
-    moving: u32,
-    flags: u32,
-    islands: u32,
-    ids: u32,
-    max_penetration: Scalar,
-    handed: bool,
-}
-
-// World w's islands (each contact's in its key's fourth word), the hash of
-// its contact ids and its deepest penetration; its velocities v* into lin,
-// ang. A world with friction (a contact with μ > 0: Scene::has_friction)
-// goes to world_friction, flagged HANDED until that finishes it; its
-// rounds there are counted from 0 (the record's sixth scalar).
-fn begin_world(w: u32) -> Begun {
-    let first = worlds[w].x;
-    let out = sp.out_at + 4u * w;
-    let count = words[out];
-    let moving = words[out + 1u];
-    var flags = words[out + 2u];
-    let slot0 = w * sp.slots;
-    records[w * REC + 5u] = Scalar(0.0);
-    load_velocities(w);
-    var parent: array<u32, 16>;
-    var island_of_root: array<u32, 16>;
-    for (var k = 0u; k < MAX_BODIES; k++) {
-        parent[k] = k;
-        island_of_root[k] = NONE;
-    }
-    for (var c = 0u; c < count; c++) {
-        let key = sp.keys_at + 4u * (slot0 + c);
-        let a = words[key];
-        let b = words[key + 1u];
-        if ((moving >> a) & (moving >> b) & 1u) != 0u {
-            let ra = find(&parent, a);
-            let rb = find(&parent, b);
-            parent[max(ra, rb)] = min(ra, rb);
-        }
-    }
-    var islands = 0u;
-    var max_penetration = Scalar(0.0);
-    var ids = 2166136261u ^ count;
-    for (var c = 0u; c < count; c++) {
-        let key = sp.keys_at + 4u * (slot0 + c);
-        let a = words[key];
-        ids = (ids ^ a) * 16777619u;
-        ids = (ids ^ words[key + 1u]) * 16777619u;
-        ids = (ids ^ words[key + 2u]) * 16777619u;
-        let body = select(words[key + 1u], a, ((moving >> a) & 1u) != 0u);
-        let root = find(&parent, body);
-        if island_of_root[root] == NONE {
-            island_of_root[root] = islands;
-            islands++;
-        }
-        words[key + 3u] = island_of_root[root];
-        max_penetration = max(max_penetration, -scratch[sp.contacts_at + (slot0 + c) * CP + 6u]);
-    }
-    var frictional = false;
-    for (var c = 0u; c < count; c++) {
-        let key = sp.keys_at + 4u * (slot0 + c);
-        frictional = frictional || pair_friction(first + words[key], first + words[key + 1u]) > Scalar(0.0);
-    }
-    let fs = sp.fstate_at + 4u * w;
-    words[fs] = F_IDLE;
-    words[out + 3u] = islands;
-    var handed = false;
-    if frictional && flags == 0u {
-        if sp.friction_at == 0u {
-            flags |= NOT_SOLVED;
-        } else {
-            words[fs] = F_ASSEMBLE;
-            words[fs + 1u] = 0u;
-            words[fs + 2u] = 0u;
-            words[out + 2u] = HANDED;
-            records[w * REC + 2u] = max_penetration;
-            records[w * REC + 3u] = Scalar(0.0);
-            handed = true;
-        }
-    }
-    return Begun(count, moving, flags, islands, ids, max_penetration, handed);
-}
-
-// Island `isl` of world w (begun as `b`): its contacts (indices in the
-// world) into `members`, assembled (assemble_contact, fill_matrix); its
-// size, above ISLAND_MAX where it is too large (nothing assembled then).
-fn island_rows(w: u32, b: Begun, isl: u32, members: ptr<function, array<u32, 16>>) -> u32 {
-    let slot0 = w * sp.slots;
-    var n = 0u;
-    for (var c = 0u; c < b.count; c++) {
-        if words[sp.keys_at + 4u * (slot0 + c) + 3u] == isl {
-            if n < ISLAND_MAX {
-                (*members)[n] = c;
-            }
-            n++;
-        }
-    }
-    if n > ISLAND_MAX {
-        return n;
-    }
-    for (var i = 0u; i < n; i++) {
-        assemble_contact(slot0 + (*members)[i], i, worlds[w].x, b.moving);
-    }
-    fill_matrix(n);
-    return n;
-}
-
 // The island's warm basis (warm_basis) from the world's bases `hints` (bit
 // c: contact c basic), its error into `error`; NONE where none holds.
 fn warm_island(n: u32, members: ptr<function, array<u32, 16>>, hints: u32, error: ptr<function, Scalar>) -> u32 {
@@ -1263,206 +1039,58 @@ fn warm_island(n: u32, members: ptr<function, array<u32, 16>>, hints: u32, error
     return warm_basis(n, hint, error);
 }
 
-// The island's answer zv applied (cpu/impulses.rs velocities_after: v +=
-// M⁻¹Jᵀ z per side) and kept in its contact slots; its basis (bit i: row
-// i basic) as the world's bases (bit c: contact c basic, c < 32).
-fn apply_island(w: u32, n: u32, members: ptr<function, array<u32, 16>>, basis: u32) -> u32 {
-    let slot0 = w * sp.slots;
-    var bases = 0u;
-    for (var i = 0u; i < n; i++) {
-        let m = (*members)[i];
-        bases |= select(0u, ((basis >> i) & 1u) << m, m < 32u);
-        let zi = zv[i];
-        scratch[sp.contacts_at + (slot0 + m) * CP + 7u] = zi;
-        if zi == Scalar(0.0) {
-            continue;
-        }
-        let s = sides[i];
-        let r = 12u * i;
-        if s.x != NONE {
-            lin[s.x] += row_vec3(&resp, r) * zi;
-            ang[s.x] += row_vec3(&resp, r + 3u) * zi;
-        }
-        if s.y != NONE {
-            lin[s.y] += row_vec3(&resp, r + 6u) * zi;
-            ang[s.y] += row_vec3(&resp, r + 9u) * zi;
-        }
-    }
-    return bases;
+// Lists world w for `world_lemke` with its islands `listed` (bit i:
+// island i; WARM_TRIED) in LIST_LEMKE (two words an entry; workgroups of
+// WORKGROUP entries).
+fn defer_world(w: u32, listed: u32) {
+    let k = atomicAdd(&lists[4u * LIST_LEMKE + 3u], 1u);
+    atomicMax(&lists[4u * LIST_LEMKE], k / 64u + 1u);
+    atomicStore(&lists[list_at(LIST_LEMKE) + 2u * k], w);
+    atomicStore(&lists[list_at(LIST_LEMKE) + 2u * k + 1u], listed);
 }
 
-// The end of world w's solve: last step's ids and bases kept where the
-// world was stepped here, the velocities after the impulses, the flags
-// (BUDGET where llvmpipe's loop limit was reached in this dispatch) and
-// the figures world_finish reads.
-fn end_world(w: u32, b: Begun, flags0: u32, bases: u32, max_error: Scalar) {
-    var flags = flags0;
-    if flags == 0u && !loops_left() {
-        flags = BUDGET;
-    }
-    let rec = w * REC;
-    records[rec + 6u] = select(Scalar(-1.0), Scalar(b.ids), flags == 0u);
-    records[rec + 7u] = Scalar(bases);
-    records[rec + 2u] = b.max_penetration;
-    records[rec + 3u] = max_error;
-    store_velocities(w);
-    words[sp.out_at + 4u * w + 2u] = flags;
-}
-
-// The world's bases of last step where its contact ids are last step's
-// (`sp.warm_bases`), else None: the hints of warm_island.
-fn warm_hints(w: u32, b: Begun) -> vec2<u32> {
-    let rec = w * REC;
-    let warm = sp.warm_bases != 0u && records[rec + 6u] == Scalar(b.ids);
-    return vec2<u32>(u32(warm), u32(records[rec + 7u]));
-}
-
+// Step part 3 for world w (the CPU path's warm_settle per island, the
+// door's check) where its islands' warm bases hold; the others listed for
+// world_lemke. A world handed to world_friction is left to it; a flagged
+// world (world_contacts, world_assemble) keeps its state.
 @compute @workgroup_size(64)
 fn world_solve_warm(@builtin(global_invocation_id) gid: vec3<u32>) {
     let w = gid.x;
     if w >= sp.count {
         return;
     }
-    let b = begin_world(w);
-    if b.handed {
-        return;
-    }
-    let hints = warm_hints(w, b);
-    var flags = b.flags;
-    var bases = 0u;
-    var max_error = Scalar(0.0);
-    var members: array<u32, 16>;
-    for (var isl = 0u; isl < b.islands && flags == 0u; isl++) {
-        let n = island_rows(w, b, isl, &members);
-        if n > ISLAND_MAX {
-            flags |= ISLAND_TOO_LARGE;
-            break;
-        }
-        var error = Scalar(-1.0);
-        var basis = NONE;
-        if hints.x != 0u {
-            basis = warm_island(n, &members, hints.y, &error);
-        }
-        if basis == NONE {
-            defer_world(w);
-            return;
-        }
-        bases |= apply_island(w, n, &members, basis);
-        max_error = max(max_error, error);
-    }
-    end_world(w, b, flags, bases, max_error);
-}
-
-// Lemke's path for the island's n rows (the tableau B⁻¹ [I, −M, −e | q]
-// with B = I, lemke.wgsl; `spent`: loop work so far, grown), its basis
-// re-solved (resolve_basis) and checked; the basis, or NONE where Lemke
-// gave up or the check failed; the error into `error`.
-fn lemke_island(n: u32, spent: ptr<function, u32>, error: ptr<function, Scalar>) -> u32 {
-    let cols = 2u * n + 2u;
-    let rhs = cols - 1u;
-    for (var i = 0u; i < n; i++) {
-        let ri = i * cols;
-        for (var j = 0u; j < n; j++) {
-            t[ri + j] = Scalar(0.0);
-            t[ri + n + j] = -mm[ISLAND_MAX * i + j];
-        }
-        t[ri + i] = Scalar(1.0);
-        t[ri + 2u * n] = Scalar(-1.0);
-        t[ri + rhs] = qv[i];
-        basic[i] = i;
-    }
-    *spent += n * cols;
-    var visited = 0u;
-    let max_pivots = u32(max(sp.max_pivots, Scalar(1.0)));
-    let status = lemke_pivots(n, *spent, sp.pivot_tol, max_pivots, sp.budget, &visited);
-    *spent += n + (visited + 1u) * ((n + 1u) * cols + 2u * n * n + 6u * n);
-    if status != 1u {
-        return NONE;
-    }
-    for (var i = 0u; i < n; i++) {
-        zv[i] = Scalar(0.0);
-    }
-    var basis = 0u;
-    if visited > 0u {
-        for (var i = 0u; i < n; i++) {
-            let v = basic[i];
-            if v >= n && v < 2u * n {
-                zv[v - n] = max(t[i * cols + rhs], Scalar(0.0));
-            }
-        }
-        basis = resolve_basis(n);
-        *spent += n * n * n;
-    }
-    *error = check(n);
-    return select(basis, NONE, *error < Scalar(0.0));
-}
-
-@compute @workgroup_size(64)
-fn world_solve(@builtin(global_invocation_id) gid: vec3<u32>) {
-    var w = gid.x;
-    if sp.warm_bases != 0u {
-        if w >= atomicLoad(&lists[4u * LIST_SOLVE + 3u]) {
-            return;
-        }
-        w = atomicLoad(&lists[list_at(LIST_SOLVE) + w]);
-    }
-    if w >= sp.count {
-        return;
-    }
-    let b = begin_world(w);
-    if b.handed {
-        return;
-    }
-    let hints = warm_hints(w, b);
-    var flags = b.flags;
-    var bases = 0u;
-    var max_error = Scalar(0.0);
-    var spent = 0u;
-    var members: array<u32, 16>;
-    for (var isl = 0u; isl < b.islands && flags == 0u; isl++) {
-        let n = island_rows(w, b, isl, &members);
-        if n > ISLAND_MAX {
-            flags |= ISLAND_TOO_LARGE;
-            break;
-        }
-        spent += n * n + b.count;
-        var error = Scalar(-1.0);
-        var basis = NONE;
-        if hints.x != 0u {
-            basis = warm_island(n, &members, hints.y, &error);
-            spent += (WARM_PIVOTS + 1u) * (n * n * n + 3u * n * n);
-        }
-        if basis == NONE {
-            basis = lemke_island(n, &spent, &error);
-        }
-        if basis == NONE {
-            flags |= NOT_SOLVED;
-            break;
-        }
-        bases |= apply_island(w, n, &members, basis);
-        max_error = max(max_error, error);
-    }
-    end_world(w, b, flags, bases, max_error);
-}
-
-// Lists world w for `world_solve` (its indirect dispatch: workgroups of
-// WORKGROUP worlds).
-fn defer_world(w: u32) {
-    push_list(LIST_SOLVE, w);
-}
-
-// step.rs finish for every world the solve stepped or flagged (a world
-// handed to world_friction is finished there).
-@compute @workgroup_size(64)
-fn world_finish(@builtin(global_invocation_id) gid: vec3<u32>) {
-    let w = gid.x;
-    if w >= sp.count {
-        return;
-    }
-    let flags = words[sp.out_at + 4u * w + 2u];
+    let out = sp.out_at + 4u * w;
+    var flags = words[out + 2u];
     if flags == HANDED {
         return;
     }
-    load_velocities(w);
-    finish_world(w, flags, records[w * REC + 2u], records[w * REC + 3u]);
+    let count = words[out];
+    let islands = words[out + 3u];
+    let ids = contact_ids(w, count);
+    let rec = w * REC;
+    let warm = sp.warm_bases != 0u && records[rec + 6u] == Scalar(ids);
+    let hints = u32(records[rec + 7u]);
+    records[rec + 6u] = Scalar(ids);
+    var bases = 0u;
+    var max_error = Scalar(0.0);
+    var listed = 0u;
+    var members: array<u32, 16>;
+    for (var isl = 0u; isl < islands && flags == 0u; isl++) {
+        let n = load_island(w, count, isl, &members);
+        var error = Scalar(-1.0);
+        var basis = NONE;
+        if warm {
+            basis = warm_island(n, &members, hints, &error);
+        }
+        if basis == NONE {
+            listed |= 1u << isl;
+            continue;
+        }
+        bases |= keep_island(w, n, &members, basis);
+        max_error = max(max_error, error);
+    }
+    flags = end_solve(w, flags, bases, max_error);
+    if flags == 0u && listed != 0u {
+        defer_world(w, listed | select(0u, WARM_TRIED, warm));
+    }
 }

@@ -257,8 +257,9 @@ pub(crate) struct Pipelines {
     collide: OnceLock<Stage>,
     /// The resident world step's stages, built on first use.
     world_step: OnceLock<WorldStages>,
-    /// [`Shader::WorldFriction`]'s `world_friction`, built on first use.
-    world_friction: OnceLock<Stage>,
+    /// [`Shader::WorldFriction`]'s `world_friction` (the sweeps) and
+    /// [`Shader::WorldFrictionApgd`]'s (APGD), each built on first use.
+    world_friction: [OnceLock<Stage>; 2],
 }
 
 /// The resident world step's entry points (every one with
@@ -272,11 +273,17 @@ pub(crate) struct WorldStages {
     pub(crate) candidate_pairs: Stage,
     pub(crate) narrow: [Stage; 3],
     pub(crate) world_contacts: Stage,
-    /// [`Shader::WorldSolve`]: per world the islands from their warm bases
-    /// (warm bases on), per deferred world (else per world) with Lemke's
-    /// path, then per world `finish`.
+    /// [`Shader::WorldAssemble`]: per world the islands, handed over to
+    /// the frictional phase or assembled (M, q, the responses kept per
+    /// contact slot); [`Shader::WorldSolve`]: per world the islands whose warm bases
+    /// hold, the others listed; [`Shader::WorldLemke`]: per listed world
+    /// those islands by Lemke's path (indirect), [`Shader::WorldLemkeCheck`]
+    /// their bases re-solved and checked (indirect); [`Shader::WorldFinish`]:
+    /// per world `finish` (after the frictional rounds, where any).
+    pub(crate) world_assemble: Stage,
     pub(crate) world_solve_warm: Stage,
-    pub(crate) world_solve: Stage,
+    pub(crate) world_lemke: Stage,
+    pub(crate) world_lemke_check: Stage,
     pub(crate) world_finish: Stage,
 }
 
@@ -336,7 +343,7 @@ impl Pipelines {
                 friction_projected: (0..2 * FRICTION_MAX_K).map(|_| OnceLock::new()).collect(),
                 collide: OnceLock::new(),
                 world_step: OnceLock::new(),
-                world_friction: OnceLock::new(),
+                world_friction: [OnceLock::new(), OnceLock::new()],
             })
         })?
     }
@@ -382,7 +389,6 @@ impl Pipelines {
         }
         let stage = |shader, entry| Stage::new(ctx, shader, entry, WORLD_STEP_BINDINGS);
         let collide = |entry| stage(Shader::WorldCollide, entry);
-        let solve = |entry| stage(Shader::WorldSolve, entry);
         let stages = WorldStages {
             candidate_pairs: collide("candidate_pairs")?,
             narrow: [
@@ -391,26 +397,29 @@ impl Pipelines {
                 collide("narrow_sphere")?,
             ],
             world_contacts: collide("world_contacts")?,
-            world_solve_warm: solve("world_solve_warm")?,
-            world_solve: solve("world_solve")?,
-            world_finish: solve("world_finish")?,
+            world_assemble: stage(Shader::WorldAssemble, "world_assemble")?,
+            world_solve_warm: stage(Shader::WorldSolve, "world_solve_warm")?,
+            world_lemke: stage(Shader::WorldLemke, "world_lemke")?,
+            world_lemke_check: stage(Shader::WorldLemkeCheck, "world_lemke_check")?,
+            world_finish: stage(Shader::WorldFinish, "world_finish")?,
         };
         Ok(self.world_step.get_or_init(|| stages))
     }
 
     /// The resident world step's frictional stage `world_friction` (the
-    /// layout of [`Self::world_step`]'s), built on first use.
-    pub(crate) fn world_friction(&self, ctx: &GpuContext) -> Result<&Stage, Error> {
-        if let Some(s) = self.world_friction.get() {
+    /// layout of [`Self::world_step`]'s) of the sweeps or, `apgd`, of
+    /// APGD, built on first use.
+    pub(crate) fn world_friction(&self, ctx: &GpuContext, apgd: bool) -> Result<&Stage, Error> {
+        let cell = &self.world_friction[usize::from(apgd)];
+        if let Some(s) = cell.get() {
             return Ok(s);
         }
-        let stage = Stage::new(
-            ctx,
-            Shader::WorldFriction,
-            "world_friction",
-            WORLD_STEP_BINDINGS,
-        )?;
-        Ok(self.world_friction.get_or_init(|| stage))
+        let shader = match apgd {
+            true => Shader::WorldFrictionApgd,
+            false => Shader::WorldFriction,
+        };
+        let stage = Stage::new(ctx, shader, "world_friction", WORLD_STEP_BINDINGS)?;
+        Ok(cell.get_or_init(|| stage))
     }
 
     /// The tree stage for islands of n contacts (1 ≤ n ≤ [`TREE_MAX_N`]),

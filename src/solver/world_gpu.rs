@@ -46,7 +46,7 @@
 //! and what that step recorded goes back. The exact Coulomb methods (the
 //! default) take the other paths.
 //!
-//! Frictionless islands start from last step's basis (`world_solve`'s
+//! Frictionless islands start from last step's basis (`world_solve_warm`'s
 //! `warm_basis`, the twin of `world_cpu.rs`'s `warm_settle` without its
 //! feasibility test before the check) where
 //! `warm_start` is on and the method predicts; else Lemke from the empty

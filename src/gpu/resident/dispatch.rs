@@ -2,8 +2,9 @@
 //! encoder in the order of `shaders/world_step.wgsl`'s header: the
 //! collision phase ([`ResidentWorlds::record_collide`]: `candidate_pairs`,
 //! the narrow phase per pair family over its list, `world_contacts`), then
-//! the solve ([`ResidentWorlds::record_solve`]: `world_solve_warm`,
-//! `world_solve` over the worlds it deferred, `world_finish`). The lists'
+//! the solve ([`ResidentWorlds::record_solve`]: `world_assemble`, `world_solve_warm`,
+//! `world_lemke` and `world_lemke_check` over the worlds it listed), the rounds of
+//! `world_friction` where any, `world_finish`. The lists'
 //! sizes are on the device: the indirect dispatches read their workgroups
 //! from a copy of the lists' headers ([`LIST_HEADERS`]), made between the
 //! dispatch that fills a list and the one that reads it.
@@ -14,8 +15,8 @@ use crate::gpu::GpuContext;
 use crate::Error;
 
 /// Bytes of the lists' headers at the start of `lists` (4 lists × x, y,
-/// z, count): the solve's deferred worlds, then the box–box, box–plane and
-/// sphere pairs (the shader's LIST_SOLVE, LIST_BOX_BOX, LIST_BOX_PLANE,
+/// z, count): the worlds listed for Lemke's path, then the box–box,
+/// box–plane and sphere pairs (the shader's LIST_LEMKE, LIST_BOX_BOX, LIST_BOX_PLANE,
 /// LIST_SPHERE).
 pub(super) const LIST_HEADERS: u64 = 64;
 /// Bytes of one list's header.
@@ -49,18 +50,28 @@ impl ResidentWorlds {
         self.record(encoder, &stages.world_contacts);
     }
 
-    /// The solve's dispatches after the collision phase: with warm bases
-    /// `world_solve_warm` over the worlds, then `world_solve` over the
-    /// worlds it deferred (indirect: none in a step where every warm basis
-    /// held); else `world_solve` over the worlds; then `world_finish` over
+    /// The solve's dispatches after the collision phase: `world_assemble`
+    /// and `world_solve_warm` over the worlds, then `world_lemke` and
+    /// `world_lemke_check` over the worlds it listed (indirect: none in a
+    /// step where every warm basis held; every world with contacts without
+    /// warm bases); then the
+    /// frictional rounds (`friction`, where any) and `world_finish` over
     /// the worlds.
-    pub(super) fn record_solve(&self, encoder: &mut wgpu::CommandEncoder, stages: &WorldStages) {
-        if self.warm_bases {
-            self.record(encoder, &stages.world_solve_warm);
-            encoder.copy_buffer_to_buffer(&self.lists, 0, &self.list_groups, 0, 12);
-            self.record_listed(encoder, &stages.world_solve, 0);
-        } else {
-            self.record(encoder, &stages.world_solve);
+    pub(super) fn record_solve(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        stages: &WorldStages,
+        friction: Option<(&Stage, u32)>,
+    ) {
+        self.record(encoder, &stages.world_assemble);
+        self.record(encoder, &stages.world_solve_warm);
+        encoder.copy_buffer_to_buffer(&self.lists, 0, &self.list_groups, 0, 12);
+        self.record_listed(encoder, &stages.world_lemke, 0);
+        self.record_listed(encoder, &stages.world_lemke_check, 0);
+        if let Some((stage, rounds)) = friction {
+            for _ in 0..rounds {
+                self.record(encoder, stage);
+            }
         }
         self.record(encoder, &stages.world_finish);
     }
@@ -124,7 +135,7 @@ impl ResidentWorlds {
                 let mut encoder = ctx.encoder("resident world step");
                 match phase {
                     0 => self.record_collide(&mut encoder, step_stages),
-                    _ => self.record_solve(&mut encoder, step_stages),
+                    _ => self.record_solve(&mut encoder, step_stages, None),
                 }
                 ctx.queue.submit([encoder.finish()]);
                 ctx.device

@@ -20,8 +20,13 @@ pub const BC: usize = 12;
 pub const BS: usize = 13;
 /// Scalars per contact slot in `scratch`: point (3), normal (3), gap, z.
 pub const CP: usize = 8;
+/// Scalars per contact slot's row in `scratch`, after the contact slots
+/// (`world_assemble`): q, the response M⁻¹Jᵀ of sides a and b (12), the
+/// contact's row of its island's M (16); the row's basic variable where
+/// Lemke's path ended (`world_lemke`).
+pub const ROW: usize = 30;
 /// Scalars per world in `records`: kinetic, potential, max penetration,
-/// max error, awake, friction rounds, and `world_solve`'s warm-start
+/// max error, awake, friction rounds, and `world_solve_warm`'s warm-start
 /// memory (a hash of last step's contact ids, the bases of its islands by
 /// contact; read back with the rest, unused by the host).
 pub const REC: usize = 8;
@@ -46,7 +51,7 @@ pub mod flags {
     /// The loop budget of an invocation was spent, or llvmpipe's loop
     /// limit was met (`loops_left`).
     pub const BUDGET: u32 = 16;
-    /// Handed by `world_solve` to `world_friction` and kept until that
+    /// Handed by `world_solve_warm` to `world_friction` and kept until that
     /// finishes it: set after the step's last round, the rounds ran out
     /// for the world (counted as [`BUDGET`]).
     pub const HANDED: u32 = 32;
@@ -178,7 +183,7 @@ mod tests {
             ("BS", BS),
         ]
         .into_iter()
-        .chain([("CP", CP), ("REC", REC)])
+        .chain([("CP", CP), ("ROW", ROW), ("REC", REC)])
         {
             assert!(
                 src.contains(&format!("const {name}: u32 = {v}u;")),

@@ -44,7 +44,7 @@ use crate::world::World;
 use crate::Error;
 use layout::{
     contact_slots, may_have_friction, pack_body_consts, pack_body_state, pack_world_consts, BC, CP,
-    FR, REC, WC,
+    FR, REC, ROW, WC,
 };
 use std::cell::Cell;
 
@@ -109,7 +109,7 @@ fn friction_budget(budget: u32) -> u32 {
 }
 
 /// The state, the words, the records (whose last two scalars are
-/// `world_solve`'s warm basis) and the warm-start memory as they were
+/// `world_solve_warm`'s warm basis) and the warm-start memory as they were
 /// before a submission of several steps.
 struct Saved {
     state: wgpu::Buffer,
@@ -156,7 +156,7 @@ pub struct ResidentWorlds {
     budget: u32,
     tolerances: [f64; 3],
     friction: Option<ResidentFriction>,
-    /// `world_solve` tries last step's bases first (the CPU path's
+    /// `world_solve_warm` tries last step's bases first (the CPU path's
     /// `warm_settle`: `warm_start` on, a method that predicts).
     warm_bases: bool,
     at: FrictionAt,
@@ -169,7 +169,7 @@ pub struct ResidentWorlds {
     words: wgpu::Buffer,
     records: wgpu::Buffer,
     /// The step's work lists (the worlds `world_solve_warm` leaves to
-    /// `world_solve`, the pairs of each family for the narrow phase): per
+    /// `world_lemke`, two words each, the pairs of each family for the narrow phase): per
     /// list the indirect dispatch's workgroups (x, y, z) and the count,
     /// then the entries ([`dispatch`]); and the headers copied aside for
     /// the dispatches.
@@ -233,7 +233,8 @@ impl ResidentWorlds {
         }
         let n = worlds.len();
         let contacts_at = 6 * bodies;
-        let mut scratch_len = contacts_at + n * slots * CP;
+        // The contact slots, then their rows (world_assemble).
+        let mut scratch_len = contacts_at + n * slots * (CP + ROW);
         let keys_at = 2 * bodies + 4 * n;
         let fstate_at = keys_at + 4 * n * slots;
         let mut words_len = fstate_at + 4 * n;
@@ -257,8 +258,9 @@ impl ResidentWorlds {
         let cands_at = words_len;
         let candidates = pair_slots / crate::gpu::collide::SLOTS;
         words_len += n * (1 + 2 * candidates);
-        // The lists: the headers, the deferred worlds, three pair lists.
-        let lists_len = dispatch::LIST_HEADERS as usize / 4 + n + 3 * n * candidates;
+        // The lists: the headers, the worlds for Lemke's path (a world and
+        // its islands each), three pair lists.
+        let lists_len = dispatch::LIST_HEADERS as usize / 4 + 2 * n + 3 * n * candidates;
         let largest = [
             scratch_len * sb,
             words_len * 4,
@@ -490,7 +492,12 @@ impl ResidentWorlds {
         let rounds = self.rounds.get();
         let friction = match rounds {
             0 => None,
-            _ => Some(stages.world_friction(ctx)?),
+            _ => {
+                let apgd = self
+                    .friction
+                    .is_some_and(|f| f.method == ProjectedMethod::Apgd);
+                Some(stages.world_friction(ctx, apgd)?)
+            }
         };
         let (rec_bytes, stride) = self.record_bytes();
         let out_at = (2 * self.first[n] * 4) as u64;
@@ -502,13 +509,8 @@ impl ResidentWorlds {
             }
             for j in 0..k as u64 {
                 self.record_collide(&mut encoder, step_stages);
-                self.record_solve(&mut encoder, step_stages);
-                for stage in friction
-                    .iter()
-                    .flat_map(|s| std::iter::repeat_n(*s, rounds as usize))
-                {
-                    self.record(&mut encoder, stage);
-                }
+                let friction = friction.map(|s| (s, rounds));
+                self.record_solve(&mut encoder, step_stages, friction);
                 let at = j * stride;
                 encoder.copy_buffer_to_buffer(&self.records, 0, &self.history, at, rec_bytes);
                 let words = 16 * n as u64;
@@ -604,8 +606,9 @@ impl ResidentWorlds {
         (self.at.region != 0).then_some((self.at.memory_r as u64 * sb, len))
     }
 
-    /// Worlds `world_solve_warm` left to `world_solve` in the last step
-    /// (a warm basis that did not hold, or none; 0 without warm bases).
+    /// Worlds `world_solve_warm` left to `world_lemke` in the last step
+    /// (a warm basis that did not hold, or none: without warm bases every
+    /// world with contacts).
     ///
     /// # Errors
     /// [`Error::Gpu`] for device trouble.

@@ -34,9 +34,15 @@ const FRICTION_PROJECTED_GLOBAL_WGSL: &str =
 const COLLIDE_WGSL: &str = include_str!("../../../shaders/collide.wgsl");
 const WORLD_STEP_WGSL: &str = include_str!("../../../shaders/world_step.wgsl");
 const WORLD_COLLIDE_WGSL: &str = include_str!("../../../shaders/world_collide.wgsl");
-const WORLD_FINISH_WGSL: &str = include_str!("../../../shaders/world_finish.wgsl");
+const WORLD_BODIES_WGSL: &str = include_str!("../../../shaders/world_bodies.wgsl");
+const WORLD_ASSEMBLE_WGSL: &str = include_str!("../../../shaders/world_assemble.wgsl");
+const WORLD_ISLAND_WGSL: &str = include_str!("../../../shaders/world_island.wgsl");
 const WORLD_SOLVE_WGSL: &str = include_str!("../../../shaders/world_solve.wgsl");
+const WORLD_LEMKE_WGSL: &str = include_str!("../../../shaders/world_lemke.wgsl");
+const WORLD_LEMKE_CHECK_WGSL: &str = include_str!("../../../shaders/world_lemke_check.wgsl");
+const WORLD_FINISH_WGSL: &str = include_str!("../../../shaders/world_finish.wgsl");
 const WORLD_FRICTION_WGSL: &str = include_str!("../../../shaders/world_friction.wgsl");
+const WORLD_SWEEPS_WGSL: &str = include_str!("../../../shaders/world_sweeps.wgsl");
 const WORLD_APGD_WGSL: &str = include_str!("../../../shaders/world_apgd.wgsl");
 
 /// Where `shaders/collide.wgsl`'s own stage starts: the world step kernel
@@ -84,8 +90,24 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         }
         Shader::Collide => ("collide", COLLIDE_WGSL),
         Shader::WorldCollide => ("world_collide", WORLD_COLLIDE_WGSL),
+        Shader::WorldAssemble => ("world_assemble", WORLD_ASSEMBLE_WGSL),
         Shader::WorldSolve => ("world_solve", WORLD_SOLVE_WGSL),
-        Shader::WorldFriction => ("world_friction", WORLD_FRICTION_WGSL),
+        Shader::WorldLemke => ("world_lemke", WORLD_LEMKE_WGSL),
+        Shader::WorldLemkeCheck => ("world_lemke_check", WORLD_LEMKE_CHECK_WGSL),
+        Shader::WorldFriction | Shader::WorldFrictionApgd => {
+            ("world_friction", WORLD_FRICTION_WGSL)
+        }
+        Shader::WorldFinish => ("world_finish", WORLD_FINISH_WGSL),
+    };
+    // The resident solve, frictional and finish modules start alike: the
+    // functions above collide.wgsl's pair functions and lemke.wgsl's, the
+    // step's header, the bodies' velocities.
+    let world_head = || -> Result<String, Error> {
+        Ok(format!(
+            "{}\n{}\n{WORLD_STEP_WGSL}\n{WORLD_BODIES_WGSL}",
+            text_before(COLLIDE_WGSL, COLLIDE_PAIRS)?,
+            text_before(LEMKE_WGSL, LEMKE_KERNEL)?
+        ))
     };
     let standalone = matches!(
         shader,
@@ -97,15 +119,17 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
             "{}\n{WORLD_STEP_WGSL}\n{body}",
             text_before(COLLIDE_WGSL, COLLIDE_STAGE)?
         ),
-        Shader::WorldSolve => format!(
-            "{}\n{}\n{WORLD_STEP_WGSL}\n{WORLD_FINISH_WGSL}\n{body}",
-            text_before(COLLIDE_WGSL, COLLIDE_PAIRS)?,
-            text_before(LEMKE_WGSL, LEMKE_KERNEL)?
-        ),
-        Shader::WorldFriction => format!(
-            "{}\n{}\n{WORLD_STEP_WGSL}\n{WORLD_FINISH_WGSL}\n{body}\n{WORLD_APGD_WGSL}\n{}",
-            text_before(COLLIDE_WGSL, COLLIDE_PAIRS)?,
-            text_before(LEMKE_WGSL, LEMKE_KERNEL)?,
+        Shader::WorldSolve | Shader::WorldLemke | Shader::WorldLemkeCheck => {
+            format!("{}\n{WORLD_ISLAND_WGSL}\n{body}", world_head()?)
+        }
+        Shader::WorldAssemble | Shader::WorldFinish => format!("{}\n{body}", world_head()?),
+        Shader::WorldFriction | Shader::WorldFrictionApgd => format!(
+            "{}\n{body}\n{}\n{}",
+            world_head()?,
+            match shader {
+                Shader::WorldFriction => WORLD_SWEEPS_WGSL,
+                _ => WORLD_APGD_WGSL,
+            },
             text_from(FRICTION_COMMON_WGSL, CONE_PROJECTION)?
         ),
         _ if standalone => body.to_string(),
@@ -143,7 +167,13 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         // The world step: Lemke's finiteness tests and the error measure's
         // epsilon (lcp_error's f64::EPSILON); the collision phase has no
         // Lemke.
-        Shader::WorldSolve | Shader::WorldFriction => with_scalar_limits(&s, precision)?,
+        Shader::WorldAssemble
+        | Shader::WorldSolve
+        | Shader::WorldLemke
+        | Shader::WorldLemkeCheck
+        | Shader::WorldFriction
+        | Shader::WorldFrictionApgd
+        | Shader::WorldFinish => with_scalar_limits(&s, precision)?,
         Shader::WorldCollide => replace_host_line(
             &s,
             "scalar_epsilon",
@@ -177,15 +207,26 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         Shader::WorldCollide => "shaders/collide.wgsl (functions) + shaders/world_step.wgsl + \
              shaders/world_collide.wgsl"
             .to_string(),
-        Shader::WorldSolve => "shaders/collide.wgsl (functions above its pair functions) + \
-             shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_finish.wgsl + \
-             shaders/world_solve.wgsl"
-            .to_string(),
-        Shader::WorldFriction => "shaders/collide.wgsl (functions above its pair functions) + \
-             shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_finish.wgsl + \
-             shaders/world_friction.wgsl + shaders/world_apgd.wgsl + shaders/friction_common.wgsl \
-             (project_on_cone on)"
-            .to_string(),
+        Shader::WorldSolve | Shader::WorldLemke | Shader::WorldLemkeCheck => format!(
+            "shaders/collide.wgsl (functions above its pair functions) + \
+             shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_bodies.wgsl + \
+             shaders/world_island.wgsl + shaders/{file}.wgsl"
+        ),
+        Shader::WorldAssemble | Shader::WorldFinish => format!(
+            "shaders/collide.wgsl (functions above its pair functions) + \
+             shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_bodies.wgsl + \
+             shaders/{file}.wgsl"
+        ),
+        Shader::WorldFriction | Shader::WorldFrictionApgd => format!(
+            "shaders/collide.wgsl (functions above its pair functions) + \
+             shaders/lemke.wgsl (functions) + shaders/world_step.wgsl + shaders/world_bodies.wgsl + \
+             shaders/world_friction.wgsl + shaders/world_{}.wgsl + shaders/friction_common.wgsl \
+             (project_on_cone on)",
+            match shader {
+                Shader::WorldFriction => "sweeps",
+                _ => "apgd",
+            }
+        ),
         _ => format!("shaders/enumeration_basis.wgsl + shaders/{file}.wgsl"),
     };
     Ok(format!(

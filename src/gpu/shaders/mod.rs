@@ -73,14 +73,32 @@ pub(crate) enum Shader {
     /// function of `collide.wgsl` (entry points candidate_pairs,
     /// narrow_box_box, narrow_box_plane, narrow_sphere, world_contacts);
     WorldCollide,
-    /// the solve, `world_finish.wgsl` and `world_solve.wgsl` after
-    /// `collide.wgsl`'s functions above its pair functions and `lemke.wgsl`'s
-    /// (entry points world_solve_warm, world_solve, world_finish);
+    /// the islands and their assembly, `world_bodies.wgsl` and
+    /// `world_assemble.wgsl` after `collide.wgsl`'s functions above its
+    /// pair functions and `lemke.wgsl`'s (entry point world_assemble);
+    WorldAssemble,
+    /// the solve from the warm bases, `world_bodies.wgsl`,
+    /// `world_island.wgsl` and `world_solve.wgsl` after the same functions
+    /// (entry point world_solve_warm);
     WorldSolve,
-    /// the frictional phase, as the solve's but `world_friction.wgsl`,
-    /// `world_apgd.wgsl` and `friction_common.wgsl` from its cone
-    /// projection on for `world_solve.wgsl` (entry point world_friction).
+    /// Lemke's path, as the solve's with `world_lemke.wgsl` for
+    /// `world_solve.wgsl` (entry point world_lemke);
+    WorldLemke,
+    /// its basis re-solved and checked, `world_lemke_check.wgsl` for
+    /// `world_lemke.wgsl` (entry point world_lemke_check);
+    WorldLemkeCheck,
+    /// the frictional phase with the projected sweeps, as the solve's but
+    /// `world_friction.wgsl`, `world_sweeps.wgsl` and
+    /// `friction_common.wgsl` from its cone projection on for
+    /// `world_island.wgsl` and `world_solve.wgsl` (entry point
+    /// world_friction);
     WorldFriction,
+    /// the same with APGD, `world_apgd.wgsl` for `world_sweeps.wgsl`
+    /// (entry point world_friction);
+    WorldFrictionApgd,
+    /// the finish, `world_bodies.wgsl` and `world_finish.wgsl` after the
+    /// same functions (entry point world_finish).
+    WorldFinish,
 }
 
 impl Shader {
@@ -99,7 +117,17 @@ impl Shader {
         v.extend([Shader::Assembly, Shader::Impulses]);
         v.extend((1..=FRICTION_MAX_K).map(Shader::FrictionProjected));
         v.extend([Shader::Collide, Shader::WorldCollide]);
-        v.extend([Shader::WorldSolve, Shader::WorldFriction]);
+        v.extend([
+            Shader::WorldAssemble,
+            Shader::WorldSolve,
+            Shader::WorldLemke,
+            Shader::WorldLemkeCheck,
+        ]);
+        v.extend([
+            Shader::WorldFriction,
+            Shader::WorldFrictionApgd,
+            Shader::WorldFinish,
+        ]);
         v
     }
 
@@ -118,8 +146,13 @@ impl Shader {
             Shader::FrictionProjected(k) => format!("friction_projected_k{k}"),
             Shader::Collide => "collide".into(),
             Shader::WorldCollide => "world_collide".into(),
+            Shader::WorldAssemble => "world_assemble".into(),
             Shader::WorldSolve => "world_solve".into(),
+            Shader::WorldLemke => "world_lemke".into(),
+            Shader::WorldLemkeCheck => "world_lemke_check".into(),
             Shader::WorldFriction => "world_friction".into(),
+            Shader::WorldFrictionApgd => "world_friction_apgd".into(),
+            Shader::WorldFinish => "world_finish".into(),
         }
     }
 
@@ -208,6 +241,11 @@ pub(crate) static GENERATED: &[(&str, &str, &str)] = generated!(
     "friction_projected_k16",
     "collide",
     "world_collide",
+    "world_assemble",
     "world_solve",
+    "world_lemke",
+    "world_lemke_check",
     "world_friction",
+    "world_friction_apgd",
+    "world_finish",
 );
