@@ -187,7 +187,7 @@ fn stacks_woken_from_the_top_follow_the_cpu_path() {
 /// Lemke's path), steps every world itself through the flight and the
 /// landing, and follows the CPU path from the same states within 1e-9 m.
 /// Lemke's path runs only in the steps that need it: both worlds go to
-/// `world_solve` in the first step (no warm basis yet), none while they
+/// `world_lemke` in the first step (no warm basis yet), none while they
 /// rest, some again after the kick.
 #[test]
 fn a_warm_basis_that_no_longer_holds_is_set_aside() {
@@ -330,7 +330,7 @@ fn resident_phase_times() {
         let [[c, cc], [s, sc]] = r.time_phases(&ctx, 0.01, process_cpu_ms).unwrap();
         let (c, s) = (1e3 * c, 1e3 * s);
         println!(
-            "step {step}: 1000 stack:4 worlds: world_collide {c:.1} ms (CPU {cc:.1} ms), world_solve {s:.1} ms (CPU {sc:.1} ms)"
+            "step {step}: 1000 stack:4 worlds: world_collide {c:.1} ms (CPU {cc:.1} ms), solve stages {s:.1} ms (CPU {sc:.1} ms)"
         );
         if step >= 5 {
             rows.push([c, cc, s, sc]);
@@ -342,7 +342,7 @@ fn resident_phase_times() {
         v[v.len() / 2]
     };
     println!(
-        "median of steps 5-19: world_collide {:.1} ms (CPU {:.1} ms), world_solve {:.1} ms (CPU {:.1} ms)",
+        "median of steps 5-19: world_collide {:.1} ms (CPU {:.1} ms), solve stages {:.1} ms (CPU {:.1} ms)",
         median(0),
         median(1),
         median(2),

@@ -7,7 +7,7 @@
 //! overflow of its contact slots: the submission is undone and taken again
 //! a step at a time), and with the device lost in the middle of a call
 //! (the CPU path takes the call again from the worlds passed in). An
-//! undone submission restores the records (`world_solve`'s warm bases
+//! undone submission restores the records (the solve stages' warm bases
 //! live there); a call's frames read only their worlds' states. Skipped
 //! without an f64 adapter (the CPU tests always run).
 
@@ -255,7 +255,7 @@ fn a_submission_stands_only_as_one_step_per_submission_would_go() {
     assert_eq!(accepted(16, &[vec![rec(0, 3)], vec![rec(0, 7)]]), None);
 }
 
-/// `world_solve`'s warm basis of each world (the last two of its record's
+/// The solve stages' warm basis of each world (the last two of its record's
 /// scalars) in the records buffer as it is now.
 fn warm_bases(r: &ResidentWorlds, ctx: &GpuContext) -> Vec<[f64; 2]> {
     let rec = r.records_now(ctx).unwrap();
