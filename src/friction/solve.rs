@@ -470,7 +470,8 @@ fn faceted_round(
     ws.refresh(p, r);
     let mut error = ws.error(p, r);
     if !(error <= tolerance) && *used < cap {
-        let (k, e) = polish(p, r, &slide, cap - *used, tolerance);
+        // Half the steps left at most: PROX gets the rest.
+        let (k, e) = polish(p, r, &slide, (cap - *used).div_ceil(2), tolerance);
         *used += k;
         if e <= tolerance {
             ws.refresh(p, r);
