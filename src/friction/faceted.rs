@@ -37,9 +37,10 @@ use crate::lcp::{Lcp, Status};
 pub(crate) const FACETS: usize = 8;
 
 /// The most contacts of an island given a faceted start: its LCP has
-/// k(2 + [`FACETS`]) unknowns (160 at 16), and Lemke's pivots cost
-/// O(that²) each.
-pub(crate) const FACETED_MAX: usize = 16;
+/// k(2 + [`FACETS`]) unknowns (240 at 24), and Lemke's pivots cost
+/// O(that²) each (24: two piles of 17 and 19 contacts in `rain:32`, 4
+/// worlds × 1,000 steps, were left unsolved at 16).
+pub(crate) const FACETED_MAX: usize = 24;
 
 /// The faceted LCP's answer as reactions, into `r` (3k, interleaved), and
 /// its slacks λ (k: a contact's sliding speed along the pyramid; 0 where
@@ -133,7 +134,7 @@ fn faceted_lcp(p: &FrictionProblem) -> Lcp {
 }
 
 /// The kind of a contact in [`polish`]'s active set.
-#[derive(Clone, Copy, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 enum Kind {
     /// r = 0 (no unknowns).
     Lifted,
@@ -163,10 +164,11 @@ const SLIDE_THRESHOLDS: [f64; 3] = [1e-14, 1e-10, 1e-6];
 /// above the threshold, sticking otherwise), damped Gauss–Newton on the
 /// set's equations (see [`Kind`]); where its best iterate is short of
 /// `tolerance`, the set corrected where that iterate contradicts it
-/// ([`reclassify`]) and again, at most [`POLISH_ROUNDS`] sets in all.
-/// Writes into `r` the first r found whose Coulomb error is at most
-/// `tolerance` (else r is left as it was): (steps, that error or the best
-/// error seen).
+/// ([`reclassify`]) and again, at most [`POLISH_ROUNDS`] sets in all; where
+/// every such set falls short, the neighbours of the best one
+/// ([`neighbours`]). Writes into `r` the first r found whose Coulomb error
+/// is at most `tolerance` (else r is left as it was): (steps, that error
+/// or the best error seen).
 pub(crate) fn polish(
     p: &FrictionProblem,
     r: &mut [f64],
@@ -175,7 +177,7 @@ pub(crate) fn polish(
     tolerance: f64,
 ) -> (u64, f64) {
     let q_norm = super::residual::norm(&p.q);
-    let (mut used, mut best) = (0, f64::INFINITY);
+    let mut search = Search::new(p, max_steps, tolerance);
     for t in SLIDE_THRESHOLDS {
         let mut kinds: Vec<Kind> = (0..p.contacts())
             .map(|i| match (r[3 * i] > 0.0, slide[i] > t * q_norm) {
@@ -186,21 +188,12 @@ pub(crate) fn polish(
             .collect();
         let mut from = r.to_vec();
         for _ in 0..POLISH_ROUNDS {
-            if used >= max_steps {
-                return (used, best);
-            }
-            let (k, e, x) = gauss_newton(
-                p,
-                &kinds,
-                &from,
-                POLISH_STEPS.min(max_steps - used),
-                tolerance,
-            );
-            used += k;
-            best = best.min(e);
-            if e <= tolerance {
+            let Some(x) = search.try_set(&kinds, &from) else {
+                break;
+            };
+            if search.solved() {
                 r.copy_from_slice(&x);
-                return (used, e);
+                return search.outcome();
             }
             if !reclassify(p, &x, &mut kinds) {
                 break;
@@ -208,7 +201,157 @@ pub(crate) fn polish(
             from = x;
         }
     }
-    (used, best)
+    if let Some(x) = neighbours(&mut search) {
+        r.copy_from_slice(&x);
+    }
+    search.outcome()
+}
+
+/// The state of [`polish`]'s search over active sets: the steps used of
+/// the cap, the best Coulomb error seen, and the active set and r of the
+/// best iterate.
+struct Search<'a> {
+    p: &'a FrictionProblem,
+    used: u64,
+    max_steps: u64,
+    tolerance: f64,
+    best: f64,
+    best_set: Option<(Vec<Kind>, Vec<f64>)>,
+}
+
+impl<'a> Search<'a> {
+    fn new(p: &'a FrictionProblem, max_steps: u64, tolerance: f64) -> Self {
+        Search {
+            p,
+            used: 0,
+            max_steps,
+            tolerance,
+            best: f64::INFINITY,
+            best_set: None,
+        }
+    }
+
+    /// Gauss–Newton on `kinds` from `from` within the steps left: its best
+    /// r, or None where no step is left. Records the best set.
+    fn try_set(&mut self, kinds: &[Kind], from: &[f64]) -> Option<Vec<f64>> {
+        if self.used >= self.max_steps || self.solved() {
+            return None;
+        }
+        let steps = POLISH_STEPS.min(self.max_steps - self.used);
+        let (k, e, x) = gauss_newton(self.p, kinds, from, steps, self.tolerance);
+        self.used += k;
+        if e < self.best {
+            self.best = e;
+            self.best_set = Some((kinds.to_vec(), x.clone()));
+        }
+        Some(x)
+    }
+
+    /// Whether the best r is within the tolerance.
+    fn solved(&self) -> bool {
+        self.best <= self.tolerance
+    }
+
+    /// (steps used, the best error).
+    fn outcome(&self) -> (u64, f64) {
+        (self.used, self.best)
+    }
+}
+
+/// Contacts whose kind [`neighbours`] changes: the [`FLIPPED`] of largest
+/// residual in the best set's r.
+const FLIPPED: usize = 4;
+
+/// The neighbours of the best active set of `search` (its r short of the
+/// tolerance): each of its [`FLIPPED`] contacts of largest Coulomb residual
+/// (‖r_i − P_K(r_i − ũ_i)‖, the contact's part of the error; ties in
+/// index order) given each other kind ([`flips`]), Gauss–Newton on each
+/// set from the best r with the flipped contact's reaction restarted
+/// ([`restart`]). A contact on the edge between sticking and
+/// sliding, or loaded only to rounding, is where the faceted answer's
+/// rounding picks the wrong side, and where the set's own correction sees
+/// nothing to correct. Again around the best set found, while that lowers
+/// the error, at most [`NEIGHBOUR_ROUNDS`] rounds (a flip can make a
+/// second one needed). The first r within the tolerance, else None.
+fn neighbours(search: &mut Search) -> Option<Vec<f64>> {
+    for _ in 0..NEIGHBOUR_ROUNDS {
+        let base = search.best;
+        if let Some(x) = neighbours_of_best(search) {
+            return Some(x);
+        }
+        if !(search.best < base) {
+            break;
+        }
+    }
+    None
+}
+
+/// Rounds of [`neighbours`]: each from the best set the last one found,
+/// while that lowers the error.
+const NEIGHBOUR_ROUNDS: usize = 3;
+
+/// One round of [`neighbours`] around the best set so far.
+fn neighbours_of_best(search: &mut Search) -> Option<Vec<f64>> {
+    let (kinds, x) = search.best_set.clone()?;
+    let p = search.p;
+    let u = p.velocity(&x);
+    let worst = worst_contacts(p, &x, &u, FLIPPED);
+    for &c in &worst {
+        for k in flips(kinds[c]) {
+            let (mut set, mut from) = (kinds.clone(), x.clone());
+            set[c] = k;
+            restart(p, c, k, &u, &mut from);
+            let found = search.try_set(&set, &from)?;
+            if search.solved() {
+                return Some(found);
+            }
+        }
+    }
+    None
+}
+
+/// The kinds a contact of kind `k` is tried as by [`neighbours`]: the two
+/// others, and a sliding one sliding again from the edge of its cone
+/// against its velocity ([`restart`]: Gauss–Newton's equations hold as
+/// well where the slide runs along its friction as against it, and a
+/// sliding contact found running along it is the wrong root).
+fn flips(k: Kind) -> Vec<Kind> {
+    match k {
+        Kind::Lifted => vec![Kind::Sticking, Kind::Sliding],
+        Kind::Sticking => vec![Kind::Sliding, Kind::Lifted],
+        Kind::Sliding => vec![Kind::Sliding, Kind::Sticking, Kind::Lifted],
+    }
+}
+
+/// Contact `c`'s reaction in `r`, restarted for kind `k` with u = W r + q
+/// at the best r: sliding, on the edge of its cone against its tangential
+/// velocity (r_t = −μ r_n u_t/‖u_t‖: a sticking contact's u_t, the residual
+/// of an inconsistent set, points where it would slide; kept where u_t = 0
+/// or r_n ≤ 0); lifted, zero; sticking, as it is.
+fn restart(p: &FrictionProblem, c: usize, k: Kind, u: &[f64], r: &mut [f64]) {
+    let (rn, ut) = (r[3 * c], [u[3 * c + 1], u[3 * c + 2]]);
+    let speed = ut[0].hypot(ut[1]);
+    match k {
+        Kind::Sliding if speed > 0.0 && rn > 0.0 => {
+            let edge = p.mu[c] * rn / speed;
+            r[3 * c + 1] = -edge * ut[0];
+            r[3 * c + 2] = -edge * ut[1];
+        }
+        Kind::Lifted => r[3 * c..3 * c + 3].fill(0.0),
+        _ => {}
+    }
+}
+
+/// The (at most) `count` contacts of largest Coulomb residual at r (u = W
+/// r + q), the largest first, ties in index order.
+fn worst_contacts(p: &FrictionProblem, r: &[f64], u: &[f64], count: usize) -> Vec<usize> {
+    let mut diff = vec![0.0; p.dim()];
+    super::residual::coulomb_error_into(p, r, u, 1.0, &mut diff);
+    let part = |i: usize| super::residual::norm(&diff[3 * i..3 * i + 3]);
+    let mut order: Vec<usize> = (0..p.contacts()).collect();
+    order.sort_by(|&a, &b| part(b).total_cmp(&part(a)));
+    order.truncate(count);
+    order
 }
 
 /// Corrects `kinds` where r contradicts them: a lifted contact approaching

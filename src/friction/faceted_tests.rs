@@ -447,3 +447,62 @@ const U6: ([f64; 144], [f64; 12], [f64; 4]) = (
     ],
     [0.4, 0.4, 0.4, 0.4],
 );
+
+/// Islands of `rain:32` (`lcpbatch simulate --world rain:32 --worlds 4
+/// --steps 1000 --threads 1`) that `auto` left unsolved at the cap of
+/// 1,000 with the faceted round's first active sets alone (dumped at the
+/// solve with their warm starts, every f64 as its 16 hex digits so that
+/// the bits are the world's): boxes on four corners and small piles, 4–13
+/// contacts, whose answer lies in a neighbour of the best faceted set
+/// (`faceted_islands.json`; W row-major, q, μ, the warm start or null).
+fn rain_islands() -> Vec<(FrictionProblem, Option<Vec<f64>>)> {
+    let text = include_str!("faceted_islands.json");
+    let file: serde_json::Value = serde_json::from_str(text).unwrap();
+    let numbers = |v: &serde_json::Value| -> Vec<f64> {
+        let hex = v.as_str().unwrap();
+        (0..hex.len() / 16)
+            .map(|i| f64::from_bits(u64::from_str_radix(&hex[16 * i..16 * i + 16], 16).unwrap()))
+            .collect()
+    };
+    file["islands"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|island| {
+            let p = FrictionProblem::new(
+                numbers(&island["W"]),
+                numbers(&island["q"]),
+                numbers(&island["mu"]),
+            )
+            .unwrap();
+            let start = (!island["start"].is_null()).then(|| numbers(&island["start"]));
+            (p, start)
+        })
+        .collect()
+}
+
+#[test]
+fn rain_islands_left_unsolved_by_the_faceted_sets_are_solved_by_auto() {
+    let s = FrictionSettings {
+        method: FrictionMethod::Auto,
+        tolerance: 1e-12,
+        max_iterations: 1000,
+    };
+    let islands = rain_islands();
+    assert_eq!(islands.len(), 8);
+    for (which, (p, start)) in islands.iter().enumerate() {
+        // As the world solves it (warm), and from zero.
+        for from in [start.as_deref(), None] {
+            let sol = solve_friction_problem(p, from, &s);
+            let fresh = coulomb_error(p, &sol.r);
+            assert!(
+                sol.status == crate::lcp::Status::Solved && fresh <= 1e-12,
+                "island {which} ({} contacts, warm {}): {:?} after {} iterations, error {fresh:e}",
+                p.contacts(),
+                from.is_some(),
+                sol.status,
+                sol.iterations
+            );
+        }
+    }
+}
