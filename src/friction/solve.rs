@@ -320,7 +320,8 @@ const NEAR_STEPS: u64 = 3;
 /// stalls where W is only semidefinite: piles, heavy boxes on light ones;
 /// on 216 seeded stacks of 2–4 boxes with mass ratios to 1e4 and μ to 2,
 /// `src/tests/friction_hard.rs`, this took the unsolved from 92 to 3 at the
-/// default cap). Keeps the r of smallest error when the cap is
+/// default cap, and PROX's raised ρ where it creeps to none of 648).
+/// Keeps the r of smallest error when the cap is
 /// reached.
 /// Returns the iterations and whether `ws.u` is W r + q of the final r as
 /// [`velocity_into`] computes it (not updated incrementally by sweeps).
