@@ -314,7 +314,8 @@ const NEAR_STEPS: u64 = 3;
 /// of 19, and its 229 islands that take over 20 iterations, replayed
 /// warm, take 18,499 iterations in all instead of 31,774 (11 unsolved);
 /// with the polish's search of neighbouring active sets and the round up
-/// to 24 contacts, 10, and over 100 worlds × 300 steps 101 instead of 211),
+/// to 24 contacts, 10, and over 100 worlds × 300 steps 101 instead of 211;
+/// with PROX's raised ρ as well, 1 and 43),
 /// then PROX ([`prox_rounds`]) runs from the start
 /// for the rest of the cap instead of more sweeps (NSGS creeps and Newton
 /// stalls where W is only semidefinite: piles, heavy boxes on light ones;
