@@ -297,7 +297,7 @@ fn neighbours_of_best(search: &mut Search) -> Option<Vec<f64>> {
     let u = p.velocity(&x);
     let worst = worst_contacts(p, &x, &u, FLIPPED);
     for &c in &worst {
-        for k in flips(kinds[c]) {
+        for &k in flips(kinds[c]) {
             let (mut set, mut from) = (kinds.clone(), x.clone());
             set[c] = k;
             restart(p, c, k, &u, &mut from);
@@ -315,11 +315,11 @@ fn neighbours_of_best(search: &mut Search) -> Option<Vec<f64>> {
 /// against its velocity ([`restart`]: Gauss–Newton's equations hold as
 /// well where the slide runs along its friction as against it, and a
 /// sliding contact found running along it is the wrong root).
-fn flips(k: Kind) -> Vec<Kind> {
+fn flips(k: Kind) -> &'static [Kind] {
     match k {
-        Kind::Lifted => vec![Kind::Sticking, Kind::Sliding],
-        Kind::Sticking => vec![Kind::Sliding, Kind::Lifted],
-        Kind::Sliding => vec![Kind::Sliding, Kind::Sticking, Kind::Lifted],
+        Kind::Lifted => &[Kind::Sticking, Kind::Sliding],
+        Kind::Sticking => &[Kind::Sliding, Kind::Lifted],
+        Kind::Sliding => &[Kind::Sliding, Kind::Sticking, Kind::Lifted],
     }
 }
 
