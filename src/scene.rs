@@ -17,18 +17,24 @@ use crate::Error;
 /// The two unit tangents (t₁, t₂) of a contact with unit normal n: an
 /// orthonormal, right-handed frame (t₁ × t₂ = n), a deterministic function
 /// of n alone (Duff et al., "Building an orthonormal basis, revisited",
-/// JCGT 2017). With s = 1 when n.z ≥ 0 (−0.0 included) and −1 otherwise,
+/// JCGT 2017). With s = 1 when n.z ≥ −½ and −1 otherwise,
 /// a = −1 / (s + n.z), b = n.x n.y a:
 ///
 /// ```text
 /// t₁ = (1 + s n.x² a, s b, −s n.x),   t₂ = (b, s + n.y² a, −n.y)
 /// ```
 ///
-/// Continuous in n except across the plane n.z = 0 with n.x or n.y away
-/// from 0, where s flips; the ground normal (0, 1, 0) gives t₁ = (1, 0, 0),
-/// t₂ = (0, 0, −1). `shaders/friction_assembly.wgsl` computes the same.
+/// Each branch is smooth where |s + n.z| ≥ ½ (|a| ≤ 2: no cancellation),
+/// so the frame is continuous in n except across the circle n.z = −½,
+/// where s flips. Duff's own rule flips s at n.z = 0, which is where the
+/// normals of y-up worlds lie (ground n = (0, 1, 0), box sides (±1, 0, 0)):
+/// a side normal whose n.z rounds to −0.0 one step and −6e-19 the next
+/// turned (t₁, t₂) into (−t₁, −t₂), and the world's warm start (last
+/// step's reactions by contact id) pointed its friction the wrong way.
+/// The ground normal (0, 1, 0) gives t₁ = (1, 0, 0), t₂ = (0, 0, −1).
+/// `shaders/world_friction.wgsl` computes the same.
 pub fn tangent_basis(n: DVec3) -> (DVec3, DVec3) {
-    let s = if n.z >= 0.0 { 1.0 } else { -1.0 };
+    let s = if n.z >= -0.5 { 1.0 } else { -1.0 };
     let a = -1.0 / (s + n.z);
     let b = n.x * n.y * a;
     (

@@ -849,7 +849,7 @@ var<private> fmembers: array<u32, 16>;
 
 // scene.rs tangent_basis(n).
 fn tangent_basis(n: vec3<Scalar>) -> array<vec3<Scalar>, 2> {
-    let s = select(Scalar(-1.0), Scalar(1.0), n.z >= Scalar(0.0));
+    let s = select(Scalar(-1.0), Scalar(1.0), n.z >= Scalar(-0.5));
     let a = Scalar(-1.0) / (s + n.z);
     let b = n.x * n.y * a;
     return array<vec3<Scalar>, 2>(

@@ -140,4 +140,41 @@ mod tests {
         let (t1, t2) = tangent_basis(DVec3::Y);
         assert_eq!((t1, t2), (DVec3::X, DVec3::NEG_Z));
     }
+
+    /// The frame is continuous across n.z = 0 (where y-up worlds' normals
+    /// lie): a normal whose n.z rounds to +0, −0 or −6e-19 gets the same
+    /// frame to rounding, and tilting a normal through n.z = 0 turns its
+    /// frame by no more than the tilt. It flips only across n.z = −½.
+    #[test]
+    fn tangents_do_not_flip_with_the_sign_of_a_zero_z() {
+        let sides = [
+            DVec3::X,
+            DVec3::NEG_X,
+            DVec3::new(0.6, 0.8, 0.0),
+            DVec3::new(-0.8, 0.6, 0.0),
+        ];
+        for side in sides {
+            let (t1, t2) = tangent_basis(side);
+            for z in [-0.0, -6e-19, 6e-19, -1e-12] {
+                let n = DVec3::new(side.x, side.y, z).normalize();
+                let (u1, u2) = tangent_basis(n);
+                assert!((u1 - t1).length() <= 1e-11, "{n}: {u1} vs {t1}");
+                assert!((u2 - t2).length() <= 1e-11, "{n}: {u2} vs {t2}");
+            }
+            for step in -20..20 {
+                let z = step as f64 * 0.01;
+                let (a, b) = (
+                    DVec3::new(side.x, side.y, z).normalize(),
+                    DVec3::new(side.x, side.y, z + 0.01).normalize(),
+                );
+                let ((a1, _), (b1, _)) = (tangent_basis(a), tangent_basis(b));
+                assert!((a1 - b1).length() < 0.05, "{a} to {b}: {a1} to {b1}");
+            }
+        }
+        let below = |z: f64| tangent_basis(DVec3::new((1.0 - z * z).sqrt(), 0.0, z)).0;
+        assert!(
+            (below(-0.51) - below(-0.49)).length() > 1.0,
+            "the flip at n.z = −½"
+        );
+    }
 }

@@ -25,6 +25,7 @@
 use super::problem::FrictionProblem;
 use super::sparse::{
     block_runs, blocks_dot, cholesky_in, lower_envelope, lu_envelope, product_sparse, Pattern,
+    SPARSE_FROM,
 };
 use super::workspace::Workspace;
 use crate::linalg::{solve_in_place, PIVOT_TOL};
@@ -139,8 +140,8 @@ pub fn scalings(p: &FrictionProblem) -> Vec<f64> {
 }
 
 /// The step from r into `ws.delta`: the Newton step ∂Φ Δ = −Φ (by
-/// [`stick_step`] where every contact sticks or is free), or where ∂Φ
-/// is singular (W rank-deficient: a box on four coplanar contacts) the
+/// [`stick_step`] where every contact sticks, slides near the edge of its
+/// cone or is free), or where ∂Φ is singular (W rank-deficient: a box on four coplanar contacts) the
 /// Levenberg–Marquardt step ((∂Φᵀ∂Φ + λ I) Δ = −∂ΦᵀΦ, λ = 1e-10 of the
 /// mean diagonal, a descent direction of the merit). Once the LU of ∂Φ
 /// failed on an island (`ws.singular`), its later steps are LM directly.
@@ -221,14 +222,39 @@ fn step(p: &FrictionProblem, r: &[f64], ws: &mut Workspace) -> Option<f64> {
 /// still be taken as sticking by [`stick_step`].
 const STICK_BAND: f64 = 1e-9;
 
+/// How far (relative) beyond the disc a sliding x_t may lie for
+/// [`stick_step`] to take the contact's tangential rows as the identity's:
+/// the resting pyramid's contacts on the edge of their cones (s/λ − 1 of
+/// 1e-9 to 2e-8 at u_t ≈ 1e-11).
+const EDGE_BAND: f64 = 1e-6;
+
+/// A sliding contact whose normal reaction is at most this fraction of the
+/// island's largest is taken by [`stick_step`] as one on the edge (the
+/// resting pyramid's contacts of 1e-7 to 1e-9 of the largest reaction,
+/// sliding at s/λ − 1 ≈ 0.1–1.5).
+const FAINT: f64 = 1e-6;
+
 /// Sorts the contacts at r by their rows of ∂Φ (x as `alart_curnier`
-/// computes it, so that the kinds are its rows'): `ws.stuck` gets those that
-/// stick with x_n > 0, `ws.w_rows` every row of ∂Φ that is ρ_i times W's
-/// row (x_n > 0: the normal; s ≤ λ: the tangents). True when every contact
-/// sticks with x_n > 0 or is free (x_n ≤ 0, x_t ≠ 0: identity rows).
+/// computes it, so that the kinds are its rows'): `ws.stuck` gets the rows
+/// [`stick_step`] solves through W (ascending: the three of a contact that
+/// sticks with x_n > 0, the normal of one that slides with x_n > 0),
+/// `ws.w_rows` every row of ∂Φ that is ρ_i times W's row (x_n > 0: the
+/// normal; s ≤ λ: the tangents). True when every contact sticks with
+/// x_n > 0, slides with x_n > 0 on the edge of its cone ([`EDGE_BAND`]) or
+/// with a faint reaction ([`FAINT`]) on an island of at least
+/// [`SPARSE_FROM`] contacts, or is free (x_n ≤ 0, x_t ≠ 0:
+/// identity rows). Other slides (a box sliding on the ground) go to the
+/// general step, whose rows are ∂Φ's own.
 fn classify(p: &FrictionProblem, r: &[f64], ws: &mut Workspace) -> bool {
     ws.stuck.clear();
     ws.w_rows.clear();
+    // Edge and faint slides only on large islands, whose LM step ((3k)³)
+    // is what the stick step saves: with them on every island, the
+    // frictional rain of `world_rain.rs` (4 worlds × 1,000 steps, islands
+    // of mostly ≤ 16 contacts) ended 16 islands unsolved instead of 11.
+    let large = p.contacts() >= SPARSE_FROM;
+    let largest = (0..p.contacts()).fold(0.0f64, |m, i| m.max(r[3 * i]));
+    let faint = FAINT * largest;
     let mut simple = true;
     for (i, &mu) in p.mu.iter().enumerate() {
         let rh = ws.rho[i];
@@ -250,7 +276,9 @@ fn classify(p: &FrictionProblem, r: &[f64], ws: &mut Workspace) -> bool {
         // as sticking here; the step is then checked against the true ∂Φ
         // (its slope) and by the line search.
         if xn > 0.0 && s <= lambda * (1.0 + STICK_BAND) {
-            ws.stuck.push(i);
+            ws.stuck.extend([3 * i, 3 * i + 1, 3 * i + 2]);
+        } else if large && xn > 0.0 && (s <= lambda * (1.0 + EDGE_BAND) || r[3 * i] <= faint) {
+            ws.stuck.push(3 * i);
         } else if !(xn <= 0.0 && s > 0.0) {
             simple = false;
         }
@@ -297,64 +325,73 @@ fn w_rows_dependent(p: &FrictionProblem, ws: &mut Workspace) -> bool {
     )
 }
 
-/// The Newton step where every contact either sticks with x_n > 0 (its
-/// rows of ∂Φ are ρ_i W_i) or is free, x_n ≤ 0 and x_t ≠ 0 (its rows are
-/// the identity's): the resting stacks and boxes of time stepping, whose W
-/// is rank-deficient (more contact directions than the bodies' 6 degrees
-/// of freedom), so that ∂Φ is singular and the general step pays a failed
-/// LU and then ∂Φᵀ∂Φ. Here the free contacts' Δ_F = −Φ_F, and the sticking
-/// ones' W_SS Δ_S = −Φ_S/ρ − W_SF Δ_F is solved by a semidefinite Cholesky
-/// of W_SS (a pivot below 1e-10 of its diagonal dropped, its unknown 0:
-/// a solution where the right side is in W_SS's range, as it is where
-/// these contacts can all stick): (3|S|)³/6 multiply-adds instead of
-/// about n³. Writes `ws.delta`; false when the contacts are not of these
-/// two kinds, W_SS is not positive semidefinite to rounding, or the step
-/// is not finite (the general step decides then).
+/// The Newton step where every contact sticks, slides with x_n > 0 near
+/// the edge or faintly ([`classify`]) or is free, x_n ≤ 0 and x_t ≠ 0 (its rows are the identity's): the resting
+/// stacks and boxes of time stepping, whose W is rank-deficient (more
+/// contact directions than the bodies' 6 degrees of freedom), so that ∂Φ
+/// is singular and the general step pays a failed LU and then ∂Φᵀ∂Φ. The
+/// rows R = `ws.stuck` ([`classify`]) are those whose ∂Φ row is ρ_i W's
+/// (a sticking contact's three, a sliding one's normal); every other row
+/// takes the identity's, Δ = −Φ: the free contacts' exact answer, and for
+/// a sliding contact's tangents the step that puts r_t where the disc's
+/// projection P_λ(x_t) is now (its true rows, −z ∂λ − (λ/‖x_t‖)(I − z zᵀ)
+/// ∂x_t beside the identity, are left out: the pyramid's sliding contacts
+/// carry reactions of 1e-7 of the largest, or lie on the cone's edge with
+/// u_t ≈ 0). Then W_RR Δ_R = −Φ_R/ρ − W_R,¬R Δ_¬R by a semidefinite
+/// Cholesky of W_RR (a pivot below 1e-10 of its diagonal dropped, its
+/// unknown 0: a solution where the right side is in W_RR's range):
+/// |R|³/6 multiply-adds instead of about n³. The caller checks the step's
+/// slope against the true ∂Φ (a descent direction of ½‖Φ‖² or the general
+/// step). Writes `ws.delta`; false when W_RR is not positive semidefinite
+/// to rounding or the step is not finite.
 fn stick_step(p: &FrictionProblem, ws: &mut Workspace) -> bool {
     let n = p.dim();
-    // Δ = −Φ on every row first: the free contacts' answer.
+    // Δ = −Φ on every row first: the rows outside R keep it.
     for (d, f) in ws.delta.iter_mut().zip(&ws.phi) {
         *d = -f;
     }
-    let m = 3 * ws.stuck.len();
+    let m = ws.stuck.len();
     if m == 0 {
         return ws.delta.iter().all(|d| d.is_finite());
     }
     let (stuck, pattern, env_first) = (&ws.stuck, &ws.pattern, &ws.env_first);
-    let free_delta = |row: &[f64], i: usize, delta: &[f64]| {
-        // Σ over the free contacts j of W_row,j Δ_j: the row times Δ over
-        // i's neighbours (the bits of the whole row's `dot`) minus the
-        // sticking neighbours' part (their Δ is still −Φ here).
+    let outside = |row: &[f64], i: usize, delta: &[f64]| {
+        // Σ over the columns c outside R of W_row,c Δ_c: the row times Δ
+        // over i's neighbours (the bits of the whole row's `dot`) minus
+        // R's columns among them (their Δ is still −Φ here).
         let blocks = pattern.row(i);
         let mut v = blocks_dot(row, blocks, delta);
-        for &j in blocks.iter().filter(|j| stuck.binary_search(j).is_ok()) {
-            v -= row[3 * j] * delta[3 * j]
-                + row[3 * j + 1] * delta[3 * j + 1]
-                + row[3 * j + 2] * delta[3 * j + 2];
+        for &j in blocks {
+            let from = stuck.partition_point(|&c| c < 3 * j);
+            let mut within = stuck[from..]
+                .iter()
+                .take_while(|&&c| c < 3 * j + 3)
+                .peekable();
+            if within.peek().is_some() {
+                v -= within.map(|&c| row[c] * delta[c]).sum::<f64>();
+            }
         }
         v
     };
-    // W_SS's row s: its lower triangle (all the Cholesky reads), on large
+    // W_RR's row a: its lower triangle (all the Cholesky reads), on large
     // islands from W's envelope on (W's row is zero left of it).
-    let from = |s: usize| {
+    let from = |a: usize| {
         env_first
-            .get(3 * stuck[s / 3])
-            .map_or(0, |&f| 3 * stuck.partition_point(|&j| 3 * j < f))
+            .get(3 * (stuck[a] / 3))
+            .map_or(0, |&f| stuck.partition_point(|&c| c < f))
     };
     let all_stick = m == n;
-    for (a, &i) in stuck.iter().enumerate() {
-        for d in 0..3 {
-            let (row, s) = (3 * i + d, 3 * a + d);
-            let w_row = &p.w[row * n..(row + 1) * n];
-            let coupling = if all_stick {
-                0.0
-            } else {
-                free_delta(w_row, i, &ws.delta)
-            };
-            ws.trial[s] = -ws.phi[row] / ws.rho[i] - coupling;
-            for c in from(s)..=s {
-                ws.matrix[s * m + c] = w_row[3 * stuck[c / 3] + c % 3];
-            }
+    for (a, &row) in stuck.iter().enumerate() {
+        let i = row / 3;
+        let w_row = &p.w[row * n..(row + 1) * n];
+        let coupling = if all_stick {
+            0.0
+        } else {
+            outside(w_row, i, &ws.delta)
+        };
+        ws.trial[a] = -ws.phi[row] / ws.rho[i] - coupling;
+        for c in from(a)..=a {
+            ws.matrix[a * m + c] = w_row[stuck[c]];
         }
     }
     lower_envelope(&ws.matrix[..m * m], m, from, &mut ws.first);
@@ -362,8 +399,8 @@ fn stick_step(p: &FrictionProblem, ws: &mut Workspace) -> bool {
     if cholesky_in(matrix, trial, m, Some(1e-10), &ws.first).is_none() {
         return false;
     }
-    for (a, &i) in ws.stuck.iter().enumerate() {
-        ws.delta[3 * i..3 * i + 3].copy_from_slice(&ws.trial[3 * a..3 * a + 3]);
+    for (a, &row) in ws.stuck.iter().enumerate() {
+        ws.delta[row] = ws.trial[a];
     }
     ws.delta.iter().all(|d| d.is_finite())
 }

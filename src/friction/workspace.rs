@@ -41,7 +41,8 @@ pub struct Workspace {
     pub(crate) matrix: Vec<f64>,
     /// ∂Φᵀ∂Φ of a Levenberg–Marquardt step, 3k × 3k.
     pub(crate) normal: Vec<f64>,
-    /// The sticking contacts of a Newton step (`newton::stick_step`).
+    /// The rows a Newton step solves through W (`newton::stick_step`),
+    /// ascending: a sticking contact's three, a sliding one's normal.
     pub(crate) stuck: Vec<usize>,
     /// The rows of ∂Φ that are ρ_i W's rows (`newton::classify`).
     pub(crate) w_rows: Vec<usize>,

@@ -108,6 +108,35 @@ fn a_stack_with_friction_stays_at_rest() {
     }
 }
 
+/// A resting pyramid of ten boxes (one island of 88 contacts, y up: its
+/// side normals have n.z = ±0 or a rounding's −6e-19) keeps its tangent
+/// frames from step to step, so that last step's reactions start the next
+/// step within reach: after the cold first step, over 99 steps, every
+/// island is solved within 1e-12 from its warm start, none repaired, in at
+/// most 300 iterations in all (stick steps: its contacts on the edge of
+/// their cones and its faint sliding ones taken through W's rows; 147
+/// measured). With frames that flipped with the sign of n.z these steps
+/// took 627 (14–48 NSGS sweeps and Levenberg–Marquardt steps on 25 steps).
+#[test]
+fn a_resting_pyramid_is_solved_from_its_warm_start_in_a_few_steps() {
+    let mut worlds = vec![standard_world(WorldKind::Pyramid, 4, 0)];
+    let mut solver = cpu();
+    let mut iterations = Vec::new();
+    for step in 0..100 {
+        let r = solver.step_worlds(&mut worlds, 0.01).unwrap();
+        assert_eq!(r.unsolved, 0, "step {step}");
+        assert_eq!(r.solve.friction.len(), 1, "step {step}: one island");
+        let island = &r.solve.friction[0];
+        assert!(island.error() <= 1e-12, "step {step}");
+        if step > 0 {
+            assert!(island.warm_started, "step {step}");
+            iterations.push(island.solution.iterations);
+        }
+    }
+    let all: u64 = iterations.iter().sum();
+    assert!(all <= 300, "{all} iterations: {iterations:?}");
+}
+
 /// Frictional worlds stepped on 1, 2 and 3 threads: bit for bit the same
 /// worlds and the same reports (each world is solved on its own, warm
 /// start from its own memory, whatever thread steps it). The rain (more
