@@ -67,10 +67,11 @@ pub(crate) struct Warm {
     pub(crate) bases: WarmMemory<bool>,
     /// Per contact id: its reaction (r_n, r_t₁, r_t₂).
     pub(crate) reactions: WarmMemory<[f64; 3]>,
-    /// Per contact id: its island was settling in the last call (a world
+    /// Per contact id: its island was settling in a call it keeps (a world
     /// step's warm start that was off, see
-    /// `solver::world_friction::SETTLED`): the next call polishes its
-    /// start even where it is within the tolerance.
+    /// `solver::world_friction::SETTLED`; by default the last step only):
+    /// the next call polishes its start even where it is within the
+    /// tolerance.
     pub(crate) settling: WarmMemory<bool>,
 }
 
