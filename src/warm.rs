@@ -67,6 +67,12 @@ pub(crate) struct Warm {
     pub(crate) bases: WarmMemory<bool>,
     /// Per contact id: its reaction (r_n, r_t₁, r_t₂).
     pub(crate) reactions: WarmMemory<[f64; 3]>,
+    /// Per contact id: its island was settling in a call it keeps (a world
+    /// step's warm start that was off, see
+    /// `solver::world_friction::SETTLED`; by default the last step only):
+    /// the next call polishes its start even where it is within the
+    /// tolerance.
+    pub(crate) settling: WarmMemory<bool>,
 }
 
 impl Warm {
@@ -76,6 +82,7 @@ impl Warm {
         Warm {
             bases: WarmMemory::new(keep, shards),
             reactions: WarmMemory::new(keep, shards),
+            settling: WarmMemory::new(keep, shards),
         }
     }
 
@@ -87,6 +94,7 @@ impl Warm {
     pub(crate) fn join_calls(&mut self, join: bool) {
         self.bases.join_calls(join);
         self.reactions.join_calls(join);
+        self.settling.join_calls(join);
     }
 }
 
@@ -213,6 +221,15 @@ fn forget<V>(map: &mut HashMap<u64, Entry<V>, IdHash>, call: u64, keep: u64) {
 }
 
 impl WarmMemory<bool> {
+    /// Whether any of these contact ids was recorded `true` (an island
+    /// with a contact that was settling; contacts without id are not).
+    pub(crate) fn any(&self, mut ids: impl Iterator<Item = Option<u64>>) -> bool {
+        if self.shards.iter().all(HashMap::is_empty) {
+            return false; // nothing settling: no lookups
+        }
+        ids.any(|id| id.and_then(|id| self.get(id)) == Some(true))
+    }
+
     /// The warm basis of an island with these contact ids (None for a
     /// contact without id): bit i set when contact i was in its island's
     /// basis; None when none of them is remembered. Contacts past the 32nd
