@@ -36,7 +36,8 @@ pub enum FrictionMethod {
     /// neighbouring sets of the best one (its worst contacts flipped), kept
     /// only within the tolerance; then [`Self::Prox`] (the first Newton
     /// round and Newton from the start both short of the tolerance), for
-    /// the rest of the cap.
+    /// the rest of the cap, from the faceted round's r where that is the
+    /// best iterate so far, else from the start.
     #[default]
     Auto,
     /// Non-smooth block Gauss–Seidel with exact local Coulomb solves, until
@@ -315,8 +316,10 @@ const NEAR_STEPS: u64 = 3;
 /// warm, take 18,499 iterations in all instead of 31,774 (11 unsolved);
 /// with the polish's search of neighbouring active sets and the round up
 /// to 24 contacts, 10, and over 100 worlds × 300 steps 101 instead of 211;
-/// with PROX's raised ρ as well, 1 and 43),
-/// then PROX ([`prox_rounds`]) runs from the start
+/// with PROX's raised ρ as well, 1 and 43; with PROX from the faceted
+/// round's r, 1 and 30),
+/// then PROX ([`prox_rounds`]) runs from the faceted round's r where that
+/// is the best iterate so far, else from the start,
 /// for the rest of the cap instead of more sweeps (NSGS creeps and Newton
 /// stalls where W is only semidefinite: piles, heavy boxes on light ones;
 /// on 216 seeded stacks of 2–4 boxes with mass ratios to 1e4 and μ to 2,
@@ -384,23 +387,36 @@ fn hybrid(
                     return (used, true);
                 }
             }
+            // Whether the faceted round's polished r is the best so far.
+            let mut faceted_best = false;
             if used < cap && p.contacts() <= FACETED_MAX {
                 error = faceted_round(p, ws, r, (&mut used, cap), tolerance);
+                faceted_best = error < best;
                 keep_best(ws, r, error, &mut best);
                 if error <= tolerance {
                     return (used, true);
                 }
             }
             if used < cap {
-                // PROX from the start, not from the best iterate: the
-                // sweeps' and Newton's best lies within 1e-9 of a degenerate
+                // PROX from the faceted round's r where that is the best
+                // so far, else from the start. Not from the sweeps' and
+                // Newton's best: it lies within 1e-9 of a degenerate
                 // solution, where α = σ e d̄ leaves W + αI as singular as W
                 // and the inner Newton creeps (of the 107 islands `rain:32`
                 // left unsolved over 4 worlds × 1,000 steps, warm-started as
                 // the world does, `auto` solved 24 from the best, 65 from
                 // the start); from the start α is large first and shrinks
-                // with the error.
-                r.copy_from_slice(&ws.start);
+                // with the error. The faceted round's r sits on a Coulomb
+                // answer's active set short of it by 1e-12–1e-10, and PROX
+                // from the start takes more than the 500–800 steps left to
+                // get there (of 103 islands main left unsolved in
+                // `rain:32`, dumped with their warm starts from 4 worlds ×
+                // 1,000 steps and 100 worlds × 300 steps, seeds 1 and 501:
+                // from the start 103 unsolved warm, 81 cold; from the
+                // faceted r 71 and 57; from the best whatever it is 62 and
+                // 62, but 3 instead of 1 over 4 worlds × 1,000 steps).
+                let from = if faceted_best { &ws.best } else { &ws.start };
+                r.copy_from_slice(from);
                 ws.refresh(p, r);
                 error = prox_rounds(p, ws, r, (&mut used, cap), tolerance, &mut best);
                 if error <= tolerance {

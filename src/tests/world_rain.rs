@@ -14,7 +14,9 @@
 //! (`friction::faceted`: Lemke on the pyramid LCP, then Gauss–Newton on
 //! its active set; of 97,917), 10 with the polish's search of the best
 //! set's neighbours and the round up to 24 contacts (of 97,294), 1 with
-//! PROX's inner scalings raised where it creeps as well (of 97,338).
+//! PROX's inner scalings raised where it creeps as well (of 97,338), 1
+//! with PROX from the faceted round's polished r (of 97,485; over 100
+//! worlds × 300 steps 30 instead of 38, seed 501: 44 instead of 64).
 
 use crate::settings::{Backend, Method, Settings};
 use crate::world::generate::{standard_world, WorldKind};
@@ -22,9 +24,10 @@ use crate::Solver;
 
 /// 4 worlds × 1,000 steps of 10 ms (the fall, the impacts, the settling,
 /// the rest): every unsolved island repaired exactly (normal impulses,
-/// checked), at most one island in 40,000 unsolved (1 of 97,338 measured,
-/// also since the tangent frames stopped flipping at n.z = 0; 10, 11, 19,
-/// 24 and 107 before), the deepest penetration below 4 cm (3.56 cm at
+/// checked), at most one island in 90,000 unsolved (1 of 97,338 measured,
+/// also since the tangent frames stopped flipping at n.z = 0, and 1 of
+/// 97,485 since PROX starts from the faceted round's r; 10, 11, 19, 24
+/// and 107 before), the deepest penetration below 4 cm (3.56 cm at
 /// the landing, step 62) and below 0.2 mm after the first 200 steps.
 #[test]
 fn a_frictional_rain_repairs_exactly_and_stays_bounded() {
@@ -54,7 +57,7 @@ fn a_frictional_rain_repairs_exactly_and_stays_bounded() {
         }
     }
     assert!(
-        40_000 * unsolved <= islands,
+        90_000 * unsolved <= islands,
         "{unsolved} of {islands} islands unsolved"
     );
     assert!(deepest < 0.04, "deepest penetration {deepest} m");
