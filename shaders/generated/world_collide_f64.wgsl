@@ -71,13 +71,117 @@ struct Manifold {
     overflow: bool,
 }
 
+// Every index into a manifold's or polygon's array is a constant (loops
+// marked UNROLL are unrolled by the composition, src/gpu/shaders/
+// unroll_loops.rs; a run-time index becomes a ladder over the slots):
+// llvmpipe keeps a private array in registers only where every access to
+// it has a constant index, else each access is a per-lane gather or
+// scatter in memory (BENCHMARKS.md "reslvp": the narrow phase's box–box
+// pairs 3× faster).
 fn push_hit(m: ptr<function, Manifold>, h: Hit) {
     if (*m).len < CAPACITY {
-        (*m).hits[(*m).len] = h;
+{
+
+            if (*m).len == 0u {
+                (*m).hits[0u] = h;
+            }
+        }
+{
+
+            if (*m).len == 1u {
+                (*m).hits[1u] = h;
+            }
+        }
+{
+
+            if (*m).len == 2u {
+                (*m).hits[2u] = h;
+            }
+        }
+{
+
+            if (*m).len == 3u {
+                (*m).hits[3u] = h;
+            }
+        }
+{
+
+            if (*m).len == 4u {
+                (*m).hits[4u] = h;
+            }
+        }
+{
+
+            if (*m).len == 5u {
+                (*m).hits[5u] = h;
+            }
+        }
+{
+
+            if (*m).len == 6u {
+                (*m).hits[6u] = h;
+            }
+        }
+{
+
+            if (*m).len == 7u {
+                (*m).hits[7u] = h;
+            }
+        }
+
         (*m).len += 1u;
     } else {
         (*m).overflow = true;
     }
+}
+
+// Hit k of m (k < CAPACITY), read by a ladder over the slots.
+fn hit_at(m: Manifold, k: u32) -> Hit {
+    var h = m.hits[0];
+{
+
+        if k == 1u {
+            h = m.hits[1u];
+        }
+    }
+{
+
+        if k == 2u {
+            h = m.hits[2u];
+        }
+    }
+{
+
+        if k == 3u {
+            h = m.hits[3u];
+        }
+    }
+{
+
+        if k == 4u {
+            h = m.hits[4u];
+        }
+    }
+{
+
+        if k == 5u {
+            h = m.hits[5u];
+        }
+    }
+{
+
+        if k == 6u {
+            h = m.hits[6u];
+        }
+    }
+{
+
+        if k == 7u {
+            h = m.hits[7u];
+        }
+    }
+
+    return h;
 }
 
 fn one_hit(h: Hit) -> Manifold {
@@ -205,14 +309,79 @@ fn sphere_sphere(ca: vec3<Scalar>, ra: Scalar, cb: vec3<Scalar>, rb: Scalar, mar
 // axis i as bit i of k is 0/1.
 fn corners(b: Placed, h: vec3<Scalar>) -> array<vec3<Scalar>, 8> {
     var out: array<vec3<Scalar>, 8>;
-    for (var k = 0u; k < 8u; k++) {
+{
+
         let s = vec3<Scalar>(
-            select(h.x, -h.x, (k & 1u) == 0u),
-            select(h.y, -h.y, (k & 2u) == 0u),
-            select(h.z, -h.z, (k & 4u) == 0u),
+            select(h.x, -h.x, (0u & 1u) == 0u),
+            select(h.y, -h.y, (0u & 2u) == 0u),
+            select(h.z, -h.z, (0u & 4u) == 0u),
         );
-        out[k] = b.centre + rotate(b, s);
+        out[0u] = b.centre + rotate(b, s);
     }
+{
+
+        let s = vec3<Scalar>(
+            select(h.x, -h.x, (1u & 1u) == 0u),
+            select(h.y, -h.y, (1u & 2u) == 0u),
+            select(h.z, -h.z, (1u & 4u) == 0u),
+        );
+        out[1u] = b.centre + rotate(b, s);
+    }
+{
+
+        let s = vec3<Scalar>(
+            select(h.x, -h.x, (2u & 1u) == 0u),
+            select(h.y, -h.y, (2u & 2u) == 0u),
+            select(h.z, -h.z, (2u & 4u) == 0u),
+        );
+        out[2u] = b.centre + rotate(b, s);
+    }
+{
+
+        let s = vec3<Scalar>(
+            select(h.x, -h.x, (3u & 1u) == 0u),
+            select(h.y, -h.y, (3u & 2u) == 0u),
+            select(h.z, -h.z, (3u & 4u) == 0u),
+        );
+        out[3u] = b.centre + rotate(b, s);
+    }
+{
+
+        let s = vec3<Scalar>(
+            select(h.x, -h.x, (4u & 1u) == 0u),
+            select(h.y, -h.y, (4u & 2u) == 0u),
+            select(h.z, -h.z, (4u & 4u) == 0u),
+        );
+        out[4u] = b.centre + rotate(b, s);
+    }
+{
+
+        let s = vec3<Scalar>(
+            select(h.x, -h.x, (5u & 1u) == 0u),
+            select(h.y, -h.y, (5u & 2u) == 0u),
+            select(h.z, -h.z, (5u & 4u) == 0u),
+        );
+        out[5u] = b.centre + rotate(b, s);
+    }
+{
+
+        let s = vec3<Scalar>(
+            select(h.x, -h.x, (6u & 1u) == 0u),
+            select(h.y, -h.y, (6u & 2u) == 0u),
+            select(h.z, -h.z, (6u & 4u) == 0u),
+        );
+        out[6u] = b.centre + rotate(b, s);
+    }
+{
+
+        let s = vec3<Scalar>(
+            select(h.x, -h.x, (7u & 1u) == 0u),
+            select(h.y, -h.y, (7u & 2u) == 0u),
+            select(h.z, -h.z, (7u & 4u) == 0u),
+        );
+        out[7u] = b.centre + rotate(b, s);
+    }
+
     return out;
 }
 
@@ -221,13 +390,71 @@ fn corners(b: Placed, h: vec3<Scalar>) -> array<vec3<Scalar>, 8> {
 fn box_plane(b: Placed, h: vec3<Scalar>, p: vec3<Scalar>, n: vec3<Scalar>, margin: Scalar) -> Manifold {
     var hits = Manifold();
     let vs = corners(b, h);
-    for (var k = 0u; k < 8u; k++) {
-        let v = vs[k];
+{
+
+        let v = vs[0u];
         let gap = dot3(n, v - p);
         if gap < margin {
-            push_hit(&hits, Hit(v - n * (Scalar(0.5) * gap), n, gap, k));
+            push_hit(&hits, Hit(v - n * (Scalar(0.5) * gap), n, gap, 0u));
         }
     }
+{
+
+        let v = vs[1u];
+        let gap = dot3(n, v - p);
+        if gap < margin {
+            push_hit(&hits, Hit(v - n * (Scalar(0.5) * gap), n, gap, 1u));
+        }
+    }
+{
+
+        let v = vs[2u];
+        let gap = dot3(n, v - p);
+        if gap < margin {
+            push_hit(&hits, Hit(v - n * (Scalar(0.5) * gap), n, gap, 2u));
+        }
+    }
+{
+
+        let v = vs[3u];
+        let gap = dot3(n, v - p);
+        if gap < margin {
+            push_hit(&hits, Hit(v - n * (Scalar(0.5) * gap), n, gap, 3u));
+        }
+    }
+{
+
+        let v = vs[4u];
+        let gap = dot3(n, v - p);
+        if gap < margin {
+            push_hit(&hits, Hit(v - n * (Scalar(0.5) * gap), n, gap, 4u));
+        }
+    }
+{
+
+        let v = vs[5u];
+        let gap = dot3(n, v - p);
+        if gap < margin {
+            push_hit(&hits, Hit(v - n * (Scalar(0.5) * gap), n, gap, 5u));
+        }
+    }
+{
+
+        let v = vs[6u];
+        let gap = dot3(n, v - p);
+        if gap < margin {
+            push_hit(&hits, Hit(v - n * (Scalar(0.5) * gap), n, gap, 6u));
+        }
+    }
+{
+
+        let v = vs[7u];
+        let gap = dot3(n, v - p);
+        if gap < margin {
+            push_hit(&hits, Hit(v - n * (Scalar(0.5) * gap), n, gap, 7u));
+        }
+    }
+
     return reduce_to_four(hits);
 }
 
@@ -271,60 +498,282 @@ fn sphere_box(c: vec3<Scalar>, r: Scalar, b: Placed, h: vec3<Scalar>, margin: Sc
     return one_hit(Hit(on_box + normal * (Scalar(0.5) * gap), normal, gap, 0u));
 }
 
-// Signed area of triangle (first, second, i) about n.
-fn area(hits: Manifold, first: u32, second: u32, i: u32, n: vec3<Scalar>) -> Scalar {
-    let p0 = hits.hits[first].point;
-    return dot3(cross3(hits.hits[second].point - p0, hits.hits[i].point - p0), n);
+// Signed area of triangle (p0, p1, p) about n.
+fn area(p0: vec3<Scalar>, p1: vec3<Scalar>, p: vec3<Scalar>, n: vec3<Scalar>) -> Scalar {
+    return dot3(cross3(p1 - p0, p - p0), n);
 }
 
 // At most 4 points of a manifold, spread over its area: the deepest, the
 // farthest from it, then the two on either side of their line farthest from
-// it. Order is kept.
+// it. Order is kept. Every slot is visited (those past `len` skipped), so
+// the indices are constants (see push_hit).
 fn reduce_to_four(hits: Manifold) -> Manifold {
     if hits.len <= 4u {
         return hits;
     }
+    let len = hits.len;
     let n = hits.hits[0].normal;
     // min_by keeps the first of equals, max_by the last.
     var first = 0u;
-    for (var i = 1u; i < hits.len; i++) {
-        if total_less(hits.hits[i].gap, hits.hits[first].gap) {
-            first = i;
+    var low = hits.hits[0].gap;
+{
+
+        if 1u < len && total_less(hits.hits[1u].gap, low) {
+            first = 1u;
+            low = hits.hits[1u].gap;
         }
     }
-    let pf = hits.hits[first].point;
+{
+
+        if 2u < len && total_less(hits.hits[2u].gap, low) {
+            first = 2u;
+            low = hits.hits[2u].gap;
+        }
+    }
+{
+
+        if 3u < len && total_less(hits.hits[3u].gap, low) {
+            first = 3u;
+            low = hits.hits[3u].gap;
+        }
+    }
+{
+
+        if 4u < len && total_less(hits.hits[4u].gap, low) {
+            first = 4u;
+            low = hits.hits[4u].gap;
+        }
+    }
+{
+
+        if 5u < len && total_less(hits.hits[5u].gap, low) {
+            first = 5u;
+            low = hits.hits[5u].gap;
+        }
+    }
+{
+
+        if 6u < len && total_less(hits.hits[6u].gap, low) {
+            first = 6u;
+            low = hits.hits[6u].gap;
+        }
+    }
+{
+
+        if 7u < len && total_less(hits.hits[7u].gap, low) {
+            first = 7u;
+            low = hits.hits[7u].gap;
+        }
+    }
+
+    let pf = hit_at(hits, first).point;
     var second = 0u;
     var far = dot3(hits.hits[0].point - pf, hits.hits[0].point - pf);
-    for (var i = 1u; i < hits.len; i++) {
-        let d = hits.hits[i].point - pf;
+{
+
+        let d = hits.hits[1u].point - pf;
         let di = dot3(d, d);
-        if !total_less(di, far) {
-            second = i;
+        if 1u < len && !total_less(di, far) {
+            second = 1u;
             far = di;
         }
     }
+{
+
+        let d = hits.hits[2u].point - pf;
+        let di = dot3(d, d);
+        if 2u < len && !total_less(di, far) {
+            second = 2u;
+            far = di;
+        }
+    }
+{
+
+        let d = hits.hits[3u].point - pf;
+        let di = dot3(d, d);
+        if 3u < len && !total_less(di, far) {
+            second = 3u;
+            far = di;
+        }
+    }
+{
+
+        let d = hits.hits[4u].point - pf;
+        let di = dot3(d, d);
+        if 4u < len && !total_less(di, far) {
+            second = 4u;
+            far = di;
+        }
+    }
+{
+
+        let d = hits.hits[5u].point - pf;
+        let di = dot3(d, d);
+        if 5u < len && !total_less(di, far) {
+            second = 5u;
+            far = di;
+        }
+    }
+{
+
+        let d = hits.hits[6u].point - pf;
+        let di = dot3(d, d);
+        if 6u < len && !total_less(di, far) {
+            second = 6u;
+            far = di;
+        }
+    }
+{
+
+        let d = hits.hits[7u].point - pf;
+        let di = dot3(d, d);
+        if 7u < len && !total_less(di, far) {
+            second = 7u;
+            far = di;
+        }
+    }
+
+    let ps = hit_at(hits, second).point;
     var third = 0u;
     var fourth = 0u;
-    var hi = area(hits, first, second, 0u, n);
+    var hi = area(pf, ps, hits.hits[0].point, n);
     var lo = hi;
-    for (var i = 1u; i < hits.len; i++) {
-        let a = area(hits, first, second, i, n);
-        if !total_less(a, hi) {
-            third = i;
+{
+
+        let a = area(pf, ps, hits.hits[1u].point, n);
+        if 1u < len && !total_less(a, hi) {
+            third = 1u;
             hi = a;
         }
-        if total_less(a, lo) {
-            fourth = i;
+        if 1u < len && total_less(a, lo) {
+            fourth = 1u;
             lo = a;
         }
     }
-    var out = Manifold();
-    out.overflow = hits.overflow;
-    for (var i = 0u; i < hits.len; i++) {
-        if i == first || i == second || i == third || i == fourth {
-            push_hit(&out, hits.hits[i]);
+{
+
+        let a = area(pf, ps, hits.hits[2u].point, n);
+        if 2u < len && !total_less(a, hi) {
+            third = 2u;
+            hi = a;
+        }
+        if 2u < len && total_less(a, lo) {
+            fourth = 2u;
+            lo = a;
         }
     }
+{
+
+        let a = area(pf, ps, hits.hits[3u].point, n);
+        if 3u < len && !total_less(a, hi) {
+            third = 3u;
+            hi = a;
+        }
+        if 3u < len && total_less(a, lo) {
+            fourth = 3u;
+            lo = a;
+        }
+    }
+{
+
+        let a = area(pf, ps, hits.hits[4u].point, n);
+        if 4u < len && !total_less(a, hi) {
+            third = 4u;
+            hi = a;
+        }
+        if 4u < len && total_less(a, lo) {
+            fourth = 4u;
+            lo = a;
+        }
+    }
+{
+
+        let a = area(pf, ps, hits.hits[5u].point, n);
+        if 5u < len && !total_less(a, hi) {
+            third = 5u;
+            hi = a;
+        }
+        if 5u < len && total_less(a, lo) {
+            fourth = 5u;
+            lo = a;
+        }
+    }
+{
+
+        let a = area(pf, ps, hits.hits[6u].point, n);
+        if 6u < len && !total_less(a, hi) {
+            third = 6u;
+            hi = a;
+        }
+        if 6u < len && total_less(a, lo) {
+            fourth = 6u;
+            lo = a;
+        }
+    }
+{
+
+        let a = area(pf, ps, hits.hits[7u].point, n);
+        if 7u < len && !total_less(a, hi) {
+            third = 7u;
+            hi = a;
+        }
+        if 7u < len && total_less(a, lo) {
+            fourth = 7u;
+            lo = a;
+        }
+    }
+
+    var out = Manifold();
+    out.overflow = hits.overflow;
+{
+
+        if 0u < len && (0u == first || 0u == second || 0u == third || 0u == fourth) {
+            push_hit(&out, hits.hits[0u]);
+        }
+    }
+{
+
+        if 1u < len && (1u == first || 1u == second || 1u == third || 1u == fourth) {
+            push_hit(&out, hits.hits[1u]);
+        }
+    }
+{
+
+        if 2u < len && (2u == first || 2u == second || 2u == third || 2u == fourth) {
+            push_hit(&out, hits.hits[2u]);
+        }
+    }
+{
+
+        if 3u < len && (3u == first || 3u == second || 3u == third || 3u == fourth) {
+            push_hit(&out, hits.hits[3u]);
+        }
+    }
+{
+
+        if 4u < len && (4u == first || 4u == second || 4u == third || 4u == fourth) {
+            push_hit(&out, hits.hits[4u]);
+        }
+    }
+{
+
+        if 5u < len && (5u == first || 5u == second || 5u == third || 5u == fourth) {
+            push_hit(&out, hits.hits[5u]);
+        }
+    }
+{
+
+        if 6u < len && (6u == first || 6u == second || 6u == third || 6u == fourth) {
+            push_hit(&out, hits.hits[6u]);
+        }
+    }
+{
+
+        if 7u < len && (7u == first || 7u == second || 7u == third || 7u == fourth) {
+            push_hit(&out, hits.hits[7u]);
+        }
+    }
+
     return out;
 }
 
@@ -443,10 +892,66 @@ struct Polygon {
     overflow: bool,
 }
 
+// Appends p (tag) by a ladder over the slots (see push_hit).
 fn push_point(poly: ptr<function, Polygon>, p: vec3<Scalar>, tag: u32) {
     if (*poly).len < 8u {
-        (*poly).points[(*poly).len] = p;
-        (*poly).tags[(*poly).len] = tag;
+{
+
+            if (*poly).len == 0u {
+                (*poly).points[0u] = p;
+                (*poly).tags[0u] = tag;
+            }
+        }
+{
+
+            if (*poly).len == 1u {
+                (*poly).points[1u] = p;
+                (*poly).tags[1u] = tag;
+            }
+        }
+{
+
+            if (*poly).len == 2u {
+                (*poly).points[2u] = p;
+                (*poly).tags[2u] = tag;
+            }
+        }
+{
+
+            if (*poly).len == 3u {
+                (*poly).points[3u] = p;
+                (*poly).tags[3u] = tag;
+            }
+        }
+{
+
+            if (*poly).len == 4u {
+                (*poly).points[4u] = p;
+                (*poly).tags[4u] = tag;
+            }
+        }
+{
+
+            if (*poly).len == 5u {
+                (*poly).points[5u] = p;
+                (*poly).tags[5u] = tag;
+            }
+        }
+{
+
+            if (*poly).len == 6u {
+                (*poly).points[6u] = p;
+                (*poly).tags[6u] = tag;
+            }
+        }
+{
+
+            if (*poly).len == 7u {
+                (*poly).points[7u] = p;
+                (*poly).tags[7u] = tag;
+            }
+        }
+
         (*poly).len += 1u;
     } else {
         (*poly).overflow = true;
@@ -459,21 +964,144 @@ fn push_point(poly: ptr<function, Polygon>, p: vec3<Scalar>, tag: u32) {
 fn clip(poly: Polygon, pn: vec3<Scalar>, off: Scalar, tol: Scalar, side: u32) -> Polygon {
     var out = Polygon();
     out.overflow = poly.overflow;
-    for (var k = 0u; k < poly.len; k++) {
-        let p = poly.points[k];
-        let tp = poly.tags[k];
-        let q = poly.points[(k + 1u) % poly.len];
+    // Every slot visited, those past `len` skipped (see push_hit).
+{
+
+        let p = poly.points[0u];
+        let tp = poly.tags[0u];
+        // (0u + 1) mod len: the next point, the first after the last.
+        let q = select(poly.points[0], poly.points[(0u + 1u) % 8u], 0u + 1u < poly.len);
         let dp = dot3(pn, p) - off;
         let dq = dot3(pn, q) - off;
-        if dp <= tol {
+        if 0u < poly.len && dp <= tol {
             push_point(&out, p, tp);
         }
         // Crossing: the kept end is inside (d ≤ 0), the other beyond tol.
-        if (dp <= tol) != (dq <= tol) && min(dp, dq) <= Scalar(0.0) {
+        if 0u < poly.len && (dp <= tol) != (dq <= tol) && min(dp, dq) <= Scalar(0.0) {
             let t = dp / (dp - dq);
             push_point(&out, p + (q - p) * t, 4u + 4u * side + (tp & 3u));
         }
     }
+{
+
+        let p = poly.points[1u];
+        let tp = poly.tags[1u];
+        // (1u + 1) mod len: the next point, the first after the last.
+        let q = select(poly.points[0], poly.points[(1u + 1u) % 8u], 1u + 1u < poly.len);
+        let dp = dot3(pn, p) - off;
+        let dq = dot3(pn, q) - off;
+        if 1u < poly.len && dp <= tol {
+            push_point(&out, p, tp);
+        }
+        // Crossing: the kept end is inside (d ≤ 0), the other beyond tol.
+        if 1u < poly.len && (dp <= tol) != (dq <= tol) && min(dp, dq) <= Scalar(0.0) {
+            let t = dp / (dp - dq);
+            push_point(&out, p + (q - p) * t, 4u + 4u * side + (tp & 3u));
+        }
+    }
+{
+
+        let p = poly.points[2u];
+        let tp = poly.tags[2u];
+        // (2u + 1) mod len: the next point, the first after the last.
+        let q = select(poly.points[0], poly.points[(2u + 1u) % 8u], 2u + 1u < poly.len);
+        let dp = dot3(pn, p) - off;
+        let dq = dot3(pn, q) - off;
+        if 2u < poly.len && dp <= tol {
+            push_point(&out, p, tp);
+        }
+        // Crossing: the kept end is inside (d ≤ 0), the other beyond tol.
+        if 2u < poly.len && (dp <= tol) != (dq <= tol) && min(dp, dq) <= Scalar(0.0) {
+            let t = dp / (dp - dq);
+            push_point(&out, p + (q - p) * t, 4u + 4u * side + (tp & 3u));
+        }
+    }
+{
+
+        let p = poly.points[3u];
+        let tp = poly.tags[3u];
+        // (3u + 1) mod len: the next point, the first after the last.
+        let q = select(poly.points[0], poly.points[(3u + 1u) % 8u], 3u + 1u < poly.len);
+        let dp = dot3(pn, p) - off;
+        let dq = dot3(pn, q) - off;
+        if 3u < poly.len && dp <= tol {
+            push_point(&out, p, tp);
+        }
+        // Crossing: the kept end is inside (d ≤ 0), the other beyond tol.
+        if 3u < poly.len && (dp <= tol) != (dq <= tol) && min(dp, dq) <= Scalar(0.0) {
+            let t = dp / (dp - dq);
+            push_point(&out, p + (q - p) * t, 4u + 4u * side + (tp & 3u));
+        }
+    }
+{
+
+        let p = poly.points[4u];
+        let tp = poly.tags[4u];
+        // (4u + 1) mod len: the next point, the first after the last.
+        let q = select(poly.points[0], poly.points[(4u + 1u) % 8u], 4u + 1u < poly.len);
+        let dp = dot3(pn, p) - off;
+        let dq = dot3(pn, q) - off;
+        if 4u < poly.len && dp <= tol {
+            push_point(&out, p, tp);
+        }
+        // Crossing: the kept end is inside (d ≤ 0), the other beyond tol.
+        if 4u < poly.len && (dp <= tol) != (dq <= tol) && min(dp, dq) <= Scalar(0.0) {
+            let t = dp / (dp - dq);
+            push_point(&out, p + (q - p) * t, 4u + 4u * side + (tp & 3u));
+        }
+    }
+{
+
+        let p = poly.points[5u];
+        let tp = poly.tags[5u];
+        // (5u + 1) mod len: the next point, the first after the last.
+        let q = select(poly.points[0], poly.points[(5u + 1u) % 8u], 5u + 1u < poly.len);
+        let dp = dot3(pn, p) - off;
+        let dq = dot3(pn, q) - off;
+        if 5u < poly.len && dp <= tol {
+            push_point(&out, p, tp);
+        }
+        // Crossing: the kept end is inside (d ≤ 0), the other beyond tol.
+        if 5u < poly.len && (dp <= tol) != (dq <= tol) && min(dp, dq) <= Scalar(0.0) {
+            let t = dp / (dp - dq);
+            push_point(&out, p + (q - p) * t, 4u + 4u * side + (tp & 3u));
+        }
+    }
+{
+
+        let p = poly.points[6u];
+        let tp = poly.tags[6u];
+        // (6u + 1) mod len: the next point, the first after the last.
+        let q = select(poly.points[0], poly.points[(6u + 1u) % 8u], 6u + 1u < poly.len);
+        let dp = dot3(pn, p) - off;
+        let dq = dot3(pn, q) - off;
+        if 6u < poly.len && dp <= tol {
+            push_point(&out, p, tp);
+        }
+        // Crossing: the kept end is inside (d ≤ 0), the other beyond tol.
+        if 6u < poly.len && (dp <= tol) != (dq <= tol) && min(dp, dq) <= Scalar(0.0) {
+            let t = dp / (dp - dq);
+            push_point(&out, p + (q - p) * t, 4u + 4u * side + (tp & 3u));
+        }
+    }
+{
+
+        let p = poly.points[7u];
+        let tp = poly.tags[7u];
+        // (7u + 1) mod len: the next point, the first after the last.
+        let q = select(poly.points[0], poly.points[(7u + 1u) % 8u], 7u + 1u < poly.len);
+        let dp = dot3(pn, p) - off;
+        let dq = dot3(pn, q) - off;
+        if 7u < poly.len && dp <= tol {
+            push_point(&out, p, tp);
+        }
+        // Crossing: the kept end is inside (d ≤ 0), the other beyond tol.
+        if 7u < poly.len && (dp <= tol) != (dq <= tol) && min(dp, dq) <= Scalar(0.0) {
+            let t = dp / (dp - dq);
+            push_point(&out, p + (q - p) * t, 4u + 4u * side + (tp & 3u));
+        }
+    }
+
     return out;
 }
 
@@ -530,13 +1158,71 @@ fn face_contact(re: Placed, hr: vec3<Scalar>, inc: Placed, hi: vec3<Scalar>, axi
     let base = (select(0u, 1u, ref_is_y) << 11u) | (ref_face << 8u) | (inc_face << 5u);
     var hits = Manifold();
     hits.overflow = poly.overflow;
-    for (var m = 0u; m < poly.len; m++) {
-        let p = poly.points[m];
+{
+
+        let p = poly.points[0u];
         let gap = dot3(n, p - face_point);
-        if gap < margin {
-            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (poly.tags[m] & 31u)));
+        if 0u < poly.len && gap < margin {
+            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (poly.tags[0u] & 31u)));
         }
     }
+{
+
+        let p = poly.points[1u];
+        let gap = dot3(n, p - face_point);
+        if 1u < poly.len && gap < margin {
+            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (poly.tags[1u] & 31u)));
+        }
+    }
+{
+
+        let p = poly.points[2u];
+        let gap = dot3(n, p - face_point);
+        if 2u < poly.len && gap < margin {
+            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (poly.tags[2u] & 31u)));
+        }
+    }
+{
+
+        let p = poly.points[3u];
+        let gap = dot3(n, p - face_point);
+        if 3u < poly.len && gap < margin {
+            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (poly.tags[3u] & 31u)));
+        }
+    }
+{
+
+        let p = poly.points[4u];
+        let gap = dot3(n, p - face_point);
+        if 4u < poly.len && gap < margin {
+            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (poly.tags[4u] & 31u)));
+        }
+    }
+{
+
+        let p = poly.points[5u];
+        let gap = dot3(n, p - face_point);
+        if 5u < poly.len && gap < margin {
+            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (poly.tags[5u] & 31u)));
+        }
+    }
+{
+
+        let p = poly.points[6u];
+        let gap = dot3(n, p - face_point);
+        if 6u < poly.len && gap < margin {
+            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (poly.tags[6u] & 31u)));
+        }
+    }
+{
+
+        let p = poly.points[7u];
+        let gap = dot3(n, p - face_point);
+        if 7u < poly.len && gap < margin {
+            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (poly.tags[7u] & 31u)));
+        }
+    }
+
     return reduce_to_four(hits);
 }
 
@@ -581,9 +1267,55 @@ fn edge_contact(x: Placed, hx: vec3<Scalar>, y: Placed, hy: vec3<Scalar>, i: u32
 // Normals of every hit reversed (a pair given the other way round).
 fn flip(m: Manifold) -> Manifold {
     var out = m;
-    for (var k = 0u; k < out.len; k++) {
-        out.hits[k].normal = -out.hits[k].normal;
+{
+
+        if 0u < out.len {
+            out.hits[0u].normal = -out.hits[0u].normal;
+        }
     }
+{
+
+        if 1u < out.len {
+            out.hits[1u].normal = -out.hits[1u].normal;
+        }
+    }
+{
+
+        if 2u < out.len {
+            out.hits[2u].normal = -out.hits[2u].normal;
+        }
+    }
+{
+
+        if 3u < out.len {
+            out.hits[3u].normal = -out.hits[3u].normal;
+        }
+    }
+{
+
+        if 4u < out.len {
+            out.hits[4u].normal = -out.hits[4u].normal;
+        }
+    }
+{
+
+        if 5u < out.len {
+            out.hits[5u].normal = -out.hits[5u].normal;
+        }
+    }
+{
+
+        if 6u < out.len {
+            out.hits[6u].normal = -out.hits[6u].normal;
+        }
+    }
+{
+
+        if 7u < out.len {
+            out.hits[7u].normal = -out.hits[7u].normal;
+        }
+    }
+
     return out;
 }
 
@@ -993,14 +1725,52 @@ fn collide_sphere(s: Placed, o: Placed, margin: Scalar) -> Manifold {
 // w's pair records: its first SLOTS hits (point, normal, gap, feature); returns
 // its count word (length | OVERFLOW where the manifold overflowed).
 fn keep_manifold(w: u32, c: u32, m: Manifold, flipped: bool) -> u32 {
-    for (var h = 0u; h < min(m.len, SLOTS); h++) {
-        let hit = m.hits[h];
-        let at = sp.pairs_at + (w * sp.pair_slots + SLOTS * c + h) * CP;
-        put_scratch(at, hit.point);
-        put_scratch(at + 3u, select(hit.normal, -hit.normal, flipped));
-        scratch[at + 6u] = hit.gap;
-        scratch[at + 7u] = Scalar(hit.feature);
+    // Each index a constant (collide.wgsl push_hit).
+{
+
+        if 0u < min(m.len, SLOTS) {
+            let hit = m.hits[0u];
+            let at = sp.pairs_at + (w * sp.pair_slots + SLOTS * c + 0u) * CP;
+            put_scratch(at, hit.point);
+            put_scratch(at + 3u, select(hit.normal, -hit.normal, flipped));
+            scratch[at + 6u] = hit.gap;
+            scratch[at + 7u] = Scalar(hit.feature);
+        }
     }
+{
+
+        if 1u < min(m.len, SLOTS) {
+            let hit = m.hits[1u];
+            let at = sp.pairs_at + (w * sp.pair_slots + SLOTS * c + 1u) * CP;
+            put_scratch(at, hit.point);
+            put_scratch(at + 3u, select(hit.normal, -hit.normal, flipped));
+            scratch[at + 6u] = hit.gap;
+            scratch[at + 7u] = Scalar(hit.feature);
+        }
+    }
+{
+
+        if 2u < min(m.len, SLOTS) {
+            let hit = m.hits[2u];
+            let at = sp.pairs_at + (w * sp.pair_slots + SLOTS * c + 2u) * CP;
+            put_scratch(at, hit.point);
+            put_scratch(at + 3u, select(hit.normal, -hit.normal, flipped));
+            scratch[at + 6u] = hit.gap;
+            scratch[at + 7u] = Scalar(hit.feature);
+        }
+    }
+{
+
+        if 3u < min(m.len, SLOTS) {
+            let hit = m.hits[3u];
+            let at = sp.pairs_at + (w * sp.pair_slots + SLOTS * c + 3u) * CP;
+            put_scratch(at, hit.point);
+            put_scratch(at + 3u, select(hit.normal, -hit.normal, flipped));
+            scratch[at + 6u] = hit.gap;
+            scratch[at + 7u] = Scalar(hit.feature);
+        }
+    }
+
     return m.len | select(0u, OVERFLOW, m.overflow);
 }
 
