@@ -53,58 +53,6 @@ struct Placed {
     c2: vec3<Scalar>,
 }
 
-struct Hit {
-    point: vec3<Scalar>,
-    // From the second shape to the first.
-    normal: vec3<Scalar>,
-    gap: Scalar,
-    feature: u32,
-}
-
-// Up to CAPACITY hits; `overflow` set by a push past it.
-struct Manifold {
-    hits: array<Hit, 8>,
-    len: u32,
-    overflow: bool,
-}
-
-// Every index into a manifold's or polygon's array is a constant (loops
-// marked UNROLL are unrolled by the composition, src/gpu/shaders/
-// unroll_loops.rs; a run-time index becomes a ladder over the slots):
-// llvmpipe keeps a private array in registers only where every access to
-// it has a constant index, else each access is a per-lane gather or
-// scatter in memory (BENCHMARKS.md "reslvp": the narrow phase's box–box
-// pairs 3× faster).
-fn push_hit(m: ptr<function, Manifold>, h: Hit) {
-    if (*m).len < CAPACITY {
-        for (var s = 0u; s < CAPACITY; s++) { // UNROLL
-            if (*m).len == s {
-                (*m).hits[s] = h;
-            }
-        }
-        (*m).len += 1u;
-    } else {
-        (*m).overflow = true;
-    }
-}
-
-// Hit k of m (k < CAPACITY), read by a ladder over the slots.
-fn hit_at(m: Manifold, k: u32) -> Hit {
-    var h = m.hits[0];
-    for (var s = 1u; s < CAPACITY; s++) { // UNROLL
-        if k == s {
-            h = m.hits[s];
-        }
-    }
-    return h;
-}
-
-fn one_hit(h: Hit) -> Manifold {
-    var m = Manifold();
-    push_hit(&m, h);
-    return m;
-}
-
 // glam's dot: (x x' + y y') + z z'.
 fn dot3(a: vec3<Scalar>, b: vec3<Scalar>) -> Scalar {
     return a.x * b.x + a.y * b.y + a.z * b.z;
@@ -193,6 +141,60 @@ fn max_element(h: vec3<Scalar>) -> Scalar {
 
 // Pair functions (the resident step's solve and frictional phases take
 // the functions above this line only).
+
+struct Hit {
+    point: vec3<Scalar>,
+    // From the second shape to the first.
+    normal: vec3<Scalar>,
+    gap: Scalar,
+    feature: u32,
+}
+
+// Up to CAPACITY hits; `overflow` set by a push past it.
+struct Manifold {
+    hits: array<Hit, 8>,
+    len: u32,
+    overflow: bool,
+}
+
+// Every index into a manifold's or polygon's array is a constant: a
+// run-time index goes through a ladder over the slots (push_hit, hit_at,
+// push_point, point_at; their loops marked UNROLL are unrolled by the
+// composition, src/gpu/shaders/unroll_loops.rs, as are a few short loops
+// over every slot). llvmpipe keeps a private array in registers only where
+// every access to it has a constant index, else each access is a per-lane
+// gather or scatter in memory (BENCHMARKS.md "reslvp": the narrow phase's
+// box–box pairs 2–3× faster). The longer loops stay loops (each unrolled
+// copy would be in the SPIR-V of every collision entry point).
+fn push_hit(m: ptr<function, Manifold>, h: Hit) {
+    if (*m).len < CAPACITY {
+        for (var s = 0u; s < CAPACITY; s++) { // UNROLL
+            if (*m).len == s {
+                (*m).hits[s] = h;
+            }
+        }
+        (*m).len += 1u;
+    } else {
+        (*m).overflow = true;
+    }
+}
+
+// Hit k of m (k < CAPACITY), read by a ladder over the slots.
+fn hit_at(m: Manifold, k: u32) -> Hit {
+    var h = m.hits[0];
+    for (var s = 1u; s < CAPACITY; s++) { // UNROLL
+        if k == s {
+            h = m.hits[s];
+        }
+    }
+    return h;
+}
+
+fn one_hit(h: Hit) -> Manifold {
+    var m = Manifold();
+    push_hit(&m, h);
+    return m;
+}
 
 // Sphere (centre c, radius r) against the plane through p with outward
 // normal n: φ = n·(c − p) − r, normal n (plane to sphere).
@@ -297,30 +299,29 @@ fn area(p0: vec3<Scalar>, p1: vec3<Scalar>, p: vec3<Scalar>, n: vec3<Scalar>) ->
 
 // At most 4 points of a manifold, spread over its area: the deepest, the
 // farthest from it, then the two on either side of their line farthest from
-// it. Order is kept. Every slot is visited (those past `len` skipped), so
-// the indices are constants (see push_hit).
+// it. Order is kept. Hits read through hit_at (see push_hit).
 fn reduce_to_four(hits: Manifold) -> Manifold {
     if hits.len <= 4u {
         return hits;
     }
-    let len = hits.len;
     let n = hits.hits[0].normal;
     // min_by keeps the first of equals, max_by the last.
     var first = 0u;
     var low = hits.hits[0].gap;
-    for (var i = 1u; i < CAPACITY; i++) { // UNROLL
-        if i < len && total_less(hits.hits[i].gap, low) {
+    for (var i = 1u; i < hits.len; i++) {
+        let gap = hit_at(hits, i).gap;
+        if total_less(gap, low) {
             first = i;
-            low = hits.hits[i].gap;
+            low = gap;
         }
     }
     let pf = hit_at(hits, first).point;
     var second = 0u;
     var far = dot3(hits.hits[0].point - pf, hits.hits[0].point - pf);
-    for (var i = 1u; i < CAPACITY; i++) { // UNROLL
-        let d = hits.hits[i].point - pf;
+    for (var i = 1u; i < hits.len; i++) {
+        let d = hit_at(hits, i).point - pf;
         let di = dot3(d, d);
-        if i < len && !total_less(di, far) {
+        if !total_less(di, far) {
             second = i;
             far = di;
         }
@@ -330,22 +331,22 @@ fn reduce_to_four(hits: Manifold) -> Manifold {
     var fourth = 0u;
     var hi = area(pf, ps, hits.hits[0].point, n);
     var lo = hi;
-    for (var i = 1u; i < CAPACITY; i++) { // UNROLL
-        let a = area(pf, ps, hits.hits[i].point, n);
-        if i < len && !total_less(a, hi) {
+    for (var i = 1u; i < hits.len; i++) {
+        let a = area(pf, ps, hit_at(hits, i).point, n);
+        if !total_less(a, hi) {
             third = i;
             hi = a;
         }
-        if i < len && total_less(a, lo) {
+        if total_less(a, lo) {
             fourth = i;
             lo = a;
         }
     }
     var out = Manifold();
     out.overflow = hits.overflow;
-    for (var i = 0u; i < CAPACITY; i++) { // UNROLL
-        if i < len && (i == first || i == second || i == third || i == fourth) {
-            push_hit(&out, hits.hits[i]);
+    for (var i = 0u; i < hits.len; i++) {
+        if i == first || i == second || i == third || i == fourth {
+            push_hit(&out, hit_at(hits, i));
         }
     }
     return out;
@@ -481,25 +482,45 @@ fn push_point(poly: ptr<function, Polygon>, p: vec3<Scalar>, tag: u32) {
     }
 }
 
+// Point k of poly (k < 8) and its tag, read by a ladder over the slots.
+fn point_at(poly: Polygon, k: u32) -> vec3<Scalar> {
+    var p = poly.points[0];
+    for (var s = 1u; s < 8u; s++) { // UNROLL
+        if k == s {
+            p = poly.points[s];
+        }
+    }
+    return p;
+}
+
+fn tag_at(poly: Polygon, k: u32) -> u32 {
+    var t = poly.tags[0];
+    for (var s = 1u; s < 8u; s++) { // UNROLL
+        if k == s {
+            t = poly.tags[s];
+        }
+    }
+    return t;
+}
+
 // Sutherland–Hodgman with a tolerance: the part of `poly` with pn·p ≤ off,
 // a vertex outside by at most `tol` kept as it is. A point made on the
 // plane is tagged 4 + 4·side + (the edge's first vertex's tag mod 4).
 fn clip(poly: Polygon, pn: vec3<Scalar>, off: Scalar, tol: Scalar, side: u32) -> Polygon {
     var out = Polygon();
     out.overflow = poly.overflow;
-    // Every slot visited, those past `len` skipped (see push_hit).
-    for (var k = 0u; k < 8u; k++) { // UNROLL
-        let p = poly.points[k];
-        let tp = poly.tags[k];
-        // (k + 1) mod len: the next point, the first after the last.
-        let q = select(poly.points[0], poly.points[(k + 1u) % 8u], k + 1u < poly.len);
+    // Points read through point_at (see push_hit).
+    for (var k = 0u; k < poly.len; k++) {
+        let p = point_at(poly, k);
+        let tp = tag_at(poly, k);
+        let q = point_at(poly, (k + 1u) % poly.len);
         let dp = dot3(pn, p) - off;
         let dq = dot3(pn, q) - off;
-        if k < poly.len && dp <= tol {
+        if dp <= tol {
             push_point(&out, p, tp);
         }
         // Crossing: the kept end is inside (d ≤ 0), the other beyond tol.
-        if k < poly.len && (dp <= tol) != (dq <= tol) && min(dp, dq) <= Scalar(0.0) {
+        if (dp <= tol) != (dq <= tol) && min(dp, dq) <= Scalar(0.0) {
             let t = dp / (dp - dq);
             push_point(&out, p + (q - p) * t, 4u + 4u * side + (tp & 3u));
         }
@@ -560,11 +581,11 @@ fn face_contact(re: Placed, hr: vec3<Scalar>, inc: Placed, hi: vec3<Scalar>, axi
     let base = (select(0u, 1u, ref_is_y) << 11u) | (ref_face << 8u) | (inc_face << 5u);
     var hits = Manifold();
     hits.overflow = poly.overflow;
-    for (var m = 0u; m < 8u; m++) { // UNROLL
-        let p = poly.points[m];
+    for (var m = 0u; m < poly.len; m++) {
+        let p = point_at(poly, m);
         let gap = dot3(n, p - face_point);
-        if m < poly.len && gap < margin {
-            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (poly.tags[m] & 31u)));
+        if gap < margin {
+            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (tag_at(poly, m) & 31u)));
         }
     }
     return reduce_to_four(hits);

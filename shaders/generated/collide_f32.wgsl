@@ -56,6 +56,95 @@ struct Placed {
     c2: vec3<Scalar>,
 }
 
+// glam's dot: (x x' + y y') + z z'.
+fn dot3(a: vec3<Scalar>, b: vec3<Scalar>) -> Scalar {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+fn length3(a: vec3<Scalar>) -> Scalar {
+    return sqrt(dot3(a, a));
+}
+
+// glam's cross.
+fn cross3(a: vec3<Scalar>, b: vec3<Scalar>) -> vec3<Scalar> {
+    return vec3<Scalar>(a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y);
+}
+
+// The sign bit of x (f32 keeps it through the conversion; WGSL has no f64
+// bitcast).
+fn sign_bit(x: Scalar) -> bool {
+    return (bitcast<u32>(f32(x)) & 0x80000000u) != 0u;
+}
+
+// f64::signum: ±1 by the sign bit, −1 for −0.
+fn signum(x: Scalar) -> Scalar {
+    return select(Scalar(1.0), Scalar(-1.0), sign_bit(x));
+}
+
+// a < b in f64::total_cmp's order (finite values: −0 before +0).
+fn total_less(a: Scalar, b: Scalar) -> bool {
+    if a != b {
+        return a < b;
+    }
+    return sign_bit(a) && !sign_bit(b);
+}
+
+// Column k of p's rotation.
+fn col(p: Placed, k: u32) -> vec3<Scalar> {
+    if k == 0u {
+        return p.c0;
+    }
+    if k == 1u {
+        return p.c1;
+    }
+    return p.c2;
+}
+
+// R v (glam's mul_vec3).
+fn rotate(p: Placed, v: vec3<Scalar>) -> vec3<Scalar> {
+    return p.c0 * v.x + p.c1 * v.y + p.c2 * v.z;
+}
+
+// Rᵀ v (glam's transpose then mul_vec3).
+fn unrotate(p: Placed, v: vec3<Scalar>) -> vec3<Scalar> {
+    return vec3<Scalar>(dot3(p.c0, v), dot3(p.c1, v), dot3(p.c2, v));
+}
+
+// The shape `kind` (`size`) at `centre` turned by the quaternion q
+// (x, y, z, w), normalised as DQuat::normalize, as DMat3::from_quat.
+fn placed_from(kind: u32, size: vec3<Scalar>, centre: vec3<Scalar>, q0: vec4<Scalar>) -> Placed {
+    let len = sqrt(q0.x * q0.x + q0.y * q0.y + q0.z * q0.z + q0.w * q0.w);
+    let recip = Scalar(1.0) / len;
+    let q = q0 * recip;
+    let x2 = q.x + q.x;
+    let y2 = q.y + q.y;
+    let z2 = q.z + q.z;
+    let xx = q.x * x2;
+    let xy = q.x * y2;
+    let xz = q.x * z2;
+    let yy = q.y * y2;
+    let yz = q.y * z2;
+    let zz = q.z * z2;
+    let wx = q.w * x2;
+    let wy = q.w * y2;
+    let wz = q.w * z2;
+    return Placed(
+        kind,
+        size,
+        centre,
+        vec3<Scalar>(Scalar(1.0) - (yy + zz), xy + wz, xz - wy),
+        vec3<Scalar>(xy - wz, Scalar(1.0) - (xx + zz), yz + wx),
+        vec3<Scalar>(xz + wy, yz - wx, Scalar(1.0) - (xx + yy)),
+    );
+}
+
+fn max_element(h: vec3<Scalar>) -> Scalar {
+    return max(h.x, max(h.y, h.z));
+}
+
+// Pair functions (the resident step's solve and frictional phases take
+// the functions above this line only).
+
 struct Hit {
     point: vec3<Scalar>,
     // From the second shape to the first.
@@ -71,13 +160,15 @@ struct Manifold {
     overflow: bool,
 }
 
-// Every index into a manifold's or polygon's array is a constant (loops
-// marked UNROLL are unrolled by the composition, src/gpu/shaders/
-// unroll_loops.rs; a run-time index becomes a ladder over the slots):
-// llvmpipe keeps a private array in registers only where every access to
-// it has a constant index, else each access is a per-lane gather or
-// scatter in memory (BENCHMARKS.md "reslvp": the narrow phase's box–box
-// pairs 3× faster).
+// Every index into a manifold's or polygon's array is a constant: a
+// run-time index goes through a ladder over the slots (push_hit, hit_at,
+// push_point, point_at; their loops marked UNROLL are unrolled by the
+// composition, src/gpu/shaders/unroll_loops.rs, as are a few short loops
+// over every slot). llvmpipe keeps a private array in registers only where
+// every access to it has a constant index, else each access is a per-lane
+// gather or scatter in memory (BENCHMARKS.md "reslvp": the narrow phase's
+// box–box pairs 2–3× faster). The longer loops stay loops (each unrolled
+// copy would be in the SPIR-V of every collision entry point).
 fn push_hit(m: ptr<function, Manifold>, h: Hit) {
     if (*m).len < CAPACITY {
 {
@@ -189,95 +280,6 @@ fn one_hit(h: Hit) -> Manifold {
     push_hit(&m, h);
     return m;
 }
-
-// glam's dot: (x x' + y y') + z z'.
-fn dot3(a: vec3<Scalar>, b: vec3<Scalar>) -> Scalar {
-    return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-
-fn length3(a: vec3<Scalar>) -> Scalar {
-    return sqrt(dot3(a, a));
-}
-
-// glam's cross.
-fn cross3(a: vec3<Scalar>, b: vec3<Scalar>) -> vec3<Scalar> {
-    return vec3<Scalar>(a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y);
-}
-
-// The sign bit of x (f32 keeps it through the conversion; WGSL has no f64
-// bitcast).
-fn sign_bit(x: Scalar) -> bool {
-    return (bitcast<u32>(f32(x)) & 0x80000000u) != 0u;
-}
-
-// f64::signum: ±1 by the sign bit, −1 for −0.
-fn signum(x: Scalar) -> Scalar {
-    return select(Scalar(1.0), Scalar(-1.0), sign_bit(x));
-}
-
-// a < b in f64::total_cmp's order (finite values: −0 before +0).
-fn total_less(a: Scalar, b: Scalar) -> bool {
-    if a != b {
-        return a < b;
-    }
-    return sign_bit(a) && !sign_bit(b);
-}
-
-// Column k of p's rotation.
-fn col(p: Placed, k: u32) -> vec3<Scalar> {
-    if k == 0u {
-        return p.c0;
-    }
-    if k == 1u {
-        return p.c1;
-    }
-    return p.c2;
-}
-
-// R v (glam's mul_vec3).
-fn rotate(p: Placed, v: vec3<Scalar>) -> vec3<Scalar> {
-    return p.c0 * v.x + p.c1 * v.y + p.c2 * v.z;
-}
-
-// Rᵀ v (glam's transpose then mul_vec3).
-fn unrotate(p: Placed, v: vec3<Scalar>) -> vec3<Scalar> {
-    return vec3<Scalar>(dot3(p.c0, v), dot3(p.c1, v), dot3(p.c2, v));
-}
-
-// The shape `kind` (`size`) at `centre` turned by the quaternion q
-// (x, y, z, w), normalised as DQuat::normalize, as DMat3::from_quat.
-fn placed_from(kind: u32, size: vec3<Scalar>, centre: vec3<Scalar>, q0: vec4<Scalar>) -> Placed {
-    let len = sqrt(q0.x * q0.x + q0.y * q0.y + q0.z * q0.z + q0.w * q0.w);
-    let recip = Scalar(1.0) / len;
-    let q = q0 * recip;
-    let x2 = q.x + q.x;
-    let y2 = q.y + q.y;
-    let z2 = q.z + q.z;
-    let xx = q.x * x2;
-    let xy = q.x * y2;
-    let xz = q.x * z2;
-    let yy = q.y * y2;
-    let yz = q.y * z2;
-    let zz = q.z * z2;
-    let wx = q.w * x2;
-    let wy = q.w * y2;
-    let wz = q.w * z2;
-    return Placed(
-        kind,
-        size,
-        centre,
-        vec3<Scalar>(Scalar(1.0) - (yy + zz), xy + wz, xz - wy),
-        vec3<Scalar>(xy - wz, Scalar(1.0) - (xx + zz), yz + wx),
-        vec3<Scalar>(xz + wy, yz - wx, Scalar(1.0) - (xx + yy)),
-    );
-}
-
-fn max_element(h: vec3<Scalar>) -> Scalar {
-    return max(h.x, max(h.y, h.z));
-}
-
-// Pair functions (the resident step's solve and frictional phases take
-// the functions above this line only).
 
 // Sphere (centre c, radius r) against the plane through p with outward
 // normal n: φ = n·(c − p) − r, normal n (plane to sphere).
@@ -505,275 +507,56 @@ fn area(p0: vec3<Scalar>, p1: vec3<Scalar>, p: vec3<Scalar>, n: vec3<Scalar>) ->
 
 // At most 4 points of a manifold, spread over its area: the deepest, the
 // farthest from it, then the two on either side of their line farthest from
-// it. Order is kept. Every slot is visited (those past `len` skipped), so
-// the indices are constants (see push_hit).
+// it. Order is kept. Hits read through hit_at (see push_hit).
 fn reduce_to_four(hits: Manifold) -> Manifold {
     if hits.len <= 4u {
         return hits;
     }
-    let len = hits.len;
     let n = hits.hits[0].normal;
     // min_by keeps the first of equals, max_by the last.
     var first = 0u;
     var low = hits.hits[0].gap;
-{
-
-        if 1u < len && total_less(hits.hits[1u].gap, low) {
-            first = 1u;
-            low = hits.hits[1u].gap;
+    for (var i = 1u; i < hits.len; i++) {
+        let gap = hit_at(hits, i).gap;
+        if total_less(gap, low) {
+            first = i;
+            low = gap;
         }
     }
-{
-
-        if 2u < len && total_less(hits.hits[2u].gap, low) {
-            first = 2u;
-            low = hits.hits[2u].gap;
-        }
-    }
-{
-
-        if 3u < len && total_less(hits.hits[3u].gap, low) {
-            first = 3u;
-            low = hits.hits[3u].gap;
-        }
-    }
-{
-
-        if 4u < len && total_less(hits.hits[4u].gap, low) {
-            first = 4u;
-            low = hits.hits[4u].gap;
-        }
-    }
-{
-
-        if 5u < len && total_less(hits.hits[5u].gap, low) {
-            first = 5u;
-            low = hits.hits[5u].gap;
-        }
-    }
-{
-
-        if 6u < len && total_less(hits.hits[6u].gap, low) {
-            first = 6u;
-            low = hits.hits[6u].gap;
-        }
-    }
-{
-
-        if 7u < len && total_less(hits.hits[7u].gap, low) {
-            first = 7u;
-            low = hits.hits[7u].gap;
-        }
-    }
-
     let pf = hit_at(hits, first).point;
     var second = 0u;
     var far = dot3(hits.hits[0].point - pf, hits.hits[0].point - pf);
-{
-
-        let d = hits.hits[1u].point - pf;
+    for (var i = 1u; i < hits.len; i++) {
+        let d = hit_at(hits, i).point - pf;
         let di = dot3(d, d);
-        if 1u < len && !total_less(di, far) {
-            second = 1u;
+        if !total_less(di, far) {
+            second = i;
             far = di;
         }
     }
-{
-
-        let d = hits.hits[2u].point - pf;
-        let di = dot3(d, d);
-        if 2u < len && !total_less(di, far) {
-            second = 2u;
-            far = di;
-        }
-    }
-{
-
-        let d = hits.hits[3u].point - pf;
-        let di = dot3(d, d);
-        if 3u < len && !total_less(di, far) {
-            second = 3u;
-            far = di;
-        }
-    }
-{
-
-        let d = hits.hits[4u].point - pf;
-        let di = dot3(d, d);
-        if 4u < len && !total_less(di, far) {
-            second = 4u;
-            far = di;
-        }
-    }
-{
-
-        let d = hits.hits[5u].point - pf;
-        let di = dot3(d, d);
-        if 5u < len && !total_less(di, far) {
-            second = 5u;
-            far = di;
-        }
-    }
-{
-
-        let d = hits.hits[6u].point - pf;
-        let di = dot3(d, d);
-        if 6u < len && !total_less(di, far) {
-            second = 6u;
-            far = di;
-        }
-    }
-{
-
-        let d = hits.hits[7u].point - pf;
-        let di = dot3(d, d);
-        if 7u < len && !total_less(di, far) {
-            second = 7u;
-            far = di;
-        }
-    }
-
     let ps = hit_at(hits, second).point;
     var third = 0u;
     var fourth = 0u;
     var hi = area(pf, ps, hits.hits[0].point, n);
     var lo = hi;
-{
-
-        let a = area(pf, ps, hits.hits[1u].point, n);
-        if 1u < len && !total_less(a, hi) {
-            third = 1u;
+    for (var i = 1u; i < hits.len; i++) {
+        let a = area(pf, ps, hit_at(hits, i).point, n);
+        if !total_less(a, hi) {
+            third = i;
             hi = a;
         }
-        if 1u < len && total_less(a, lo) {
-            fourth = 1u;
+        if total_less(a, lo) {
+            fourth = i;
             lo = a;
         }
     }
-{
-
-        let a = area(pf, ps, hits.hits[2u].point, n);
-        if 2u < len && !total_less(a, hi) {
-            third = 2u;
-            hi = a;
-        }
-        if 2u < len && total_less(a, lo) {
-            fourth = 2u;
-            lo = a;
-        }
-    }
-{
-
-        let a = area(pf, ps, hits.hits[3u].point, n);
-        if 3u < len && !total_less(a, hi) {
-            third = 3u;
-            hi = a;
-        }
-        if 3u < len && total_less(a, lo) {
-            fourth = 3u;
-            lo = a;
-        }
-    }
-{
-
-        let a = area(pf, ps, hits.hits[4u].point, n);
-        if 4u < len && !total_less(a, hi) {
-            third = 4u;
-            hi = a;
-        }
-        if 4u < len && total_less(a, lo) {
-            fourth = 4u;
-            lo = a;
-        }
-    }
-{
-
-        let a = area(pf, ps, hits.hits[5u].point, n);
-        if 5u < len && !total_less(a, hi) {
-            third = 5u;
-            hi = a;
-        }
-        if 5u < len && total_less(a, lo) {
-            fourth = 5u;
-            lo = a;
-        }
-    }
-{
-
-        let a = area(pf, ps, hits.hits[6u].point, n);
-        if 6u < len && !total_less(a, hi) {
-            third = 6u;
-            hi = a;
-        }
-        if 6u < len && total_less(a, lo) {
-            fourth = 6u;
-            lo = a;
-        }
-    }
-{
-
-        let a = area(pf, ps, hits.hits[7u].point, n);
-        if 7u < len && !total_less(a, hi) {
-            third = 7u;
-            hi = a;
-        }
-        if 7u < len && total_less(a, lo) {
-            fourth = 7u;
-            lo = a;
-        }
-    }
-
     var out = Manifold();
     out.overflow = hits.overflow;
-{
-
-        if 0u < len && (0u == first || 0u == second || 0u == third || 0u == fourth) {
-            push_hit(&out, hits.hits[0u]);
+    for (var i = 0u; i < hits.len; i++) {
+        if i == first || i == second || i == third || i == fourth {
+            push_hit(&out, hit_at(hits, i));
         }
     }
-{
-
-        if 1u < len && (1u == first || 1u == second || 1u == third || 1u == fourth) {
-            push_hit(&out, hits.hits[1u]);
-        }
-    }
-{
-
-        if 2u < len && (2u == first || 2u == second || 2u == third || 2u == fourth) {
-            push_hit(&out, hits.hits[2u]);
-        }
-    }
-{
-
-        if 3u < len && (3u == first || 3u == second || 3u == third || 3u == fourth) {
-            push_hit(&out, hits.hits[3u]);
-        }
-    }
-{
-
-        if 4u < len && (4u == first || 4u == second || 4u == third || 4u == fourth) {
-            push_hit(&out, hits.hits[4u]);
-        }
-    }
-{
-
-        if 5u < len && (5u == first || 5u == second || 5u == third || 5u == fourth) {
-            push_hit(&out, hits.hits[5u]);
-        }
-    }
-{
-
-        if 6u < len && (6u == first || 6u == second || 6u == third || 6u == fourth) {
-            push_hit(&out, hits.hits[6u]);
-        }
-    }
-{
-
-        if 7u < len && (7u == first || 7u == second || 7u == third || 7u == fourth) {
-            push_hit(&out, hits.hits[7u]);
-        }
-    }
-
     return out;
 }
 
@@ -958,150 +741,125 @@ fn push_point(poly: ptr<function, Polygon>, p: vec3<Scalar>, tag: u32) {
     }
 }
 
+// Point k of poly (k < 8) and its tag, read by a ladder over the slots.
+fn point_at(poly: Polygon, k: u32) -> vec3<Scalar> {
+    var p = poly.points[0];
+{
+
+        if k == 1u {
+            p = poly.points[1u];
+        }
+    }
+{
+
+        if k == 2u {
+            p = poly.points[2u];
+        }
+    }
+{
+
+        if k == 3u {
+            p = poly.points[3u];
+        }
+    }
+{
+
+        if k == 4u {
+            p = poly.points[4u];
+        }
+    }
+{
+
+        if k == 5u {
+            p = poly.points[5u];
+        }
+    }
+{
+
+        if k == 6u {
+            p = poly.points[6u];
+        }
+    }
+{
+
+        if k == 7u {
+            p = poly.points[7u];
+        }
+    }
+
+    return p;
+}
+
+fn tag_at(poly: Polygon, k: u32) -> u32 {
+    var t = poly.tags[0];
+{
+
+        if k == 1u {
+            t = poly.tags[1u];
+        }
+    }
+{
+
+        if k == 2u {
+            t = poly.tags[2u];
+        }
+    }
+{
+
+        if k == 3u {
+            t = poly.tags[3u];
+        }
+    }
+{
+
+        if k == 4u {
+            t = poly.tags[4u];
+        }
+    }
+{
+
+        if k == 5u {
+            t = poly.tags[5u];
+        }
+    }
+{
+
+        if k == 6u {
+            t = poly.tags[6u];
+        }
+    }
+{
+
+        if k == 7u {
+            t = poly.tags[7u];
+        }
+    }
+
+    return t;
+}
+
 // Sutherland–Hodgman with a tolerance: the part of `poly` with pn·p ≤ off,
 // a vertex outside by at most `tol` kept as it is. A point made on the
 // plane is tagged 4 + 4·side + (the edge's first vertex's tag mod 4).
 fn clip(poly: Polygon, pn: vec3<Scalar>, off: Scalar, tol: Scalar, side: u32) -> Polygon {
     var out = Polygon();
     out.overflow = poly.overflow;
-    // Every slot visited, those past `len` skipped (see push_hit).
-{
-
-        let p = poly.points[0u];
-        let tp = poly.tags[0u];
-        // (0u + 1) mod len: the next point, the first after the last.
-        let q = select(poly.points[0], poly.points[(0u + 1u) % 8u], 0u + 1u < poly.len);
+    // Points read through point_at (see push_hit).
+    for (var k = 0u; k < poly.len; k++) {
+        let p = point_at(poly, k);
+        let tp = tag_at(poly, k);
+        let q = point_at(poly, (k + 1u) % poly.len);
         let dp = dot3(pn, p) - off;
         let dq = dot3(pn, q) - off;
-        if 0u < poly.len && dp <= tol {
+        if dp <= tol {
             push_point(&out, p, tp);
         }
         // Crossing: the kept end is inside (d ≤ 0), the other beyond tol.
-        if 0u < poly.len && (dp <= tol) != (dq <= tol) && min(dp, dq) <= Scalar(0.0) {
+        if (dp <= tol) != (dq <= tol) && min(dp, dq) <= Scalar(0.0) {
             let t = dp / (dp - dq);
             push_point(&out, p + (q - p) * t, 4u + 4u * side + (tp & 3u));
         }
     }
-{
-
-        let p = poly.points[1u];
-        let tp = poly.tags[1u];
-        // (1u + 1) mod len: the next point, the first after the last.
-        let q = select(poly.points[0], poly.points[(1u + 1u) % 8u], 1u + 1u < poly.len);
-        let dp = dot3(pn, p) - off;
-        let dq = dot3(pn, q) - off;
-        if 1u < poly.len && dp <= tol {
-            push_point(&out, p, tp);
-        }
-        // Crossing: the kept end is inside (d ≤ 0), the other beyond tol.
-        if 1u < poly.len && (dp <= tol) != (dq <= tol) && min(dp, dq) <= Scalar(0.0) {
-            let t = dp / (dp - dq);
-            push_point(&out, p + (q - p) * t, 4u + 4u * side + (tp & 3u));
-        }
-    }
-{
-
-        let p = poly.points[2u];
-        let tp = poly.tags[2u];
-        // (2u + 1) mod len: the next point, the first after the last.
-        let q = select(poly.points[0], poly.points[(2u + 1u) % 8u], 2u + 1u < poly.len);
-        let dp = dot3(pn, p) - off;
-        let dq = dot3(pn, q) - off;
-        if 2u < poly.len && dp <= tol {
-            push_point(&out, p, tp);
-        }
-        // Crossing: the kept end is inside (d ≤ 0), the other beyond tol.
-        if 2u < poly.len && (dp <= tol) != (dq <= tol) && min(dp, dq) <= Scalar(0.0) {
-            let t = dp / (dp - dq);
-            push_point(&out, p + (q - p) * t, 4u + 4u * side + (tp & 3u));
-        }
-    }
-{
-
-        let p = poly.points[3u];
-        let tp = poly.tags[3u];
-        // (3u + 1) mod len: the next point, the first after the last.
-        let q = select(poly.points[0], poly.points[(3u + 1u) % 8u], 3u + 1u < poly.len);
-        let dp = dot3(pn, p) - off;
-        let dq = dot3(pn, q) - off;
-        if 3u < poly.len && dp <= tol {
-            push_point(&out, p, tp);
-        }
-        // Crossing: the kept end is inside (d ≤ 0), the other beyond tol.
-        if 3u < poly.len && (dp <= tol) != (dq <= tol) && min(dp, dq) <= Scalar(0.0) {
-            let t = dp / (dp - dq);
-            push_point(&out, p + (q - p) * t, 4u + 4u * side + (tp & 3u));
-        }
-    }
-{
-
-        let p = poly.points[4u];
-        let tp = poly.tags[4u];
-        // (4u + 1) mod len: the next point, the first after the last.
-        let q = select(poly.points[0], poly.points[(4u + 1u) % 8u], 4u + 1u < poly.len);
-        let dp = dot3(pn, p) - off;
-        let dq = dot3(pn, q) - off;
-        if 4u < poly.len && dp <= tol {
-            push_point(&out, p, tp);
-        }
-        // Crossing: the kept end is inside (d ≤ 0), the other beyond tol.
-        if 4u < poly.len && (dp <= tol) != (dq <= tol) && min(dp, dq) <= Scalar(0.0) {
-            let t = dp / (dp - dq);
-            push_point(&out, p + (q - p) * t, 4u + 4u * side + (tp & 3u));
-        }
-    }
-{
-
-        let p = poly.points[5u];
-        let tp = poly.tags[5u];
-        // (5u + 1) mod len: the next point, the first after the last.
-        let q = select(poly.points[0], poly.points[(5u + 1u) % 8u], 5u + 1u < poly.len);
-        let dp = dot3(pn, p) - off;
-        let dq = dot3(pn, q) - off;
-        if 5u < poly.len && dp <= tol {
-            push_point(&out, p, tp);
-        }
-        // Crossing: the kept end is inside (d ≤ 0), the other beyond tol.
-        if 5u < poly.len && (dp <= tol) != (dq <= tol) && min(dp, dq) <= Scalar(0.0) {
-            let t = dp / (dp - dq);
-            push_point(&out, p + (q - p) * t, 4u + 4u * side + (tp & 3u));
-        }
-    }
-{
-
-        let p = poly.points[6u];
-        let tp = poly.tags[6u];
-        // (6u + 1) mod len: the next point, the first after the last.
-        let q = select(poly.points[0], poly.points[(6u + 1u) % 8u], 6u + 1u < poly.len);
-        let dp = dot3(pn, p) - off;
-        let dq = dot3(pn, q) - off;
-        if 6u < poly.len && dp <= tol {
-            push_point(&out, p, tp);
-        }
-        // Crossing: the kept end is inside (d ≤ 0), the other beyond tol.
-        if 6u < poly.len && (dp <= tol) != (dq <= tol) && min(dp, dq) <= Scalar(0.0) {
-            let t = dp / (dp - dq);
-            push_point(&out, p + (q - p) * t, 4u + 4u * side + (tp & 3u));
-        }
-    }
-{
-
-        let p = poly.points[7u];
-        let tp = poly.tags[7u];
-        // (7u + 1) mod len: the next point, the first after the last.
-        let q = select(poly.points[0], poly.points[(7u + 1u) % 8u], 7u + 1u < poly.len);
-        let dp = dot3(pn, p) - off;
-        let dq = dot3(pn, q) - off;
-        if 7u < poly.len && dp <= tol {
-            push_point(&out, p, tp);
-        }
-        // Crossing: the kept end is inside (d ≤ 0), the other beyond tol.
-        if 7u < poly.len && (dp <= tol) != (dq <= tol) && min(dp, dq) <= Scalar(0.0) {
-            let t = dp / (dp - dq);
-            push_point(&out, p + (q - p) * t, 4u + 4u * side + (tp & 3u));
-        }
-    }
-
     return out;
 }
 
@@ -1158,71 +916,13 @@ fn face_contact(re: Placed, hr: vec3<Scalar>, inc: Placed, hi: vec3<Scalar>, axi
     let base = (select(0u, 1u, ref_is_y) << 11u) | (ref_face << 8u) | (inc_face << 5u);
     var hits = Manifold();
     hits.overflow = poly.overflow;
-{
-
-        let p = poly.points[0u];
+    for (var m = 0u; m < poly.len; m++) {
+        let p = point_at(poly, m);
         let gap = dot3(n, p - face_point);
-        if 0u < poly.len && gap < margin {
-            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (poly.tags[0u] & 31u)));
+        if gap < margin {
+            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (tag_at(poly, m) & 31u)));
         }
     }
-{
-
-        let p = poly.points[1u];
-        let gap = dot3(n, p - face_point);
-        if 1u < poly.len && gap < margin {
-            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (poly.tags[1u] & 31u)));
-        }
-    }
-{
-
-        let p = poly.points[2u];
-        let gap = dot3(n, p - face_point);
-        if 2u < poly.len && gap < margin {
-            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (poly.tags[2u] & 31u)));
-        }
-    }
-{
-
-        let p = poly.points[3u];
-        let gap = dot3(n, p - face_point);
-        if 3u < poly.len && gap < margin {
-            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (poly.tags[3u] & 31u)));
-        }
-    }
-{
-
-        let p = poly.points[4u];
-        let gap = dot3(n, p - face_point);
-        if 4u < poly.len && gap < margin {
-            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (poly.tags[4u] & 31u)));
-        }
-    }
-{
-
-        let p = poly.points[5u];
-        let gap = dot3(n, p - face_point);
-        if 5u < poly.len && gap < margin {
-            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (poly.tags[5u] & 31u)));
-        }
-    }
-{
-
-        let p = poly.points[6u];
-        let gap = dot3(n, p - face_point);
-        if 6u < poly.len && gap < margin {
-            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (poly.tags[6u] & 31u)));
-        }
-    }
-{
-
-        let p = poly.points[7u];
-        let gap = dot3(n, p - face_point);
-        if 7u < poly.len && gap < margin {
-            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (poly.tags[7u] & 31u)));
-        }
-    }
-
     return reduce_to_four(hits);
 }
 

@@ -56,58 +56,6 @@ struct Placed {
     c2: vec3<Scalar>,
 }
 
-struct Hit {
-    point: vec3<Scalar>,
-    // From the second shape to the first.
-    normal: vec3<Scalar>,
-    gap: Scalar,
-    feature: u32,
-}
-
-// Up to CAPACITY hits; `overflow` set by a push past it.
-struct Manifold {
-    hits: array<Hit, 8>,
-    len: u32,
-    overflow: bool,
-}
-
-// Every index into a manifold's or polygon's array is a constant (loops
-// marked UNROLL are unrolled by the composition, src/gpu/shaders/
-// unroll_loops.rs; a run-time index becomes a ladder over the slots):
-// llvmpipe keeps a private array in registers only where every access to
-// it has a constant index, else each access is a per-lane gather or
-// scatter in memory (BENCHMARKS.md "reslvp": the narrow phase's box–box
-// pairs 3× faster).
-fn push_hit(m: ptr<function, Manifold>, h: Hit) {
-    if (*m).len < CAPACITY {
-        for (var s = 0u; s < CAPACITY; s++) { // UNROLL
-            if (*m).len == s {
-                (*m).hits[s] = h;
-            }
-        }
-        (*m).len += 1u;
-    } else {
-        (*m).overflow = true;
-    }
-}
-
-// Hit k of m (k < CAPACITY), read by a ladder over the slots.
-fn hit_at(m: Manifold, k: u32) -> Hit {
-    var h = m.hits[0];
-    for (var s = 1u; s < CAPACITY; s++) { // UNROLL
-        if k == s {
-            h = m.hits[s];
-        }
-    }
-    return h;
-}
-
-fn one_hit(h: Hit) -> Manifold {
-    var m = Manifold();
-    push_hit(&m, h);
-    return m;
-}
-
 // glam's dot: (x x' + y y') + z z'.
 fn dot3(a: vec3<Scalar>, b: vec3<Scalar>) -> Scalar {
     return a.x * b.x + a.y * b.y + a.z * b.z;
