@@ -53,36 +53,6 @@ struct Placed {
     c2: vec3<Scalar>,
 }
 
-struct Hit {
-    point: vec3<Scalar>,
-    // From the second shape to the first.
-    normal: vec3<Scalar>,
-    gap: Scalar,
-    feature: u32,
-}
-
-// Up to CAPACITY hits; `overflow` set by a push past it.
-struct Manifold {
-    hits: array<Hit, 8>,
-    len: u32,
-    overflow: bool,
-}
-
-fn push_hit(m: ptr<function, Manifold>, h: Hit) {
-    if (*m).len < CAPACITY {
-        (*m).hits[(*m).len] = h;
-        (*m).len += 1u;
-    } else {
-        (*m).overflow = true;
-    }
-}
-
-fn one_hit(h: Hit) -> Manifold {
-    var m = Manifold();
-    push_hit(&m, h);
-    return m;
-}
-
 // glam's dot: (x x' + y y') + z z'.
 fn dot3(a: vec3<Scalar>, b: vec3<Scalar>) -> Scalar {
     return a.x * b.x + a.y * b.y + a.z * b.z;
@@ -172,6 +142,60 @@ fn max_element(h: vec3<Scalar>) -> Scalar {
 // Pair functions (the resident step's solve and frictional phases take
 // the functions above this line only).
 
+struct Hit {
+    point: vec3<Scalar>,
+    // From the second shape to the first.
+    normal: vec3<Scalar>,
+    gap: Scalar,
+    feature: u32,
+}
+
+// Up to CAPACITY hits; `overflow` set by a push past it.
+struct Manifold {
+    hits: array<Hit, 8>,
+    len: u32,
+    overflow: bool,
+}
+
+// Every index into a manifold's or polygon's array is a constant: a
+// run-time index goes through a ladder over the slots (push_hit, hit_at,
+// push_point, point_at; their loops marked UNROLL are unrolled by the
+// composition, src/gpu/shaders/unroll_loops.rs, as are a few short loops
+// over every slot). llvmpipe keeps a private array in registers only where
+// every access to it has a constant index, else each access is a per-lane
+// gather or scatter in memory (BENCHMARKS.md "reslvp": the narrow phase's
+// box–box pairs 2–3× faster). The longer loops stay loops (each unrolled
+// copy would be in the SPIR-V of every collision entry point).
+fn push_hit(m: ptr<function, Manifold>, h: Hit) {
+    if (*m).len < CAPACITY {
+        for (var s = 0u; s < CAPACITY; s++) { // UNROLL
+            if (*m).len == s {
+                (*m).hits[s] = h;
+            }
+        }
+        (*m).len += 1u;
+    } else {
+        (*m).overflow = true;
+    }
+}
+
+// Hit k of m (k < CAPACITY), read by a ladder over the slots.
+fn hit_at(m: Manifold, k: u32) -> Hit {
+    var h = m.hits[0];
+    for (var s = 1u; s < CAPACITY; s++) { // UNROLL
+        if k == s {
+            h = m.hits[s];
+        }
+    }
+    return h;
+}
+
+fn one_hit(h: Hit) -> Manifold {
+    var m = Manifold();
+    push_hit(&m, h);
+    return m;
+}
+
 // Sphere (centre c, radius r) against the plane through p with outward
 // normal n: φ = n·(c − p) − r, normal n (plane to sphere).
 fn sphere_plane(c: vec3<Scalar>, r: Scalar, p: vec3<Scalar>, n: vec3<Scalar>, margin: Scalar) -> Manifold {
@@ -202,7 +226,7 @@ fn sphere_sphere(ca: vec3<Scalar>, ra: Scalar, cb: vec3<Scalar>, rb: Scalar, mar
 // axis i as bit i of k is 0/1.
 fn corners(b: Placed, h: vec3<Scalar>) -> array<vec3<Scalar>, 8> {
     var out: array<vec3<Scalar>, 8>;
-    for (var k = 0u; k < 8u; k++) {
+    for (var k = 0u; k < 8u; k++) { // UNROLL
         let s = vec3<Scalar>(
             select(h.x, -h.x, (k & 1u) == 0u),
             select(h.y, -h.y, (k & 2u) == 0u),
@@ -218,7 +242,7 @@ fn corners(b: Placed, h: vec3<Scalar>) -> array<vec3<Scalar>, 8> {
 fn box_plane(b: Placed, h: vec3<Scalar>, p: vec3<Scalar>, n: vec3<Scalar>, margin: Scalar) -> Manifold {
     var hits = Manifold();
     let vs = corners(b, h);
-    for (var k = 0u; k < 8u; k++) {
+    for (var k = 0u; k < 8u; k++) { // UNROLL
         let v = vs[k];
         let gap = dot3(n, v - p);
         if gap < margin {
@@ -268,15 +292,14 @@ fn sphere_box(c: vec3<Scalar>, r: Scalar, b: Placed, h: vec3<Scalar>, margin: Sc
     return one_hit(Hit(on_box + normal * (Scalar(0.5) * gap), normal, gap, 0u));
 }
 
-// Signed area of triangle (first, second, i) about n.
-fn area(hits: Manifold, first: u32, second: u32, i: u32, n: vec3<Scalar>) -> Scalar {
-    let p0 = hits.hits[first].point;
-    return dot3(cross3(hits.hits[second].point - p0, hits.hits[i].point - p0), n);
+// Signed area of triangle (p0, p1, p) about n.
+fn area(p0: vec3<Scalar>, p1: vec3<Scalar>, p: vec3<Scalar>, n: vec3<Scalar>) -> Scalar {
+    return dot3(cross3(p1 - p0, p - p0), n);
 }
 
 // At most 4 points of a manifold, spread over its area: the deepest, the
 // farthest from it, then the two on either side of their line farthest from
-// it. Order is kept.
+// it. Order is kept. Hits read through hit_at (see push_hit).
 fn reduce_to_four(hits: Manifold) -> Manifold {
     if hits.len <= 4u {
         return hits;
@@ -284,28 +307,32 @@ fn reduce_to_four(hits: Manifold) -> Manifold {
     let n = hits.hits[0].normal;
     // min_by keeps the first of equals, max_by the last.
     var first = 0u;
+    var low = hits.hits[0].gap;
     for (var i = 1u; i < hits.len; i++) {
-        if total_less(hits.hits[i].gap, hits.hits[first].gap) {
+        let gap = hit_at(hits, i).gap;
+        if total_less(gap, low) {
             first = i;
+            low = gap;
         }
     }
-    let pf = hits.hits[first].point;
+    let pf = hit_at(hits, first).point;
     var second = 0u;
     var far = dot3(hits.hits[0].point - pf, hits.hits[0].point - pf);
     for (var i = 1u; i < hits.len; i++) {
-        let d = hits.hits[i].point - pf;
+        let d = hit_at(hits, i).point - pf;
         let di = dot3(d, d);
         if !total_less(di, far) {
             second = i;
             far = di;
         }
     }
+    let ps = hit_at(hits, second).point;
     var third = 0u;
     var fourth = 0u;
-    var hi = area(hits, first, second, 0u, n);
+    var hi = area(pf, ps, hits.hits[0].point, n);
     var lo = hi;
     for (var i = 1u; i < hits.len; i++) {
-        let a = area(hits, first, second, i, n);
+        let a = area(pf, ps, hit_at(hits, i).point, n);
         if !total_less(a, hi) {
             third = i;
             hi = a;
@@ -319,7 +346,7 @@ fn reduce_to_four(hits: Manifold) -> Manifold {
     out.overflow = hits.overflow;
     for (var i = 0u; i < hits.len; i++) {
         if i == first || i == second || i == third || i == fourth {
-            push_hit(&out, hits.hits[i]);
+            push_hit(&out, hit_at(hits, i));
         }
     }
     return out;
@@ -440,14 +467,40 @@ struct Polygon {
     overflow: bool,
 }
 
+// Appends p (tag) by a ladder over the slots (see push_hit).
 fn push_point(poly: ptr<function, Polygon>, p: vec3<Scalar>, tag: u32) {
     if (*poly).len < 8u {
-        (*poly).points[(*poly).len] = p;
-        (*poly).tags[(*poly).len] = tag;
+        for (var s = 0u; s < 8u; s++) { // UNROLL
+            if (*poly).len == s {
+                (*poly).points[s] = p;
+                (*poly).tags[s] = tag;
+            }
+        }
         (*poly).len += 1u;
     } else {
         (*poly).overflow = true;
     }
+}
+
+// Point k of poly (k < 8) and its tag, read by a ladder over the slots.
+fn point_at(poly: Polygon, k: u32) -> vec3<Scalar> {
+    var p = poly.points[0];
+    for (var s = 1u; s < 8u; s++) { // UNROLL
+        if k == s {
+            p = poly.points[s];
+        }
+    }
+    return p;
+}
+
+fn tag_at(poly: Polygon, k: u32) -> u32 {
+    var t = poly.tags[0];
+    for (var s = 1u; s < 8u; s++) { // UNROLL
+        if k == s {
+            t = poly.tags[s];
+        }
+    }
+    return t;
 }
 
 // Sutherland–Hodgman with a tolerance: the part of `poly` with pn·p ≤ off,
@@ -456,10 +509,11 @@ fn push_point(poly: ptr<function, Polygon>, p: vec3<Scalar>, tag: u32) {
 fn clip(poly: Polygon, pn: vec3<Scalar>, off: Scalar, tol: Scalar, side: u32) -> Polygon {
     var out = Polygon();
     out.overflow = poly.overflow;
+    // Points read through point_at (see push_hit).
     for (var k = 0u; k < poly.len; k++) {
-        let p = poly.points[k];
-        let tp = poly.tags[k];
-        let q = poly.points[(k + 1u) % poly.len];
+        let p = point_at(poly, k);
+        let tp = tag_at(poly, k);
+        let q = point_at(poly, (k + 1u) % poly.len);
         let dp = dot3(pn, p) - off;
         let dq = dot3(pn, q) - off;
         if dp <= tol {
@@ -528,10 +582,10 @@ fn face_contact(re: Placed, hr: vec3<Scalar>, inc: Placed, hi: vec3<Scalar>, axi
     var hits = Manifold();
     hits.overflow = poly.overflow;
     for (var m = 0u; m < poly.len; m++) {
-        let p = poly.points[m];
+        let p = point_at(poly, m);
         let gap = dot3(n, p - face_point);
         if gap < margin {
-            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (poly.tags[m] & 31u)));
+            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (tag_at(poly, m) & 31u)));
         }
     }
     return reduce_to_four(hits);
@@ -578,8 +632,10 @@ fn edge_contact(x: Placed, hx: vec3<Scalar>, y: Placed, hy: vec3<Scalar>, i: u32
 // Normals of every hit reversed (a pair given the other way round).
 fn flip(m: Manifold) -> Manifold {
     var out = m;
-    for (var k = 0u; k < out.len; k++) {
-        out.hits[k].normal = -out.hits[k].normal;
+    for (var k = 0u; k < CAPACITY; k++) { // UNROLL
+        if k < out.len {
+            out.hits[k].normal = -out.hits[k].normal;
+        }
     }
     return out;
 }

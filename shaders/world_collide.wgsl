@@ -94,13 +94,16 @@ fn collide_sphere(s: Placed, o: Placed, margin: Scalar) -> Manifold {
 // w's pair records: its first SLOTS hits (point, normal, gap, feature); returns
 // its count word (length | OVERFLOW where the manifold overflowed).
 fn keep_manifold(w: u32, c: u32, m: Manifold, flipped: bool) -> u32 {
-    for (var h = 0u; h < min(m.len, SLOTS); h++) {
-        let hit = m.hits[h];
-        let at = sp.pairs_at + (w * sp.pair_slots + SLOTS * c + h) * CP;
-        put_scratch(at, hit.point);
-        put_scratch(at + 3u, select(hit.normal, -hit.normal, flipped));
-        scratch[at + 6u] = hit.gap;
-        scratch[at + 7u] = Scalar(hit.feature);
+    // Each index a constant (collide.wgsl push_hit).
+    for (var h = 0u; h < SLOTS; h++) { // UNROLL
+        if h < min(m.len, SLOTS) {
+            let hit = m.hits[h];
+            let at = sp.pairs_at + (w * sp.pair_slots + SLOTS * c + h) * CP;
+            put_scratch(at, hit.point);
+            put_scratch(at + 3u, select(hit.normal, -hit.normal, flipped));
+            scratch[at + 6u] = hit.gap;
+            scratch[at + 7u] = Scalar(hit.feature);
+        }
     }
     return m.len | select(0u, OVERFLOW, m.overflow);
 }

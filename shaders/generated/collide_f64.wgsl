@@ -56,36 +56,6 @@ struct Placed {
     c2: vec3<Scalar>,
 }
 
-struct Hit {
-    point: vec3<Scalar>,
-    // From the second shape to the first.
-    normal: vec3<Scalar>,
-    gap: Scalar,
-    feature: u32,
-}
-
-// Up to CAPACITY hits; `overflow` set by a push past it.
-struct Manifold {
-    hits: array<Hit, 8>,
-    len: u32,
-    overflow: bool,
-}
-
-fn push_hit(m: ptr<function, Manifold>, h: Hit) {
-    if (*m).len < CAPACITY {
-        (*m).hits[(*m).len] = h;
-        (*m).len += 1u;
-    } else {
-        (*m).overflow = true;
-    }
-}
-
-fn one_hit(h: Hit) -> Manifold {
-    var m = Manifold();
-    push_hit(&m, h);
-    return m;
-}
-
 // glam's dot: (x x' + y y') + z z'.
 fn dot3(a: vec3<Scalar>, b: vec3<Scalar>) -> Scalar {
     return a.x * b.x + a.y * b.y + a.z * b.z;
@@ -175,6 +145,142 @@ fn max_element(h: vec3<Scalar>) -> Scalar {
 // Pair functions (the resident step's solve and frictional phases take
 // the functions above this line only).
 
+struct Hit {
+    point: vec3<Scalar>,
+    // From the second shape to the first.
+    normal: vec3<Scalar>,
+    gap: Scalar,
+    feature: u32,
+}
+
+// Up to CAPACITY hits; `overflow` set by a push past it.
+struct Manifold {
+    hits: array<Hit, 8>,
+    len: u32,
+    overflow: bool,
+}
+
+// Every index into a manifold's or polygon's array is a constant: a
+// run-time index goes through a ladder over the slots (push_hit, hit_at,
+// push_point, point_at; their loops marked UNROLL are unrolled by the
+// composition, src/gpu/shaders/unroll_loops.rs, as are a few short loops
+// over every slot). llvmpipe keeps a private array in registers only where
+// every access to it has a constant index, else each access is a per-lane
+// gather or scatter in memory (BENCHMARKS.md "reslvp": the narrow phase's
+// box–box pairs 2–3× faster). The longer loops stay loops (each unrolled
+// copy would be in the SPIR-V of every collision entry point).
+fn push_hit(m: ptr<function, Manifold>, h: Hit) {
+    if (*m).len < CAPACITY {
+{
+
+            if (*m).len == 0u {
+                (*m).hits[0u] = h;
+            }
+        }
+{
+
+            if (*m).len == 1u {
+                (*m).hits[1u] = h;
+            }
+        }
+{
+
+            if (*m).len == 2u {
+                (*m).hits[2u] = h;
+            }
+        }
+{
+
+            if (*m).len == 3u {
+                (*m).hits[3u] = h;
+            }
+        }
+{
+
+            if (*m).len == 4u {
+                (*m).hits[4u] = h;
+            }
+        }
+{
+
+            if (*m).len == 5u {
+                (*m).hits[5u] = h;
+            }
+        }
+{
+
+            if (*m).len == 6u {
+                (*m).hits[6u] = h;
+            }
+        }
+{
+
+            if (*m).len == 7u {
+                (*m).hits[7u] = h;
+            }
+        }
+
+        (*m).len += 1u;
+    } else {
+        (*m).overflow = true;
+    }
+}
+
+// Hit k of m (k < CAPACITY), read by a ladder over the slots.
+fn hit_at(m: Manifold, k: u32) -> Hit {
+    var h = m.hits[0];
+{
+
+        if k == 1u {
+            h = m.hits[1u];
+        }
+    }
+{
+
+        if k == 2u {
+            h = m.hits[2u];
+        }
+    }
+{
+
+        if k == 3u {
+            h = m.hits[3u];
+        }
+    }
+{
+
+        if k == 4u {
+            h = m.hits[4u];
+        }
+    }
+{
+
+        if k == 5u {
+            h = m.hits[5u];
+        }
+    }
+{
+
+        if k == 6u {
+            h = m.hits[6u];
+        }
+    }
+{
+
+        if k == 7u {
+            h = m.hits[7u];
+        }
+    }
+
+    return h;
+}
+
+fn one_hit(h: Hit) -> Manifold {
+    var m = Manifold();
+    push_hit(&m, h);
+    return m;
+}
+
 // Sphere (centre c, radius r) against the plane through p with outward
 // normal n: φ = n·(c − p) − r, normal n (plane to sphere).
 fn sphere_plane(c: vec3<Scalar>, r: Scalar, p: vec3<Scalar>, n: vec3<Scalar>, margin: Scalar) -> Manifold {
@@ -205,14 +311,79 @@ fn sphere_sphere(ca: vec3<Scalar>, ra: Scalar, cb: vec3<Scalar>, rb: Scalar, mar
 // axis i as bit i of k is 0/1.
 fn corners(b: Placed, h: vec3<Scalar>) -> array<vec3<Scalar>, 8> {
     var out: array<vec3<Scalar>, 8>;
-    for (var k = 0u; k < 8u; k++) {
+{
+
         let s = vec3<Scalar>(
-            select(h.x, -h.x, (k & 1u) == 0u),
-            select(h.y, -h.y, (k & 2u) == 0u),
-            select(h.z, -h.z, (k & 4u) == 0u),
+            select(h.x, -h.x, (0u & 1u) == 0u),
+            select(h.y, -h.y, (0u & 2u) == 0u),
+            select(h.z, -h.z, (0u & 4u) == 0u),
         );
-        out[k] = b.centre + rotate(b, s);
+        out[0u] = b.centre + rotate(b, s);
     }
+{
+
+        let s = vec3<Scalar>(
+            select(h.x, -h.x, (1u & 1u) == 0u),
+            select(h.y, -h.y, (1u & 2u) == 0u),
+            select(h.z, -h.z, (1u & 4u) == 0u),
+        );
+        out[1u] = b.centre + rotate(b, s);
+    }
+{
+
+        let s = vec3<Scalar>(
+            select(h.x, -h.x, (2u & 1u) == 0u),
+            select(h.y, -h.y, (2u & 2u) == 0u),
+            select(h.z, -h.z, (2u & 4u) == 0u),
+        );
+        out[2u] = b.centre + rotate(b, s);
+    }
+{
+
+        let s = vec3<Scalar>(
+            select(h.x, -h.x, (3u & 1u) == 0u),
+            select(h.y, -h.y, (3u & 2u) == 0u),
+            select(h.z, -h.z, (3u & 4u) == 0u),
+        );
+        out[3u] = b.centre + rotate(b, s);
+    }
+{
+
+        let s = vec3<Scalar>(
+            select(h.x, -h.x, (4u & 1u) == 0u),
+            select(h.y, -h.y, (4u & 2u) == 0u),
+            select(h.z, -h.z, (4u & 4u) == 0u),
+        );
+        out[4u] = b.centre + rotate(b, s);
+    }
+{
+
+        let s = vec3<Scalar>(
+            select(h.x, -h.x, (5u & 1u) == 0u),
+            select(h.y, -h.y, (5u & 2u) == 0u),
+            select(h.z, -h.z, (5u & 4u) == 0u),
+        );
+        out[5u] = b.centre + rotate(b, s);
+    }
+{
+
+        let s = vec3<Scalar>(
+            select(h.x, -h.x, (6u & 1u) == 0u),
+            select(h.y, -h.y, (6u & 2u) == 0u),
+            select(h.z, -h.z, (6u & 4u) == 0u),
+        );
+        out[6u] = b.centre + rotate(b, s);
+    }
+{
+
+        let s = vec3<Scalar>(
+            select(h.x, -h.x, (7u & 1u) == 0u),
+            select(h.y, -h.y, (7u & 2u) == 0u),
+            select(h.z, -h.z, (7u & 4u) == 0u),
+        );
+        out[7u] = b.centre + rotate(b, s);
+    }
+
     return out;
 }
 
@@ -221,13 +392,71 @@ fn corners(b: Placed, h: vec3<Scalar>) -> array<vec3<Scalar>, 8> {
 fn box_plane(b: Placed, h: vec3<Scalar>, p: vec3<Scalar>, n: vec3<Scalar>, margin: Scalar) -> Manifold {
     var hits = Manifold();
     let vs = corners(b, h);
-    for (var k = 0u; k < 8u; k++) {
-        let v = vs[k];
+{
+
+        let v = vs[0u];
         let gap = dot3(n, v - p);
         if gap < margin {
-            push_hit(&hits, Hit(v - n * (Scalar(0.5) * gap), n, gap, k));
+            push_hit(&hits, Hit(v - n * (Scalar(0.5) * gap), n, gap, 0u));
         }
     }
+{
+
+        let v = vs[1u];
+        let gap = dot3(n, v - p);
+        if gap < margin {
+            push_hit(&hits, Hit(v - n * (Scalar(0.5) * gap), n, gap, 1u));
+        }
+    }
+{
+
+        let v = vs[2u];
+        let gap = dot3(n, v - p);
+        if gap < margin {
+            push_hit(&hits, Hit(v - n * (Scalar(0.5) * gap), n, gap, 2u));
+        }
+    }
+{
+
+        let v = vs[3u];
+        let gap = dot3(n, v - p);
+        if gap < margin {
+            push_hit(&hits, Hit(v - n * (Scalar(0.5) * gap), n, gap, 3u));
+        }
+    }
+{
+
+        let v = vs[4u];
+        let gap = dot3(n, v - p);
+        if gap < margin {
+            push_hit(&hits, Hit(v - n * (Scalar(0.5) * gap), n, gap, 4u));
+        }
+    }
+{
+
+        let v = vs[5u];
+        let gap = dot3(n, v - p);
+        if gap < margin {
+            push_hit(&hits, Hit(v - n * (Scalar(0.5) * gap), n, gap, 5u));
+        }
+    }
+{
+
+        let v = vs[6u];
+        let gap = dot3(n, v - p);
+        if gap < margin {
+            push_hit(&hits, Hit(v - n * (Scalar(0.5) * gap), n, gap, 6u));
+        }
+    }
+{
+
+        let v = vs[7u];
+        let gap = dot3(n, v - p);
+        if gap < margin {
+            push_hit(&hits, Hit(v - n * (Scalar(0.5) * gap), n, gap, 7u));
+        }
+    }
+
     return reduce_to_four(hits);
 }
 
@@ -271,15 +500,14 @@ fn sphere_box(c: vec3<Scalar>, r: Scalar, b: Placed, h: vec3<Scalar>, margin: Sc
     return one_hit(Hit(on_box + normal * (Scalar(0.5) * gap), normal, gap, 0u));
 }
 
-// Signed area of triangle (first, second, i) about n.
-fn area(hits: Manifold, first: u32, second: u32, i: u32, n: vec3<Scalar>) -> Scalar {
-    let p0 = hits.hits[first].point;
-    return dot3(cross3(hits.hits[second].point - p0, hits.hits[i].point - p0), n);
+// Signed area of triangle (p0, p1, p) about n.
+fn area(p0: vec3<Scalar>, p1: vec3<Scalar>, p: vec3<Scalar>, n: vec3<Scalar>) -> Scalar {
+    return dot3(cross3(p1 - p0, p - p0), n);
 }
 
 // At most 4 points of a manifold, spread over its area: the deepest, the
 // farthest from it, then the two on either side of their line farthest from
-// it. Order is kept.
+// it. Order is kept. Hits read through hit_at (see push_hit).
 fn reduce_to_four(hits: Manifold) -> Manifold {
     if hits.len <= 4u {
         return hits;
@@ -287,28 +515,32 @@ fn reduce_to_four(hits: Manifold) -> Manifold {
     let n = hits.hits[0].normal;
     // min_by keeps the first of equals, max_by the last.
     var first = 0u;
+    var low = hits.hits[0].gap;
     for (var i = 1u; i < hits.len; i++) {
-        if total_less(hits.hits[i].gap, hits.hits[first].gap) {
+        let gap = hit_at(hits, i).gap;
+        if total_less(gap, low) {
             first = i;
+            low = gap;
         }
     }
-    let pf = hits.hits[first].point;
+    let pf = hit_at(hits, first).point;
     var second = 0u;
     var far = dot3(hits.hits[0].point - pf, hits.hits[0].point - pf);
     for (var i = 1u; i < hits.len; i++) {
-        let d = hits.hits[i].point - pf;
+        let d = hit_at(hits, i).point - pf;
         let di = dot3(d, d);
         if !total_less(di, far) {
             second = i;
             far = di;
         }
     }
+    let ps = hit_at(hits, second).point;
     var third = 0u;
     var fourth = 0u;
-    var hi = area(hits, first, second, 0u, n);
+    var hi = area(pf, ps, hits.hits[0].point, n);
     var lo = hi;
     for (var i = 1u; i < hits.len; i++) {
-        let a = area(hits, first, second, i, n);
+        let a = area(pf, ps, hit_at(hits, i).point, n);
         if !total_less(a, hi) {
             third = i;
             hi = a;
@@ -322,7 +554,7 @@ fn reduce_to_four(hits: Manifold) -> Manifold {
     out.overflow = hits.overflow;
     for (var i = 0u; i < hits.len; i++) {
         if i == first || i == second || i == third || i == fourth {
-            push_hit(&out, hits.hits[i]);
+            push_hit(&out, hit_at(hits, i));
         }
     }
     return out;
@@ -443,14 +675,167 @@ struct Polygon {
     overflow: bool,
 }
 
+// Appends p (tag) by a ladder over the slots (see push_hit).
 fn push_point(poly: ptr<function, Polygon>, p: vec3<Scalar>, tag: u32) {
     if (*poly).len < 8u {
-        (*poly).points[(*poly).len] = p;
-        (*poly).tags[(*poly).len] = tag;
+{
+
+            if (*poly).len == 0u {
+                (*poly).points[0u] = p;
+                (*poly).tags[0u] = tag;
+            }
+        }
+{
+
+            if (*poly).len == 1u {
+                (*poly).points[1u] = p;
+                (*poly).tags[1u] = tag;
+            }
+        }
+{
+
+            if (*poly).len == 2u {
+                (*poly).points[2u] = p;
+                (*poly).tags[2u] = tag;
+            }
+        }
+{
+
+            if (*poly).len == 3u {
+                (*poly).points[3u] = p;
+                (*poly).tags[3u] = tag;
+            }
+        }
+{
+
+            if (*poly).len == 4u {
+                (*poly).points[4u] = p;
+                (*poly).tags[4u] = tag;
+            }
+        }
+{
+
+            if (*poly).len == 5u {
+                (*poly).points[5u] = p;
+                (*poly).tags[5u] = tag;
+            }
+        }
+{
+
+            if (*poly).len == 6u {
+                (*poly).points[6u] = p;
+                (*poly).tags[6u] = tag;
+            }
+        }
+{
+
+            if (*poly).len == 7u {
+                (*poly).points[7u] = p;
+                (*poly).tags[7u] = tag;
+            }
+        }
+
         (*poly).len += 1u;
     } else {
         (*poly).overflow = true;
     }
+}
+
+// Point k of poly (k < 8) and its tag, read by a ladder over the slots.
+fn point_at(poly: Polygon, k: u32) -> vec3<Scalar> {
+    var p = poly.points[0];
+{
+
+        if k == 1u {
+            p = poly.points[1u];
+        }
+    }
+{
+
+        if k == 2u {
+            p = poly.points[2u];
+        }
+    }
+{
+
+        if k == 3u {
+            p = poly.points[3u];
+        }
+    }
+{
+
+        if k == 4u {
+            p = poly.points[4u];
+        }
+    }
+{
+
+        if k == 5u {
+            p = poly.points[5u];
+        }
+    }
+{
+
+        if k == 6u {
+            p = poly.points[6u];
+        }
+    }
+{
+
+        if k == 7u {
+            p = poly.points[7u];
+        }
+    }
+
+    return p;
+}
+
+fn tag_at(poly: Polygon, k: u32) -> u32 {
+    var t = poly.tags[0];
+{
+
+        if k == 1u {
+            t = poly.tags[1u];
+        }
+    }
+{
+
+        if k == 2u {
+            t = poly.tags[2u];
+        }
+    }
+{
+
+        if k == 3u {
+            t = poly.tags[3u];
+        }
+    }
+{
+
+        if k == 4u {
+            t = poly.tags[4u];
+        }
+    }
+{
+
+        if k == 5u {
+            t = poly.tags[5u];
+        }
+    }
+{
+
+        if k == 6u {
+            t = poly.tags[6u];
+        }
+    }
+{
+
+        if k == 7u {
+            t = poly.tags[7u];
+        }
+    }
+
+    return t;
 }
 
 // Sutherland–Hodgman with a tolerance: the part of `poly` with pn·p ≤ off,
@@ -459,10 +844,11 @@ fn push_point(poly: ptr<function, Polygon>, p: vec3<Scalar>, tag: u32) {
 fn clip(poly: Polygon, pn: vec3<Scalar>, off: Scalar, tol: Scalar, side: u32) -> Polygon {
     var out = Polygon();
     out.overflow = poly.overflow;
+    // Points read through point_at (see push_hit).
     for (var k = 0u; k < poly.len; k++) {
-        let p = poly.points[k];
-        let tp = poly.tags[k];
-        let q = poly.points[(k + 1u) % poly.len];
+        let p = point_at(poly, k);
+        let tp = tag_at(poly, k);
+        let q = point_at(poly, (k + 1u) % poly.len);
         let dp = dot3(pn, p) - off;
         let dq = dot3(pn, q) - off;
         if dp <= tol {
@@ -531,10 +917,10 @@ fn face_contact(re: Placed, hr: vec3<Scalar>, inc: Placed, hi: vec3<Scalar>, axi
     var hits = Manifold();
     hits.overflow = poly.overflow;
     for (var m = 0u; m < poly.len; m++) {
-        let p = poly.points[m];
+        let p = point_at(poly, m);
         let gap = dot3(n, p - face_point);
         if gap < margin {
-            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (poly.tags[m] & 31u)));
+            push_hit(&hits, Hit(p - n * (Scalar(0.5) * gap), normal, gap, base | (tag_at(poly, m) & 31u)));
         }
     }
     return reduce_to_four(hits);
@@ -581,9 +967,55 @@ fn edge_contact(x: Placed, hx: vec3<Scalar>, y: Placed, hy: vec3<Scalar>, i: u32
 // Normals of every hit reversed (a pair given the other way round).
 fn flip(m: Manifold) -> Manifold {
     var out = m;
-    for (var k = 0u; k < out.len; k++) {
-        out.hits[k].normal = -out.hits[k].normal;
+{
+
+        if 0u < out.len {
+            out.hits[0u].normal = -out.hits[0u].normal;
+        }
     }
+{
+
+        if 1u < out.len {
+            out.hits[1u].normal = -out.hits[1u].normal;
+        }
+    }
+{
+
+        if 2u < out.len {
+            out.hits[2u].normal = -out.hits[2u].normal;
+        }
+    }
+{
+
+        if 3u < out.len {
+            out.hits[3u].normal = -out.hits[3u].normal;
+        }
+    }
+{
+
+        if 4u < out.len {
+            out.hits[4u].normal = -out.hits[4u].normal;
+        }
+    }
+{
+
+        if 5u < out.len {
+            out.hits[5u].normal = -out.hits[5u].normal;
+        }
+    }
+{
+
+        if 6u < out.len {
+            out.hits[6u].normal = -out.hits[6u].normal;
+        }
+    }
+{
+
+        if 7u < out.len {
+            out.hits[7u].normal = -out.hits[7u].normal;
+        }
+    }
+
     return out;
 }
 

@@ -56,36 +56,6 @@ struct Placed {
     c2: vec3<Scalar>,
 }
 
-struct Hit {
-    point: vec3<Scalar>,
-    // From the second shape to the first.
-    normal: vec3<Scalar>,
-    gap: Scalar,
-    feature: u32,
-}
-
-// Up to CAPACITY hits; `overflow` set by a push past it.
-struct Manifold {
-    hits: array<Hit, 8>,
-    len: u32,
-    overflow: bool,
-}
-
-fn push_hit(m: ptr<function, Manifold>, h: Hit) {
-    if (*m).len < CAPACITY {
-        (*m).hits[(*m).len] = h;
-        (*m).len += 1u;
-    } else {
-        (*m).overflow = true;
-    }
-}
-
-fn one_hit(h: Hit) -> Manifold {
-    var m = Manifold();
-    push_hit(&m, h);
-    return m;
-}
-
 // glam's dot: (x x' + y y') + z z'.
 fn dot3(a: vec3<Scalar>, b: vec3<Scalar>) -> Scalar {
     return a.x * b.x + a.y * b.y + a.z * b.z;

@@ -125,13 +125,15 @@ pub(crate) struct Stage {
     layout: wgpu::BindGroupLayout,
     pub(crate) pipeline: wgpu::ComputePipeline,
     bindings: Bindings,
+    /// The entry point's name (for timings and errors).
+    pub(crate) entry: &'static str,
 }
 
 impl Stage {
     fn new(
         ctx: &GpuContext,
         shader: Shader,
-        entry: &str,
+        entry: &'static str,
         bindings: Bindings,
     ) -> Result<Self, Error> {
         // In a scope of its own, so that a driver refusing the kernel (a
@@ -144,7 +146,7 @@ impl Stage {
     fn build(
         ctx: &GpuContext,
         shader: Shader,
-        entry: &str,
+        entry: &'static str,
         bindings: Bindings,
     ) -> Result<Self, Error> {
         let d = &ctx.device;
@@ -191,6 +193,7 @@ impl Stage {
             layout,
             pipeline,
             bindings,
+            entry,
         })
     }
 

@@ -306,16 +306,16 @@ fn a_world_past_its_contact_slots_is_flagged_and_stepped_on_the_cpu() {
     assert_eq!(on_gpu, on_cpu);
 }
 
-/// Where the kernel's time goes: 1,000 frictionless 4-box stacks, the two
-/// dispatches timed apart over 20 steps (`cargo test --release
-/// resident_phase_times -- --ignored --nocapture`): per step and phase
-/// the wall ms, and the CPU ms of the whole process over it (lavapipe runs
-/// the kernels on threads of its own; on a loaded machine the CPU time
-/// moves less than the wall time); then the medians of steps 5 to 19 (the
-/// warm bases in place).
+/// Where the kernel's time goes: 1,000 frictionless 4-box stacks, each
+/// command of a step timed apart over 20 steps (`cargo test --release
+/// resident_kernel_times -- --ignored --nocapture`): per command the
+/// median over steps 5 to 19 (the warm bases in place) of its wall ms and
+/// of the CPU ms of the whole process over it (lavapipe runs the kernels
+/// on threads of its own; on a loaded machine the CPU time moves less than
+/// the wall time); then the same steps in one submission each.
 #[test]
 #[ignore = "a measurement, not a check"]
-fn resident_phase_times() {
+fn resident_kernel_times() {
     if f64_gpu().is_none() {
         return;
     }
@@ -324,30 +324,37 @@ fn resident_phase_times() {
     let settings = Settings::default();
     let r =
         ResidentWorlds::new(&ctx, &worlds, 1e-8, &settings.gpu_solve(), true, None, None).unwrap();
-    r.time_phases(&ctx, 0.01, process_cpu_ms).unwrap();
-    let mut rows = Vec::new();
+    r.time_kernels(&ctx, 0.01, process_cpu_ms).unwrap();
+    let mut steps = Vec::new();
     for step in 0..20 {
-        let [[c, cc], [s, sc]] = r.time_phases(&ctx, 0.01, process_cpu_ms).unwrap();
-        let (c, s) = (1e3 * c, 1e3 * s);
-        println!(
-            "step {step}: 1000 stack:4 worlds: world_collide {c:.1} ms (CPU {cc:.1} ms), solve stages {s:.1} ms (CPU {sc:.1} ms)"
-        );
+        let times = r.time_kernels(&ctx, 0.01, process_cpu_ms).unwrap();
         if step >= 5 {
-            rows.push([c, cc, s, sc]);
+            steps.push(times);
         }
     }
-    let median = |k: usize| {
-        let mut v: Vec<f64> = rows.iter().map(|r| r[k]).collect();
+    let median = |mut v: Vec<f64>| {
         v.sort_by(f64::total_cmp);
         v[v.len() / 2]
     };
+    let mut total = [0.0; 2];
+    for (k, (name, _)) in steps[0].iter().enumerate() {
+        let wall = median(steps.iter().map(|s| 1e3 * s[k].1[0]).collect());
+        let cpu = median(steps.iter().map(|s| s[k].1[1]).collect());
+        total = [total[0] + wall, total[1] + cpu];
+        println!("{name}: {wall:.2} ms (CPU {cpu:.2} ms)");
+    }
     println!(
-        "median of steps 5-19: world_collide {:.1} ms (CPU {:.1} ms), solve stages {:.1} ms (CPU {:.1} ms)",
-        median(0),
-        median(1),
-        median(2),
-        median(3)
+        "sum of the medians: {:.1} ms (CPU {:.1} ms)",
+        total[0], total[1]
     );
+    let whole: Vec<f64> = (0..15)
+        .map(|_| {
+            let start = std::time::Instant::now();
+            r.step(&ctx, 0.01).unwrap();
+            1e3 * start.elapsed().as_secs_f64()
+        })
+        .collect();
+    println!("one submission a step: median {:.1} ms", median(whole));
 }
 
 /// CPU ms of every thread of this process so far (Linux

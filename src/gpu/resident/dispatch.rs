@@ -32,6 +32,29 @@ pub(super) fn empty_lists(words: usize) -> Vec<u32> {
     list
 }
 
+/// One command of a step: a dispatch over the worlds, an indirect one over
+/// a list (its workgroups at a byte of the headers' copy), or the copy of
+/// the lists' first bytes into that copy.
+pub(super) enum Op<'s> {
+    Worlds(&'s Stage),
+    Listed(&'s Stage, u64),
+    CopyHeaders(u64),
+}
+
+impl Op<'_> {
+    /// The entry point's name (a copy: "copy headers"), for the timings.
+    #[cfg_attr(
+        not(test),
+        allow(dead_code, reason = "the kernel timings of the tests")
+    )]
+    pub(super) fn name(&self) -> &'static str {
+        match self {
+            Op::Worlds(s) | Op::Listed(s, _) => s.entry,
+            Op::CopyHeaders(_) => "copy headers",
+        }
+    }
+}
+
 impl ResidentWorlds {
     /// Workgroups of a dispatch over the worlds.
     pub(super) fn groups(&self) -> u32 {
@@ -41,13 +64,16 @@ impl ResidentWorlds {
     /// The collision phase: `candidate_pairs` over the worlds, the narrow
     /// phase of each pair family over its list (indirect), `world_contacts`
     /// over the worlds.
-    pub(super) fn record_collide(&self, encoder: &mut wgpu::CommandEncoder, stages: &WorldStages) {
-        self.record(encoder, &stages.candidate_pairs);
-        encoder.copy_buffer_to_buffer(&self.lists, 0, &self.list_groups, 0, LIST_HEADERS);
+    pub(super) fn collide_ops<'s>(&self, stages: &'s WorldStages) -> Vec<Op<'s>> {
+        let mut ops = vec![
+            Op::Worlds(&stages.candidate_pairs),
+            Op::CopyHeaders(LIST_HEADERS),
+        ];
         for (f, stage) in stages.narrow.iter().enumerate() {
-            self.record_listed(encoder, stage, HEADER * (f as u64 + 1));
+            ops.push(Op::Listed(stage, HEADER * (f as u64 + 1)));
         }
-        self.record(encoder, &stages.world_contacts);
+        ops.push(Op::Worlds(&stages.world_contacts));
+        ops
     }
 
     /// The solve's dispatches after the collision phase: `world_assemble`
@@ -57,37 +83,44 @@ impl ResidentWorlds {
     /// warm bases); then the
     /// frictional rounds (`friction`, where any) and `world_finish` over
     /// the worlds.
-    pub(super) fn record_solve(
+    pub(super) fn solve_ops<'s>(
         &self,
-        encoder: &mut wgpu::CommandEncoder,
-        stages: &WorldStages,
-        friction: Option<(&Stage, u32)>,
-    ) {
-        self.record(encoder, &stages.world_assemble);
-        self.record(encoder, &stages.world_solve_warm);
-        encoder.copy_buffer_to_buffer(&self.lists, 0, &self.list_groups, 0, 12);
-        self.record_listed(encoder, &stages.world_lemke, 0);
-        self.record_listed(encoder, &stages.world_lemke_check, 0);
+        stages: &'s WorldStages,
+        friction: Option<(&'s Stage, u32)>,
+    ) -> Vec<Op<'s>> {
+        let mut ops = vec![
+            Op::Worlds(&stages.world_assemble),
+            Op::Worlds(&stages.world_solve_warm),
+            Op::CopyHeaders(12),
+            Op::Listed(&stages.world_lemke, 0),
+            Op::Listed(&stages.world_lemke_check, 0),
+        ];
         if let Some((stage, rounds)) = friction {
-            for _ in 0..rounds {
-                self.record(encoder, stage);
+            ops.extend((0..rounds).map(|_| Op::Worlds(stage)));
+        }
+        ops.push(Op::Worlds(&stages.world_finish));
+        ops
+    }
+
+    /// Records `ops` into `encoder`, in order.
+    pub(super) fn record(&self, encoder: &mut wgpu::CommandEncoder, ops: &[Op]) {
+        for op in ops {
+            match *op {
+                Op::Worlds(stage) => {
+                    let mut pass = self.pass(encoder, stage);
+                    pass.dispatch_workgroups(self.groups().max(1), 1, 1);
+                }
+                // A buffer bound for storage cannot be its own dispatch's
+                // arguments: the headers' copy is.
+                Op::Listed(stage, at) => {
+                    let mut pass = self.pass(encoder, stage);
+                    pass.dispatch_workgroups_indirect(&self.list_groups, at);
+                }
+                Op::CopyHeaders(len) => {
+                    encoder.copy_buffer_to_buffer(&self.lists, 0, &self.list_groups, 0, len)
+                }
             }
         }
-        self.record(encoder, &stages.world_finish);
-    }
-
-    /// A dispatch of `stage` over the worlds.
-    pub(super) fn record(&self, encoder: &mut wgpu::CommandEncoder, stage: &Stage) {
-        let mut pass = self.pass(encoder, stage);
-        pass.dispatch_workgroups(self.groups().max(1), 1, 1);
-    }
-
-    /// An indirect dispatch of `stage` over a list: its workgroups at byte
-    /// `at` of the headers' copy (a buffer bound for storage cannot be its
-    /// own dispatch's arguments).
-    fn record_listed(&self, encoder: &mut wgpu::CommandEncoder, stage: &Stage, at: u64) {
-        let mut pass = self.pass(encoder, stage);
-        pass.dispatch_workgroups_indirect(&self.list_groups, at);
     }
 
     fn pass<'e>(
@@ -104,11 +137,11 @@ impl ResidentWorlds {
         pass
     }
 
-    /// One step as [`Self::step`] does it, but the collision phase
-    /// ([`Self::record_collide`]) and the solve ([`Self::record_solve`])
-    /// in a submission of their own each, waited for: per phase its wall
-    /// seconds and the difference of `clock` over it (a CPU clock of the
-    /// caller's; for benches; nothing read back).
+    /// One step as [`Self::step`] does it (frictionless), but each command
+    /// ([`Self::collide_ops`], [`Self::solve_ops`]) in a submission of its
+    /// own, waited for: per command its name, its wall seconds and the
+    /// difference of `clock` over it (a CPU clock of the caller's; for
+    /// benches; nothing read back).
     ///
     /// # Errors
     /// [`Error::Gpu`] for device trouble.
@@ -116,34 +149,33 @@ impl ResidentWorlds {
         not(test),
         allow(
             dead_code,
-            reason = "the phase measurement of src/tests/gpu_resident.rs"
+            reason = "the kernel measurement of src/tests/gpu_resident.rs"
         )
     )]
-    pub fn time_phases(
+    pub fn time_kernels(
         &self,
         ctx: &GpuContext,
         dt: f64,
         clock: impl Fn() -> f64,
-    ) -> Result<[[f64; 2]; 2], Error> {
-        let stages = ctx.pipelines()?;
-        let mut seconds = [[0.0; 2]; 2];
+    ) -> Result<Vec<(&'static str, [f64; 2])>, Error> {
+        let pipelines = ctx.pipelines()?;
+        let stages = pipelines.world_step(ctx)?;
         self.write_params(ctx, dt);
-        let step_stages = stages.world_step(ctx)?;
-        for (phase, s) in seconds.iter_mut().enumerate() {
+        let mut ops = self.collide_ops(stages);
+        ops.extend(self.solve_ops(stages, None));
+        let mut times = Vec::with_capacity(ops.len());
+        for op in &ops {
             let (start, cpu) = (std::time::Instant::now(), clock());
             ctx.scoped("resident world step", || {
                 let mut encoder = ctx.encoder("resident world step");
-                match phase {
-                    0 => self.record_collide(&mut encoder, step_stages),
-                    _ => self.record_solve(&mut encoder, step_stages, None),
-                }
+                self.record(&mut encoder, std::slice::from_ref(op));
                 ctx.queue.submit([encoder.finish()]);
                 ctx.device
                     .poll(wgpu::PollType::wait_indefinitely())
                     .map_err(|e| Error::Gpu(format!("waiting for the GPU: {e}")))
             })??;
-            *s = [start.elapsed().as_secs_f64(), clock() - cpu];
+            times.push((op.name(), [start.elapsed().as_secs_f64(), clock() - cpu]));
         }
-        Ok(seconds)
+        Ok(times)
     }
 }

@@ -508,9 +508,10 @@ impl ResidentWorlds {
                 self.save(&mut encoder);
             }
             for j in 0..k as u64 {
-                self.record_collide(&mut encoder, step_stages);
                 let friction = friction.map(|s| (s, rounds));
-                self.record_solve(&mut encoder, step_stages, friction);
+                let mut ops = self.collide_ops(step_stages);
+                ops.extend(self.solve_ops(step_stages, friction));
+                self.record(&mut encoder, &ops);
                 let at = j * stride;
                 encoder.copy_buffer_to_buffer(&self.records, 0, &self.history, at, rec_bytes);
                 let words = 16 * n as u64;

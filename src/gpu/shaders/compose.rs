@@ -199,6 +199,14 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         }
         _ => s,
     };
+    // The narrow phase: every index into a manifold or a polygon a
+    // constant (shaders/collide.wgsl, push_hit).
+    let s = match shader {
+        Shader::Collide | Shader::WorldCollide => {
+            unroll_marked_loops(&s, &[("CAPACITY", 8), ("SLOTS", 4)], true)?
+        }
+        _ => s,
+    };
     let from = match shader {
         Shader::FrictionProjected(_) => {
             format!("shaders/friction_common.wgsl + shaders/{file}.wgsl")

@@ -1,4 +1,5 @@
-//! Loop unrolling for the friction kernels (test builds only, like the rest
+//! Loop unrolling for the friction kernels and the narrow phase's
+//! manifolds (`collide`, `world_collide`) (test builds only, like the rest
 //! of the composition): every `for` loop whose header line ends in
 //! `// UNROLL` and whose bounds are constants once the island size is known
 //! is replaced by one block per iteration with the loop variable written as
