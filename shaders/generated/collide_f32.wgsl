@@ -166,9 +166,9 @@ struct Manifold {
 // composition, src/gpu/shaders/unroll_loops.rs, as are a few short loops
 // over every slot). llvmpipe keeps a private array in registers only where
 // every access to it has a constant index, else each access is a per-lane
-// gather or scatter in memory (BENCHMARKS.md "reslvp": the narrow phase's
-// box–box pairs 2–3× faster). The longer loops stay loops (each unrolled
-// copy would be in the SPIR-V of every collision entry point).
+// gather or scatter in memory (BENCHMARKS.md "reslvp": the box–box kernel
+// 28.9 → 6.5 ms a step on 1,000 worlds). The longer loops stay loops (each
+// unrolled copy would be in the SPIR-V of every collision entry point).
 fn push_hit(m: ptr<function, Manifold>, h: Hit) {
     if (*m).len < CAPACITY {
 {
