@@ -1,4 +1,4 @@
-// GENERATED from shaders/collide.wgsl by src/gpu/shaders/compose.rs: do not edit.
+// GENERATED from shaders/collide.wgsl + shaders/collide_box.wgsl by src/gpu/shaders/compose.rs: do not edit.
 // Regenerate: LCPBATCH_BLESS_SHADERS=1 cargo test --release generated_shaders_are_committed
 
 // Narrow phase: the contact points of candidate pairs of bodies (entry
@@ -559,6 +559,11 @@ fn reduce_to_four(hits: Manifold) -> Manifold {
     }
     return out;
 }
+
+// Box–box pairs: separating axes, the reference face's clipping, edge
+// against edge (CPU twin: src/world/collide_box.rs, same names). The
+// composition (src/gpu/shaders/compose.rs) splices this file into
+// shaders/collide.wgsl at its `// BOX-BOX` line.
 
 // The projection radius of box p (half extents h) on unit u.
 fn radius(p: Placed, h: vec3<Scalar>, u: vec3<Scalar>) -> Scalar {

@@ -32,6 +32,7 @@ const FRICTION_COMMON_WGSL: &str = include_str!("../../../shaders/friction_commo
 const FRICTION_PROJECTED_GLOBAL_WGSL: &str =
     include_str!("../../../shaders/friction_projected_global.wgsl");
 const COLLIDE_WGSL: &str = include_str!("../../../shaders/collide.wgsl");
+const COLLIDE_BOX_WGSL: &str = include_str!("../../../shaders/collide_box.wgsl");
 const WORLD_STEP_WGSL: &str = include_str!("../../../shaders/world_step.wgsl");
 const WORLD_COLLIDE_WGSL: &str = include_str!("../../../shaders/world_collide.wgsl");
 const WORLD_BODIES_WGSL: &str = include_str!("../../../shaders/world_bodies.wgsl");
@@ -45,6 +46,9 @@ const WORLD_FRICTION_WGSL: &str = include_str!("../../../shaders/world_friction.
 const WORLD_SWEEPS_WGSL: &str = include_str!("../../../shaders/world_sweeps.wgsl");
 const WORLD_APGD_WGSL: &str = include_str!("../../../shaders/world_apgd.wgsl");
 
+/// The line of `shaders/collide.wgsl` that `shaders/collide_box.wgsl`
+/// replaces (below its pair functions line).
+const COLLIDE_BOX: &str = "// BOX-BOX: shaders/collide_box.wgsl\n";
 /// Where `shaders/collide.wgsl`'s own stage starts: the world step kernel
 /// takes the functions above it.
 const COLLIDE_STAGE: &str = "// Stage `collide_pairs`.";
@@ -73,6 +77,13 @@ const BLESS: &str = "LCPBATCH_BLESS_SHADERS";
 /// The complete text of `shader` in `precision` (F32 or F64), as committed
 /// in `shaders/generated/`.
 pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Error> {
+    if !COLLIDE_WGSL.contains(COLLIDE_BOX) {
+        return Err(Error::Gpu(format!(
+            "collide.wgsl has no `{}` line",
+            COLLIDE_BOX.trim_end()
+        )));
+    }
+    let collide = COLLIDE_WGSL.replacen(COLLIDE_BOX, COLLIDE_BOX_WGSL, 1);
     let (file, body) = match shader {
         Shader::Enumeration | Shader::Unrolled(_) => ("enumeration", ENUMERATION_WGSL),
         Shader::Workgroup => ("enumeration_workgroup", ENUMERATION_WORKGROUP_WGSL),
@@ -88,7 +99,7 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         Shader::FrictionProjected(_) => {
             ("friction_projected_global", FRICTION_PROJECTED_GLOBAL_WGSL)
         }
-        Shader::Collide => ("collide", COLLIDE_WGSL),
+        Shader::Collide => ("collide", collide.as_str()),
         Shader::WorldCollide => ("world_collide", WORLD_COLLIDE_WGSL),
         Shader::WorldAssemble => ("world_assemble", WORLD_ASSEMBLE_WGSL),
         Shader::WorldSolve => ("world_solve", WORLD_SOLVE_WGSL),
@@ -117,7 +128,7 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         Shader::FrictionProjected(_) => format!("{FRICTION_COMMON_WGSL}\n{body}"),
         Shader::WorldCollide => format!(
             "{}\n{WORLD_STEP_WGSL}\n{body}",
-            text_before(COLLIDE_WGSL, COLLIDE_STAGE)?
+            text_before(&collide, COLLIDE_STAGE)?
         ),
         Shader::WorldSolve | Shader::WorldLemke | Shader::WorldLemkeCheck => {
             format!("{}\n{WORLD_ISLAND_WGSL}\n{body}", world_head()?)
@@ -211,9 +222,10 @@ pub(super) fn compose(shader: Shader, precision: Precision) -> Result<String, Er
         Shader::FrictionProjected(_) => {
             format!("shaders/friction_common.wgsl + shaders/{file}.wgsl")
         }
+        Shader::Collide => "shaders/collide.wgsl + shaders/collide_box.wgsl".to_string(),
         _ if standalone => format!("shaders/{file}.wgsl"),
-        Shader::WorldCollide => "shaders/collide.wgsl (functions) + shaders/world_step.wgsl + \
-             shaders/world_collide.wgsl"
+        Shader::WorldCollide => "shaders/collide.wgsl (functions) + shaders/collide_box.wgsl + \
+             shaders/world_step.wgsl + shaders/world_collide.wgsl"
             .to_string(),
         Shader::WorldSolve | Shader::WorldLemke | Shader::WorldLemkeCheck => format!(
             "shaders/collide.wgsl (functions above its pair functions) + \
